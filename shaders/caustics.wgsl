@@ -1,0 +1,45 @@
+// Caustics map. Every water grid triangle is sent along the refracted sunlight to the pool
+// floor; where the waves focus light the triangle shrinks, and its brightness is the ratio
+// of its calm-surface area to its projected area (energy conservation), summed additively.
+// The map is indexed by where a calm surface would have let the light in (see light_entry),
+// so any underwater point can look its light up. Red: light; green: light with the sphere's
+// shadow. The rim's shadow is in both.
+
+struct CausticsOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) calm_entry: vec2<f32>,
+    @location(1) wavy_entry: vec2<f32>,
+    @location(2) visibility: vec2<f32>,
+};
+
+@vertex
+fn vs_caustics(@location(0) grid: vec2<f32>) -> CausticsOut {
+    let xz = grid * half_width();
+    let state = water_at(xz);
+    let p = vec3<f32>(xz.x, state.x, xz.y);
+    let ray = refract(-scene.sun.xyz, water_normal(state), IOR_AIR / IOR_WATER);
+    let t_floor = (-depth() - p.y) / min(ray.y, -1.0e-4);
+    let on_floor = p + ray * t_floor;
+    let entry = light_entry(on_floor);
+    var out: CausticsOut;
+    out.clip = vec4<f32>(entry / half_width(), 0.0, 1.0);
+    out.calm_entry = xz;
+    out.wavy_entry = entry;
+    let rim_light = rim_visibility(p);
+    let sphere_light = sphere_visibility(p, ray, t_floor, scene.sphere.xyz, scene.sphere.w)
+        * sphere_visibility(p, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+    out.visibility = vec2<f32>(rim_light, rim_light * sphere_light);
+    return out;
+}
+
+fn area(a: vec2<f32>, b: vec2<f32>) -> f32 {
+    return abs(a.x * b.y - a.y * b.x);
+}
+
+@fragment
+fn fs_caustics(in: CausticsOut) -> @location(0) vec4<f32> {
+    let calm = area(dpdx(in.calm_entry), dpdy(in.calm_entry));
+    let wavy = area(dpdx(in.wavy_entry), dpdy(in.wavy_entry));
+    let intensity = min(calm / max(wavy, 1.0e-12), 40.0);
+    return vec4<f32>(intensity * in.visibility, 0.0, 1.0);
+}

@@ -1,0 +1,114 @@
+// Shared constants and pure helpers (no bindings): ray intersections, optics, colour.
+// Units: metres. The pool spans x, z in [-W, W], y in [-D, R]; water rests at y = 0.
+
+const PI: f32 = 3.14159265;
+const IOR_AIR: f32 = 1.0;
+const IOR_WATER: f32 = 1.333;
+// Beer–Lambert absorption of pool water per metre, per channel: red dies first,
+// so deep water and long paths turn blue-green.
+const WATER_ABSORPTION: vec3<f32> = vec3<f32>(0.42, 0.085, 0.05);
+const NO_HIT: f32 = 1.0e9;
+
+// Entry and exit distances of a ray through an axis-aligned box (slab method).
+// Returns (t_near, t_far); the ray misses when t_near > t_far.
+fn intersect_box(origin: vec3<f32>, dir: vec3<f32>, box_min: vec3<f32>, box_max: vec3<f32>) -> vec2<f32> {
+    let inv = 1.0 / dir;
+    let t0 = (box_min - origin) * inv;
+    let t1 = (box_max - origin) * inv;
+    let t_small = min(t0, t1);
+    let t_big = max(t0, t1);
+    let t_near = max(max(t_small.x, t_small.y), t_small.z);
+    let t_far = min(min(t_big.x, t_big.y), t_big.z);
+    return vec2<f32>(t_near, t_far);
+}
+
+// Nearest positive distance along a ray to a sphere's surface, or NO_HIT.
+fn intersect_sphere(origin: vec3<f32>, dir: vec3<f32>, centre: vec3<f32>, radius: f32) -> f32 {
+    let oc = origin - centre;
+    let b = dot(oc, dir);
+    let c = dot(oc, oc) - radius * radius;
+    let disc = b * b - c;
+    if (radius <= 0.0 || disc < 0.0) {
+        return NO_HIT;
+    }
+    let s = sqrt(disc);
+    let t = -b - s;
+    if (t > 1.0e-4) {
+        return t;
+    }
+    let t2 = -b + s;
+    return select(NO_HIT, t2, t2 > 1.0e-4 && c > 0.0);
+}
+
+// Fraction of light a sphere lets through along the segment origin + t*dir, t in [0, t_max]:
+// 0 when the segment passes through the sphere's core, 1 when it misses, soft in between
+// (a cheap penumbra that keeps shadows from aliasing).
+fn sphere_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, centre: vec3<f32>, radius: f32) -> f32 {
+    if (radius <= 0.0) {
+        return 1.0;
+    }
+    let t = clamp(dot(centre - origin, dir), 0.0, t_max);
+    let closest = distance(origin + dir * t, centre);
+    return smoothstep(radius * 0.85, radius * 1.1, closest);
+}
+
+// Reflectance of a smooth dielectric for unpolarised light (exact Fresnel equations).
+// cos_i: cosine of the incidence angle; eta: n_from / n_to. Total internal reflection gives 1.
+fn fresnel(cos_i: f32, eta: f32) -> f32 {
+    let ci = clamp(cos_i, 0.0, 1.0);
+    let sin_t2 = eta * eta * (1.0 - ci * ci);
+    if (sin_t2 >= 1.0) {
+        return 1.0;
+    }
+    let ct = sqrt(1.0 - sin_t2);
+    let rs = (eta * ci - ct) / (eta * ci + ct);
+    let rp = (ci - eta * ct) / (ci + eta * ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+// Length (m) of the straight segment a -> b that lies inside the water volume
+// (the pool box below the rest level), for Beer–Lambert attenuation.
+fn water_path(a: vec3<f32>, b: vec3<f32>, half_width: f32, depth: f32) -> f32 {
+    let d = b - a;
+    let len = length(d);
+    if (len < 1.0e-6) {
+        return 0.0;
+    }
+    let dir = d / len;
+    let t = intersect_box(a, dir, vec3<f32>(-half_width, -depth, -half_width), vec3<f32>(half_width, 0.0, half_width));
+    let t0 = max(t.x, 0.0);
+    let t1 = min(t.y, len);
+    return max(t1 - t0, 0.0);
+}
+
+fn linear_to_srgb(c: vec3<f32>) -> vec3<f32> {
+    let lo = c * 12.92;
+    let hi = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
+    return select(hi, lo, c <= vec3<f32>(0.0031308));
+}
+
+// Cheap hash and value noise for procedural textures (sky clouds).
+fn hash31(p: vec3<f32>) -> f32 {
+    var q = fract(p * 0.1031);
+    q += dot(q, q.zyx + 31.32);
+    return fract((q.x + q.y) * q.z);
+}
+
+fn value_noise(p: vec3<f32>) -> f32 {
+    let i = floor(p);
+    let f = fract(p);
+    let u = f * f * (3.0 - 2.0 * f);
+    let n000 = hash31(i);
+    let n100 = hash31(i + vec3<f32>(1.0, 0.0, 0.0));
+    let n010 = hash31(i + vec3<f32>(0.0, 1.0, 0.0));
+    let n110 = hash31(i + vec3<f32>(1.0, 1.0, 0.0));
+    let n001 = hash31(i + vec3<f32>(0.0, 0.0, 1.0));
+    let n101 = hash31(i + vec3<f32>(1.0, 0.0, 1.0));
+    let n011 = hash31(i + vec3<f32>(0.0, 1.0, 1.0));
+    let n111 = hash31(i + vec3<f32>(1.0, 1.0, 1.0));
+    let x00 = mix(n000, n100, u.x);
+    let x10 = mix(n010, n110, u.x);
+    let x01 = mix(n001, n101, u.x);
+    let x11 = mix(n011, n111, u.x);
+    return mix(mix(x00, x10, u.y), mix(x01, x11, u.y), u.z);
+}

@@ -1,0 +1,27 @@
+// Pool floor and walls seen directly (above the water line, or from below the surface):
+// tiles lit by the sun, through the caustics map under water, dimmed by any water
+// between the eye and the tile.
+
+struct PoolOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+};
+
+@vertex
+fn vs_pool(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> PoolOut {
+    var out: PoolOut;
+    out.clip = scene.view_proj * vec4<f32>(position, 1.0);
+    out.world = position;
+    out.normal = normal;
+    return out;
+}
+
+@fragment
+fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
+    let n = normalize(in.normal);
+    let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
+    var colour = pool_colour(in.world, n, albedo);
+    colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
+    return finish(colour);
+}

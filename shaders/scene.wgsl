@@ -1,0 +1,231 @@
+// Scene bindings and the shading every scene pass shares: water sampling, pool tiles,
+// caustic light, the sphere, the sky, and tracing a ray through air or water to what it hits.
+
+struct Scene {
+    view_proj: mat4x4<f32>,
+    inv_view_proj: mat4x4<f32>,
+    eye: vec4<f32>,            // xyz camera position (m)
+    sun: vec4<f32>,            // xyz unit vector towards the sun; w sun strength
+    refracted_sun: vec4<f32>,  // xyz unit direction sunlight travels after a flat surface (downwards)
+    sphere: vec4<f32>,         // xyz centre (m), w radius (m); radius 0 = no sphere
+    pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
+    water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1)
+    output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format)
+};
+
+@group(0) @binding(0) var<uniform> scene: Scene;
+// Simulation state per cell: (height m, vertical velocity m/s, normal.x, normal.z).
+@group(0) @binding(1) var water_state: texture_2d<f32>;
+
+@group(1) @binding(0) var caustics_map: texture_2d<f32>;
+@group(1) @binding(1) var tile_texture: texture_2d<f32>;
+@group(1) @binding(2) var sky_cube: texture_cube<f32>;
+@group(1) @binding(3) var clamp_sampler: sampler;
+@group(1) @binding(4) var repeat_sampler: sampler;
+
+const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
+const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
+
+fn half_width() -> f32 { return scene.pool.x; }
+fn depth() -> f32 { return scene.pool.y; }
+fn rim() -> f32 { return scene.pool.z; }
+
+// Bilinear fetch of the simulation state at pool coordinates xz (m). Done by hand with
+// textureLoad so that 32-bit float state needs no filterable-float support.
+fn water_at(xz: vec2<f32>) -> vec4<f32> {
+    let n = i32(scene.water.x);
+    let p = (xz / half_width() * 0.5 + 0.5) * scene.water.x - 0.5;
+    let base = floor(p);
+    let f = p - base;
+    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), vec2<i32>(n - 1));
+    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), vec2<i32>(n - 1));
+    let a = textureLoad(water_state, vec2<i32>(i0.x, i0.y), 0);
+    let b = textureLoad(water_state, vec2<i32>(i1.x, i0.y), 0);
+    let c = textureLoad(water_state, vec2<i32>(i0.x, i1.y), 0);
+    let d = textureLoad(water_state, vec2<i32>(i1.x, i1.y), 0);
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+fn water_normal(state: vec4<f32>) -> vec3<f32> {
+    let t = state.zw;
+    return vec3<f32>(t.x, sqrt(max(1.0 - dot(t, t), 0.0)), t.y);
+}
+
+// Where the flat-surface refracted sunbeam through p entered the water (xz, m): the
+// caustics map is indexed by this point.
+fn light_entry(p: vec3<f32>) -> vec2<f32> {
+    let r = scene.refracted_sun.xyz;
+    return p.xz - r.xz * (p.y / r.y);
+}
+
+fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
+    let m = entry / half_width();
+    return vec2<f32>(m.x * 0.5 + 0.5, 0.5 - m.y * 0.5);
+}
+
+// 1 when the straight ray from the surface point p towards the sun clears the pool rim.
+fn rim_visibility(p: vec3<f32>) -> f32 {
+    let s = scene.sun.xyz;
+    let w = half_width();
+    let tx = (sign(s.x) * w - p.x) / select(s.x, 1.0e-6, abs(s.x) < 1.0e-6);
+    let tz = (sign(s.z) * w - p.z) / select(s.z, 1.0e-6, abs(s.z) < 1.0e-6);
+    let t = max(min(abs(tx), abs(tz)), 0.0);
+    let height = p.y + t * s.y;
+    return smoothstep(rim() - 0.02, rim() + 0.02, height);
+}
+
+// Sunlight reaching an underwater point p, relative to a flat calm surface (1 = calm).
+// with_sphere_shadow: whether the sphere's own shadow is included (not for the sphere itself).
+fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
+    let entry = light_entry(p);
+    let inside = all(abs(entry) <= vec2<f32>(half_width()));
+    if (!inside) {
+        return 0.0;
+    }
+    if (scene.water.z > 0.5) {
+        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0);
+        return select(c.r, c.g, with_sphere_shadow);
+    }
+    // Caustics off: a calm surface, with the same rim and sphere shadows.
+    let surface = vec3<f32>(entry.x, 0.0, entry.y);
+    var light = rim_visibility(surface);
+    if (with_sphere_shadow) {
+        let r = scene.refracted_sun.xyz;
+        light *= sphere_visibility(surface, r, distance(surface, p), scene.sphere.xyz, scene.sphere.w);
+        light *= sphere_visibility(surface, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+    }
+    return light;
+}
+
+// Analytic ambient occlusion of a sphere seen from a point with normal n:
+// the sphere's projected solid angle, cos(theta) * (r / d)^2.
+fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let r = scene.sphere.w;
+    if (r <= 0.0) {
+        return 0.0;
+    }
+    let to_centre = scene.sphere.xyz - p;
+    let d2 = dot(to_centre, to_centre);
+    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
+    return clamp(cos_t * r * r / d2, 0.0, 1.0);
+}
+
+// Inward normal of the pool face nearest to p (floor or one of the four walls).
+fn pool_normal(p: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let dx = w - abs(p.x);
+    let dz = w - abs(p.z);
+    let dy = p.y + depth();
+    if (dy <= dx && dy <= dz) {
+        return vec3<f32>(0.0, 1.0, 0.0);
+    }
+    if (dx < dz) {
+        return vec3<f32>(-sign(p.x), 0.0, 0.0);
+    }
+    return vec3<f32>(0.0, 0.0, -sign(p.z));
+}
+
+// Texture coordinates (m) of the tiles at p on the face with inward normal n.
+fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
+    if (abs(n.y) > 0.5) {
+        return p.xz;
+    }
+    if (abs(n.x) > 0.5) {
+        return vec2<f32>(p.z, -p.y);
+    }
+    return vec2<f32>(p.x, -p.y);
+}
+
+// Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
+// albedo, before any water attenuation between p and the viewer. Under the rest level the
+// sun arrives refracted, through the caustics; above it, directly.
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
+    var direct: f32;
+    if (p.y < 0.0) {
+        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
+    } else {
+        direct = max(dot(n, scene.sun.xyz), 0.0)
+            * sphere_visibility(p, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+    }
+    let ambient = AMBIENT * (1.0 - 0.9 * sphere_occlusion(p, n));
+    return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
+}
+
+// pool_colour for a traced ray hit, where screen derivatives mean nothing: a fixed, slightly
+// blurred mip level of the tiles.
+fn pool_colour_at_hit(p: vec3<f32>) -> vec3<f32> {
+    let n = pool_normal(p);
+    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), 1.0).rgb;
+    return pool_colour(p, n, albedo);
+}
+
+// Lit colour of the sphere at surface point p: diffuse sunlight (through the caustics under
+// water), ambient darkened where the floor and walls are close (ambient occlusion).
+fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
+    let n = normalize(p - scene.sphere.xyz);
+    let albedo = vec3<f32>(0.62, 0.60, 0.56);
+    var direct: f32;
+    if (p.y < 0.0) {
+        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
+    } else {
+        direct = max(dot(n, scene.sun.xyz), 0.0);
+    }
+    // Occlusion by the floor and walls falls off with distance from each plane.
+    let w = half_width();
+    var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
+    occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
+    occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
+    let ambient = AMBIENT * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
+    return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
+}
+
+fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
+    return textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0).rgb;
+}
+
+// What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
+// water it crossed (Beer–Lambert).
+fn trace_water(origin: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
+    var t = max(box.y, 0.0);
+    var colour: vec3<f32>;
+    let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
+    if (ts < t) {
+        t = ts;
+        colour = sphere_colour(origin + dir * t);
+    } else {
+        let hit = origin + dir * t;
+        colour = pool_colour_at_hit(hit);
+    }
+    return colour * exp(-WATER_ABSORPTION * water_path(origin, origin + dir * t, w, depth()));
+}
+
+// What a ray starting at the surface and going up through air sees: the sphere, the pool
+// walls above the water line, or the sky.
+fn trace_air(origin: vec3<f32>, dir_in: vec3<f32>) -> vec3<f32> {
+    // A reflection that still points down (steep waves) is folded back up.
+    let dir = normalize(vec3<f32>(dir_in.x, abs(dir_in.y), dir_in.z));
+    let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
+    let w = half_width();
+    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
+    let t = max(box.y, 0.0);
+    if (ts < t) {
+        return sphere_colour(origin + dir * ts);
+    }
+    let hit = origin + dir * t;
+    if (hit.y < rim() - 1.0e-3) {
+        return pool_colour_at_hit(hit);
+    }
+    return sky_colour(dir);
+}
+
+// Final colour written to the target: clamp, and encode sRGB when the target format
+// does not do it in hardware (WebGPU canvases are plain 8-bit UNORM).
+fn finish(c: vec3<f32>) -> vec4<f32> {
+    let clamped = clamp(c, vec3<f32>(0.0), vec3<f32>(1.0));
+    if (scene.output.x > 0.5) {
+        return vec4<f32>(linear_to_srgb(clamped), 1.0);
+    }
+    return vec4<f32>(clamped, 1.0);
+}

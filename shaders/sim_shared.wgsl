@@ -1,0 +1,28 @@
+// Bindings and cell addressing shared by the simulation passes. The state texture holds,
+// per cell: (height above rest h in m, vertical velocity v in m/s, normal.x, normal.z).
+// Cells are N x N over the pool's square; texel i sits at x = -W + (i + 0.5) * dx.
+
+struct Sim {
+    grid: vec4<f32>,        // x N, y 1/N, z cell size dx (m), w pool half width W (m)
+    step: vec4<f32>,        // x dt (s), y c^2 dt / dx^2 (1/s), z velocity damping per step exp(-k dt)
+    drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
+    drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
+};
+
+@group(0) @binding(0) var<uniform> sim: Sim;
+@group(0) @binding(1) var state: texture_2d<f32>;
+
+// Cell value with clamped addressing: a cell beyond the wall mirrors the edge cell,
+// which makes the walls reflecting (zero normal gradient).
+fn cell(p: vec2<i32>) -> vec4<f32> {
+    let n = i32(sim.grid.x);
+    return textureLoad(state, clamp(p, vec2<i32>(0), vec2<i32>(n - 1)), 0);
+}
+
+fn cell_centre(p: vec2<i32>) -> vec2<f32> {
+    return ((vec2<f32>(p) + 0.5) * sim.grid.y * 2.0 - 1.0) * sim.grid.w;
+}
+
+fn texel(position: vec4<f32>) -> vec2<i32> {
+    return vec2<i32>(floor(position.xy));
+}

@@ -1,0 +1,213 @@
+//! The orbit camera and picking: which thing in the scene lies under a screen point.
+
+use glam::{Mat4, Vec2, Vec3, Vec4};
+
+use crate::scene::{Sphere, HALF_WIDTH};
+
+/// A camera circling a target point at a distance, looking at it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrbitCamera {
+    /// Angle around the vertical axis (degrees).
+    pub yaw: f32,
+    /// Angle above the horizontal (degrees); negative looks from below the water.
+    pub pitch: f32,
+    /// Distance from the target (m).
+    pub distance: f32,
+    /// Point looked at (m).
+    pub target: Vec3,
+    /// Vertical field of view (degrees).
+    pub fov_y: f32,
+}
+
+pub const PITCH_RANGE: (f32, f32) = (-89.0, 89.0);
+pub const DISTANCE_RANGE: (f32, f32) = (1.5, 12.0);
+
+impl Default for OrbitCamera {
+    fn default() -> Self {
+        Self {
+            yaw: -25.0,
+            pitch: 32.0,
+            distance: 4.2,
+            target: Vec3::new(0.0, -0.3, 0.0),
+            fov_y: 45.0,
+        }
+    }
+}
+
+/// A ray from the eye, direction unit length.
+#[derive(Clone, Copy, Debug)]
+pub struct Ray {
+    pub origin: Vec3,
+    pub dir: Vec3,
+}
+
+/// What lies under a screen point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pick {
+    /// The water surface (at rest level) at pool coordinates x, z (m).
+    Water {
+        x: f32,
+        z: f32,
+    },
+    /// The sphere, hit at this point (m).
+    Sphere {
+        hit: Vec3,
+    },
+    Nothing,
+}
+
+impl OrbitCamera {
+    /// Clamps pitch and distance into their ranges, wraps yaw.
+    pub fn clamp(&mut self) {
+        self.pitch = self.pitch.clamp(PITCH_RANGE.0, PITCH_RANGE.1);
+        self.distance = self.distance.clamp(DISTANCE_RANGE.0, DISTANCE_RANGE.1);
+        if !self.yaw.is_finite() {
+            self.yaw = 0.0;
+        }
+        self.yaw = (self.yaw + 180.0).rem_euclid(360.0) - 180.0;
+    }
+
+    /// Rotates by a drag of (dx, dy) pixels.
+    pub fn orbit(&mut self, dx: f32, dy: f32) {
+        self.yaw -= dx * 0.4;
+        self.pitch += dy * 0.4;
+        self.clamp();
+    }
+
+    /// Zooms by a factor (> 1 moves away).
+    pub fn zoom(&mut self, factor: f32) {
+        if factor.is_finite() && factor > 0.0 {
+            self.distance *= factor;
+        }
+        self.clamp();
+    }
+
+    /// Unit vector from the target towards the eye.
+    pub fn back(&self) -> Vec3 {
+        let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
+        Vec3::new(
+            pitch.cos() * yaw.sin(),
+            pitch.sin(),
+            pitch.cos() * yaw.cos(),
+        )
+    }
+
+    pub fn eye(&self) -> Vec3 {
+        self.target + self.back() * self.distance
+    }
+
+    pub fn view(&self) -> Mat4 {
+        Mat4::look_at_rh(self.eye(), self.target, Vec3::Y)
+    }
+
+    pub fn projection(&self, aspect: f32) -> Mat4 {
+        Mat4::perspective_rh(self.fov_y.to_radians(), aspect.max(1e-3), 0.05, 100.0)
+    }
+
+    pub fn view_projection(&self, aspect: f32) -> Mat4 {
+        self.projection(aspect) * self.view()
+    }
+
+    /// The ray through pixel (x, y) of a viewport of `size` pixels (y down).
+    pub fn ray(&self, pixel: Vec2, size: Vec2) -> Ray {
+        let ndc = Vec2::new(pixel.x / size.x * 2.0 - 1.0, 1.0 - pixel.y / size.y * 2.0);
+        let inv = self.view_projection(size.x / size.y).inverse();
+        let near = inv * Vec4::new(ndc.x, ndc.y, 0.0, 1.0);
+        let far = inv * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
+        let near = near.truncate() / near.w;
+        let far = far.truncate() / far.w;
+        Ray {
+            origin: self.eye(),
+            dir: (far - near).normalize(),
+        }
+    }
+
+    /// What is under pixel (x, y): the sphere if present and hit, else the water
+    /// surface inside the pool, else nothing.
+    pub fn pick(&self, pixel: Vec2, size: Vec2, sphere: Option<&Sphere>) -> Pick {
+        let ray = self.ray(pixel, size);
+        let water_t = if ray.dir.y.abs() > 1e-6 {
+            -ray.origin.y / ray.dir.y
+        } else {
+            f32::INFINITY
+        };
+        if let Some(s) = sphere {
+            // The sphere wins wherever it is seen, even through the water.
+            if let Some(t) = ray_sphere(&ray, s.centre, s.radius) {
+                return Pick::Sphere {
+                    hit: ray.origin + ray.dir * t,
+                };
+            }
+        }
+        if water_t > 0.0 && water_t.is_finite() {
+            let p = ray.origin + ray.dir * water_t;
+            if p.x.abs() <= HALF_WIDTH && p.z.abs() <= HALF_WIDTH {
+                return Pick::Water { x: p.x, z: p.z };
+            }
+        }
+        Pick::Nothing
+    }
+}
+
+/// Distance along the ray to the first hit of a sphere, if any.
+pub fn ray_sphere(ray: &Ray, centre: Vec3, radius: f32) -> Option<f32> {
+    let oc = ray.origin - centre;
+    let b = oc.dot(ray.dir);
+    let c = oc.dot(oc) - radius * radius;
+    let disc = b * b - c;
+    if disc < 0.0 {
+        return None;
+    }
+    let t = -b - disc.sqrt();
+    (t > 0.0).then_some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn centre_pixel_looks_at_target() {
+        let cam = OrbitCamera::default();
+        let ray = cam.ray(Vec2::new(400.0, 300.0), Vec2::new(800.0, 600.0));
+        let to_target = (cam.target - cam.eye()).normalize();
+        assert!(ray.dir.dot(to_target) > 0.9999);
+    }
+
+    #[test]
+    fn pick_finds_water_sphere_and_nothing() {
+        let cam = OrbitCamera {
+            yaw: 0.0,
+            pitch: 60.0,
+            distance: 4.0,
+            target: Vec3::ZERO,
+            fov_y: 45.0,
+        };
+        let size = Vec2::new(800.0, 600.0);
+        let sphere = Sphere {
+            centre: Vec3::new(0.0, 0.0, 0.0),
+            radius: 0.25,
+        };
+        assert!(matches!(
+            cam.pick(Vec2::new(400.0, 300.0), size, Some(&sphere)),
+            Pick::Sphere { .. }
+        ));
+        match cam.pick(Vec2::new(400.0, 300.0), size, None) {
+            Pick::Water { x, z } => assert!(x.abs() < 1e-3 && z.abs() < 1e-3),
+            other => panic!("expected water, got {other:?}"),
+        }
+        // The top-left corner looks past the pool into the sky.
+        assert_eq!(cam.pick(Vec2::new(0.0, 0.0), size, None), Pick::Nothing);
+    }
+
+    #[test]
+    fn clamps_hold() {
+        let mut cam = OrbitCamera::default();
+        cam.orbit(0.0, 1.0e6);
+        assert_eq!(cam.pitch, PITCH_RANGE.1);
+        cam.zoom(1.0e9);
+        assert_eq!(cam.distance, DISTANCE_RANGE.1);
+        cam.zoom(f32::NAN);
+        assert_eq!(cam.distance, DISTANCE_RANGE.1);
+    }
+}

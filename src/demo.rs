@@ -1,0 +1,359 @@
+//! The platform-free core of the demo: parameters, camera, water, sphere and renderer, driven
+//! by a small input API (pointer in pixels, keys, frame time). The browser and native shells
+//! only forward events to it and hand it a target to draw into.
+
+use glam::{Vec2, Vec3};
+
+use crate::camera::{OrbitCamera, Pick};
+use crate::params::{ParamId, Params};
+use crate::render::{RenderSettings, Renderer, View};
+use crate::scene::{self, Sphere};
+use crate::sim::{Drop, FixedStep, HeightField, WaveSettings};
+
+/// Simulated seconds per step.
+pub const STEP_DT: f32 = 1.0 / 120.0;
+/// Most steps one frame may take (a frame longer than this many steps drops the rest).
+pub const MAX_STEPS_PER_FRAME: u32 = 8;
+
+/// Choices fixed when the demo is created.
+#[derive(Clone, Copy, Debug)]
+pub struct DemoOptions {
+    /// Simulation cells per side.
+    pub sim_size: u32,
+    /// Caustics map texels per side.
+    pub caustics_size: u32,
+}
+
+impl Default for DemoOptions {
+    fn default() -> Self {
+        Self {
+            sim_size: 256,
+            caustics_size: 1024,
+        }
+    }
+}
+
+/// Keys the core understands; shells map their key events to these.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Key {
+    /// Pause or resume the water.
+    Space,
+    /// Put the sun behind the camera.
+    L,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Drag {
+    None,
+    Orbit {
+        last: Vec2,
+    },
+    Water {
+        last: Vec2,
+    },
+    Sphere {
+        offset: Vec3,
+        plane_normal: Vec3,
+        plane_point: Vec3,
+    },
+}
+
+/// Stages of a frame, for timing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    Start,
+    AfterSimulation,
+    AfterCaustics,
+    AfterScene,
+}
+
+pub struct WaterDemo {
+    pub params: Params,
+    pub camera: OrbitCamera,
+    sphere_centre: Vec3,
+    water: HeightField,
+    renderer: Renderer,
+    clock: FixedStep,
+    viewport: Vec2,
+    drag: Drag,
+    /// Simulated time so far (s).
+    sim_time: f64,
+}
+
+impl WaterDemo {
+    /// Creates the demo for colour targets of `target_format`.
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        target_format: wgpu::TextureFormat,
+        options: DemoOptions,
+    ) -> Self {
+        let water = HeightField::new(device, options.sim_size, scene::HALF_WIDTH);
+        let renderer = Renderer::new(
+            device,
+            queue,
+            RenderSettings {
+                target_format,
+                caustics_size: options.caustics_size,
+            },
+            &water,
+        );
+        Self {
+            params: Params::default(),
+            camera: OrbitCamera::default(),
+            sphere_centre: Vec3::new(-0.35, -0.45, 0.3),
+            water,
+            renderer,
+            clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
+            viewport: Vec2::new(800.0, 600.0),
+            drag: Drag::None,
+            sim_time: 0.0,
+        }
+    }
+
+    pub fn water(&self) -> &HeightField {
+        &self.water
+    }
+
+    pub fn renderer(&self) -> &Renderer {
+        &self.renderer
+    }
+
+    /// Simulated time so far (s).
+    pub fn sim_time(&self) -> f64 {
+        self.sim_time
+    }
+
+    /// The sphere, if shown.
+    pub fn sphere(&self) -> Option<Sphere> {
+        self.params.flag(ParamId::Sphere).then(|| {
+            let mut s = Sphere {
+                centre: self.sphere_centre,
+                radius: self.params.get(ParamId::SphereRadius),
+            };
+            s.clamp_to_pool();
+            s
+        })
+    }
+
+    pub fn set_sphere_centre(&mut self, centre: Vec3) {
+        if centre.is_finite() {
+            let mut s = Sphere {
+                centre,
+                radius: self.params.get(ParamId::SphereRadius),
+            };
+            s.clamp_to_pool();
+            self.sphere_centre = s.centre;
+        }
+    }
+
+    /// Unit vector towards the sun.
+    pub fn sun(&self) -> Vec3 {
+        scene::sun_direction(
+            self.params.get(ParamId::SunAzimuth),
+            self.params.get(ParamId::SunElevation),
+        )
+    }
+
+    /// Sets the size (pixels) of the viewport that pointer coordinates refer to.
+    pub fn set_viewport(&mut self, width: u32, height: u32) {
+        self.viewport = Vec2::new(width.max(1) as f32, height.max(1) as f32);
+    }
+
+    /// Queues a drop at pool coordinates (m) with radius (m) and strength (m); values are
+    /// clamped into the parameter ranges.
+    pub fn add_drop(&mut self, x: f32, z: f32, radius: f32, strength: f32) {
+        let r = crate::params::spec(ParamId::DropRadius).sanitise(radius);
+        let s = crate::params::spec(ParamId::DropStrength).sanitise(strength);
+        let w = scene::HALF_WIDTH;
+        if x.is_finite() && z.is_finite() {
+            self.water.add_drop(Drop {
+                x: x.clamp(-w, w),
+                z: z.clamp(-w, w),
+                radius: r,
+                strength: s,
+            });
+        }
+    }
+
+    /// A drop with the current radius and strength parameters.
+    fn click_drop(&mut self, x: f32, z: f32) {
+        self.add_drop(
+            x,
+            z,
+            self.params.get(ParamId::DropRadius),
+            self.params.get(ParamId::DropStrength),
+        );
+    }
+
+    pub fn pick(&self, pixel: Vec2) -> Pick {
+        self.camera
+            .pick(pixel, self.viewport, self.sphere().as_ref())
+    }
+
+    /// Pointer pressed at pixel (x, y): on the sphere starts moving it, on the water
+    /// starts drawing ripples, elsewhere starts orbiting.
+    pub fn pointer_down(&mut self, x: f32, y: f32) {
+        let p = Vec2::new(x, y);
+        self.drag = match self.pick(p) {
+            Pick::Sphere { hit } => {
+                let centre = self.sphere().map_or(hit, |s| s.centre);
+                let plane_normal = (self.camera.eye() - hit).normalize();
+                Drag::Sphere {
+                    offset: centre - hit,
+                    plane_normal,
+                    plane_point: hit,
+                }
+            }
+            Pick::Water { x, z } => {
+                self.click_drop(x, z);
+                Drag::Water { last: p }
+            }
+            Pick::Nothing => Drag::Orbit { last: p },
+        };
+    }
+
+    pub fn pointer_move(&mut self, x: f32, y: f32) {
+        let p = Vec2::new(x, y);
+        match self.drag {
+            Drag::None => {}
+            Drag::Orbit { last } => {
+                let d = p - last;
+                self.camera.orbit(d.x, d.y);
+                self.drag = Drag::Orbit { last: p };
+            }
+            Drag::Water { last } => {
+                // Drops along the stroke, about one per drop radius, so fast drags draw lines.
+                let from = self.camera.pick(last, self.viewport, None);
+                let to = self.camera.pick(p, self.viewport, None);
+                if let (Pick::Water { x: x0, z: z0 }, Pick::Water { x: x1, z: z1 }) = (from, to) {
+                    let r = self.params.get(ParamId::DropRadius);
+                    let length = Vec2::new(x1 - x0, z1 - z0).length();
+                    let count = ((length / r).ceil() as u32).clamp(1, 16);
+                    for i in 1..=count {
+                        let t = i as f32 / count as f32;
+                        self.click_drop(x0 + (x1 - x0) * t, z0 + (z1 - z0) * t);
+                    }
+                } else if let Pick::Water { x, z } = to {
+                    self.click_drop(x, z);
+                }
+                self.drag = Drag::Water { last: p };
+            }
+            Drag::Sphere {
+                offset,
+                plane_normal,
+                plane_point,
+            } => {
+                let ray = self.camera.ray(p, self.viewport);
+                let denom = ray.dir.dot(plane_normal);
+                if denom.abs() > 1e-5 {
+                    let t = (plane_point - ray.origin).dot(plane_normal) / denom;
+                    if t > 0.0 {
+                        self.set_sphere_centre(ray.origin + ray.dir * t + offset);
+                    }
+                }
+            }
+        }
+    }
+
+    pub fn pointer_up(&mut self) {
+        self.drag = Drag::None;
+    }
+
+    /// Mouse wheel or pinch: positive moves the camera away.
+    pub fn zoom(&mut self, amount: f32) {
+        self.camera.zoom((amount * 0.1).clamp(-2.0, 2.0).exp());
+    }
+
+    pub fn key(&mut self, key: Key) {
+        match key {
+            Key::Space => {
+                let paused = self.params.flag(ParamId::Paused);
+                self.params
+                    .set(ParamId::Paused, if paused { 0.0 } else { 1.0 });
+            }
+            Key::L => {
+                let (azimuth, elevation) = scene::direction_angles(self.camera.back());
+                self.params.set(ParamId::SunAzimuth, azimuth);
+                self.params.set(ParamId::SunElevation, elevation);
+            }
+        }
+    }
+
+    /// Flattens the water.
+    pub fn reset_water(&mut self, queue: &wgpu::Queue) {
+        self.water.reset(queue);
+    }
+
+    fn view(&self) -> View {
+        View {
+            view_proj: self
+                .camera
+                .view_projection(self.viewport.x / self.viewport.y),
+            eye: self.camera.eye(),
+            sun: self.sun(),
+            sphere: self.sphere(),
+            caustics: self.params.flag(ParamId::Caustics),
+        }
+    }
+
+    /// Advances the water by `frame_time` seconds (in fixed steps) and draws into `target`
+    /// of `size` pixels, all in one submission.
+    pub fn frame(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        frame_time: f32,
+    ) {
+        let mut encoder = device.create_command_encoder(&Default::default());
+        self.encode_frame(
+            device,
+            queue,
+            &mut encoder,
+            target,
+            size,
+            frame_time,
+            &mut |_, _| {},
+        );
+        queue.submit([encoder.finish()]);
+    }
+
+    /// Records a frame into `encoder`; `mark` is called at each [`Stage`] boundary (for
+    /// timestamps). Writes uniform buffers, so submit before encoding another frame.
+    #[allow(clippy::too_many_arguments)]
+    pub fn encode_frame(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        frame_time: f32,
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
+    ) {
+        self.set_viewport(size.0, size.1);
+        let steps = if self.params.flag(ParamId::Paused) {
+            self.clock.advance(0.0);
+            0
+        } else {
+            self.clock.advance(frame_time)
+        };
+        self.sim_time += (steps as f64) * STEP_DT as f64;
+        let settings = WaveSettings {
+            wave_speed: self.params.get(ParamId::WaveSpeed),
+            damping: self.params.get(ParamId::Damping),
+        };
+        mark(encoder, Stage::Start);
+        self.water.encode(queue, encoder, steps, STEP_DT, settings);
+        mark(encoder, Stage::AfterSimulation);
+        let view = self.view();
+        self.renderer.prepare(queue, encoder, &view, &self.water);
+        self.renderer.encode_caustics(encoder, &view, &self.water);
+        mark(encoder, Stage::AfterCaustics);
+        self.renderer
+            .encode_scene(device, encoder, target, size, &view, &self.water);
+        mark(encoder, Stage::AfterScene);
+    }
+}

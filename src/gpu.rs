@@ -1,0 +1,339 @@
+//! GPU plumbing shared by every pass: WGSL assembly, the one full-screen pass helper,
+//! the one ping-pong texture pair, bind-group layout shorthands and texture readback.
+
+use wgpu::util::DeviceExt;
+
+/// WGSL sources, kept in `shaders/`. Passes are assembled from shared parts because WGSL
+/// has no include.
+pub mod wgsl {
+    pub const COMMON: &str = include_str!("../shaders/common.wgsl");
+    pub const FULLSCREEN: &str = include_str!("../shaders/fullscreen.wgsl");
+    pub const SCENE: &str = include_str!("../shaders/scene.wgsl");
+    pub const SKY: &str = include_str!("../shaders/sky.wgsl");
+    pub const SKY_CUBE: &str = include_str!("../shaders/sky_cube.wgsl");
+    pub const POOL: &str = include_str!("../shaders/pool.wgsl");
+    pub const SPHERE: &str = include_str!("../shaders/sphere.wgsl");
+    pub const WATER: &str = include_str!("../shaders/water.wgsl");
+    pub const CAUSTICS: &str = include_str!("../shaders/caustics.wgsl");
+    pub const SIM_SHARED: &str = include_str!("../shaders/sim_shared.wgsl");
+    pub const SIM_DROP: &str = include_str!("../shaders/sim_drop.wgsl");
+    pub const SIM_UPDATE: &str = include_str!("../shaders/sim_update.wgsl");
+    pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
+}
+
+/// Compiles a shader module from WGSL parts, concatenated in order.
+pub fn shader(device: &wgpu::Device, label: &str, parts: &[&str]) -> wgpu::ShaderModule {
+    let source = parts.join("\n");
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    })
+}
+
+pub fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
+pub fn texture_entry(
+    binding: u32,
+    visibility: wgpu::ShaderStages,
+    sample_type: wgpu::TextureSampleType,
+    view_dimension: wgpu::TextureViewDimension,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Texture {
+            sample_type,
+            view_dimension,
+            multisampled: false,
+        },
+        count: None,
+    }
+}
+
+pub fn sampler_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+        count: None,
+    }
+}
+
+pub fn uniform_buffer<T: bytemuck::Pod>(
+    device: &wgpu::Device,
+    label: &str,
+    value: &T,
+) -> wgpu::Buffer {
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some(label),
+        contents: bytemuck::bytes_of(value),
+        usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+    })
+}
+
+pub fn pipeline_layout(
+    device: &wgpu::Device,
+    label: &str,
+    layouts: &[&wgpu::BindGroupLayout],
+) -> wgpu::PipelineLayout {
+    let layouts: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(|l| Some(*l)).collect();
+    device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(label),
+        bind_group_layouts: &layouts,
+        immediate_size: 0,
+    })
+}
+
+/// A pass that shades every pixel of its target with one fragment shader: the simulation
+/// steps, the sky background and the sky cubemap faces are all of this kind.
+pub struct FullscreenPass {
+    pipeline: wgpu::RenderPipeline,
+    label: String,
+}
+
+/// How a full-screen pass writes its target.
+pub struct FullscreenTarget {
+    pub format: wgpu::TextureFormat,
+    pub blend: Option<wgpu::BlendState>,
+    /// Depth format of the render pass it is drawn in, if any (the pass neither tests nor writes depth).
+    pub depth: Option<wgpu::TextureFormat>,
+}
+
+impl FullscreenPass {
+    /// `parts` are the WGSL sources besides the shared full-screen vertex shader;
+    /// `entry` is the fragment entry point.
+    pub fn new(
+        device: &wgpu::Device,
+        label: &str,
+        parts: &[&str],
+        entry: &str,
+        layouts: &[&wgpu::BindGroupLayout],
+        target: FullscreenTarget,
+    ) -> Self {
+        let mut all = vec![wgsl::COMMON, wgsl::FULLSCREEN];
+        all.extend_from_slice(parts);
+        let module = shader(device, label, &all);
+        let layout = pipeline_layout(device, label, layouts);
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(label),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_fullscreen"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: target.depth.map(|format| wgpu::DepthStencilState {
+                format,
+                depth_write_enabled: Some(false),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: target.format,
+                    blend: target.blend,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self {
+            pipeline,
+            label: label.to_owned(),
+        }
+    }
+
+    /// Draws into an already open render pass.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>, bind_groups: &[&wgpu::BindGroup]) {
+        pass.set_pipeline(&self.pipeline);
+        for (i, group) in bind_groups.iter().enumerate() {
+            pass.set_bind_group(i as u32, Some(*group), &[]);
+        }
+        pass.draw(0..3, 0..1);
+    }
+
+    /// Opens a render pass on `target`, overwriting it, and draws.
+    pub fn run(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        bind_groups: &[&wgpu::BindGroup],
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(&self.label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        self.draw(&mut pass, bind_groups);
+    }
+}
+
+/// Two textures of the same size and format: passes read one and write the other, then
+/// swap, so no pass reads what it writes.
+pub struct PingPong {
+    textures: [wgpu::Texture; 2],
+    views: [wgpu::TextureView; 2],
+    current: usize,
+}
+
+impl PingPong {
+    pub fn new(
+        device: &wgpu::Device,
+        label: &str,
+        width: u32,
+        height: u32,
+        format: wgpu::TextureFormat,
+    ) -> Self {
+        let make = |i: usize| {
+            device.create_texture(&wgpu::TextureDescriptor {
+                label: Some(&format!("{label} {i}")),
+                size: wgpu::Extent3d {
+                    width,
+                    height,
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                    | wgpu::TextureUsages::TEXTURE_BINDING
+                    | wgpu::TextureUsages::COPY_SRC
+                    | wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            })
+        };
+        let textures = [make(0), make(1)];
+        let views = [
+            textures[0].create_view(&Default::default()),
+            textures[1].create_view(&Default::default()),
+        ];
+        Self {
+            textures,
+            views,
+            current: 0,
+        }
+    }
+
+    /// Index (0 or 1) of the texture that holds the latest state.
+    pub fn current(&self) -> usize {
+        self.current
+    }
+
+    pub fn current_texture(&self) -> &wgpu::Texture {
+        &self.textures[self.current]
+    }
+
+    pub fn textures(&self) -> &[wgpu::Texture; 2] {
+        &self.textures
+    }
+
+    /// One bind group per texture, built by `make` from that texture's view; pass the
+    /// result to [`PingPong::run`], which picks the one that reads the current state.
+    pub fn bind_groups(
+        &self,
+        make: impl Fn(&wgpu::TextureView) -> wgpu::BindGroup,
+    ) -> [wgpu::BindGroup; 2] {
+        [make(&self.views[0]), make(&self.views[1])]
+    }
+
+    /// Runs `pass` reading the current texture (through `groups[current]`) and writing the
+    /// other, then makes the written one current.
+    pub fn run(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        pass: &FullscreenPass,
+        groups: &[wgpu::BindGroup; 2],
+    ) {
+        let next = 1 - self.current;
+        pass.run(encoder, &self.views[next], &[&groups[self.current]]);
+        self.current = next;
+    }
+}
+
+/// Copies a whole 2-D texture (mip 0, layer 0) back to the CPU, rows unpadded.
+/// Blocking: for tests, the CLI and benchmarks, never for the frame path.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn read_texture(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &wgpu::Texture,
+) -> Vec<u8> {
+    let width = texture.width();
+    let height = texture.height();
+    let bytes_per_pixel = texture
+        .format()
+        .block_copy_size(None)
+        .expect("colour format");
+    let row = width * bytes_per_pixel;
+    let padded =
+        row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback"),
+        size: (padded * height) as u64,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded),
+                rows_per_image: Some(height),
+            },
+        },
+        wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+    );
+    queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |r| r.expect("map readback buffer"));
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .expect("device poll");
+    let data = slice.get_mapped_range().expect("mapped readback range");
+    let mut out = Vec::with_capacity((row * height) as usize);
+    for y in 0..height as usize {
+        let start = y * padded as usize;
+        out.extend_from_slice(&data[start..start + row as usize]);
+    }
+    drop(data);
+    buffer.unmap();
+    out
+}

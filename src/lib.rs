@@ -1,0 +1,16 @@
+//! wavepool: an interactive water pool. A heightfield wave simulation on the GPU, a
+//! ray-traced pool with caustics, an orbit camera, and a platform-free core that the
+//! browser and native shells drive.
+
+pub mod camera;
+pub mod demo;
+pub mod gpu;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod headless;
+pub mod params;
+pub mod render;
+pub mod scene;
+pub mod sim;
+pub mod textures;
+
+pub use demo::{DemoOptions, Key, WaterDemo};

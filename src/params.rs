@@ -1,0 +1,316 @@
+//! The one table of user-facing parameters: name, label, group, unit, range, step and
+//! default. The HTML controls, the egui panel, URL options, the CLI and the tests all read
+//! it, so they cannot drift apart. Values are stored as `f32`; toggles are 0 or 1.
+
+use std::fmt;
+
+/// Identifies a parameter; its discriminant is its index in [`PARAMS`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ParamId {
+    WaveSpeed,
+    Damping,
+    DropRadius,
+    DropStrength,
+    SunAzimuth,
+    SunElevation,
+    Caustics,
+    Sphere,
+    SphereRadius,
+    Paused,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Control {
+    Slider { min: f32, max: f32, step: f32 },
+    Toggle,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct ParamSpec {
+    pub id: ParamId,
+    /// Stable machine name used in URLs, `set(name, value)` and the CLI.
+    pub name: &'static str,
+    pub label: &'static str,
+    pub group: &'static str,
+    /// Unit symbol shown after the value ("m/s", "1/s", "m", "°"), empty when unitless.
+    pub unit: &'static str,
+    pub control: Control,
+    pub default: f32,
+    pub help: &'static str,
+}
+
+impl ParamSpec {
+    pub fn min(&self) -> f32 {
+        match self.control {
+            Control::Slider { min, .. } => min,
+            Control::Toggle => 0.0,
+        }
+    }
+
+    pub fn max(&self) -> f32 {
+        match self.control {
+            Control::Slider { max, .. } => max,
+            Control::Toggle => 1.0,
+        }
+    }
+
+    /// The nearest valid value: clamped to the range; toggles snap to 0 or 1; NaN gives the default.
+    pub fn sanitise(&self, value: f32) -> f32 {
+        if value.is_nan() {
+            return self.default;
+        }
+        match self.control {
+            Control::Slider { min, max, .. } => value.clamp(min, max),
+            Control::Toggle => {
+                if value >= 0.5 {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
+        }
+    }
+}
+
+const fn slider(min: f32, max: f32, step: f32) -> Control {
+    Control::Slider { min, max, step }
+}
+
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        id: ParamId::WaveSpeed,
+        name: "wave_speed",
+        label: "Wave speed",
+        group: "Water",
+        unit: "m/s",
+        control: slider(0.1, 2.0, 0.05),
+        default: 0.6,
+        help: "Speed c of ripples in the wave equation h_tt = c² ∇²h.",
+    },
+    ParamSpec {
+        id: ParamId::Damping,
+        name: "damping",
+        label: "Damping",
+        group: "Water",
+        unit: "1/s",
+        control: slider(0.0, 5.0, 0.05),
+        default: 0.5,
+        help: "Rate k at which waves lose energy (amplitude decays as exp(-k t / 2)).",
+    },
+    ParamSpec {
+        id: ParamId::DropRadius,
+        name: "drop_radius",
+        label: "Drop radius",
+        group: "Drops",
+        unit: "m",
+        control: slider(0.01, 0.3, 0.005),
+        default: 0.04,
+        help: "Radius of the cosine bump a click or drag adds.",
+    },
+    ParamSpec {
+        id: ParamId::DropStrength,
+        name: "drop_strength",
+        label: "Drop strength",
+        group: "Drops",
+        unit: "m",
+        control: slider(-0.05, 0.05, 0.001),
+        default: 0.012,
+        help: "Height of the bump at its centre (negative pushes the water down).",
+    },
+    ParamSpec {
+        id: ParamId::SunAzimuth,
+        name: "sun_azimuth",
+        label: "Sun azimuth",
+        group: "Light",
+        unit: "°",
+        control: slider(-180.0, 180.0, 1.0),
+        default: 35.0,
+        help: "Compass direction of the sun around the pool.",
+    },
+    ParamSpec {
+        id: ParamId::SunElevation,
+        name: "sun_elevation",
+        label: "Sun elevation",
+        group: "Light",
+        unit: "°",
+        control: slider(10.0, 90.0, 1.0),
+        default: 55.0,
+        help: "Height of the sun above the horizon.",
+    },
+    ParamSpec {
+        id: ParamId::Caustics,
+        name: "caustics",
+        label: "Caustics",
+        group: "Light",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "Light focused by the waves onto the floor, walls and sphere.",
+    },
+    ParamSpec {
+        id: ParamId::Sphere,
+        name: "sphere",
+        label: "Sphere",
+        group: "Objects",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "Show the sphere in the pool.",
+    },
+    ParamSpec {
+        id: ParamId::SphereRadius,
+        name: "sphere_radius",
+        label: "Sphere radius",
+        group: "Objects",
+        unit: "m",
+        control: slider(0.1, 0.4, 0.01),
+        default: 0.25,
+        help: "Radius of the sphere.",
+    },
+    ParamSpec {
+        id: ParamId::Paused,
+        name: "paused",
+        label: "Paused",
+        group: "Simulation",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "Freeze the water (space bar).",
+    },
+];
+
+pub fn spec(id: ParamId) -> &'static ParamSpec {
+    &PARAMS[id as usize]
+}
+
+pub fn find(name: &str) -> Option<&'static ParamSpec> {
+    PARAMS.iter().find(|p| p.name == name)
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamError {
+    Unknown(String),
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParamError::Unknown(name) => {
+                let names: Vec<&str> = PARAMS.iter().map(|p| p.name).collect();
+                write!(f, "unknown parameter '{name}'; known: {}", names.join(", "))
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// What `set` did with a value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SetOutcome {
+    /// The value now in effect.
+    pub value: f32,
+    /// True when the requested value was out of range (or NaN) and was replaced.
+    pub clamped: bool,
+}
+
+/// Current values of every parameter in [`PARAMS`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Params {
+    values: Vec<f32>,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Self {
+            values: PARAMS.iter().map(|p| p.default).collect(),
+        }
+    }
+}
+
+impl Params {
+    pub fn get(&self, id: ParamId) -> f32 {
+        self.values[id as usize]
+    }
+
+    pub fn flag(&self, id: ParamId) -> bool {
+        self.get(id) >= 0.5
+    }
+
+    /// Sets a value, clamping it into range.
+    pub fn set(&mut self, id: ParamId, value: f32) -> SetOutcome {
+        let spec = spec(id);
+        let clean = spec.sanitise(value);
+        self.values[id as usize] = clean;
+        SetOutcome {
+            value: clean,
+            clamped: clean != value,
+        }
+    }
+
+    pub fn get_by_name(&self, name: &str) -> Result<f32, ParamError> {
+        find(name)
+            .map(|s| self.get(s.id))
+            .ok_or_else(|| ParamError::Unknown(name.to_owned()))
+    }
+
+    pub fn set_by_name(&mut self, name: &str, value: f32) -> Result<SetOutcome, ParamError> {
+        let spec = find(name).ok_or_else(|| ParamError::Unknown(name.to_owned()))?;
+        Ok(self.set(spec.id, value))
+    }
+
+    pub fn reset(&mut self, id: ParamId) {
+        self.values[id as usize] = spec(id).default;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_is_indexed_by_id_and_defaults_are_in_range() {
+        for (i, p) in PARAMS.iter().enumerate() {
+            assert_eq!(p.id as usize, i, "{} out of place", p.name);
+            assert_eq!(
+                p.sanitise(p.default),
+                p.default,
+                "{} default out of range",
+                p.name
+            );
+            assert!(p.min() < p.max());
+        }
+        let mut names: Vec<_> = PARAMS.iter().map(|p| p.name).collect();
+        names.sort();
+        names.dedup();
+        assert_eq!(names.len(), PARAMS.len(), "parameter names must be unique");
+    }
+
+    #[test]
+    fn out_of_range_values_are_clamped_and_reported() {
+        let mut params = Params::default();
+        let out = params.set_by_name("wave_speed", 99.0).unwrap();
+        assert_eq!(
+            out,
+            SetOutcome {
+                value: 2.0,
+                clamped: true
+            }
+        );
+        assert_eq!(params.get(ParamId::WaveSpeed), 2.0);
+        let out = params.set_by_name("damping", f32::NAN).unwrap();
+        assert!(out.clamped);
+        assert_eq!(out.value, spec(ParamId::Damping).default);
+        let out = params.set_by_name("caustics", 0.2).unwrap();
+        assert_eq!(out.value, 0.0);
+        assert!(matches!(
+            params.set_by_name("nope", 1.0),
+            Err(ParamError::Unknown(_))
+        ));
+        assert!(params
+            .get_by_name("nope")
+            .unwrap_err()
+            .to_string()
+            .contains("wave_speed"));
+    }
+}

@@ -1,0 +1,380 @@
+//! The water: a heightfield on the GPU advanced by the damped 2-D wave equation in
+//! full-screen fragment passes (so WebGL2, without compute shaders, runs the same code).
+//! State per cell: height above rest (m), vertical velocity (m/s), normal x and z.
+
+use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
+
+/// Format of the state textures: 32-bit floats, read with `textureLoad` only (no filtering).
+pub const STATE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+/// Drops the drop pass applies at once; more wait for the next frame.
+pub const MAX_DROPS_PER_PASS: usize = 32;
+/// Largest Courant number c dt / dx a step may use; the 2-D scheme is stable up to 1/sqrt(2).
+pub const MAX_COURANT: f32 = 0.6;
+
+/// A drop: a smooth cosine bump, zero-mean corrected over the pool.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Drop {
+    /// Centre (m).
+    pub x: f32,
+    pub z: f32,
+    /// Radius (m).
+    pub radius: f32,
+    /// Height of the bump's centre (m); negative dips.
+    pub strength: f32,
+}
+
+/// Physical settings of a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WaveSettings {
+    /// Wave speed c (m/s).
+    pub wave_speed: f32,
+    /// Velocity damping rate k (1/s).
+    pub damping: f32,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct SimUniforms {
+    grid: [f32; 4],
+    step: [f32; 4],
+    drops_info: [f32; 4],
+    drops: [[f32; 4]; MAX_DROPS_PER_PASS],
+}
+
+/// Shape of a drop at distance `d` from its centre, 1 at the centre and 0 from the radius on.
+pub fn drop_shape(d: f32, radius: f32) -> f32 {
+    0.5 - 0.5 * (std::f32::consts::PI * (1.0 - d / radius).max(0.0)).cos()
+}
+
+/// Mean of a drop's bump over all cells of an `n` x `n` grid on the pool: subtracting
+/// it everywhere makes the drop add no water.
+pub fn drop_mean(drop: &Drop, n: u32, half_width: f32) -> f32 {
+    let dx = 2.0 * half_width / n as f32;
+    let index = |x: f32| ((x + half_width) / dx - 0.5).clamp(0.0, n as f32 - 1.0);
+    let (i0, i1) = (
+        index(drop.x - drop.radius).floor() as u32,
+        index(drop.x + drop.radius).ceil() as u32,
+    );
+    let (j0, j1) = (
+        index(drop.z - drop.radius).floor() as u32,
+        index(drop.z + drop.radius).ceil() as u32,
+    );
+    let mut sum = 0.0f64;
+    for j in j0..=j1 {
+        let z = -half_width + (j as f32 + 0.5) * dx;
+        for i in i0..=i1 {
+            let x = -half_width + (i as f32 + 0.5) * dx;
+            let d = ((x - drop.x).powi(2) + (z - drop.z).powi(2)).sqrt();
+            sum += drop_shape(d, drop.radius) as f64;
+        }
+    }
+    (sum / (n as f64 * n as f64)) as f32 * drop.strength
+}
+
+/// Fixed simulation time step with an accumulator: whatever the frame rate, the water
+/// advances in steps of `dt` seconds of simulated time.
+#[derive(Clone, Debug)]
+pub struct FixedStep {
+    /// Step length (s).
+    pub dt: f32,
+    /// Most steps one frame may take; the rest of a long frame is dropped so a slow
+    /// device cannot spiral.
+    pub max_steps: u32,
+    accumulator: f32,
+}
+
+impl FixedStep {
+    pub fn new(dt: f32, max_steps: u32) -> Self {
+        Self {
+            dt,
+            max_steps,
+            accumulator: 0.0,
+        }
+    }
+
+    /// Adds a frame's duration (s) and returns how many steps to take now.
+    pub fn advance(&mut self, frame_time: f32) -> u32 {
+        if frame_time.is_finite() && frame_time > 0.0 {
+            self.accumulator += frame_time.min(1.0);
+        }
+        // A tiny tolerance keeps 1/60 s frames from alternating 1 and 3 steps by rounding.
+        let steps = ((self.accumulator + 1e-6) / self.dt).floor() as u32;
+        let taken = steps.min(self.max_steps);
+        self.accumulator = if steps > self.max_steps {
+            0.0
+        } else {
+            (self.accumulator - taken as f32 * self.dt).max(0.0)
+        };
+        taken
+    }
+}
+
+/// The heightfield: state textures, the three passes, and queued drops.
+pub struct HeightField {
+    size: u32,
+    half_width: f32,
+    state: PingPong,
+    uniforms: wgpu::Buffer,
+    bind_groups: [wgpu::BindGroup; 2],
+    drop_pass: FullscreenPass,
+    update_pass: FullscreenPass,
+    normals_pass: FullscreenPass,
+    pending: Vec<Drop>,
+}
+
+impl HeightField {
+    /// A calm `size` x `size` heightfield over a pool of the given half width (m).
+    pub fn new(device: &wgpu::Device, size: u32, half_width: f32) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sim layout"),
+            entries: &[
+                gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT),
+                gpu::texture_entry(
+                    1,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
+            ],
+        });
+        let uniforms = gpu::uniform_buffer(device, "sim uniforms", &SimUniforms::zeroed());
+        let state = PingPong::new(device, "water state", size, size, STATE_FORMAT);
+        let bind_groups = state.bind_groups(|view| {
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("sim bind group"),
+                layout: &layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: uniforms.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(view),
+                    },
+                ],
+            })
+        });
+        let pass = |label: &str, source: &str, entry: &str| {
+            FullscreenPass::new(
+                device,
+                label,
+                &[gpu::wgsl::SIM_SHARED, source],
+                entry,
+                &[&layout],
+                FullscreenTarget {
+                    format: STATE_FORMAT,
+                    blend: None,
+                    depth: None,
+                },
+            )
+        };
+        Self {
+            size,
+            half_width,
+            drop_pass: pass("sim drop", gpu::wgsl::SIM_DROP, "fs_drop"),
+            update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
+            normals_pass: pass("sim normals", gpu::wgsl::SIM_NORMALS, "fs_normals"),
+            state,
+            uniforms,
+            bind_groups,
+            pending: Vec::new(),
+        }
+    }
+
+    /// Cells per side.
+    pub fn size(&self) -> u32 {
+        self.size
+    }
+
+    /// Cell size (m).
+    pub fn cell_size(&self) -> f32 {
+        2.0 * self.half_width / self.size as f32
+    }
+
+    /// Queues a drop for the next [`HeightField::encode`]. Degenerate drops are ignored.
+    pub fn add_drop(&mut self, drop: Drop) {
+        let ok = [drop.x, drop.z, drop.radius, drop.strength]
+            .iter()
+            .all(|v| v.is_finite());
+        if ok && drop.radius > 0.0 && drop.strength != 0.0 {
+            self.pending.push(drop);
+        }
+    }
+
+    /// Substeps per step of `dt` seconds that keep the Courant number c dt / dx at or
+    /// below [`MAX_COURANT`].
+    pub fn substeps(&self, dt: f32, wave_speed: f32) -> u32 {
+        let courant = wave_speed.abs() * dt / self.cell_size();
+        ((courant / MAX_COURANT).ceil() as u32).max(1)
+    }
+
+    /// Records the queued drops, `steps` steps of `dt` seconds each, and the normals pass.
+    /// Writes the shared uniform buffer, so call it once per queue submission.
+    pub fn encode(
+        &mut self,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        steps: u32,
+        dt: f32,
+        settings: WaveSettings,
+    ) {
+        let take = self.pending.len().min(MAX_DROPS_PER_PASS);
+        let drops: Vec<Drop> = self.pending.drain(..take).collect();
+        let substeps = self.substeps(dt, settings.wave_speed);
+        let h = dt / substeps as f32;
+        let dx = self.cell_size();
+        let mut u = SimUniforms::zeroed();
+        u.grid = [
+            self.size as f32,
+            1.0 / self.size as f32,
+            dx,
+            self.half_width,
+        ];
+        let damping = settings.damping.max(0.0);
+        u.step = [
+            h,
+            settings.wave_speed * settings.wave_speed * h / (dx * dx),
+            (-damping * h).exp(),
+            0.0,
+        ];
+        let correction: f32 = drops
+            .iter()
+            .map(|d| drop_mean(d, self.size, self.half_width))
+            .sum();
+        u.drops_info = [drops.len() as f32, correction, 0.0, 0.0];
+        for (slot, d) in u.drops.iter_mut().zip(&drops) {
+            *slot = [d.x, d.z, d.radius, d.strength];
+        }
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+        if !drops.is_empty() {
+            self.state.run(encoder, &self.drop_pass, &self.bind_groups);
+        }
+        for _ in 0..steps * substeps {
+            self.state
+                .run(encoder, &self.update_pass, &self.bind_groups);
+        }
+        if steps > 0 || !drops.is_empty() {
+            self.state
+                .run(encoder, &self.normals_pass, &self.bind_groups);
+        }
+    }
+
+    /// Flattens the water and forgets queued drops.
+    pub fn reset(&mut self, queue: &wgpu::Queue) {
+        self.pending.clear();
+        let zeros = vec![0u8; (self.size * self.size * 16) as usize];
+        for texture in self.state.textures() {
+            queue.write_texture(
+                texture.as_image_copy(),
+                &zeros,
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(self.size * 16),
+                    rows_per_image: None,
+                },
+                texture.size(),
+            );
+        }
+    }
+
+    /// The two state textures and which of them is current, for binding in the renderer.
+    pub fn state(&self) -> &PingPong {
+        &self.state
+    }
+
+    /// Reads the current state back: `size * size` cells of (height, velocity, nx, nz),
+    /// row by row along +z. Blocking; for tests and tools.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn read_state(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<[f32; 4]> {
+        let bytes = gpu::read_texture(device, queue, self.state.current_texture());
+        bytemuck::cast_slice(&bytes).to_vec()
+    }
+}
+
+use bytemuck::Zeroable;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fixed_step_is_frame_rate_independent() {
+        for fps in [30.0f32, 60.0, 144.0] {
+            let mut clock = FixedStep::new(1.0 / 120.0, 8);
+            let frames = (fps * 2.0).round() as u32;
+            let steps: u32 = (0..frames).map(|_| clock.advance(1.0 / fps)).sum();
+            assert!(
+                (239..=240).contains(&steps),
+                "{fps} fps gave {steps} steps in 2 s"
+            );
+        }
+    }
+
+    #[test]
+    fn slow_frames_are_capped() {
+        let mut clock = FixedStep::new(1.0 / 120.0, 8);
+        assert_eq!(clock.advance(0.5), 8);
+        assert_eq!(clock.advance(1.0 / 120.0), 1);
+    }
+
+    #[test]
+    fn drop_mean_matches_the_analytic_integral_away_from_walls() {
+        // Integral of the cosine bump over its disc: pi r^2 (1/2 - 2/pi^2).
+        let d = Drop {
+            x: 0.1,
+            z: -0.2,
+            radius: 0.1,
+            strength: 1.0,
+        };
+        let n = 512;
+        let pool_area = 4.0;
+        let analytic =
+            std::f32::consts::PI * 0.01 * (0.5 - 2.0 / std::f32::consts::PI.powi(2)) / pool_area;
+        let numeric = drop_mean(&d, n, 1.0);
+        assert!(
+            (numeric - analytic).abs() / analytic < 0.01,
+            "{numeric} vs {analytic}"
+        );
+    }
+}
+
+/// A small deterministic random generator (SplitMix64) for seeded drops in tools and tests.
+#[derive(Clone, Debug)]
+pub struct SplitMix64(pub u64);
+
+impl SplitMix64 {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        let unit = (self.next_u64() >> 40) as f32 / (1u64 << 24) as f32;
+        lo + (hi - lo) * unit
+    }
+}
+
+/// `count` drops at seeded random places in the pool (within 90 % of the half width),
+/// of the given radius (m) and strength (m), alternating in sign like rain and splashes.
+pub fn random_drops(
+    seed: u64,
+    count: u32,
+    half_width: f32,
+    radius: f32,
+    strength: f32,
+) -> Vec<Drop> {
+    let mut rng = SplitMix64(seed);
+    (0..count)
+        .map(|i| Drop {
+            x: rng.range(-0.9, 0.9) * half_width,
+            z: rng.range(-0.9, 0.9) * half_width,
+            radius,
+            strength: if i % 2 == 0 { strength } else { -strength },
+        })
+        .collect()
+}

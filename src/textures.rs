@@ -1,0 +1,282 @@
+//! Procedural textures, made by our own code at start-up: the pool tiles (CPU, with mip
+//! levels) and the sky cubemap (GPU, one full-screen pass per face, redone when the sun moves).
+
+use glam::Vec3;
+
+use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+
+/// Tiles per metre along each axis (12.5 cm tiles).
+pub const TILES_PER_METRE: u32 = 8;
+/// Side of the tile texture in texels; it covers 1 m x 1 m and repeats.
+pub const TILE_TEXTURE_SIZE: u32 = 512;
+/// Side of each sky cube face in texels.
+pub const SKY_FACE_SIZE: u32 = 256;
+pub const SKY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
+fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+fn linear_to_srgb(c: f32) -> f32 {
+    if c <= 0.0031308 {
+        c * 12.92
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// Small integer hash to a value in [0, 1).
+fn hash(a: u32, b: u32) -> f32 {
+    let mut h = a.wrapping_mul(0x9E37_79B9) ^ b.wrapping_mul(0x85EB_CA6B);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x2C1B_3C6D);
+    h ^= h >> 12;
+    (h & 0xFFFF) as f32 / 65536.0
+}
+
+/// Linear RGB of the tile texture at texel (x, y): pale blue-white glazed tiles, each a
+/// little different, a soft bevel at their edges and grey grout between them.
+fn tile_texel(x: u32, y: u32) -> [f32; 3] {
+    let tile = TILE_TEXTURE_SIZE / TILES_PER_METRE;
+    let (tx, ty) = (x / tile, y / tile);
+    let (fx, fy) = ((x % tile) as f32 + 0.5, (y % tile) as f32 + 0.5);
+    let edge = fx.min(fy).min(tile as f32 - fx).min(tile as f32 - fy);
+    let grout_width = 2.0;
+    if edge < grout_width {
+        return [0.42, 0.46, 0.47].map(srgb_to_linear);
+    }
+    let variation = (hash(tx, ty) - 0.5) * 0.06;
+    let bevel = 1.0 - 0.10 * (1.0 - ((edge - grout_width) / 3.0).min(1.0));
+    let speckle = (hash(x, y ^ 0x5bd1) - 0.5) * 0.015;
+    let base = [0.80, 0.89, 0.93];
+    base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0)))
+}
+
+/// The tile texture with its full mip chain (box-filtered in linear light), RGBA8 sRGB.
+pub fn tile_mips() -> Vec<Vec<u8>> {
+    let mut level: Vec<[f32; 3]> = (0..TILE_TEXTURE_SIZE * TILE_TEXTURE_SIZE)
+        .map(|i| tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE))
+        .collect();
+    let mut size = TILE_TEXTURE_SIZE as usize;
+    let mut mips = Vec::new();
+    loop {
+        mips.push(
+            level
+                .iter()
+                .flat_map(|c| {
+                    [c[0], c[1], c[2]]
+                        .map(|v| (linear_to_srgb(v) * 255.0).round() as u8)
+                        .into_iter()
+                        .chain([255])
+                })
+                .collect(),
+        );
+        if size == 1 {
+            break;
+        }
+        let half = size / 2;
+        let mut next = vec![[0.0f32; 3]; half * half];
+        for y in 0..half {
+            for x in 0..half {
+                let mut acc = [0.0f32; 3];
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    let c = level[(2 * y + dy) * size + 2 * x + dx];
+                    for k in 0..3 {
+                        acc[k] += c[k] * 0.25;
+                    }
+                }
+                next[y * half + x] = acc;
+            }
+        }
+        level = next;
+        size = half;
+    }
+    mips
+}
+
+pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
+    let mips = tile_mips();
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("tiles"),
+        size: wgpu::Extent3d {
+            width: TILE_TEXTURE_SIZE,
+            height: TILE_TEXTURE_SIZE,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: mips.len() as u32,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8UnormSrgb,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (level, data) in mips.iter().enumerate() {
+        let size = (TILE_TEXTURE_SIZE >> level).max(1);
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &texture,
+                mip_level: level as u32,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            data,
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(size * 4),
+                rows_per_image: None,
+            },
+            wgpu::Extent3d {
+                width: size,
+                height: size,
+                depth_or_array_layers: 1,
+            },
+        );
+    }
+    texture
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct SkyFaceUniforms {
+    sun: [f32; 4],
+    face: [f32; 4],
+}
+
+/// The sky cubemap and the passes that paint it.
+pub struct SkyCube {
+    texture: wgpu::Texture,
+    face_views: Vec<wgpu::TextureView>,
+    face_uniforms: Vec<wgpu::Buffer>,
+    face_groups: Vec<wgpu::BindGroup>,
+    pass: FullscreenPass,
+    painted_for: Option<Vec3>,
+}
+
+impl SkyCube {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("sky cube"),
+            size: wgpu::Extent3d {
+                width: SKY_FACE_SIZE,
+                height: SKY_FACE_SIZE,
+                depth_or_array_layers: 6,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: SKY_FORMAT,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        });
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sky face layout"),
+            entries: &[gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT)],
+        });
+        let face_views = (0..6)
+            .map(|face| {
+                texture.create_view(&wgpu::TextureViewDescriptor {
+                    label: Some("sky face"),
+                    dimension: Some(wgpu::TextureViewDimension::D2),
+                    base_array_layer: face,
+                    array_layer_count: Some(1),
+                    ..Default::default()
+                })
+            })
+            .collect();
+        let face_uniforms: Vec<wgpu::Buffer> = (0..6)
+            .map(|face| {
+                gpu::uniform_buffer(
+                    device,
+                    "sky face uniforms",
+                    &SkyFaceUniforms {
+                        sun: [0.0, 1.0, 0.0, 0.0],
+                        face: [face as f32, 0.0, 0.0, 0.0],
+                    },
+                )
+            })
+            .collect();
+        let face_groups = face_uniforms
+            .iter()
+            .map(|buffer| {
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("sky face group"),
+                    layout: &layout,
+                    entries: &[wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: buffer.as_entire_binding(),
+                    }],
+                })
+            })
+            .collect();
+        let pass = FullscreenPass::new(
+            device,
+            "sky cube face",
+            &[gpu::wgsl::SKY_CUBE],
+            "fs_sky_face",
+            &[&layout],
+            FullscreenTarget {
+                format: SKY_FORMAT,
+                blend: None,
+                depth: None,
+            },
+        );
+        Self {
+            texture,
+            face_views,
+            face_uniforms,
+            face_groups,
+            pass,
+            painted_for: None,
+        }
+    }
+
+    /// A cube view of the sky for sampling by direction.
+    pub fn view(&self) -> wgpu::TextureView {
+        self.texture.create_view(&wgpu::TextureViewDescriptor {
+            label: Some("sky cube view"),
+            dimension: Some(wgpu::TextureViewDimension::Cube),
+            ..Default::default()
+        })
+    }
+
+    /// Repaints the six faces if the sun moved since the last paint.
+    pub fn update(&mut self, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, sun: Vec3) {
+        if self.painted_for == Some(sun) {
+            return;
+        }
+        self.painted_for = Some(sun);
+        for face in 0..6 {
+            let u = SkyFaceUniforms {
+                sun: [sun.x, sun.y, sun.z, 0.0],
+                face: [face as f32, 0.0, 0.0, 0.0],
+            };
+            queue.write_buffer(&self.face_uniforms[face], 0, bytemuck::bytes_of(&u));
+            self.pass
+                .run(encoder, &self.face_views[face], &[&self.face_groups[face]]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tiles_have_grout_and_mips_average_them() {
+        let mips = tile_mips();
+        assert_eq!(mips.len(), 10);
+        let base = &mips[0];
+        let grout = base[0];
+        let tile_centre = base[((32 * TILE_TEXTURE_SIZE + 32) * 4) as usize];
+        assert!(
+            tile_centre > grout + 60,
+            "tile {tile_centre} vs grout {grout}"
+        );
+        let last = mips.last().unwrap()[0];
+        assert!(last > grout && last < tile_centre);
+    }
+}
