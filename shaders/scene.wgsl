@@ -151,11 +151,25 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
 }
 
-// pool_colour for a traced ray hit, where screen derivatives mean nothing: a fixed, slightly
-// blurred mip level of the tiles.
-fn pool_colour_at_hit(p: vec3<f32>) -> vec3<f32> {
+// Where a ray from inside the pool box leaves it (the tile it would hit).
+fn pool_exit(origin: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
+    return origin + dir * max(box.y, 0.0);
+}
+
+// Mip level for the tiles seen at `hit` through this pixel, from how fast the tile
+// coordinates change across the screen. Call in uniform control flow (it uses derivatives).
+fn tile_lod(hit: vec3<f32>) -> f32 {
+    let uv = tile_uv(hit, pool_normal(hit));
+    let footprint = max(length(dpdx(uv)), length(dpdy(uv))) * f32(textureDimensions(tile_texture).x);
+    return clamp(log2(max(footprint, 1.0)), 0.0, 12.0);
+}
+
+// pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod.
+fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
     let n = pool_normal(p);
-    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), 1.0).rgb;
+    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
     return pool_colour(p, n, albedo);
 }
 
@@ -183,9 +197,15 @@ fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
     return textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0).rgb;
 }
 
+// Specular reflection of the sun on water, sharper and brighter than the cubemap's disk
+// can hold at its resolution: the glitter on ripples.
+fn sun_specular(dir: vec3<f32>) -> vec3<f32> {
+    return SUN_COLOUR * scene.sun.w * 80.0 * pow(max(dot(dir, scene.sun.xyz), 0.0), 3000.0);
+}
+
 // What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
-// water it crossed (Beer–Lambert).
-fn trace_water(origin: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+// water it crossed (Beer–Lambert). lod: tile mip level (see tile_lod).
+fn trace_water(origin: vec3<f32>, dir: vec3<f32>, lod: f32) -> vec3<f32> {
     let w = half_width();
     let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
     var t = max(box.y, 0.0);
@@ -196,14 +216,14 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
         colour = sphere_colour(origin + dir * t);
     } else {
         let hit = origin + dir * t;
-        colour = pool_colour_at_hit(hit);
+        colour = pool_colour_at_hit(hit, lod);
     }
     return colour * exp(-WATER_ABSORPTION * water_path(origin, origin + dir * t, w, depth()));
 }
 
 // What a ray starting at the surface and going up through air sees: the sphere, the pool
-// walls above the water line, or the sky.
-fn trace_air(origin: vec3<f32>, dir_in: vec3<f32>) -> vec3<f32> {
+// walls above the water line, or the sky. lod: tile mip level (see tile_lod).
+fn trace_air(origin: vec3<f32>, dir_in: vec3<f32>, lod: f32) -> vec3<f32> {
     // A reflection that still points down (steep waves) is folded back up.
     let dir = normalize(vec3<f32>(dir_in.x, abs(dir_in.y), dir_in.z));
     let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
@@ -215,17 +235,24 @@ fn trace_air(origin: vec3<f32>, dir_in: vec3<f32>) -> vec3<f32> {
     }
     let hit = origin + dir * t;
     if (hit.y < rim() - 1.0e-3) {
-        return pool_colour_at_hit(hit);
+        return pool_colour_at_hit(hit, lod);
     }
-    return sky_colour(dir);
+    return sky_colour(dir) + sun_specular(dir);
 }
 
-// Final colour written to the target: clamp, and encode sRGB when the target format
-// does not do it in hardware (WebGPU canvases are plain 8-bit UNORM).
+// Final colour written to the target: linear up to 0.6, then a soft shoulder so bright
+// caustics and sun glints roll off instead of clipping; sRGB-encoded in the shader when
+// the target format does not do it in hardware (WebGPU canvases are plain 8-bit UNORM).
+fn tone_map(c: vec3<f32>) -> vec3<f32> {
+    let knee = 0.6;
+    let shoulder = knee + (1.0 - knee) * (1.0 - exp(-(c - knee) / (1.0 - knee)));
+    return select(c, shoulder, c > vec3<f32>(knee));
+}
+
 fn finish(c: vec3<f32>) -> vec4<f32> {
-    let clamped = clamp(c, vec3<f32>(0.0), vec3<f32>(1.0));
+    let mapped = clamp(tone_map(max(c, vec3<f32>(0.0))), vec3<f32>(0.0), vec3<f32>(1.0));
     if (scene.output.x > 0.5) {
-        return vec4<f32>(linear_to_srgb(clamped), 1.0);
+        return vec4<f32>(linear_to_srgb(mapped), 1.0);
     }
-    return vec4<f32>(clamped, 1.0);
+    return vec4<f32>(mapped, 1.0);
 }

@@ -1,5 +1,5 @@
 // Procedural sky, rendered once per cube face whenever the sun moves: a gradient from a
-// pale horizon to a deep zenith, haze below the horizon, soft clouds on a virtual
+// pale horizon to a deep zenith, stone ground below the horizon, soft clouds on a virtual
 // plane, and the sun as a small HDR disk with a glow (so its reflection on water is bright).
 
 struct SkyFace {
@@ -45,14 +45,14 @@ fn fs_sky_face(in: FullscreenOut) -> @location(0) vec4<f32> {
     let sun = sky.sun.xyz;
     let zenith = vec3<f32>(0.08, 0.22, 0.62);
     let horizon = vec3<f32>(0.58, 0.72, 0.88);
-    let haze = vec3<f32>(0.50, 0.58, 0.64);
-    let nadir = vec3<f32>(0.30, 0.36, 0.40);
+    // Below the horizon: a warm stone plaza fading into haze at the horizon.
+    let haze = vec3<f32>(0.66, 0.70, 0.72);
+    let stone = vec3<f32>(0.52, 0.47, 0.40);
     var colour: vec3<f32>;
     if (dir.y >= 0.0) {
         colour = mix(horizon, zenith, pow(dir.y, 0.45));
     } else {
-        // Below the horizon: a soft haze darkening towards the nadir, no hard ground line.
-        colour = mix(mix(horizon, haze, smoothstep(0.0, 0.06, -dir.y)), nadir, smoothstep(0.05, 0.9, -dir.y));
+        colour = mix(mix(horizon, haze, smoothstep(0.0, 0.02, -dir.y)), stone, smoothstep(0.01, 0.25, -dir.y));
     }
     let cos_sun = dot(dir, sun);
     // Glow around the sun, stronger near the horizon-ward haze.

@@ -25,8 +25,10 @@ fn fs_above(in: SurfaceOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
     let reflected = reflect(view, n);
     let refracted = refract(view, n, IOR_AIR / IOR_WATER);
+    let lod_refracted = tile_lod(pool_exit(in.world, refracted));
+    let lod_reflected = tile_lod(pool_exit(in.world, reflected));
     let f = fresnel(dot(-view, n), IOR_AIR / IOR_WATER);
-    let colour = mix(trace_water(in.world, refracted), trace_air(in.world, reflected), f);
+    let colour = mix(trace_water(in.world, refracted, lod_refracted), trace_air(in.world, reflected, lod_reflected), f);
     return finish(colour);
 }
 
@@ -38,12 +40,14 @@ fn fs_below(in: SurfaceOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
     let reflected = reflect(view, n);
     let refracted = refract(view, n, IOR_WATER / IOR_AIR);
+    let lod_refracted = tile_lod(pool_exit(in.world, refracted));
+    let lod_reflected = tile_lod(pool_exit(in.world, reflected));
     let f = fresnel(dot(-view, n), IOR_WATER / IOR_AIR);
     var out_colour = vec3<f32>(0.0);
     if (f < 1.0) {
-        out_colour = trace_air(in.world, refracted);
+        out_colour = trace_air(in.world, refracted, lod_refracted);
     }
-    var colour = mix(out_colour, trace_water(in.world, reflected), f);
+    var colour = mix(out_colour, trace_water(in.world, reflected, lod_reflected), f);
     colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
     return finish(colour);
 }

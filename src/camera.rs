@@ -24,13 +24,7 @@ pub const DISTANCE_RANGE: (f32, f32) = (1.5, 12.0);
 
 impl Default for OrbitCamera {
     fn default() -> Self {
-        Self {
-            yaw: -25.0,
-            pitch: 32.0,
-            distance: 4.2,
-            target: Vec3::new(0.0, -0.3, 0.0),
-            fov_y: 45.0,
-        }
+        Self { yaw: -25.0, pitch: 32.0, distance: 4.2, target: Vec3::new(0.0, -0.3, 0.0), fov_y: 45.0 }
     }
 }
 
@@ -85,11 +79,7 @@ impl OrbitCamera {
     /// Unit vector from the target towards the eye.
     pub fn back(&self) -> Vec3 {
         let (yaw, pitch) = (self.yaw.to_radians(), self.pitch.to_radians());
-        Vec3::new(
-            pitch.cos() * yaw.sin(),
-            pitch.sin(),
-            pitch.cos() * yaw.cos(),
-        )
+        Vec3::new(pitch.cos() * yaw.sin(), pitch.sin(), pitch.cos() * yaw.cos())
     }
 
     pub fn eye(&self) -> Vec3 {
@@ -108,6 +98,16 @@ impl OrbitCamera {
         self.projection(aspect) * self.view()
     }
 
+    /// Pixel (x, y, y down) where a world point (m) appears in a viewport of `size` pixels,
+    /// or `None` when it is behind the camera.
+    pub fn project(&self, point: Vec3, size: Vec2) -> Option<Vec2> {
+        let clip = self.view_projection(size.x / size.y) * point.extend(1.0);
+        (clip.w > 1e-6).then(|| {
+            let ndc = clip.truncate() / clip.w;
+            Vec2::new((ndc.x * 0.5 + 0.5) * size.x, (0.5 - ndc.y * 0.5) * size.y)
+        })
+    }
+
     /// The ray through pixel (x, y) of a viewport of `size` pixels (y down).
     pub fn ray(&self, pixel: Vec2, size: Vec2) -> Ray {
         let ndc = Vec2::new(pixel.x / size.x * 2.0 - 1.0, 1.0 - pixel.y / size.y * 2.0);
@@ -116,27 +116,18 @@ impl OrbitCamera {
         let far = inv * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
         let near = near.truncate() / near.w;
         let far = far.truncate() / far.w;
-        Ray {
-            origin: self.eye(),
-            dir: (far - near).normalize(),
-        }
+        Ray { origin: self.eye(), dir: (far - near).normalize() }
     }
 
     /// What is under pixel (x, y): the sphere if present and hit, else the water
     /// surface inside the pool, else nothing.
     pub fn pick(&self, pixel: Vec2, size: Vec2, sphere: Option<&Sphere>) -> Pick {
         let ray = self.ray(pixel, size);
-        let water_t = if ray.dir.y.abs() > 1e-6 {
-            -ray.origin.y / ray.dir.y
-        } else {
-            f32::INFINITY
-        };
+        let water_t = if ray.dir.y.abs() > 1e-6 { -ray.origin.y / ray.dir.y } else { f32::INFINITY };
         if let Some(s) = sphere {
             // The sphere wins wherever it is seen, even through the water.
             if let Some(t) = ray_sphere(&ray, s.centre, s.radius) {
-                return Pick::Sphere {
-                    hit: ray.origin + ray.dir * t,
-                };
+                return Pick::Sphere { hit: ray.origin + ray.dir * t };
             }
         }
         if water_t > 0.0 && water_t.is_finite() {
@@ -175,23 +166,21 @@ mod tests {
     }
 
     #[test]
+    fn project_inverts_ray() {
+        let cam = OrbitCamera::default();
+        let size = Vec2::new(640.0, 480.0);
+        let pixel = Vec2::new(123.0, 321.0);
+        let ray = cam.ray(pixel, size);
+        let back = cam.project(ray.origin + ray.dir * 3.0, size).unwrap();
+        assert!((back - pixel).length() < 0.01, "{back:?}");
+    }
+
+    #[test]
     fn pick_finds_water_sphere_and_nothing() {
-        let cam = OrbitCamera {
-            yaw: 0.0,
-            pitch: 60.0,
-            distance: 4.0,
-            target: Vec3::ZERO,
-            fov_y: 45.0,
-        };
+        let cam = OrbitCamera { yaw: 0.0, pitch: 60.0, distance: 4.0, target: Vec3::ZERO, fov_y: 45.0 };
         let size = Vec2::new(800.0, 600.0);
-        let sphere = Sphere {
-            centre: Vec3::new(0.0, 0.0, 0.0),
-            radius: 0.25,
-        };
-        assert!(matches!(
-            cam.pick(Vec2::new(400.0, 300.0), size, Some(&sphere)),
-            Pick::Sphere { .. }
-        ));
+        let sphere = Sphere { centre: Vec3::new(0.0, 0.0, 0.0), radius: 0.25 };
+        assert!(matches!(cam.pick(Vec2::new(400.0, 300.0), size, Some(&sphere)), Pick::Sphere { .. }));
         match cam.pick(Vec2::new(400.0, 300.0), size, None) {
             Pick::Water { x, z } => assert!(x.abs() < 1e-3 && z.abs() < 1e-3),
             other => panic!("expected water, got {other:?}"),

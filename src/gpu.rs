@@ -52,11 +52,7 @@ pub fn texture_entry(
     wgpu::BindGroupLayoutEntry {
         binding,
         visibility,
-        ty: wgpu::BindingType::Texture {
-            sample_type,
-            view_dimension,
-            multisampled: false,
-        },
+        ty: wgpu::BindingType::Texture { sample_type, view_dimension, multisampled: false },
         count: None,
     }
 }
@@ -70,11 +66,7 @@ pub fn sampler_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::Bind
     }
 }
 
-pub fn uniform_buffer<T: bytemuck::Pod>(
-    device: &wgpu::Device,
-    label: &str,
-    value: &T,
-) -> wgpu::Buffer {
+pub fn uniform_buffer<T: bytemuck::Pod>(device: &wgpu::Device, label: &str, value: &T) -> wgpu::Buffer {
     device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some(label),
         contents: bytemuck::bytes_of(value),
@@ -82,11 +74,7 @@ pub fn uniform_buffer<T: bytemuck::Pod>(
     })
 }
 
-pub fn pipeline_layout(
-    device: &wgpu::Device,
-    label: &str,
-    layouts: &[&wgpu::BindGroupLayout],
-) -> wgpu::PipelineLayout {
+pub fn pipeline_layout(device: &wgpu::Device, label: &str, layouts: &[&wgpu::BindGroupLayout]) -> wgpu::PipelineLayout {
     let layouts: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(|l| Some(*l)).collect();
     device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some(label),
@@ -106,7 +94,9 @@ pub struct FullscreenPass {
 pub struct FullscreenTarget {
     pub format: wgpu::TextureFormat,
     pub blend: Option<wgpu::BlendState>,
-    /// Depth format of the render pass it is drawn in, if any (the pass neither tests nor writes depth).
+    /// Depth format of the render pass it is drawn in, if any. The triangle lies on the far
+    /// plane and is depth-tested (less-or-equal, no writes), so it only fills pixels no
+    /// geometry covered: draw it last.
     pub depth: Option<wgpu::TextureFormat>,
 }
 
@@ -138,7 +128,7 @@ impl FullscreenPass {
             depth_stencil: target.depth.map(|format| wgpu::DepthStencilState {
                 format,
                 depth_write_enabled: Some(false),
-                depth_compare: Some(wgpu::CompareFunction::Always),
+                depth_compare: Some(wgpu::CompareFunction::LessEqual),
                 stencil: Default::default(),
                 bias: Default::default(),
             }),
@@ -156,10 +146,7 @@ impl FullscreenPass {
             multiview_mask: None,
             cache: None,
         });
-        Self {
-            pipeline,
-            label: label.to_owned(),
-        }
+        Self { pipeline, label: label.to_owned() }
     }
 
     /// Draws into an already open render pass.
@@ -207,21 +194,11 @@ pub struct PingPong {
 }
 
 impl PingPong {
-    pub fn new(
-        device: &wgpu::Device,
-        label: &str,
-        width: u32,
-        height: u32,
-        format: wgpu::TextureFormat,
-    ) -> Self {
+    pub fn new(device: &wgpu::Device, label: &str, width: u32, height: u32, format: wgpu::TextureFormat) -> Self {
         let make = |i: usize| {
             device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(&format!("{label} {i}")),
-                size: wgpu::Extent3d {
-                    width,
-                    height,
-                    depth_or_array_layers: 1,
-                },
+                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
@@ -234,15 +211,8 @@ impl PingPong {
             })
         };
         let textures = [make(0), make(1)];
-        let views = [
-            textures[0].create_view(&Default::default()),
-            textures[1].create_view(&Default::default()),
-        ];
-        Self {
-            textures,
-            views,
-            current: 0,
-        }
+        let views = [textures[0].create_view(&Default::default()), textures[1].create_view(&Default::default())];
+        Self { textures, views, current: 0 }
     }
 
     /// Index (0 or 1) of the texture that holds the latest state.
@@ -260,21 +230,13 @@ impl PingPong {
 
     /// One bind group per texture, built by `make` from that texture's view; pass the
     /// result to [`PingPong::run`], which picks the one that reads the current state.
-    pub fn bind_groups(
-        &self,
-        make: impl Fn(&wgpu::TextureView) -> wgpu::BindGroup,
-    ) -> [wgpu::BindGroup; 2] {
+    pub fn bind_groups(&self, make: impl Fn(&wgpu::TextureView) -> wgpu::BindGroup) -> [wgpu::BindGroup; 2] {
         [make(&self.views[0]), make(&self.views[1])]
     }
 
     /// Runs `pass` reading the current texture (through `groups[current]`) and writing the
     /// other, then makes the written one current.
-    pub fn run(
-        &mut self,
-        encoder: &mut wgpu::CommandEncoder,
-        pass: &FullscreenPass,
-        groups: &[wgpu::BindGroup; 2],
-    ) {
+    pub fn run(&mut self, encoder: &mut wgpu::CommandEncoder, pass: &FullscreenPass, groups: &[wgpu::BindGroup; 2]) {
         let next = 1 - self.current;
         pass.run(encoder, &self.views[next], &[&groups[self.current]]);
         self.current = next;
@@ -284,20 +246,12 @@ impl PingPong {
 /// Copies a whole 2-D texture (mip 0, layer 0) back to the CPU, rows unpadded.
 /// Blocking: for tests, the CLI and benchmarks, never for the frame path.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn read_texture(
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    texture: &wgpu::Texture,
-) -> Vec<u8> {
+pub fn read_texture(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> Vec<u8> {
     let width = texture.width();
     let height = texture.height();
-    let bytes_per_pixel = texture
-        .format()
-        .block_copy_size(None)
-        .expect("colour format");
+    let bytes_per_pixel = texture.format().block_copy_size(None).expect("colour format");
     let row = width * bytes_per_pixel;
-    let padded =
-        row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let padded = row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("readback"),
         size: (padded * height) as u64,
@@ -315,18 +269,12 @@ pub fn read_texture(
                 rows_per_image: Some(height),
             },
         },
-        wgpu::Extent3d {
-            width,
-            height,
-            depth_or_array_layers: 1,
-        },
+        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
     );
     queue.submit([encoder.finish()]);
     let slice = buffer.slice(..);
     slice.map_async(wgpu::MapMode::Read, |r| r.expect("map readback buffer"));
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .expect("device poll");
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("device poll");
     let data = slice.get_mapped_range().expect("mapped readback range");
     let mut out = Vec::with_capacity((row * height) as usize);
     for y in 0..height as usize {

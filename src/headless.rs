@@ -18,8 +18,7 @@ impl HeadlessGpu {
     /// Opens the first adapter the environment allows (WGPU_BACKEND etc. are honoured),
     /// with timestamp queries when the adapter has them.
     pub fn new() -> Result<Self, String> {
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
             power_preference: wgpu::PowerPreference::HighPerformance,
             ..Default::default()
@@ -30,21 +29,15 @@ impl HeadlessGpu {
                  apt-get install mesa-vulkan-drivers libvulkan1"
             )
         })?;
-        let wanted =
-            wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
+        let wanted = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("wavepool"),
             required_features: adapter.features() & wanted,
-            required_limits:
-                wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
+            required_limits: wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
             ..Default::default()
         }))
         .map_err(|e| format!("could not open the GPU device: {e}"))?;
-        Ok(Self {
-            adapter,
-            device,
-            queue,
-        })
+        Ok(Self { adapter, device, queue })
     }
 
     /// "name (backend)" of the adapter.
@@ -66,11 +59,7 @@ impl OffscreenTarget {
     pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("offscreen frame"),
-            size: wgpu::Extent3d {
-                width,
-                height,
-                depth_or_array_layers: 1,
-            },
+            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
@@ -79,12 +68,7 @@ impl OffscreenTarget {
             view_formats: &[],
         });
         let view = texture.create_view(&Default::default());
-        Self {
-            texture,
-            view,
-            width,
-            height,
-        }
+        Self { texture, view, width, height }
     }
 
     pub fn size(&self) -> (u32, u32) {
@@ -98,8 +82,7 @@ impl OffscreenTarget {
 }
 
 pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), String> {
-    let file = std::fs::File::create(path)
-        .map_err(|e| format!("cannot create {}: {e}", path.display()))?;
+    let file = std::fs::File::create(path).map_err(|e| format!("cannot create {}: {e}", path.display()))?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), width, height);
     encoder.set_color(png::ColorType::Rgba);
     encoder.set_depth(png::BitDepth::Eight);
@@ -111,8 +94,7 @@ pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<()
 
 /// Reads an 8-bit RGBA or RGB PNG as RGBA: (width, height, pixels).
 pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
-    let file =
-        std::fs::File::open(path).map_err(|e| format!("cannot open {}: {e}", path.display()))?;
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot open {}: {e}", path.display()))?;
     let decoder = png::Decoder::new(std::io::BufReader::new(file));
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
     let mut buf = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
@@ -120,10 +102,7 @@ pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
     buf.truncate(info.buffer_size());
     let rgba = match info.color_type {
         png::ColorType::Rgba => buf,
-        png::ColorType::Rgb => buf
-            .chunks(3)
-            .flat_map(|c| [c[0], c[1], c[2], 255])
-            .collect(),
+        png::ColorType::Rgb => buf.chunks(3).flat_map(|c| [c[0], c[1], c[2], 255]).collect(),
         other => return Err(format!("unsupported PNG colour type {other:?}")),
     };
     Ok((info.width, info.height, rgba))

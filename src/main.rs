@@ -26,27 +26,18 @@ bench   renders N frames (default 120) after a warm-up and prints one JSON objec
         adapter, frame times and per-stage GPU times.
 
 --set takes any parameter of the table, e.g. --set caustics=0 --set sun_elevation=30.
-Parameters: ";
+Parameters:";
 
 /// A usage error: message for stderr, exit code 2.
 struct UsageError(String);
 
-fn parse_number<T: std::str::FromStr>(
-    flag: &str,
-    value: &str,
-    lo: T,
-    hi: T,
-) -> Result<T, UsageError>
+fn parse_number<T: std::str::FromStr>(flag: &str, value: &str, lo: T, hi: T) -> Result<T, UsageError>
 where
     T: PartialOrd + std::fmt::Display + Copy,
 {
-    let v: T = value
-        .parse()
-        .map_err(|_| UsageError(format!("{flag}: '{value}' is not a number")))?;
+    let v: T = value.parse().map_err(|_| UsageError(format!("{flag}: '{value}' is not a number")))?;
     if v < lo || v > hi {
-        return Err(UsageError(format!(
-            "{flag}: {value} is outside {lo}..={hi}"
-        )));
+        return Err(UsageError(format!("{flag}: {value} is outside {lo}..={hi}")));
     }
     Ok(v)
 }
@@ -82,9 +73,7 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
     };
     let mut it = args.iter();
     while let Some(flag) = it.next() {
-        let value = it
-            .next()
-            .ok_or_else(|| UsageError(format!("{flag} needs a value")))?;
+        let value = it.next().ok_or_else(|| UsageError(format!("{flag} needs a value")))?;
         match flag.as_str() {
             "--width" => o.width = parse_number(flag, value, 16, 8192)?,
             "--height" => o.height = parse_number(flag, value, 16, 8192)?,
@@ -98,18 +87,15 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
             "--sim-size" => {
                 o.sim_size = parse_number(flag, value, 16, 2048)?;
                 if !o.sim_size.is_power_of_two() {
-                    return Err(UsageError(format!(
-                        "--sim-size: {value} is not a power of two"
-                    )));
+                    return Err(UsageError(format!("--sim-size: {value} is not a power of two")));
                 }
             }
             "--set" => {
-                let (name, v) = value.split_once('=').ok_or_else(|| {
-                    UsageError(format!("--set: expected NAME=VALUE, got '{value}'"))
-                })?;
-                let spec = params::find(name).ok_or_else(|| {
-                    UsageError(params::ParamError::Unknown(name.to_owned()).to_string())
-                })?;
+                let (name, v) = value
+                    .split_once('=')
+                    .ok_or_else(|| UsageError(format!("--set: expected NAME=VALUE, got '{value}'")))?;
+                let spec = params::find(name)
+                    .ok_or_else(|| UsageError(params::ParamError::Unknown(name.to_owned()).to_string()))?;
                 let v: f32 = parse_number(flag, v, spec.min(), spec.max())?;
                 o.sets.push((name.to_owned(), v));
             }
@@ -124,15 +110,10 @@ fn make_demo(gpu: &HeadlessGpu, o: &Options) -> WaterDemo {
         &gpu.device,
         &gpu.queue,
         OFFSCREEN_FORMAT,
-        DemoOptions {
-            sim_size: o.sim_size,
-            ..Default::default()
-        },
+        DemoOptions { sim_size: o.sim_size, ..Default::default() },
     );
     for (name, v) in &o.sets {
-        demo.params
-            .set_by_name(name, *v)
-            .expect("names checked while parsing");
+        demo.params.set_by_name(name, *v).expect("names checked while parsing");
     }
     if let Some(y) = o.yaw {
         demo.camera.yaw = y;
@@ -158,13 +139,7 @@ fn render(o: &Options) -> Result<(), String> {
     let mut demo = make_demo(&gpu, o);
     let target = OffscreenTarget::new(&gpu.device, o.width, o.height);
     for _ in 0..o.frames {
-        demo.frame(
-            &gpu.device,
-            &gpu.queue,
-            &target.view,
-            target.size(),
-            1.0 / 60.0,
-        );
+        demo.frame(&gpu.device, &gpu.queue, &target.view, target.size(), 1.0 / 60.0);
     }
     let rgba = target.read_rgba(&gpu.device, &gpu.queue);
     write_png(out, o.width, o.height, &rgba)?;
@@ -195,8 +170,7 @@ struct StageTimer {
 
 impl StageTimer {
     fn new(gpu: &HeadlessGpu) -> Option<Self> {
-        let needed =
-            wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
+        let needed = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
         if !gpu.device.features().contains(needed) {
             return None;
         }
@@ -234,15 +208,10 @@ impl StageTimer {
     fn read(&self, gpu: &HeadlessGpu) -> [f64; 3] {
         let slice = self.readback.slice(..);
         slice.map_async(wgpu::MapMode::Read, |r| r.expect("map timestamps"));
-        gpu.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .expect("poll");
-        let ticks: Vec<u64> =
-            bytemuck::cast_slice(&slice.get_mapped_range().expect("timestamps")).to_vec();
+        gpu.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+        let ticks: Vec<u64> = bytemuck::cast_slice(&slice.get_mapped_range().expect("timestamps")).to_vec();
         self.readback.unmap();
-        let ms = |a: usize, b: usize| {
-            ticks[b].saturating_sub(ticks[a]) as f64 * self.period_ns as f64 / 1.0e6
-        };
+        let ms = |a: usize, b: usize| ticks[b].saturating_sub(ticks[a]) as f64 * self.period_ns as f64 / 1.0e6;
         [ms(0, 1), ms(1, 2), ms(2, 3)]
     }
 }
@@ -252,21 +221,10 @@ fn bench(o: &Options) -> Result<(), String> {
     let mut demo = make_demo(&gpu, o);
     let target = OffscreenTarget::new(&gpu.device, o.width, o.height);
     let timer = StageTimer::new(&gpu);
-    let wait = || {
-        gpu.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map(|_| ())
-            .map_err(|e| e.to_string())
-    };
+    let wait = || gpu.device.poll(wgpu::PollType::wait_indefinitely()).map(|_| ()).map_err(|e| e.to_string());
     // Warm-up: pipelines compiled, caches filled, sky painted.
     for _ in 0..5 {
-        demo.frame(
-            &gpu.device,
-            &gpu.queue,
-            &target.view,
-            target.size(),
-            1.0 / 60.0,
-        );
+        demo.frame(&gpu.device, &gpu.queue, &target.view, target.size(), 1.0 / 60.0);
     }
     wait()?;
     let mut frame_ms = Vec::new();
@@ -274,12 +232,7 @@ fn bench(o: &Options) -> Result<(), String> {
     for i in 0..o.frames {
         if i % 30 == 0 {
             // Keep the water moving during long runs.
-            demo.add_drop(
-                ((i / 30) as f32 * 0.37).sin() * 0.6,
-                ((i / 30) as f32 * 0.61).cos() * 0.6,
-                0.04,
-                0.012,
-            );
+            demo.add_drop(((i / 30) as f32 * 0.37).sin() * 0.6, ((i / 30) as f32 * 0.61).cos() * 0.6, 0.04, 0.012);
         }
         let start = Instant::now();
         match &timer {
@@ -317,10 +270,7 @@ fn bench(o: &Options) -> Result<(), String> {
                     1.0 / 60.0,
                     &mut |enc, stage| {
                         if stage != Stage::Start {
-                            let done = std::mem::replace(
-                                enc,
-                                gpu.device.create_command_encoder(&Default::default()),
-                            );
+                            let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
                             gpu.queue.submit([done.finish()]);
                             let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
                             times.push(last.elapsed().as_secs_f64() * 1e3);
@@ -372,9 +322,14 @@ fn bench(o: &Options) -> Result<(), String> {
 fn usage() -> String {
     let names: Vec<String> = params::PARAMS
         .iter()
-        .map(|p| format!("{} ({}..{} {})", p.name, p.min(), p.max(), p.unit))
+        .map(|p| match p.control {
+            params::Control::Toggle => format!("  {:<14} 0 or 1, default {}  {}", p.name, p.default, p.label),
+            params::Control::Slider { min, max, .. } => {
+                format!("  {:<14} {min}..{max} {}, default {}  {}", p.name, p.unit, p.default, p.label)
+            }
+        })
         .collect();
-    format!("{USAGE}{}\n", names.join(", "))
+    format!("{USAGE}\n{}\n", names.join("\n"))
 }
 
 fn main() -> ExitCode {

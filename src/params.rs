@@ -222,9 +222,7 @@ pub struct Params {
 
 impl Default for Params {
     fn default() -> Self {
-        Self {
-            values: PARAMS.iter().map(|p| p.default).collect(),
-        }
+        Self { values: PARAMS.iter().map(|p| p.default).collect() }
     }
 }
 
@@ -242,16 +240,11 @@ impl Params {
         let spec = spec(id);
         let clean = spec.sanitise(value);
         self.values[id as usize] = clean;
-        SetOutcome {
-            value: clean,
-            clamped: clean != value,
-        }
+        SetOutcome { value: clean, clamped: clean != value }
     }
 
     pub fn get_by_name(&self, name: &str) -> Result<f32, ParamError> {
-        find(name)
-            .map(|s| self.get(s.id))
-            .ok_or_else(|| ParamError::Unknown(name.to_owned()))
+        find(name).map(|s| self.get(s.id)).ok_or_else(|| ParamError::Unknown(name.to_owned()))
     }
 
     pub fn set_by_name(&mut self, name: &str, value: f32) -> Result<SetOutcome, ParamError> {
@@ -272,12 +265,7 @@ mod tests {
     fn table_is_indexed_by_id_and_defaults_are_in_range() {
         for (i, p) in PARAMS.iter().enumerate() {
             assert_eq!(p.id as usize, i, "{} out of place", p.name);
-            assert_eq!(
-                p.sanitise(p.default),
-                p.default,
-                "{} default out of range",
-                p.name
-            );
+            assert_eq!(p.sanitise(p.default), p.default, "{} default out of range", p.name);
             assert!(p.min() < p.max());
         }
         let mut names: Vec<_> = PARAMS.iter().map(|p| p.name).collect();
@@ -290,27 +278,14 @@ mod tests {
     fn out_of_range_values_are_clamped_and_reported() {
         let mut params = Params::default();
         let out = params.set_by_name("wave_speed", 99.0).unwrap();
-        assert_eq!(
-            out,
-            SetOutcome {
-                value: 2.0,
-                clamped: true
-            }
-        );
+        assert_eq!(out, SetOutcome { value: 2.0, clamped: true });
         assert_eq!(params.get(ParamId::WaveSpeed), 2.0);
         let out = params.set_by_name("damping", f32::NAN).unwrap();
         assert!(out.clamped);
         assert_eq!(out.value, spec(ParamId::Damping).default);
         let out = params.set_by_name("caustics", 0.2).unwrap();
         assert_eq!(out.value, 0.0);
-        assert!(matches!(
-            params.set_by_name("nope", 1.0),
-            Err(ParamError::Unknown(_))
-        ));
-        assert!(params
-            .get_by_name("nope")
-            .unwrap_err()
-            .to_string()
-            .contains("wave_speed"));
+        assert!(matches!(params.set_by_name("nope", 1.0), Err(ParamError::Unknown(_))));
+        assert!(params.get_by_name("nope").unwrap_err().to_string().contains("wave_speed"));
     }
 }

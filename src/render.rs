@@ -9,6 +9,8 @@ use crate::scene::{self, Sphere};
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
 
+/// Sun irradiance scale on a surface facing it (linear units; ambient sky light is ~0.35).
+pub const SUN_STRENGTH: f32 = 0.8;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Caustics map: red = light, green = light with the sphere's shadow.
 pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
@@ -46,6 +48,8 @@ pub struct RenderSettings {
     pub target_format: wgpu::TextureFormat,
     /// Side of the caustics map in texels.
     pub caustics_size: u32,
+    /// Quads per side of the water surface mesh (also the caustics mesh).
+    pub surface_grid: u32,
 }
 
 /// A triangle mesh in GPU buffers.
@@ -56,12 +60,7 @@ struct Mesh {
 }
 
 impl Mesh {
-    fn new<V: bytemuck::Pod>(
-        device: &wgpu::Device,
-        label: &str,
-        vertices: &[V],
-        indices: &[u32],
-    ) -> Self {
+    fn new<V: bytemuck::Pod>(device: &wgpu::Device, label: &str, vertices: &[V], indices: &[u32]) -> Self {
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(label),
             contents: bytemuck::cast_slice(vertices),
@@ -73,11 +72,7 @@ impl Mesh {
             contents: bytemuck::cast_slice(indices),
             usage: wgpu::BufferUsages::INDEX,
         });
-        Self {
-            vertices,
-            indices,
-            index_count,
-        }
+        Self { vertices, indices, index_count }
     }
 
     fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
@@ -101,17 +96,9 @@ fn push_triangle(indices: &mut Vec<u32>, positions: &[Vec3], tri: [u32; 3], outw
 fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
     let side = n + 1;
     let vertices: Vec<[f32; 2]> = (0..side * side)
-        .map(|i| {
-            [
-                (i % side) as f32 / n as f32 * 2.0 - 1.0,
-                (i / side) as f32 / n as f32 * 2.0 - 1.0,
-            ]
-        })
+        .map(|i| [(i % side) as f32 / n as f32 * 2.0 - 1.0, (i / side) as f32 / n as f32 * 2.0 - 1.0])
         .collect();
-    let positions: Vec<Vec3> = vertices
-        .iter()
-        .map(|v| Vec3::new(v[0], 0.0, v[1]))
-        .collect();
+    let positions: Vec<Vec3> = vertices.iter().map(|v| Vec3::new(v[0], 0.0, v[1])).collect();
     let mut indices = Vec::with_capacity((n * n * 6) as usize);
     for j in 0..n {
         for i in 0..n {
@@ -129,51 +116,11 @@ fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
 fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
     let (w, d, r) = (scene::HALF_WIDTH, scene::DEPTH, scene::RIM);
     let faces: [(Vec3, [Vec3; 4]); 5] = [
-        (
-            Vec3::Y,
-            [
-                Vec3::new(-w, -d, -w),
-                Vec3::new(w, -d, -w),
-                Vec3::new(w, -d, w),
-                Vec3::new(-w, -d, w),
-            ],
-        ),
-        (
-            Vec3::X,
-            [
-                Vec3::new(-w, -d, -w),
-                Vec3::new(-w, r, -w),
-                Vec3::new(-w, r, w),
-                Vec3::new(-w, -d, w),
-            ],
-        ),
-        (
-            Vec3::NEG_X,
-            [
-                Vec3::new(w, -d, -w),
-                Vec3::new(w, r, -w),
-                Vec3::new(w, r, w),
-                Vec3::new(w, -d, w),
-            ],
-        ),
-        (
-            Vec3::Z,
-            [
-                Vec3::new(-w, -d, -w),
-                Vec3::new(w, -d, -w),
-                Vec3::new(w, r, -w),
-                Vec3::new(-w, r, -w),
-            ],
-        ),
-        (
-            Vec3::NEG_Z,
-            [
-                Vec3::new(-w, -d, w),
-                Vec3::new(w, -d, w),
-                Vec3::new(w, r, w),
-                Vec3::new(-w, r, w),
-            ],
-        ),
+        (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
+        (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),
+        (Vec3::NEG_X, [Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(w, r, w), Vec3::new(w, -d, w)]),
+        (Vec3::Z, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(-w, r, -w)]),
+        (Vec3::NEG_Z, [Vec3::new(-w, -d, w), Vec3::new(w, -d, w), Vec3::new(w, r, w), Vec3::new(-w, r, w)]),
     ];
     let mut positions = Vec::new();
     let mut vertices = Vec::new();
@@ -197,11 +144,7 @@ fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
         let theta = std::f32::consts::PI * i as f32 / stacks as f32;
         for j in 0..=slices {
             let phi = std::f32::consts::TAU * j as f32 / slices as f32;
-            positions.push(Vec3::new(
-                theta.sin() * phi.cos(),
-                theta.cos(),
-                theta.sin() * phi.sin(),
-            ));
+            positions.push(Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin()));
         }
     }
     let row = slices + 1;
@@ -233,11 +176,7 @@ impl CausticsPass {
     fn new(device: &wgpu::Device, size: u32, water_layout: &wgpu::BindGroupLayout) -> Self {
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("caustics map"),
-            size: wgpu::Extent3d {
-                width: size,
-                height: size,
-                depth_or_array_layers: 1,
-            },
+            size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
@@ -248,11 +187,7 @@ impl CausticsPass {
             view_formats: &[],
         });
         let view = texture.create_view(&Default::default());
-        let module = gpu::shader(
-            device,
-            "caustics",
-            &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS],
-        );
+        let module = gpu::shader(device, "caustics", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS]);
         let additive = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::One,
@@ -270,18 +205,11 @@ impl CausticsPass {
                 stride: 8,
                 cull: None,
                 format: CAUSTICS_FORMAT,
-                blend: Some(wgpu::BlendState {
-                    color: additive,
-                    alpha: additive,
-                }),
+                blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
                 depth: false,
             },
         );
-        Self {
-            texture,
-            view,
-            pipeline,
-        }
+        Self { texture, view, pipeline }
     }
 
     /// The caustics map texture (for tests and debug views).
@@ -320,10 +248,7 @@ fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipe
                 attributes: p.attributes,
             })],
         },
-        primitive: wgpu::PrimitiveState {
-            cull_mode: p.cull,
-            ..Default::default()
-        },
+        primitive: wgpu::PrimitiveState { cull_mode: p.cull, ..Default::default() },
         depth_stencil: p.depth.then(|| wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(true),
@@ -374,12 +299,7 @@ pub struct Renderer {
 }
 
 impl Renderer {
-    pub fn new(
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        settings: RenderSettings,
-        water: &HeightField,
-    ) -> Self {
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: RenderSettings, water: &HeightField) -> Self {
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let water_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("scene + water layout"),
@@ -418,24 +338,14 @@ impl Renderer {
                 gpu::sampler_entry(4, vis),
             ],
         });
-        let uniforms = gpu::uniform_buffer(
-            device,
-            "scene uniforms",
-            &<SceneUniforms as bytemuck::Zeroable>::zeroed(),
-        );
+        let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
         let water_groups = water.state().bind_groups(|view| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("scene + water"),
                 layout: &water_layout,
                 entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: uniforms.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: wgpu::BindingResource::TextureView(view),
-                    },
+                    wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
                 ],
             })
         });
@@ -457,25 +367,15 @@ impl Renderer {
             label: Some("scene textures"),
             layout: &textures_layout,
             entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: wgpu::BindingResource::TextureView(&caustics.view),
-                },
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&caustics.view) },
                 wgpu::BindGroupEntry {
                     binding: 1,
-                    resource: wgpu::BindingResource::TextureView(
-                        &tiles.create_view(&Default::default()),
-                    ),
+                    resource: wgpu::BindingResource::TextureView(&tiles.create_view(&Default::default())),
                 },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: wgpu::BindingResource::TextureView(&sky_cube.view()),
-                },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&sky_cube.view()) },
                 wgpu::BindGroupEntry {
                     binding: 3,
-                    resource: wgpu::BindingResource::Sampler(&sampler(
-                        wgpu::AddressMode::ClampToEdge,
-                    )),
+                    resource: wgpu::BindingResource::Sampler(&sampler(wgpu::AddressMode::ClampToEdge)),
                 },
                 wgpu::BindGroupEntry {
                     binding: 4,
@@ -492,46 +392,30 @@ impl Renderer {
             &[gpu::wgsl::SCENE, gpu::wgsl::SKY],
             "fs_sky",
             &layouts,
-            FullscreenTarget {
-                format,
-                blend: None,
-                depth: Some(DEPTH_FORMAT),
-            },
+            FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
-        let pool_module = gpu::shader(
-            device,
-            "pool",
-            &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::POOL],
-        );
-        let sphere_module = gpu::shader(
-            device,
-            "sphere",
-            &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::SPHERE],
-        );
-        let water_module = gpu::shader(
-            device,
-            "water surface",
-            &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::WATER],
-        );
-        let scene_pipeline =
-            |label, module, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
-                mesh_pipeline(
-                    device,
-                    MeshPipeline {
-                        label,
-                        module,
-                        vertex_entry: vs,
-                        fragment_entry: fs,
-                        layouts: &layouts,
-                        attributes,
-                        stride,
-                        cull,
-                        format,
-                        blend: None,
-                        depth: true,
-                    },
-                )
-            };
+        let pool_module = gpu::shader(device, "pool", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::POOL]);
+        let sphere_module = gpu::shader(device, "sphere", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::SPHERE]);
+        let water_module =
+            gpu::shader(device, "water surface", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::WATER]);
+        let scene_pipeline = |label, module, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
+            mesh_pipeline(
+                device,
+                MeshPipeline {
+                    label,
+                    module,
+                    vertex_entry: vs,
+                    fragment_entry: fs,
+                    layouts: &layouts,
+                    attributes,
+                    stride,
+                    cull,
+                    format,
+                    blend: None,
+                    depth: true,
+                },
+            )
+        };
         let pool = scene_pipeline(
             "pool",
             &pool_module,
@@ -570,7 +454,7 @@ impl Renderer {
             Some(wgpu::Face::Front),
         );
 
-        let (grid_vertices, grid_indices) = water_grid(water.size().min(256));
+        let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
         let (sphere_vertices, sphere_indices) = unit_sphere(24, 48);
         Self {
@@ -610,14 +494,8 @@ impl Renderer {
                 label: Some("scene + water"),
                 layout,
                 entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: uniforms.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: wgpu::BindingResource::TextureView(view),
-                    },
+                    wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
                 ],
             })
         });
@@ -632,47 +510,26 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
-        let sphere = view
-            .sphere
-            .map_or([0.0; 4], |s| [s.centre.x, s.centre.y, s.centre.z, s.radius]);
+        let sphere = view.sphere.map_or([0.0; 4], |s| [s.centre.x, s.centre.y, s.centre.z, s.radius]);
         let refracted = scene::refracted_sun(view.sun);
         let n = water.size() as f32;
         let u = SceneUniforms {
             view_proj: view.view_proj.to_cols_array_2d(),
             inv_view_proj: view.view_proj.inverse().to_cols_array_2d(),
             eye: view.eye.extend(1.0).to_array(),
-            sun: [view.sun.x, view.sun.y, view.sun.z, 1.0],
+            sun: [view.sun.x, view.sun.y, view.sun.z, SUN_STRENGTH],
             refracted_sun: refracted.extend(0.0).to_array(),
             sphere,
-            pool: [
-                scene::HALF_WIDTH,
-                scene::DEPTH,
-                scene::RIM,
-                scene::IOR_WATER,
-            ],
+            pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, scene::IOR_WATER],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, 0.0],
-            output: [
-                if self.settings.target_format.is_srgb() {
-                    0.0
-                } else {
-                    1.0
-                },
-                0.0,
-                0.0,
-                0.0,
-            ],
+            output: [if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 }, 0.0, 0.0, 0.0],
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         self.sky_cube.update(queue, encoder, view.sun);
     }
 
     /// Projects the water grid along the refracted sunlight into the caustics map.
-    pub fn encode_caustics(
-        &self,
-        encoder: &mut wgpu::CommandEncoder,
-        view: &View,
-        water: &HeightField,
-    ) {
+    pub fn encode_caustics(&self, encoder: &mut wgpu::CommandEncoder, view: &View, water: &HeightField) {
         if !view.caustics {
             return;
         }
@@ -701,11 +558,7 @@ impl Renderer {
         if self.depth.as_ref().map(|d| d.size) != Some(size) {
             let texture = device.create_texture(&wgpu::TextureDescriptor {
                 label: Some("depth"),
-                size: wgpu::Extent3d {
-                    width: size.0.max(1),
-                    height: size.1.max(1),
-                    depth_or_array_layers: 1,
-                },
+                size: wgpu::Extent3d { width: size.0.max(1), height: size.1.max(1), depth_or_array_layers: 1 },
                 mip_level_count: 1,
                 sample_count: 1,
                 dimension: wgpu::TextureDimension::D2,
@@ -713,10 +566,7 @@ impl Renderer {
                 usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
                 view_formats: &[],
             });
-            self.depth = Some(DepthBuffer {
-                view: texture.create_view(&Default::default()),
-                size,
-            });
+            self.depth = Some(DepthBuffer { view: texture.create_view(&Default::default()), size });
         }
         &self.depth.as_ref().expect("depth buffer just made").view
     }
@@ -738,37 +588,32 @@ impl Renderer {
                 view: target,
                 depth_slice: None,
                 resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Store,
-                },
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &depth,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
                 stencil_ops: None,
             }),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,
         });
+        // Front to back, so early depth testing skips what the water and sphere hide;
+        // the sky last, only where nothing else was drawn.
         let water_group = &self.water_groups[water.state().current()];
-        self.sky
-            .draw(&mut pass, &[water_group, &self.textures_group]);
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        pass.set_pipeline(&self.pool);
-        self.pool_mesh.draw(&mut pass);
-        if view.sphere.is_some() {
-            pass.set_pipeline(&self.sphere);
-            self.sphere_mesh.draw(&mut pass);
-        }
         pass.set_pipeline(&self.surface_above);
         self.grid.draw(&mut pass);
         pass.set_pipeline(&self.surface_below);
         self.grid.draw(&mut pass);
+        if view.sphere.is_some() {
+            pass.set_pipeline(&self.sphere);
+            self.sphere_mesh.draw(&mut pass);
+        }
+        pass.set_pipeline(&self.pool);
+        self.pool_mesh.draw(&mut pass);
+        self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
     }
 }

@@ -22,10 +22,7 @@ pub fn sun_direction(azimuth_deg: f32, elevation_deg: f32) -> Vec3 {
 /// Azimuth and elevation (degrees) of a direction: the inverse of [`sun_direction`].
 pub fn direction_angles(dir: Vec3) -> (f32, f32) {
     let d = dir.normalize();
-    (
-        d.x.atan2(d.z).to_degrees(),
-        d.y.clamp(-1.0, 1.0).asin().to_degrees(),
-    )
+    (d.x.atan2(d.z).to_degrees(), d.y.clamp(-1.0, 1.0).asin().to_degrees())
 }
 
 /// Direction sunlight travels after refraction through a calm surface (points down).

@@ -51,14 +51,8 @@ pub fn drop_shape(d: f32, radius: f32) -> f32 {
 pub fn drop_mean(drop: &Drop, n: u32, half_width: f32) -> f32 {
     let dx = 2.0 * half_width / n as f32;
     let index = |x: f32| ((x + half_width) / dx - 0.5).clamp(0.0, n as f32 - 1.0);
-    let (i0, i1) = (
-        index(drop.x - drop.radius).floor() as u32,
-        index(drop.x + drop.radius).ceil() as u32,
-    );
-    let (j0, j1) = (
-        index(drop.z - drop.radius).floor() as u32,
-        index(drop.z + drop.radius).ceil() as u32,
-    );
+    let (i0, i1) = (index(drop.x - drop.radius).floor() as u32, index(drop.x + drop.radius).ceil() as u32);
+    let (j0, j1) = (index(drop.z - drop.radius).floor() as u32, index(drop.z + drop.radius).ceil() as u32);
     let mut sum = 0.0f64;
     for j in j0..=j1 {
         let z = -half_width + (j as f32 + 0.5) * dx;
@@ -85,11 +79,7 @@ pub struct FixedStep {
 
 impl FixedStep {
     pub fn new(dt: f32, max_steps: u32) -> Self {
-        Self {
-            dt,
-            max_steps,
-            accumulator: 0.0,
-        }
+        Self { dt, max_steps, accumulator: 0.0 }
     }
 
     /// Adds a frame's duration (s) and returns how many steps to take now.
@@ -100,11 +90,8 @@ impl FixedStep {
         // A tiny tolerance keeps 1/60 s frames from alternating 1 and 3 steps by rounding.
         let steps = ((self.accumulator + 1e-6) / self.dt).floor() as u32;
         let taken = steps.min(self.max_steps);
-        self.accumulator = if steps > self.max_steps {
-            0.0
-        } else {
-            (self.accumulator - taken as f32 * self.dt).max(0.0)
-        };
+        self.accumulator =
+            if steps > self.max_steps { 0.0 } else { (self.accumulator - taken as f32 * self.dt).max(0.0) };
         taken
     }
 }
@@ -144,14 +131,8 @@ impl HeightField {
                 label: Some("sim bind group"),
                 layout: &layout,
                 entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: uniforms.as_entire_binding(),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: 1,
-                        resource: wgpu::BindingResource::TextureView(view),
-                    },
+                    wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
                 ],
             })
         });
@@ -162,11 +143,7 @@ impl HeightField {
                 &[gpu::wgsl::SIM_SHARED, source],
                 entry,
                 &[&layout],
-                FullscreenTarget {
-                    format: STATE_FORMAT,
-                    blend: None,
-                    depth: None,
-                },
+                FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
             )
         };
         Self {
@@ -194,9 +171,7 @@ impl HeightField {
 
     /// Queues a drop for the next [`HeightField::encode`]. Degenerate drops are ignored.
     pub fn add_drop(&mut self, drop: Drop) {
-        let ok = [drop.x, drop.z, drop.radius, drop.strength]
-            .iter()
-            .all(|v| v.is_finite());
+        let ok = [drop.x, drop.z, drop.radius, drop.strength].iter().all(|v| v.is_finite());
         if ok && drop.radius > 0.0 && drop.strength != 0.0 {
             self.pending.push(drop);
         }
@@ -225,23 +200,10 @@ impl HeightField {
         let h = dt / substeps as f32;
         let dx = self.cell_size();
         let mut u = SimUniforms::zeroed();
-        u.grid = [
-            self.size as f32,
-            1.0 / self.size as f32,
-            dx,
-            self.half_width,
-        ];
+        u.grid = [self.size as f32, 1.0 / self.size as f32, dx, self.half_width];
         let damping = settings.damping.max(0.0);
-        u.step = [
-            h,
-            settings.wave_speed * settings.wave_speed * h / (dx * dx),
-            (-damping * h).exp(),
-            0.0,
-        ];
-        let correction: f32 = drops
-            .iter()
-            .map(|d| drop_mean(d, self.size, self.half_width))
-            .sum();
+        u.step = [h, settings.wave_speed * settings.wave_speed * h / (dx * dx), (-damping * h).exp(), 0.0];
+        let correction: f32 = drops.iter().map(|d| drop_mean(d, self.size, self.half_width)).sum();
         u.drops_info = [drops.len() as f32, correction, 0.0, 0.0];
         for (slot, d) in u.drops.iter_mut().zip(&drops) {
             *slot = [d.x, d.z, d.radius, d.strength];
@@ -251,12 +213,10 @@ impl HeightField {
             self.state.run(encoder, &self.drop_pass, &self.bind_groups);
         }
         for _ in 0..steps * substeps {
-            self.state
-                .run(encoder, &self.update_pass, &self.bind_groups);
+            self.state.run(encoder, &self.update_pass, &self.bind_groups);
         }
         if steps > 0 || !drops.is_empty() {
-            self.state
-                .run(encoder, &self.normals_pass, &self.bind_groups);
+            self.state.run(encoder, &self.normals_pass, &self.bind_groups);
         }
     }
 
@@ -268,11 +228,7 @@ impl HeightField {
             queue.write_texture(
                 texture.as_image_copy(),
                 &zeros,
-                wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(self.size * 16),
-                    rows_per_image: None,
-                },
+                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(self.size * 16), rows_per_image: None },
                 texture.size(),
             );
         }
@@ -304,10 +260,7 @@ mod tests {
             let mut clock = FixedStep::new(1.0 / 120.0, 8);
             let frames = (fps * 2.0).round() as u32;
             let steps: u32 = (0..frames).map(|_| clock.advance(1.0 / fps)).sum();
-            assert!(
-                (239..=240).contains(&steps),
-                "{fps} fps gave {steps} steps in 2 s"
-            );
+            assert!((239..=240).contains(&steps), "{fps} fps gave {steps} steps in 2 s");
         }
     }
 
@@ -321,21 +274,12 @@ mod tests {
     #[test]
     fn drop_mean_matches_the_analytic_integral_away_from_walls() {
         // Integral of the cosine bump over its disc: pi r^2 (1/2 - 2/pi^2).
-        let d = Drop {
-            x: 0.1,
-            z: -0.2,
-            radius: 0.1,
-            strength: 1.0,
-        };
+        let d = Drop { x: 0.1, z: -0.2, radius: 0.1, strength: 1.0 };
         let n = 512;
         let pool_area = 4.0;
-        let analytic =
-            std::f32::consts::PI * 0.01 * (0.5 - 2.0 / std::f32::consts::PI.powi(2)) / pool_area;
+        let analytic = std::f32::consts::PI * 0.01 * (0.5 - 2.0 / std::f32::consts::PI.powi(2)) / pool_area;
         let numeric = drop_mean(&d, n, 1.0);
-        assert!(
-            (numeric - analytic).abs() / analytic < 0.01,
-            "{numeric} vs {analytic}"
-        );
+        assert!((numeric - analytic).abs() / analytic < 0.01, "{numeric} vs {analytic}");
     }
 }
 
@@ -361,13 +305,7 @@ impl SplitMix64 {
 
 /// `count` drops at seeded random places in the pool (within 90 % of the half width),
 /// of the given radius (m) and strength (m), alternating in sign like rain and splashes.
-pub fn random_drops(
-    seed: u64,
-    count: u32,
-    half_width: f32,
-    radius: f32,
-    strength: f32,
-) -> Vec<Drop> {
+pub fn random_drops(seed: u64, count: u32, half_width: f32, radius: f32, strength: f32) -> Vec<Drop> {
     let mut rng = SplitMix64(seed);
     (0..count)
         .map(|i| Drop {

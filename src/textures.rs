@@ -68,10 +68,7 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
             level
                 .iter()
                 .flat_map(|c| {
-                    [c[0], c[1], c[2]]
-                        .map(|v| (linear_to_srgb(v) * 255.0).round() as u8)
-                        .into_iter()
-                        .chain([255])
+                    [c[0], c[1], c[2]].map(|v| (linear_to_srgb(v) * 255.0).round() as u8).into_iter().chain([255])
                 })
                 .collect(),
         );
@@ -102,11 +99,7 @@ pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::
     let mips = tile_mips();
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("tiles"),
-        size: wgpu::Extent3d {
-            width: TILE_TEXTURE_SIZE,
-            height: TILE_TEXTURE_SIZE,
-            depth_or_array_layers: 1,
-        },
+        size: wgpu::Extent3d { width: TILE_TEXTURE_SIZE, height: TILE_TEXTURE_SIZE, depth_or_array_layers: 1 },
         mip_level_count: mips.len() as u32,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
@@ -124,16 +117,8 @@ pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::
                 aspect: wgpu::TextureAspect::All,
             },
             data,
-            wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(size * 4),
-                rows_per_image: None,
-            },
-            wgpu::Extent3d {
-                width: size,
-                height: size,
-                depth_or_array_layers: 1,
-            },
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
         );
     }
     texture
@@ -160,11 +145,7 @@ impl SkyCube {
     pub fn new(device: &wgpu::Device) -> Self {
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("sky cube"),
-            size: wgpu::Extent3d {
-                width: SKY_FACE_SIZE,
-                height: SKY_FACE_SIZE,
-                depth_or_array_layers: 6,
-            },
+            size: wgpu::Extent3d { width: SKY_FACE_SIZE, height: SKY_FACE_SIZE, depth_or_array_layers: 6 },
             mip_level_count: 1,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
@@ -192,10 +173,7 @@ impl SkyCube {
                 gpu::uniform_buffer(
                     device,
                     "sky face uniforms",
-                    &SkyFaceUniforms {
-                        sun: [0.0, 1.0, 0.0, 0.0],
-                        face: [face as f32, 0.0, 0.0, 0.0],
-                    },
+                    &SkyFaceUniforms { sun: [0.0, 1.0, 0.0, 0.0], face: [face as f32, 0.0, 0.0, 0.0] },
                 )
             })
             .collect();
@@ -205,10 +183,7 @@ impl SkyCube {
                 device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("sky face group"),
                     layout: &layout,
-                    entries: &[wgpu::BindGroupEntry {
-                        binding: 0,
-                        resource: buffer.as_entire_binding(),
-                    }],
+                    entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
                 })
             })
             .collect();
@@ -218,20 +193,9 @@ impl SkyCube {
             &[gpu::wgsl::SKY_CUBE],
             "fs_sky_face",
             &[&layout],
-            FullscreenTarget {
-                format: SKY_FORMAT,
-                blend: None,
-                depth: None,
-            },
+            FullscreenTarget { format: SKY_FORMAT, blend: None, depth: None },
         );
-        Self {
-            texture,
-            face_views,
-            face_uniforms,
-            face_groups,
-            pass,
-            painted_for: None,
-        }
+        Self { texture, face_views, face_uniforms, face_groups, pass, painted_for: None }
     }
 
     /// A cube view of the sky for sampling by direction.
@@ -250,13 +214,9 @@ impl SkyCube {
         }
         self.painted_for = Some(sun);
         for face in 0..6 {
-            let u = SkyFaceUniforms {
-                sun: [sun.x, sun.y, sun.z, 0.0],
-                face: [face as f32, 0.0, 0.0, 0.0],
-            };
+            let u = SkyFaceUniforms { sun: [sun.x, sun.y, sun.z, 0.0], face: [face as f32, 0.0, 0.0, 0.0] };
             queue.write_buffer(&self.face_uniforms[face], 0, bytemuck::bytes_of(&u));
-            self.pass
-                .run(encoder, &self.face_views[face], &[&self.face_groups[face]]);
+            self.pass.run(encoder, &self.face_views[face], &[&self.face_groups[face]]);
         }
     }
 }
@@ -272,10 +232,7 @@ mod tests {
         let base = &mips[0];
         let grout = base[0];
         let tile_centre = base[((32 * TILE_TEXTURE_SIZE + 32) * 4) as usize];
-        assert!(
-            tile_centre > grout + 60,
-            "tile {tile_centre} vs grout {grout}"
-        );
+        assert!(tile_centre > grout + 60, "tile {tile_centre} vs grout {grout}");
         let last = mips.last().unwrap()[0];
         assert!(last > grout && last < tile_centre);
     }

@@ -19,11 +19,7 @@ impl Run {
         let g = common::gpu();
         let mut water = HeightField::new(&g.device, N, 1.0);
         water.add_drop(drop);
-        let mut run = Run {
-            water,
-            settings,
-            time: 0.0,
-        };
+        let mut run = Run { water, settings, time: 0.0 };
         run.steps(0);
         run
     }
@@ -31,8 +27,7 @@ impl Run {
     fn steps(&mut self, count: u32) {
         let g = common::gpu();
         let mut encoder = g.device.create_command_encoder(&Default::default());
-        self.water
-            .encode(&g.queue, &mut encoder, count, DT, self.settings);
+        self.water.encode(&g.queue, &mut encoder, count, DT, self.settings);
         g.queue.submit([encoder.finish()]);
         self.time += count as f32 * DT;
     }
@@ -44,11 +39,7 @@ impl Run {
 
     fn heights(&self) -> Vec<f32> {
         let g = common::gpu();
-        self.water
-            .read_state(&g.device, &g.queue)
-            .iter()
-            .map(|c| c[0])
-            .collect()
+        self.water.read_state(&g.device, &g.queue).iter().map(|c| c[0]).collect()
     }
 }
 
@@ -72,14 +63,7 @@ fn radial_profile(h: &[f32]) -> Vec<(f32, f32)> {
             }
         }
     }
-    (0..bins)
-        .map(|b| {
-            (
-                (b as f32 + 0.5) * dx,
-                (sum[b] / count[b].max(1) as f64) as f32,
-            )
-        })
-        .collect()
+    (0..bins).map(|b| ((b as f32 + 0.5) * dx, (sum[b] / count[b].max(1) as f64) as f32)).collect()
 }
 
 /// Radius (m) and height of the outgoing crest: the highest ring beyond `min_r`.
@@ -87,61 +71,35 @@ fn crest(h: &[f32], min_r: f32) -> (f32, f32) {
     radial_profile(h)
         .into_iter()
         .filter(|(r, _)| *r > min_r)
-        .fold(
-            (0.0, f32::MIN),
-            |best, p| if p.1 > best.1 { p } else { best },
-        )
+        .fold((0.0, f32::MIN), |best, p| if p.1 > best.1 { p } else { best })
 }
 
-const CENTRAL: Drop = Drop {
-    x: 0.0,
-    z: 0.0,
-    radius: 0.08,
-    strength: 0.01,
-};
+const CENTRAL: Drop = Drop { x: 0.0, z: 0.0, radius: 0.08, strength: 0.01 };
 
 #[test]
 fn ring_grows_at_the_wave_speed() {
     for c in [0.4f32, 0.8] {
-        let mut run = Run::new(
-            WaveSettings {
-                wave_speed: c,
-                damping: 0.0,
-            },
-            CENTRAL,
-        );
+        let mut run = Run::new(WaveSettings { wave_speed: c, damping: 0.0 }, CENTRAL);
         run.until(0.4);
         let (r1, _) = crest(&run.heights(), 0.1);
         run.until(0.9);
         let (r2, _) = crest(&run.heights(), 0.1);
         let speed = (r2 - r1) / 0.5;
         println!("c = {c} m/s: crest at {r1:.3} m and {r2:.3} m, measured {speed:.3} m/s");
-        assert!(
-            (speed - c).abs() <= 0.15 * c,
-            "ring speed {speed} m/s, expected {c} m/s ±15%"
-        );
+        assert!((speed - c).abs() <= 0.15 * c, "ring speed {speed} m/s, expected {c} m/s ±15%");
     }
 }
 
 #[test]
 fn mean_level_stays_at_rest() {
-    let mut run = Run::new(
-        WaveSettings {
-            wave_speed: 0.6,
-            damping: 0.5,
-        },
-        CENTRAL,
-    );
+    let mut run = Run::new(WaveSettings { wave_speed: 0.6, damping: 0.5 }, CENTRAL);
     let drop_volume_mean = 0.01 * std::f32::consts::PI * 0.08f32.powi(2) * 0.2974 / 4.0;
     for t in [0.0f32, 1.0, 3.0] {
         run.until(t);
         let h = run.heights();
         let mean = h.iter().map(|&v| v as f64).sum::<f64>() / h.len() as f64;
         println!("t = {t} s: mean height {mean:e} m (an uncorrected drop would give {drop_volume_mean:e} m)");
-        assert!(
-            mean.abs() < 1e-3 * drop_volume_mean as f64 + 1e-9,
-            "mean level drifted to {mean} m at t = {t} s"
-        );
+        assert!(mean.abs() < 1e-3 * drop_volume_mean as f64 + 1e-9, "mean level drifted to {mean} m at t = {t} s");
     }
 }
 
@@ -149,20 +107,8 @@ fn mean_level_stays_at_rest() {
 fn peak_decays_with_damping() {
     let t = 1.0;
     let k = 1.2;
-    let mut free = Run::new(
-        WaveSettings {
-            wave_speed: 0.6,
-            damping: 0.0,
-        },
-        CENTRAL,
-    );
-    let mut damped = Run::new(
-        WaveSettings {
-            wave_speed: 0.6,
-            damping: k,
-        },
-        CENTRAL,
-    );
+    let mut free = Run::new(WaveSettings { wave_speed: 0.6, damping: 0.0 }, CENTRAL);
+    let mut damped = Run::new(WaveSettings { wave_speed: 0.6, damping: k }, CENTRAL);
     free.until(t);
     damped.until(t);
     let (_, a_free) = crest(&free.heights(), 0.1);
@@ -170,41 +116,23 @@ fn peak_decays_with_damping() {
     let ratio = a_damped / a_free;
     let expected = (-k * t / 2.0).exp();
     println!("crest {a_free:e} m free, {a_damped:e} m damped: ratio {ratio:.3}, exp(-k t / 2) = {expected:.3}");
-    assert!(
-        (ratio - expected).abs() < 0.1 * expected,
-        "damping ratio {ratio}, expected {expected}"
-    );
+    assert!((ratio - expected).abs() < 0.1 * expected, "damping ratio {ratio}, expected {expected}");
 }
 
 #[test]
 fn nothing_reaches_the_far_corner_before_it_could() {
     let c = 0.6;
-    let mut run = Run::new(
-        WaveSettings {
-            wave_speed: c,
-            damping: 0.0,
-        },
-        CENTRAL,
-    );
+    let mut run = Run::new(WaveSettings { wave_speed: c, damping: 0.0 }, CENTRAL);
     // Nearest edge of the drop to the corner cell, over the wave speed.
     let corner = ((centre(N - 1).powi(2) * 2.0).sqrt() - CENTRAL.radius) / c;
     // Change of the corner cells since the drop. (The drop's volume correction lowers the
     // whole pool by a uniform 1.5e-5 m at once; that is the baseline, not a wave.)
     let corner_cells = |run: &Run| -> Vec<f32> {
         let h = run.heights();
-        (N - 4..N)
-            .flat_map(|j| (N - 4..N).map(move |i| (j * N + i) as usize))
-            .map(|k| h[k])
-            .collect()
+        (N - 4..N).flat_map(|j| (N - 4..N).map(move |i| (j * N + i) as usize)).map(|k| h[k]).collect()
     };
     let baseline = corner_cells(&run);
-    let change = |run: &Run| {
-        corner_cells(run)
-            .iter()
-            .zip(&baseline)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0f32, f32::max)
-    };
+    let change = |run: &Run| corner_cells(run).iter().zip(&baseline).map(|(a, b)| (a - b).abs()).fold(0.0f32, f32::max);
     run.until(0.8 * corner);
     let early = change(&run);
     let mut late = 0.0f32;
@@ -213,12 +141,6 @@ fn nothing_reaches_the_far_corner_before_it_could() {
         late = late.max(change(&run));
     }
     println!("front due at {corner:.2} s; corner change {early:e} m at 0.8x, up to {late:e} m from 1x to 1.5x");
-    assert!(
-        early < 1e-4 * CENTRAL.strength,
-        "the corner moved before the wave could reach it: {early} m"
-    );
-    assert!(
-        late > 1e-3 * CENTRAL.strength,
-        "the wave never reached the corner: {late} m"
-    );
+    assert!(early < 1e-4 * CENTRAL.strength, "the corner moved before the wave could reach it: {early} m");
+    assert!(late > 1e-3 * CENTRAL.strength, "the wave never reached the corner: {late} m");
 }

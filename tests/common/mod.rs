@@ -31,11 +31,7 @@ pub struct Frame {
 impl Frame {
     pub fn pixel(&self, x: u32, y: u32) -> [f32; 3] {
         let i = ((y * self.width + x) * 4) as usize;
-        [
-            self.rgba[i] as f32 / 255.0,
-            self.rgba[i + 1] as f32 / 255.0,
-            self.rgba[i + 2] as f32 / 255.0,
-        ]
+        [self.rgba[i] as f32 / 255.0, self.rgba[i + 1] as f32 / 255.0, self.rgba[i + 2] as f32 / 255.0]
     }
 
     /// Rec. 709 luma of the sRGB-encoded pixel.
@@ -80,6 +76,21 @@ impl Frame {
     }
 }
 
+impl Frame {
+    /// Fraction of pixels in a rectangle where any channel differs by more than `threshold` (0..255).
+    pub fn changed_fraction(&self, other: &Frame, rect: Rect, threshold: u8) -> f64 {
+        let pts = rect.pixels(self);
+        let changed = pts
+            .iter()
+            .filter(|&&(x, y)| {
+                let i = ((y * self.width + x) * 4) as usize;
+                (0..3).any(|k| self.rgba[i + k].abs_diff(other.rgba[i + k]) > threshold)
+            })
+            .count();
+        changed as f64 / pts.len() as f64
+    }
+}
+
 /// A rectangle in fractions of the frame: x0, y0 (top-left) to x1, y1.
 #[derive(Clone, Copy, Debug)]
 pub struct Rect(pub f32, pub f32, pub f32, pub f32);
@@ -88,17 +99,9 @@ impl Rect {
     pub const ALL: Rect = Rect(0.0, 0.0, 1.0, 1.0);
 
     pub fn pixels(&self, f: &Frame) -> Vec<(u32, u32)> {
-        let (x0, x1) = (
-            (self.0 * f.width as f32) as u32,
-            ((self.2 * f.width as f32) as u32).min(f.width),
-        );
-        let (y0, y1) = (
-            (self.1 * f.height as f32) as u32,
-            ((self.3 * f.height as f32) as u32).min(f.height),
-        );
-        (y0..y1)
-            .flat_map(|y| (x0..x1).map(move |x| (x, y)))
-            .collect()
+        let (x0, x1) = ((self.0 * f.width as f32) as u32, ((self.2 * f.width as f32) as u32).min(f.width));
+        let (y0, y1) = ((self.1 * f.height as f32) as u32, ((self.3 * f.height as f32) as u32).min(f.height));
+        (y0..y1).flat_map(|y| (x0..x1).map(move |x| (x, y))).collect()
     }
 
     /// A square of half-size `r` (fraction of the width) around a pixel.
@@ -110,21 +113,28 @@ impl Rect {
 }
 
 /// Renders `frames` frames of `frame_time` seconds and returns the last.
-pub fn render(
-    demo: &mut WaterDemo,
-    width: u32,
-    height: u32,
-    frames: u32,
-    frame_time: f32,
-) -> Frame {
+pub fn render(demo: &mut WaterDemo, width: u32, height: u32, frames: u32, frame_time: f32) -> Frame {
     let g = gpu();
     let target = OffscreenTarget::new(&g.device, width, height);
     for _ in 0..frames {
         demo.frame(&g.device, &g.queue, &target.view, target.size(), frame_time);
     }
-    Frame {
-        width,
-        height,
-        rgba: target.read_rgba(&g.device, &g.queue),
+    let frame = Frame { width, height, rgba: target.read_rgba(&g.device, &g.queue) };
+    dump(&frame);
+    frame
+}
+
+/// With WAVEPOOL_DUMP_FRAMES=DIR, every rendered test frame is also written there as PNG
+/// (named by test thread and a counter), to look at what a failing test saw.
+fn dump(frame: &Frame) {
+    use std::sync::atomic::{AtomicU32, Ordering};
+    static COUNTER: AtomicU32 = AtomicU32::new(0);
+    if let Some(dir) = std::env::var_os("WAVEPOOL_DUMP_FRAMES") {
+        let dir = std::path::PathBuf::from(dir);
+        let _ = std::fs::create_dir_all(&dir);
+        let thread = std::thread::current().name().unwrap_or("main").replace("::", "-");
+        let n = COUNTER.fetch_add(1, Ordering::SeqCst);
+        let path = dir.join(format!("{thread}-{n}.png"));
+        wavepool::headless::write_png(&path, frame.width, frame.height, &frame.rgba).expect("dump frame");
     }
 }

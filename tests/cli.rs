@@ -1,0 +1,97 @@
+//! The `wavepool` binary as a user runs it: usage errors exit 2 without a panic, a missing
+//! adapter exits 1 with a clear message, `render` writes a real PNG, `bench` prints JSON.
+
+use std::process::{Command, Output};
+
+fn wavepool(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_wavepool"))
+        .args(args)
+        .env("XDG_RUNTIME_DIR", "/tmp")
+        .output()
+        .expect("run wavepool")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn bad_arguments_give_usage_and_exit_2() {
+    let cases: &[(&[&str], &str)] = &[
+        (&[], "USAGE"),
+        (&["fly"], "unknown command"),
+        (&["render", "--width", "abc", "--out", "x.png"], "not a number"),
+        (&["render", "--frames", "0", "--out", "x.png"], "outside"),
+        (&["render", "--width"], "needs a value"),
+        (&["render", "--bogus", "1"], "unknown option"),
+        (&["render", "--set", "gravity_well=1", "--out", "x.png"], "unknown parameter"),
+        (&["render", "--set", "wave_speed=99", "--out", "x.png"], "outside"),
+        (&["bench", "--sim-size", "300"], "power of two"),
+    ];
+    for (args, expected) in cases {
+        let out = wavepool(args);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?} exited {:?}: {err}", out.status);
+        assert!(err.contains(expected), "{args:?}: expected '{expected}' in: {err}");
+        assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    }
+}
+
+#[test]
+fn no_adapter_is_a_clear_error_with_exit_1() {
+    // Metal does not exist on Linux: the instance finds no adapter at all.
+    let out = Command::new(env!("CARGO_BIN_EXE_wavepool"))
+        .args(["render", "--out", "never.png"])
+        .env("WGPU_BACKEND", "metal")
+        .output()
+        .expect("run wavepool");
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("no GPU adapter found") && err.contains("mesa-vulkan-drivers"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+}
+
+#[test]
+fn render_writes_a_png_of_the_scene() {
+    let dir = std::env::temp_dir().join(format!("wavepool-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("frame.png");
+    let out = wavepool(&[
+        "render",
+        "--out",
+        path.to_str().unwrap(),
+        "--width",
+        "160",
+        "--height",
+        "120",
+        "--frames",
+        "3",
+        "--drops",
+        "4",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let (w, h, rgba) = wavepool::headless::read_png(&path).expect("a readable PNG");
+    assert_eq!((w, h), (160, 120));
+    let distinct: std::collections::HashSet<&[u8]> = rgba.chunks(4).collect();
+    assert!(distinct.len() > 200, "only {} distinct colours: not a rendered scene", distinct.len());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bench_prints_one_json_object() {
+    let out = wavepool(&["bench", "--width", "160", "--height", "120", "--frames", "4"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8(out.stdout).unwrap();
+    let json: serde_json::Value = serde_json::from_str(text.trim()).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert!(json["adapter"].as_str().is_some_and(|s| !s.is_empty()), "{json}");
+    assert!(json["backend"].is_string());
+    for key in ["median", "p95"] {
+        let v = json["frame_ms"][key].as_f64().unwrap_or_else(|| panic!("frame_ms.{key} missing: {json}"));
+        assert!(v > 0.0, "{json}");
+    }
+    for key in ["simulation", "caustics", "scene"] {
+        let v = json["stage_ms"][key].as_f64().unwrap_or_else(|| panic!("stage_ms.{key} missing: {json}"));
+        assert!(v >= 0.0, "{json}");
+    }
+    assert!(json["stage_timing"].is_string());
+}

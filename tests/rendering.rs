@@ -1,0 +1,145 @@
+//! Statistics of real frames rendered on the GPU (lavapipe in CI): the picture has
+//! structure, the sky is sky-coloured, caustics add contrast on the floor, a drop changes
+//! the water but not the sky, rendering is deterministic, and a reference frame still matches.
+
+mod common;
+
+use common::{render, Frame, Rect};
+use glam::{Vec2, Vec3};
+use wavepool::demo::{DemoOptions, WaterDemo};
+use wavepool::headless::{read_png, write_png};
+use wavepool::params::ParamId;
+use wavepool::sim::random_drops;
+
+const W: u32 = 320;
+const H: u32 = 240;
+
+fn with_drops(seed: u64, count: u32) -> WaterDemo {
+    let mut demo = common::demo(DemoOptions::default());
+    for d in random_drops(seed, count, 1.0, 0.05, 0.015) {
+        demo.add_drop(d.x, d.z, d.radius, d.strength);
+    }
+    demo
+}
+
+/// A view low enough that the top of the frame is sky.
+fn low_view(demo: &mut WaterDemo) {
+    demo.camera.pitch = 19.0;
+    demo.camera.yaw = -25.0;
+    demo.camera.distance = 3.6;
+}
+
+#[test]
+fn frame_is_not_uniform() {
+    let mut demo = with_drops(3, 10);
+    let frame = render(&mut demo, W, H, 20, 1.0 / 60.0);
+    let (mean, var) = frame.luma_stats(Rect::ALL);
+    println!("luma mean {mean:.3}, std {:.3}", var.sqrt());
+    assert!(var.sqrt() > 0.05, "frame is nearly uniform: luma std {}", var.sqrt());
+    assert!(mean > 0.15 && mean < 0.9, "frame too dark or washed out: mean luma {mean}");
+}
+
+#[test]
+fn sky_region_has_the_sky_colour() {
+    let mut demo = with_drops(4, 6);
+    low_view(&mut demo);
+    let frame = render(&mut demo, W, H, 4, 1.0 / 60.0);
+    let [r, g, b] = frame.mean_colour(Rect(0.0, 0.0, 1.0, 0.08));
+    println!("top of frame: r {r:.3} g {g:.3} b {b:.3}");
+    assert!(b > g && g > r, "sky should be blue-dominant, got {r} {g} {b}");
+    assert!(b - r > 0.12 && b > 0.6, "sky too grey or dark: {r} {g} {b}");
+    let (_, var) = frame.luma_stats(Rect(0.0, 0.0, 1.0, 0.08));
+    assert!(var.sqrt() < 0.08, "sky region is not smooth (std {})", var.sqrt());
+}
+
+#[test]
+fn caustics_add_contrast_on_the_floor() {
+    let mut demo = with_drops(5, 30);
+    demo.params.set(ParamId::Sphere, 0.0);
+    demo.camera.pitch = 89.0;
+    demo.camera.distance = 3.0;
+    demo.camera.target = Vec3::new(0.0, -1.0, 0.0);
+    let _ = render(&mut demo, W, H, 40, 1.0 / 60.0);
+    demo.params.set(ParamId::Paused, 1.0);
+    let floor = Rect(0.35, 0.3, 0.65, 0.7);
+    let on = render(&mut demo, W, H, 1, 1.0 / 60.0);
+    demo.params.set(ParamId::Caustics, 0.0);
+    let off = render(&mut demo, W, H, 1, 1.0 / 60.0);
+    let (mean_on, var_on) = on.luma_stats(floor);
+    let (mean_off, var_off) = off.luma_stats(floor);
+    println!("floor luma: caustics on mean {mean_on:.3} var {var_on:.5}; off mean {mean_off:.3} var {var_off:.5}");
+    assert!(var_on > 2.0 * var_off, "caustics should at least double the floor's luma variance: {var_on} vs {var_off}");
+    // Caustics redistribute light, they do not create it: mean brightness stays close.
+    assert!((mean_on - mean_off).abs() < 0.1, "caustics changed mean floor brightness: {mean_on} vs {mean_off}");
+}
+
+#[test]
+fn a_drop_changes_the_water_but_not_the_sky() {
+    let at = Vec3::new(0.2, 0.0, 0.2);
+    let run = |drop: bool| {
+        let mut demo = common::demo(DemoOptions::default());
+        low_view(&mut demo);
+        if drop {
+            demo.add_drop(at.x, at.z, 0.08, 0.02);
+        }
+        let frame = render(&mut demo, W, H, 30, 1.0 / 60.0);
+        (frame, demo.camera.project(at, Vec2::new(W as f32, H as f32)).expect("drop in view"))
+    };
+    let (calm, _) = run(false);
+    let (rippled, pixel) = run(true);
+    let near = Rect::around(pixel.x, pixel.y, &rippled, 0.1);
+    let water_change = rippled.changed_fraction(&calm, near, 16);
+    let sky = Rect(0.0, 0.0, 1.0, 0.08);
+    let sky_change = rippled.mean_abs_diff(&calm, sky);
+    println!(
+        "drop at pixel {pixel:?}: {:.1}% of nearby pixels changed by > 16/255, sky by {sky_change:.3}/255 on average",
+        water_change * 100.0
+    );
+    assert!(water_change > 0.03, "the drop did not show on the water: {water_change}");
+    assert_eq!(rippled.changed_fraction(&calm, sky, 0), 0.0, "the sky changed after a drop");
+}
+
+#[test]
+fn same_inputs_give_the_same_image() {
+    let frames: Vec<Frame> = (0..2).map(|_| render(&mut with_drops(9, 12), W, H, 15, 1.0 / 60.0)).collect();
+    let diff = frames[0].mean_abs_diff(&frames[1], Rect::ALL);
+    assert_eq!(diff, 0.0, "two identical runs differ by {diff}/255 on average");
+}
+
+/// Refresh on purpose after an intended visual change:
+/// `WAVEPOOL_BLESS=1 cargo test --test rendering reference_frame`, then look at the new
+/// `tests/reference/default.png` before committing it.
+#[test]
+fn reference_frame_matches() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/default.png");
+    let frame = render(&mut with_drops(1, 12), W, H, 30, 1.0 / 60.0);
+    if std::env::var_os("WAVEPOOL_BLESS").is_some() {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        write_png(&path, W, H, &frame.rgba).unwrap();
+        println!("wrote {}", path.display());
+        return;
+    }
+    let (w, h, rgba) = read_png(&path).unwrap_or_else(|e| panic!("{e}; create it with WAVEPOOL_BLESS=1"));
+    assert_eq!((w, h), (W, H), "reference has another size");
+    let reference = Frame { width: w, height: h, rgba };
+    let mean = frame.mean_abs_diff(&reference, Rect::ALL);
+    let far_off = Rect::ALL
+        .pixels(&frame)
+        .iter()
+        .filter(|&&(x, y)| {
+            let (a, b) = (frame.pixel(x, y), reference.pixel(x, y));
+            (0..3).any(|k| (a[k] - b[k]).abs() > 32.0 / 255.0)
+        })
+        .count() as f64
+        / (W * H) as f64;
+    println!("reference frame: mean difference {mean:.3}/255, {:.3}% of pixels off by > 32", far_off * 100.0);
+    if mean > 1.5 || far_off > 0.005 {
+        let actual = path.with_file_name("default.actual.png");
+        write_png(&actual, W, H, &frame.rgba).unwrap();
+        panic!(
+            "frame differs from the reference (mean {mean:.2}/255, {:.2}% far off); see {}",
+            far_off * 100.0,
+            actual.display()
+        );
+    }
+}
