@@ -13,6 +13,6 @@ fn fs_drop(in: FullscreenOut) -> @location(0) vec4<f32> {
         let d = length(x - drop.xy) / drop.z;
         s.x += drop.w * (0.5 - 0.5 * cos(PI * max(1.0 - d, 0.0)));
     }
-    s.x -= sim.drops_info.y;
+    s.x = bounded(s.x - sim.drops_info.y, sim.bounds.x);
     return s;
 }

@@ -5,6 +5,7 @@
 struct Sim {
     grid: vec4<f32>,        // x N, y 1/N, z cell size dx (m), w pool half width W (m)
     step: vec4<f32>,        // x dt (s), y c^2 dt / dx^2 (1/s), z velocity damping per step exp(-k dt)
+    bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s)
     drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
     drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
 };
@@ -25,4 +26,10 @@ fn cell_centre(p: vec2<i32>) -> vec2<f32> {
 
 fn texel(position: vec4<f32>) -> vec2<i32> {
     return vec2<i32>(floor(position.xy));
+}
+
+// A finite value clamped to [-limit, limit]; NaN and infinity become 0 (rest), so a bad
+// value can never spread through the grid.
+fn bounded(x: f32, limit: f32) -> f32 {
+    return clamp(select(0.0, x, abs(x) <= 3.0e38), -limit, limit);
 }

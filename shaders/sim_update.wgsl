@@ -1,6 +1,7 @@
 // One step of the damped 2-D wave equation h_tt = c^2 (h_xx + h_zz) - k h_t on the grid,
 // semi-implicit Euler: v += dt c^2 lap(h) / dx^2, v *= exp(-k dt), h += dt v.
 // Stable while c dt / dx <= 1/sqrt(2) (CFL); the CPU picks substeps to keep it so.
+// Height and velocity are clamped to fixed bounds (NaN becomes rest): bounded under any input.
 
 @fragment
 fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
@@ -9,7 +10,7 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     let neighbours = cell(p + vec2<i32>(1, 0)).x + cell(p - vec2<i32>(1, 0)).x
         + cell(p + vec2<i32>(0, 1)).x + cell(p - vec2<i32>(0, 1)).x;
     let laplacian = neighbours - 4.0 * c.x;
-    let v = (c.y + sim.step.y * laplacian) * sim.step.z;
-    let h = c.x + sim.step.x * v;
+    let v = bounded((c.y + sim.step.y * laplacian) * sim.step.z, sim.bounds.y);
+    let h = bounded(c.x + sim.step.x * v, sim.bounds.x);
     return vec4<f32>(h, v, c.z, c.w);
 }

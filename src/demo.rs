@@ -10,8 +10,10 @@ use crate::render::{RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
 use crate::sim::{Drop, FixedStep, HeightField, WaveSettings};
 
+/// Fixed simulation steps per simulated second.
+pub const STEPS_PER_SECOND: u32 = 120;
 /// Simulated seconds per step.
-pub const STEP_DT: f32 = 1.0 / 120.0;
+pub const STEP_DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
 /// Most steps one frame may take (a frame longer than this many steps drops the rest).
 pub const MAX_STEPS_PER_FRAME: u32 = 8;
 
@@ -68,8 +70,8 @@ pub struct WaterDemo {
     clock: FixedStep,
     viewport: Vec2,
     drag: Drag,
-    /// Simulated time so far (s).
-    sim_time: f64,
+    /// Steps simulated so far.
+    steps_taken: u64,
 }
 
 impl WaterDemo {
@@ -96,7 +98,7 @@ impl WaterDemo {
             clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
             viewport: Vec2::new(800.0, 600.0),
             drag: Drag::None,
-            sim_time: 0.0,
+            steps_taken: 0,
         }
     }
 
@@ -110,7 +112,12 @@ impl WaterDemo {
 
     /// Simulated time so far (s).
     pub fn sim_time(&self) -> f64 {
-        self.sim_time
+        self.steps_taken as f64 / STEPS_PER_SECOND as f64
+    }
+
+    /// Fixed steps simulated so far.
+    pub fn steps_taken(&self) -> u64 {
+        self.steps_taken
     }
 
     /// The sphere, if shown.
@@ -290,7 +297,7 @@ impl WaterDemo {
         } else {
             self.clock.advance(frame_time)
         };
-        self.sim_time += (steps as f64) * STEP_DT as f64;
+        self.steps_taken += steps as u64;
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),

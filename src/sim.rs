@@ -4,6 +4,8 @@
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
+pub mod cpu;
+
 /// Format of the state textures: 32-bit floats, read with `textureLoad` only (no filtering).
 pub const STATE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 /// Drops the drop pass applies at once; more wait for the next frame.
@@ -37,8 +39,69 @@ pub struct WaveSettings {
 struct SimUniforms {
     grid: [f32; 4],
     step: [f32; 4],
+    bounds: [f32; 4],
     drops_info: [f32; 4],
     drops: [[f32; 4]; MAX_DROPS_PER_PASS],
+}
+
+/// Largest |height| the state may hold (m): just below the rim, so no wave ever
+/// overtops the pool. The update clamps to it and replaces NaN or infinity by rest.
+pub const MAX_HEIGHT: f32 = 0.15;
+/// Largest |vertical velocity| the state may hold (m/s).
+pub const MAX_VELOCITY: f32 = 5.0;
+
+/// Everything one batch of steps needs, worked out once on the CPU and used by both the
+/// GPU passes and the CPU reference, so the two run the same arithmetic.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepPlan {
+    /// Drops applied before the steps.
+    pub drops: Vec<Drop>,
+    /// Uniform height (m) subtracted with the drops so they add no water.
+    pub correction: f32,
+    /// Update passes to run (steps times substeps).
+    pub updates: u32,
+    /// Length of one update (s).
+    pub dt: f32,
+    /// c^2 dt / dx^2 of one update.
+    pub coupling: f32,
+    /// Factor exp(-k dt) applied to the velocity each update.
+    pub velocity_decay: f32,
+}
+
+impl StepPlan {
+    /// Plans `steps` steps of `dt` seconds on an `n` x `n` grid over a pool of `half_width`
+    /// (m), taking at most [`MAX_DROPS_PER_PASS`] drops from the front of `pending`.
+    pub fn new(pending: &mut Vec<Drop>, n: u32, half_width: f32, steps: u32, dt: f32, settings: WaveSettings) -> Self {
+        let take = pending.len().min(MAX_DROPS_PER_PASS);
+        let drops: Vec<Drop> = pending.drain(..take).collect();
+        let dx = 2.0 * half_width / n as f32;
+        let substeps = substeps(dt, settings.wave_speed, dx);
+        let h = dt / substeps as f32;
+        Self {
+            correction: drops.iter().map(|d| drop_mean(d, n, half_width)).sum(),
+            drops,
+            updates: steps * substeps,
+            dt: h,
+            coupling: settings.wave_speed * settings.wave_speed * h / (dx * dx),
+            velocity_decay: (-settings.damping.max(0.0) * h).exp(),
+        }
+    }
+
+    /// Whether the normals need recomputing after this batch.
+    pub fn changes_state(&self) -> bool {
+        self.updates > 0 || !self.drops.is_empty()
+    }
+}
+
+/// Updates per step of `dt` seconds that keep the Courant number c dt / dx of each at or
+/// below [`MAX_COURANT`] on cells of `dx` metres.
+pub fn substeps(dt: f32, wave_speed: f32, dx: f32) -> u32 {
+    let courant = wave_speed.abs() * dt / dx;
+    if courant.is_finite() {
+        ((courant / MAX_COURANT).ceil() as u32).max(1)
+    } else {
+        1
+    }
 }
 
 /// Shape of a drop at distance `d` from its centre, 1 at the centre and 0 from the radius on.
@@ -180,8 +243,7 @@ impl HeightField {
     /// Substeps per step of `dt` seconds that keep the Courant number c dt / dx at or
     /// below [`MAX_COURANT`].
     pub fn substeps(&self, dt: f32, wave_speed: f32) -> u32 {
-        let courant = wave_speed.abs() * dt / self.cell_size();
-        ((courant / MAX_COURANT).ceil() as u32).max(1)
+        substeps(dt, wave_speed, self.cell_size())
     }
 
     /// Records the queued drops, `steps` steps of `dt` seconds each, and the normals pass.
@@ -194,28 +256,23 @@ impl HeightField {
         dt: f32,
         settings: WaveSettings,
     ) {
-        let take = self.pending.len().min(MAX_DROPS_PER_PASS);
-        let drops: Vec<Drop> = self.pending.drain(..take).collect();
-        let substeps = self.substeps(dt, settings.wave_speed);
-        let h = dt / substeps as f32;
-        let dx = self.cell_size();
+        let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         let mut u = SimUniforms::zeroed();
-        u.grid = [self.size as f32, 1.0 / self.size as f32, dx, self.half_width];
-        let damping = settings.damping.max(0.0);
-        u.step = [h, settings.wave_speed * settings.wave_speed * h / (dx * dx), (-damping * h).exp(), 0.0];
-        let correction: f32 = drops.iter().map(|d| drop_mean(d, self.size, self.half_width)).sum();
-        u.drops_info = [drops.len() as f32, correction, 0.0, 0.0];
-        for (slot, d) in u.drops.iter_mut().zip(&drops) {
+        u.grid = [self.size as f32, 1.0 / self.size as f32, self.cell_size(), self.half_width];
+        u.step = [plan.dt, plan.coupling, plan.velocity_decay, 0.0];
+        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, 0.0, 0.0];
+        u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
+        for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];
         }
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
-        if !drops.is_empty() {
+        if !plan.drops.is_empty() {
             self.state.run(encoder, &self.drop_pass, &self.bind_groups);
         }
-        for _ in 0..steps * substeps {
+        for _ in 0..plan.updates {
             self.state.run(encoder, &self.update_pass, &self.bind_groups);
         }
-        if steps > 0 || !drops.is_empty() {
+        if plan.changes_state() {
             self.state.run(encoder, &self.normals_pass, &self.bind_groups);
         }
     }

@@ -144,3 +144,45 @@ fn nothing_reaches_the_far_corner_before_it_could() {
     assert!(early < 1e-4 * CENTRAL.strength, "the corner moved before the wave could reach it: {early} m");
     assert!(late > 1e-3 * CENTRAL.strength, "the wave never reached the corner: {late} m");
 }
+
+#[test]
+fn gpu_passes_match_the_cpu_reference() {
+    use wavepool::sim::cpu::CpuHeightField;
+    let g = common::gpu();
+    let settings = WaveSettings { wave_speed: 0.7, damping: 0.4 };
+    let drops = wavepool::sim::random_drops(11, 20, 1.0, 0.06, 0.015);
+    let mut gpu = HeightField::new(&g.device, N, 1.0);
+    let mut cpu = CpuHeightField::new(N, 1.0);
+    for d in &drops {
+        gpu.add_drop(*d);
+        cpu.add_drop(*d);
+    }
+    // Three frames' worth of batches, each with its own drops and steps.
+    for (steps, extra) in [(2u32, None), (5, Some((0.3f32, -0.4f32))), (233, None)] {
+        if let Some((x, z)) = extra {
+            let d = Drop { x, z, radius: 0.1, strength: -0.02 };
+            gpu.add_drop(d);
+            cpu.add_drop(d);
+        }
+        let mut encoder = g.device.create_command_encoder(&Default::default());
+        gpu.encode(&g.queue, &mut encoder, steps, DT, settings);
+        g.queue.submit([encoder.finish()]);
+        cpu.advance(steps, DT, settings);
+    }
+    let on_gpu = gpu.read_state(&g.device, &g.queue);
+    let peak = cpu.cells().iter().map(|c| c[0].abs()).fold(0.0f32, f32::max);
+    let mut worst = [0.0f32; 4];
+    for (a, b) in on_gpu.iter().zip(cpu.cells()) {
+        for k in 0..4 {
+            worst[k] = worst[k].max((a[k] - b[k]).abs());
+        }
+    }
+    println!(
+        "after 240 steps: peak |h| {peak:e} m; largest GPU-CPU difference h {:e} m, v {:e} m/s, n {:e}, {:e}",
+        worst[0], worst[1], worst[2], worst[3]
+    );
+    assert!(peak > 1e-3, "the water should still be moving");
+    assert!(worst[0] < 1e-6, "heights differ by {} m", worst[0]);
+    assert!(worst[1] < 1e-4, "velocities differ by {} m/s", worst[1]);
+    assert!(worst[2] < 1e-4 && worst[3] < 1e-4, "normals differ by {worst:?}");
+}
