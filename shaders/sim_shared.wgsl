@@ -12,6 +12,8 @@ struct Sim {
 
 @group(0) @binding(0) var<uniform> sim: Sim;
 @group(0) @binding(1) var state: texture_2d<f32>;
+// One texel: the mean height of the state before this frame's normals pass (m).
+@group(0) @binding(2) var mean_level: texture_2d<f32>;
 
 // Cell value with clamped addressing: a cell beyond the wall mirrors the edge cell,
 // which makes the walls reflecting (zero normal gradient).

@@ -44,9 +44,11 @@ struct SimUniforms {
     drops: [[f32; 4]; MAX_DROPS_PER_PASS],
 }
 
-/// Largest |height| the state may hold (m): just below the rim, so no wave ever
-/// overtops the pool. The update clamps to it and replaces NaN or infinity by rest.
-pub const MAX_HEIGHT: f32 = 0.15;
+/// Largest |height| an update may leave (m); it clamps to it and replaces NaN or infinity
+/// by rest. The once-per-frame mean subtraction can move a clamped cell by at most the
+/// mean, itself at most MAX_HEIGHT, so |h| <= 2 * MAX_HEIGHT = 0.16 m always: below the
+/// 1/6 m rim, no wave ever overtops the pool.
+pub const MAX_HEIGHT: f32 = 0.08;
 /// Largest |vertical velocity| the state may hold (m/s).
 pub const MAX_VELOCITY: f32 = 5.0;
 
@@ -169,7 +171,80 @@ pub struct HeightField {
     drop_pass: FullscreenPass,
     update_pass: FullscreenPass,
     normals_pass: FullscreenPass,
+    mean: MeanLevel,
     pending: Vec<Drop>,
+}
+
+/// Format of the mean-level reduction textures.
+const MEAN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+
+/// The water's mean height, found on the GPU by averaging 2x2 blocks level by level down to
+/// one texel (`shaders/sim_mean.wgsl`), so it can be subtracted without a readback.
+struct MeanLevel {
+    views: Vec<wgpu::TextureView>,
+    from_state: [wgpu::BindGroup; 2],
+    from_level: Vec<wgpu::BindGroup>,
+    pass: FullscreenPass,
+}
+
+impl MeanLevel {
+    fn new(device: &wgpu::Device, state: &PingPong, size: u32) -> Self {
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("mean level layout"),
+            entries: &[gpu::texture_entry(
+                0,
+                wgpu::ShaderStages::FRAGMENT,
+                wgpu::TextureSampleType::Float { filterable: false },
+                wgpu::TextureViewDimension::D2,
+            )],
+        });
+        let group = |view: &wgpu::TextureView| {
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("mean level group"),
+                layout: &layout,
+                entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) }],
+            })
+        };
+        let mut views = Vec::new();
+        let mut side = size / 2;
+        while side >= 1 {
+            let texture = device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("mean level"),
+                size: wgpu::Extent3d { width: side, height: side, depth_or_array_layers: 1 },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: MEAN_FORMAT,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+                view_formats: &[],
+            });
+            views.push(texture.create_view(&Default::default()));
+            side /= 2;
+        }
+        let from_level = views[..views.len() - 1].iter().map(group).collect();
+        let pass = FullscreenPass::new(
+            device,
+            "sim mean level",
+            &[gpu::wgsl::SIM_MEAN],
+            "fs_reduce",
+            &[&layout],
+            FullscreenTarget { format: MEAN_FORMAT, blend: None, depth: None },
+        );
+        Self { from_state: state.bind_groups(group), from_level, views, pass }
+    }
+
+    /// Records the reduction of the state texture `current` down to [`MeanLevel::result`].
+    fn encode(&self, encoder: &mut wgpu::CommandEncoder, current: usize) {
+        self.pass.run(encoder, &self.views[0], &[&self.from_state[current]]);
+        for (group, target) in self.from_level.iter().zip(&self.views[1..]) {
+            self.pass.run(encoder, target, &[group]);
+        }
+    }
+
+    /// The one-texel texture holding the mean height (m).
+    fn result(&self) -> &wgpu::TextureView {
+        self.views.last().expect("at least one level")
+    }
 }
 
 impl HeightField {
@@ -185,10 +260,18 @@ impl HeightField {
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
                 ),
+                gpu::texture_entry(
+                    2,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
             ],
         });
+        assert!(size.is_power_of_two() && size >= 16, "simulation size must be a power of two, at least 16");
         let uniforms = gpu::uniform_buffer(device, "sim uniforms", &SimUniforms::zeroed());
         let state = PingPong::new(device, "water state", size, size, STATE_FORMAT);
+        let mean = MeanLevel::new(device, &state, size);
         let bind_groups = state.bind_groups(|view| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("sim bind group"),
@@ -196,6 +279,7 @@ impl HeightField {
                 entries: &[
                     wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
                     wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
+                    wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(mean.result()) },
                 ],
             })
         });
@@ -218,6 +302,7 @@ impl HeightField {
             state,
             uniforms,
             bind_groups,
+            mean,
             pending: Vec::new(),
         }
     }
@@ -246,7 +331,8 @@ impl HeightField {
         substeps(dt, wave_speed, self.cell_size())
     }
 
-    /// Records the queued drops, `steps` steps of `dt` seconds each, and the normals pass.
+    /// Records the queued drops, `steps` steps of `dt` seconds each, the mean level and the
+    /// normals pass (which also brings the mean level back to rest).
     /// Writes the shared uniform buffer, so call it once per queue submission.
     pub fn encode(
         &mut self,
@@ -273,6 +359,7 @@ impl HeightField {
             self.state.run(encoder, &self.update_pass, &self.bind_groups);
         }
         if plan.changes_state() {
+            self.mean.encode(encoder, self.state.current());
             self.state.run(encoder, &self.normals_pass, &self.bind_groups);
         }
     }

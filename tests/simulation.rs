@@ -186,3 +186,43 @@ fn gpu_passes_match_the_cpu_reference() {
     assert!(worst[1] < 1e-4, "velocities differ by {} m/s", worst[1]);
     assert!(worst[2] < 1e-4 && worst[3] < 1e-4, "normals differ by {worst:?}");
 }
+
+/// 10,000 random drops, extreme ones included (tiny and pool-sized radii, strengths up to
+/// 2 m, a fifth of them on one spot), over 100,000 steps of 1/120 s, on the CPU reference
+/// (which runs the GPU's arithmetic; see gpu_passes_match_the_cpu_reference). Derived bound:
+/// every update clamps |h| to MAX_HEIGHT and NaN to rest; the mean subtraction after a batch
+/// shifts cells by the mean, |mean| <= MAX_HEIGHT, so |h| <= 2 MAX_HEIGHT = 0.16 m (< 1/6 m rim).
+#[test]
+fn bounded_and_level_under_ten_thousand_random_drops() {
+    use wavepool::sim::cpu::CpuHeightField;
+    use wavepool::sim::{SplitMix64, MAX_HEIGHT};
+    let mut water = CpuHeightField::new(64, 1.0);
+    let mut rng = SplitMix64(2026);
+    let settings = WaveSettings { wave_speed: 0.6, damping: 0.5 };
+    let mut worst_mean = 0.0f64;
+    for i in 0..10_000u32 {
+        let (x, z) = if i % 5 == 0 { (0.5, 0.5) } else { (rng.range(-1.2, 1.2), rng.range(-1.2, 1.2)) };
+        let radius = match i % 3 {
+            0 => rng.range(1e-4, 0.01),
+            1 => rng.range(0.01, 0.3),
+            _ => rng.range(0.3, 3.0),
+        };
+        let strength = rng.range(-2.0, 2.0);
+        water.add_drop(Drop { x, z, radius, strength });
+        if i % 1000 == 0 {
+            water.add_drop(Drop { x: f32::NAN, z: 0.0, radius: 0.1, strength: 0.1 });
+        }
+        water.advance(10, DT, settings);
+        if i % 100 == 0 {
+            worst_mean = worst_mean.max(water.mean_height().abs());
+        }
+    }
+    let cells = water.cells();
+    assert!(cells.iter().all(|c| c.iter().all(|v| v.is_finite())), "NaN or infinity in the state");
+    let peak = cells.iter().map(|c| c[0].abs()).fold(0.0f32, f32::max);
+    let mean = water.mean_height();
+    let bound = 2.0 * MAX_HEIGHT;
+    println!("after 100,000 steps: peak |h| {peak:.4} m (bound {bound} m), mean {mean:e} m, worst mean seen {worst_mean:e} m");
+    assert!(peak <= bound, "height {peak} m beyond the bound {bound} m");
+    assert!(mean.abs() < 1e-3 && worst_mean < 1e-3, "mean level left rest: {mean} (worst {worst_mean})");
+}

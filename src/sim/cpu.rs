@@ -26,7 +26,9 @@ pub struct CpuHeightField {
 }
 
 impl CpuHeightField {
+    /// A calm heightfield; `size` must be a power of two (as on the GPU).
     pub fn new(size: u32, half_width: f32) -> Self {
+        assert!(size.is_power_of_two() && size >= 2, "simulation size must be a power of two");
         let calm = vec![[0.0; 4]; (size * size) as usize];
         Self { size, half_width, cells: calm.clone(), scratch: calm, pending: Vec::new() }
     }
@@ -57,8 +59,8 @@ impl CpuHeightField {
         ((i as f32 + 0.5) * (1.0 / self.size as f32) * 2.0 - 1.0) * self.half_width
     }
 
-    /// Applies the queued drops, `steps` steps of `dt` seconds and the normals, exactly as
-    /// [`super::HeightField::encode`] does on the GPU.
+    /// Applies the queued drops, `steps` steps of `dt` seconds, the mean-level hold and the
+    /// normals, exactly as [`super::HeightField::encode`] does on the GPU.
     pub fn advance(&mut self, steps: u32, dt: f32, settings: WaveSettings) {
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         if !plan.drops.is_empty() {
@@ -104,7 +106,29 @@ impl CpuHeightField {
         std::mem::swap(&mut self.cells, &mut self.scratch);
     }
 
+    /// Mean height by the same 2x2 pairwise averaging as `shaders/sim_mean.wgsl`.
+    fn reduced_mean(&self) -> f32 {
+        let mut side = self.size as usize;
+        let mut level: Vec<f32> = self.cells.iter().map(|c| c[0]).collect();
+        while side > 1 {
+            let half = side / 2;
+            let mut next = vec![0.0f32; half * half];
+            for j in 0..half {
+                for i in 0..half {
+                    let at = |x: usize, y: usize| level[y * side + x];
+                    let (a, b) = (at(2 * i, 2 * j), at(2 * i + 1, 2 * j));
+                    let (c, d) = (at(2 * i, 2 * j + 1), at(2 * i + 1, 2 * j + 1));
+                    next[j * half + i] = ((a + b) + (c + d)) * 0.25;
+                }
+            }
+            level = next;
+            side = half;
+        }
+        level[0]
+    }
+
     fn update_normals(&mut self) {
+        let mean = self.reduced_mean();
         let n = self.size as i64;
         let two_dx = 2.0 * (2.0 * self.half_width / self.size as f32);
         for j in 0..n {
@@ -113,7 +137,7 @@ impl CpuHeightField {
                 let slope_x = (self.at(i + 1, j)[0] - self.at(i - 1, j)[0]) / two_dx;
                 let slope_z = (self.at(i, j + 1)[0] - self.at(i, j - 1)[0]) / two_dx;
                 let len = (slope_x * slope_x + 1.0 + slope_z * slope_z).sqrt();
-                self.scratch[(j * n + i) as usize] = [c[0], c[1], -slope_x / len, -slope_z / len];
+                self.scratch[(j * n + i) as usize] = [c[0] - mean, c[1], -slope_x / len, -slope_z / len];
             }
         }
         std::mem::swap(&mut self.cells, &mut self.scratch);
