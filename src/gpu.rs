@@ -84,6 +84,30 @@ pub fn pipeline_layout(device: &wgpu::Device, label: &str, layouts: &[&wgpu::Bin
     })
 }
 
+/// A 2-D texture with `layers` array layers (6 for a cube) and `mips` mip levels.
+#[allow(clippy::too_many_arguments)]
+pub fn texture_2d(
+    device: &wgpu::Device,
+    label: &str,
+    width: u32,
+    height: u32,
+    layers: u32,
+    mips: u32,
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some(label),
+        size: wgpu::Extent3d { width, height, depth_or_array_layers: layers },
+        mip_level_count: mips,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    })
+}
+
 /// A pass that shades every pixel of its target with one fragment shader: the simulation
 /// steps, the sky background and the sky cubemap faces are all of this kind.
 pub struct FullscreenPass {
@@ -197,19 +221,19 @@ pub struct PingPong {
 impl PingPong {
     pub fn new(device: &wgpu::Device, label: &str, width: u32, height: u32, format: wgpu::TextureFormat) -> Self {
         let make = |i: usize| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(&format!("{label} {i}")),
-                size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
+            texture_2d(
+                device,
+                &format!("{label} {i}"),
+                width,
+                height,
+                1,
+                1,
                 format,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                wgpu::TextureUsages::RENDER_ATTACHMENT
                     | wgpu::TextureUsages::TEXTURE_BINDING
                     | wgpu::TextureUsages::COPY_SRC
                     | wgpu::TextureUsages::COPY_DST,
-                view_formats: &[],
-            })
+            )
         };
         let textures = [make(0), make(1)];
         let views = [textures[0].create_view(&Default::default()), textures[1].create_view(&Default::default())];

@@ -174,18 +174,18 @@ pub struct CausticsPass {
 
 impl CausticsPass {
     fn new(device: &wgpu::Device, size: u32, water_layout: &wgpu::BindGroupLayout) -> Self {
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("caustics map"),
-            size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: CAUSTICS_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+        let texture = gpu::texture_2d(
+            device,
+            "caustics map",
+            size,
+            size,
+            1,
+            1,
+            CAUSTICS_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
+        );
         let view = texture.create_view(&Default::default());
         let module = gpu::shader(device, "caustics", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS]);
         let additive = wgpu::BlendComponent {
@@ -556,16 +556,16 @@ impl Renderer {
 
     fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {
         if self.depth.as_ref().map(|d| d.size) != Some(size) {
-            let texture = device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("depth"),
-                size: wgpu::Extent3d { width: size.0.max(1), height: size.1.max(1), depth_or_array_layers: 1 },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: DEPTH_FORMAT,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-                view_formats: &[],
-            });
+            let texture = gpu::texture_2d(
+                device,
+                "depth",
+                size.0.max(1),
+                size.1.max(1),
+                1,
+                1,
+                DEPTH_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            );
             self.depth = Some(DepthBuffer { view: texture.create_view(&Default::default()), size });
         }
         &self.depth.as_ref().expect("depth buffer just made").view

@@ -208,16 +208,16 @@ impl MeanLevel {
         let mut views = Vec::new();
         let mut side = size / 2;
         while side >= 1 {
-            let texture = device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("mean level"),
-                size: wgpu::Extent3d { width: side, height: side, depth_or_array_layers: 1 },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format: MEAN_FORMAT,
-                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-                view_formats: &[],
-            });
+            let texture = gpu::texture_2d(
+                device,
+                "mean level",
+                side,
+                side,
+                1,
+                1,
+                MEAN_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            );
             views.push(texture.create_view(&Default::default()));
             side /= 2;
         }

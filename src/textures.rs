@@ -97,16 +97,16 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
 
 pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
     let mips = tile_mips();
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("tiles"),
-        size: wgpu::Extent3d { width: TILE_TEXTURE_SIZE, height: TILE_TEXTURE_SIZE, depth_or_array_layers: 1 },
-        mip_level_count: mips.len() as u32,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8UnormSrgb,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    });
+    let texture = gpu::texture_2d(
+        device,
+        "tiles",
+        TILE_TEXTURE_SIZE,
+        TILE_TEXTURE_SIZE,
+        1,
+        mips.len() as u32,
+        wgpu::TextureFormat::Rgba8UnormSrgb,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     for (level, data) in mips.iter().enumerate() {
         let size = (TILE_TEXTURE_SIZE >> level).max(1);
         queue.write_texture(
@@ -143,16 +143,16 @@ pub struct SkyCube {
 
 impl SkyCube {
     pub fn new(device: &wgpu::Device) -> Self {
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("sky cube"),
-            size: wgpu::Extent3d { width: SKY_FACE_SIZE, height: SKY_FACE_SIZE, depth_or_array_layers: 6 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: SKY_FORMAT,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
+        let texture = gpu::texture_2d(
+            device,
+            "sky cube",
+            SKY_FACE_SIZE,
+            SKY_FACE_SIZE,
+            6,
+            1,
+            SKY_FORMAT,
+            wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sky face layout"),
             entries: &[gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT)],
