@@ -27,3 +27,58 @@ ensure_cargo() {
     fi
     command -v cargo >/dev/null 2>&1 || { echo "error: cargo not found; install Rust with rustup first" >&2; exit 1; }
 }
+
+# Adds the wasm32 target to the Rust toolchain when it is missing.
+ensure_wasm_target() {
+    if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
+        echo "==> adding the Rust target wasm32-unknown-unknown"
+        rustup target add wasm32-unknown-unknown
+    fi
+}
+
+# ensure_cargo_tool BINARY VERSION CRATE [cargo install flags...]
+# Installs CRATE at exactly VERSION with cargo unless `BINARY --version` already reports it.
+ensure_cargo_tool() {
+    local bin="$1" version="$2" crate="$3"
+    shift 3
+    if ! "$bin" --version 2>/dev/null | grep -q " $version\b"; then
+        echo "==> installing $crate $version with cargo (a few minutes, once)"
+        cargo install "$crate" --version "$version" --force "$@"
+    fi
+}
+
+# The version of a package in Cargo.lock, e.g. lock_version wasm-bindgen.
+lock_version() {
+    awk -v name="$1" '$0 == "name = \"" name "\"" { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock
+}
+
+# Puts npm's binaryen 132 (its wasm-opt) on PATH. Debian's binaryen corrupts wasm-bindgen output.
+ensure_wasm_opt() {
+    local dir="${XDG_CACHE_HOME:-$HOME/.cache}/wavepool/binaryen-132"
+    if [ ! -x "$dir/node_modules/.bin/wasm-opt" ]; then
+        echo "==> installing wasm-opt (npm binaryen@132.0.0)"
+        mkdir -p "$dir"
+        npm install --prefix "$dir" --no-audit --no-fund --silent binaryen@132.0.0 >/dev/null
+    fi
+    export PATH="$dir/node_modules/.bin:$PATH"
+}
+
+# Everything the browser build needs: wasm target, Trunk, wasm-bindgen-cli matching the
+# lockfile, wasm-opt. Then fetches crates so Trunk can build offline.
+ensure_web_toolchain() {
+    ensure_cargo
+    command -v npm >/dev/null 2>&1 || ensure_apt_packages nodejs npm
+    ensure_wasm_target
+    ensure_cargo_tool trunk 0.21.14 trunk --locked
+    ensure_cargo_tool wasm-bindgen "$(lock_version wasm-bindgen)" wasm-bindgen-cli
+    ensure_wasm_opt
+    cargo fetch --locked >/dev/null
+}
+
+# Builds the browser demo into dist/ with Trunk (release, wasm-opt -Oz), offline.
+build_web() {
+    echo "==> building the browser demo (trunk build --release)"
+    TRUNK_SKIP_VERSION_CHECK=true trunk build --release --offline
+    local wasm=dist/wavepool_bg.wasm js=dist/wavepool.js
+    echo "    wasm $(stat -c %s "$wasm") bytes ($(gzip -9c "$wasm" | wc -c) gzip), JS $(cat "$js" dist/embed.js | wc -c) bytes ($(cat "$js" dist/embed.js | gzip -9c | wc -c) gzip)"
+}

@@ -6,9 +6,10 @@ use glam::{Vec2, Vec3};
 
 use crate::camera::{OrbitCamera, Pick};
 use crate::params::{ParamId, Params};
+use crate::physics::SphereBody;
 use crate::render::{RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
-use crate::sim::{Drop, FixedStep, HeightField, WaveSettings};
+use crate::sim::{Drop, FixedStep, HeightField, WaterLevel, WaveSettings};
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;
@@ -16,6 +17,9 @@ pub const STEPS_PER_SECOND: u32 = 120;
 pub const STEP_DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
 /// Most steps one frame may take (a frame longer than this many steps drops the rest).
 pub const MAX_STEPS_PER_FRAME: u32 = 8;
+
+/// Where the sphere starts (m).
+const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
 
 /// Choices fixed when the demo is created.
 #[derive(Clone, Copy, Debug)]
@@ -42,6 +46,8 @@ pub enum Key {
     Space,
     /// Put the sun behind the camera.
     L,
+    /// Toggle gravity on the sphere.
+    G,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -65,6 +71,7 @@ pub struct WaterDemo {
     pub params: Params,
     pub camera: OrbitCamera,
     sphere_centre: Vec3,
+    sphere_body: SphereBody,
     water: HeightField,
     renderer: Renderer,
     clock: FixedStep,
@@ -92,7 +99,8 @@ impl WaterDemo {
         Self {
             params: Params::default(),
             camera: OrbitCamera::default(),
-            sphere_centre: Vec3::new(-0.35, -0.45, 0.3),
+            sphere_centre: START_SPHERE_CENTRE,
+            sphere_body: SphereBody::default(),
             water,
             renderer,
             clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
@@ -239,12 +247,39 @@ impl WaterDemo {
                 let paused = self.params.flag(ParamId::Paused);
                 self.params.set(ParamId::Paused, if paused { 0.0 } else { 1.0 });
             }
+            Key::G => {
+                let on = self.params.flag(ParamId::Gravity);
+                self.params.set(ParamId::Gravity, if on { 0.0 } else { 1.0 });
+            }
             Key::L => {
                 let (azimuth, elevation) = scene::direction_angles(self.camera.back());
                 self.params.set(ParamId::SunAzimuth, azimuth);
                 self.params.set(ParamId::SunElevation, elevation);
             }
         }
+    }
+
+    /// Moves the sphere through `steps` fixed steps, unless it is held by the pointer.
+    fn step_sphere(&mut self, steps: u32) {
+        let held = matches!(self.drag, Drag::Sphere { .. });
+        let Some(mut sphere) = self.sphere() else { return };
+        if held {
+            self.sphere_body = SphereBody::default();
+            return;
+        }
+        let density = self.params.get(ParamId::SphereDensity);
+        let gravity = self.params.flag(ParamId::Gravity);
+        for _ in 0..steps {
+            self.sphere_body.step(&mut sphere, density, gravity, STEP_DT);
+        }
+        self.sphere_centre = sphere.centre;
+    }
+
+    /// Flattens the water and puts the sphere back where it started, at rest.
+    pub fn reset(&mut self, queue: &wgpu::Queue) {
+        self.water.reset(queue);
+        self.sphere_centre = START_SPHERE_CENTRE;
+        self.sphere_body = SphereBody::default();
     }
 
     /// Flattens the water.
@@ -275,6 +310,19 @@ impl WaterDemo {
         let mut encoder = device.create_command_encoder(&Default::default());
         self.encode_frame(device, queue, &mut encoder, target, size, frame_time, &mut |_, _| {});
         queue.submit([encoder.finish()]);
+        self.after_submit();
+    }
+
+    /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts the
+    /// asynchronous read of the water statistics ([`WaterDemo::water_level`]).
+    pub fn after_submit(&self) {
+        self.water.after_submit();
+    }
+
+    /// Mean and largest |height| of the water (m), read back asynchronously, a frame or
+    /// two old; `None` before the first read has completed.
+    pub fn water_level(&self) -> Option<WaterLevel> {
+        self.water.level()
     }
 
     /// Records a frame into `encoder`; `mark` is called at each [`Stage`] boundary (for
@@ -298,6 +346,7 @@ impl WaterDemo {
             self.clock.advance(frame_time)
         };
         self.steps_taken += steps as u64;
+        self.step_sphere(steps);
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),

@@ -8,9 +8,12 @@ pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
 pub mod params;
+pub mod physics;
 pub mod render;
 pub mod scene;
 pub mod sim;
 pub mod textures;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 pub use demo::{DemoOptions, Key, WaterDemo};

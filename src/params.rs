@@ -16,6 +16,8 @@ pub enum ParamId {
     Caustics,
     Sphere,
     SphereRadius,
+    SphereDensity,
+    Gravity,
     Paused,
 }
 
@@ -166,6 +168,26 @@ pub const PARAMS: &[ParamSpec] = &[
         control: slider(0.1, 0.4, 0.01),
         default: 0.25,
         help: "Radius of the sphere.",
+    },
+    ParamSpec {
+        id: ParamId::SphereDensity,
+        name: "sphere_density",
+        label: "Sphere density",
+        group: "Objects",
+        unit: "kg/m³",
+        control: slider(100.0, 2000.0, 10.0),
+        default: 600.0,
+        help: "Mass per volume; below water's 1000 kg/m³ the sphere floats.",
+    },
+    ParamSpec {
+        id: ParamId::Gravity,
+        name: "gravity",
+        label: "Gravity",
+        group: "Objects",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "Let the sphere fall, float and bob (G key).",
     },
     ParamSpec {
         id: ParamId::Paused,

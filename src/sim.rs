@@ -172,19 +172,23 @@ pub struct HeightField {
     update_pass: FullscreenPass,
     normals_pass: FullscreenPass,
     mean: MeanLevel,
+    probe: LevelProbe,
     pending: Vec<Drop>,
 }
 
-/// Format of the mean-level reduction textures.
-const MEAN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+/// Format of the level reduction textures: x mean height (m), y largest |height| (m).
+const LEVEL_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 
-/// The water's mean height, found on the GPU by averaging 2x2 blocks level by level down to
-/// one texel (`shaders/sim_mean.wgsl`), so it can be subtracted without a readback.
+/// The water's mean height and largest |height|, found on the GPU by folding 2x2 blocks level
+/// by level down to one texel (`shaders/sim_mean.wgsl`), so the mean can be subtracted without
+/// a readback.
 struct MeanLevel {
     views: Vec<wgpu::TextureView>,
+    result: wgpu::Texture,
     from_state: [wgpu::BindGroup; 2],
     from_level: Vec<wgpu::BindGroup>,
-    pass: FullscreenPass,
+    state_pass: FullscreenPass,
+    level_pass: FullscreenPass,
 }
 
 impl MeanLevel {
@@ -205,45 +209,127 @@ impl MeanLevel {
                 entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(view) }],
             })
         };
-        let mut views = Vec::new();
+        let mut textures = Vec::new();
         let mut side = size / 2;
         while side >= 1 {
-            let texture = gpu::texture_2d(
-                device,
-                "mean level",
-                side,
-                side,
-                1,
-                1,
-                MEAN_FORMAT,
-                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-            );
-            views.push(texture.create_view(&Default::default()));
+            let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC;
+            textures.push(gpu::texture_2d(device, "water level", side, side, 1, 1, LEVEL_FORMAT, usage));
             side /= 2;
         }
+        let views: Vec<_> = textures.iter().map(|t| t.create_view(&Default::default())).collect();
         let from_level = views[..views.len() - 1].iter().map(group).collect();
-        let pass = FullscreenPass::new(
-            device,
-            "sim mean level",
-            &[gpu::wgsl::SIM_MEAN],
-            "fs_reduce",
-            &[&layout],
-            FullscreenTarget { format: MEAN_FORMAT, blend: None, depth: None },
-        );
-        Self { from_state: state.bind_groups(group), from_level, views, pass }
-    }
-
-    /// Records the reduction of the state texture `current` down to [`MeanLevel::result`].
-    fn encode(&self, encoder: &mut wgpu::CommandEncoder, current: usize) {
-        self.pass.run(encoder, &self.views[0], &[&self.from_state[current]]);
-        for (group, target) in self.from_level.iter().zip(&self.views[1..]) {
-            self.pass.run(encoder, target, &[group]);
+        let pass = |entry: &str| {
+            FullscreenPass::new(
+                device,
+                "sim water level",
+                &[gpu::wgsl::SIM_MEAN],
+                entry,
+                &[&layout],
+                FullscreenTarget { format: LEVEL_FORMAT, blend: None, depth: None },
+            )
+        };
+        Self {
+            from_state: state.bind_groups(group),
+            from_level,
+            views,
+            result: textures.pop().expect("at least one level"),
+            state_pass: pass("fs_reduce_state"),
+            level_pass: pass("fs_reduce_level"),
         }
     }
 
-    /// The one-texel texture holding the mean height (m).
-    fn result(&self) -> &wgpu::TextureView {
+    /// Records the reduction of the state texture `current` down to [`MeanLevel::result_view`].
+    fn encode(&self, encoder: &mut wgpu::CommandEncoder, current: usize) {
+        self.state_pass.run(encoder, &self.views[0], &[&self.from_state[current]]);
+        for (group, target) in self.from_level.iter().zip(&self.views[1..]) {
+            self.level_pass.run(encoder, target, &[group]);
+        }
+    }
+
+    /// The one-texel texture holding (mean height, largest |height|) in m.
+    fn result_view(&self) -> &wgpu::TextureView {
         self.views.last().expect("at least one level")
+    }
+}
+
+/// Water statistics read back from the GPU, a frame or two old.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WaterLevel {
+    /// Mean height above rest before the frame's correction (m).
+    pub mean: f32,
+    /// Largest |height| over the pool (m).
+    pub max_abs: f32,
+}
+
+/// Reads the one-texel [`MeanLevel`] result back without ever waiting: a copy is recorded
+/// into a frame, mapped after that frame is submitted, and read when the map has completed
+/// (one to a few frames later). At most one copy is in flight.
+struct LevelProbe {
+    buffer: wgpu::Buffer,
+    /// 0 idle, 1 copy recorded, 2 mapping, 3 mapped and ready to read.
+    state: std::sync::Arc<std::sync::atomic::AtomicU8>,
+    latest: Option<WaterLevel>,
+}
+
+impl LevelProbe {
+    const IDLE: u8 = 0;
+    const RECORDED: u8 = 1;
+    const MAPPING: u8 = 2;
+    const READY: u8 = 3;
+
+    fn new(device: &wgpu::Device) -> Self {
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("water level readback"),
+            size: 16,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        Self { buffer, state: Default::default(), latest: None }
+    }
+
+    fn state(&self) -> u8 {
+        self.state.load(std::sync::atomic::Ordering::Acquire)
+    }
+
+    fn set_state(&self, value: u8) {
+        self.state.store(value, std::sync::atomic::Ordering::Release);
+    }
+
+    /// Takes a finished read and, when idle, records a new copy of `result`.
+    fn encode(&mut self, encoder: &mut wgpu::CommandEncoder, result: &wgpu::Texture) {
+        if self.state() == Self::READY {
+            if let Ok(data) = self.buffer.slice(..).get_mapped_range() {
+                let v: [f32; 4] = bytemuck::pod_read_unaligned(&data[..16]);
+                self.latest = Some(WaterLevel { mean: v[0], max_abs: v[1] });
+            }
+            self.buffer.unmap();
+            self.set_state(Self::IDLE);
+        }
+        if self.state() == Self::IDLE {
+            encoder.copy_texture_to_buffer(
+                result.as_image_copy(),
+                wgpu::TexelCopyBufferInfo {
+                    buffer: &self.buffer,
+                    layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: None, rows_per_image: None },
+                },
+                wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+            );
+            self.set_state(Self::RECORDED);
+        }
+    }
+
+    /// Starts mapping a copy recorded into a frame that has now been submitted.
+    fn after_submit(&self) {
+        if self.state() == Self::RECORDED {
+            self.set_state(Self::MAPPING);
+            let state = self.state.clone();
+            self.buffer.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+                let next = if r.is_ok() { Self::READY } else { Self::IDLE };
+                state.store(next, std::sync::atomic::Ordering::Release);
+            });
+        }
     }
 }
 
@@ -279,7 +365,10 @@ impl HeightField {
                 entries: &[
                     wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
                     wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
-                    wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(mean.result()) },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::TextureView(mean.result_view()),
+                    },
                 ],
             })
         });
@@ -303,6 +392,7 @@ impl HeightField {
             uniforms,
             bind_groups,
             mean,
+            probe: LevelProbe::new(device),
             pending: Vec::new(),
         }
     }
@@ -362,6 +452,20 @@ impl HeightField {
             self.mean.encode(encoder, self.state.current());
             self.state.run(encoder, &self.normals_pass, &self.bind_groups);
         }
+        self.probe.encode(encoder, &self.mean.result);
+    }
+
+    /// Call after submitting the frame that [`HeightField::encode`] recorded: starts the
+    /// asynchronous read of the water statistics (never waits).
+    pub fn after_submit(&self) {
+        self.probe.after_submit();
+    }
+
+    /// The latest water statistics read back, one to a few frames old; `None` until the
+    /// first read completes. Reads complete as the device is polled (natively) or as the
+    /// browser runs its event loop.
+    pub fn level(&self) -> Option<WaterLevel> {
+        self.probe.latest
     }
 
     /// Flattens the water and forgets queued drops.

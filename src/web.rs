@@ -1,0 +1,300 @@
+//! The browser shell: wasm-bindgen bindings that hand the page's JavaScript (`web/embed.js`)
+//! a [`WebDemo`] around the platform-free core, drawing into a canvas through WebGPU or
+//! WebGL2. Everything about the page (DOM, events, sizing, the frame loop) lives in the JS.
+
+use std::sync::{Arc, Mutex};
+
+use wasm_bindgen::prelude::*;
+
+use crate::demo::{DemoOptions, Key, WaterDemo};
+use crate::params::{self, Control, PARAMS};
+
+/// Runs once when the module is instantiated: a panic goes to the console (with a stack)
+/// and to the page, as a `wavepool:panic` event whose detail is the message.
+#[wasm_bindgen(start)]
+pub fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        console_error_panic_hook::hook(info);
+        if let Some(window) = web_sys::window() {
+            let init = web_sys::CustomEventInit::new();
+            init.set_detail(&JsValue::from_str(&info.to_string()));
+            if let Ok(event) = web_sys::CustomEvent::new_with_event_init_dict("wavepool:panic", &init) {
+                let _ = window.dispatch_event(&event);
+            }
+        }
+    }));
+}
+
+fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
+    let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), &value.into());
+}
+
+/// The parameter table (the core's one source of truth) as an array of plain objects:
+/// `{ name, label, group, unit, kind: "slider" | "toggle", min, max, step, default, help }`.
+#[wasm_bindgen(js_name = paramTable)]
+pub fn param_table() -> js_sys::Array {
+    PARAMS
+        .iter()
+        .map(|p| {
+            let o = js_sys::Object::new();
+            set(&o, "name", p.name);
+            set(&o, "label", p.label);
+            set(&o, "group", p.group);
+            set(&o, "unit", p.unit);
+            let (kind, step) = match p.control {
+                Control::Slider { step, .. } => ("slider", step),
+                Control::Toggle => ("toggle", 1.0),
+            };
+            set(&o, "kind", kind);
+            set(&o, "min", to_js_number(p.min()));
+            set(&o, "max", to_js_number(p.max()));
+            set(&o, "step", to_js_number(step));
+            set(&o, "default", to_js_number(p.default));
+            set(&o, "help", p.help);
+            JsValue::from(o)
+        })
+        .collect()
+}
+
+/// Simulation sizes the demo accepts (cells per side).
+pub const SIM_SIZES: [u32; 4] = [128, 256, 512, 1024];
+
+/// The nearest accepted simulation size to `requested`.
+fn sim_size(requested: u32) -> u32 {
+    *SIM_SIZES.iter().min_by_key(|s| (**s as i64 - requested as i64).abs()).expect("sizes")
+}
+
+/// An `f32` as the `f64` with the same shortest decimal form (0.6f32 -> 0.6, not 0.6000000238).
+fn to_js_number(v: f32) -> f64 {
+    v.to_string().parse().unwrap_or(v as f64)
+}
+
+fn warn(message: &str) {
+    web_sys::console::warn_1(&JsValue::from_str(message));
+}
+
+/// One running demo on one canvas, with its own device.
+#[wasm_bindgen]
+pub struct WebDemo {
+    demo: WaterDemo,
+    surface: wgpu::Surface<'static>,
+    config: wgpu::SurfaceConfiguration,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    backend: &'static str,
+    adapter: String,
+    max_side: u32,
+    lost: Arc<Mutex<Option<String>>>,
+}
+
+#[wasm_bindgen]
+impl WebDemo {
+    /// Opens `backend` ("webgpu" or "webgl2") on `canvas` and builds the scene. Fails with a
+    /// readable message when the browser cannot give that backend; a canvas that failed
+    /// must not be reused for the other backend (a canvas keeps its first context type).
+    pub async fn create(
+        canvas: web_sys::HtmlCanvasElement,
+        backend: String,
+        sim_size: u32,
+    ) -> Result<WebDemo, JsError> {
+        let (backends, backend) = match backend.as_str() {
+            "webgpu" => (wgpu::Backends::BROWSER_WEBGPU, "webgpu"),
+            "webgl2" => (wgpu::Backends::GL, "webgl2"),
+            other => return Err(JsError::new(&format!("unknown backend '{other}' (use webgpu or webgl2)"))),
+        };
+        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = backends;
+        let instance = wgpu::Instance::new(desc);
+        let surface = instance
+            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
+            .map_err(|e| JsError::new(&format!("{backend}: the canvas refused a context ({e})")))?;
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                compatible_surface: Some(&surface),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| JsError::new(&format!("{backend}: no adapter ({e})")))?;
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("wavepool"),
+                required_limits: wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| JsError::new(&format!("{backend}: could not open the device ({e})")))?;
+        let lost = Arc::new(Mutex::new(None));
+        let flag = lost.clone();
+        device.set_device_lost_callback(move |reason, message| {
+            if let Ok(mut slot) = flag.lock() {
+                *slot = Some(format!("{reason:?}: {message}"));
+            }
+        });
+        let caps = surface.get_capabilities(&adapter);
+        use wgpu::TextureFormat as F;
+        // 8-bit formats only; the renderer encodes sRGB itself when the format is not sRGB.
+        let format = [F::Rgba8UnormSrgb, F::Bgra8UnormSrgb, F::Rgba8Unorm, F::Bgra8Unorm]
+            .into_iter()
+            .find(|f| caps.formats.contains(f))
+            .or_else(|| caps.formats.first().copied())
+            .ok_or_else(|| JsError::new(&format!("{backend}: the canvas offers no colour format")))?;
+        let alpha_mode = if caps.alpha_modes.contains(&wgpu::CompositeAlphaMode::Opaque) {
+            wgpu::CompositeAlphaMode::Opaque
+        } else {
+            caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto)
+        };
+        let max_side = device.limits().max_texture_dimension_2d;
+        let config = wgpu::SurfaceConfiguration {
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            format,
+            width: width.min(max_side),
+            height: height.min(max_side),
+            present_mode: wgpu::PresentMode::Fifo,
+            desired_maximum_frame_latency: 2,
+            alpha_mode,
+            view_formats: vec![],
+            color_space: wgpu::SurfaceColorSpace::Auto,
+        };
+        surface.configure(&device, &config);
+        let options = DemoOptions { sim_size: self::sim_size(sim_size), ..Default::default() };
+        let demo = WaterDemo::new(&device, &queue, format, options);
+        Ok(WebDemo { demo, surface, config, device, queue, backend, adapter: adapter.get_info().name, max_side, lost })
+    }
+
+    /// "webgpu" or "webgl2".
+    #[wasm_bindgen(getter)]
+    pub fn backend(&self) -> String {
+        self.backend.to_owned()
+    }
+
+    /// Advances the water by `dt` seconds and draws a `width` x `height` frame (backing
+    /// pixels). Fails when the device was lost.
+    pub fn frame(&mut self, dt: f32, width: u32, height: u32) -> Result<(), JsError> {
+        if let Some(message) = self.lost.lock().ok().and_then(|m| m.clone()) {
+            return Err(JsError::new(&format!("the GPU device was lost ({message})")));
+        }
+        let (width, height) = (width.clamp(1, self.max_side), height.clamp(1, self.max_side));
+        if (width, height) != (self.config.width, self.config.height) {
+            self.config.width = width;
+            self.config.height = height;
+            self.surface.configure(&self.device, &self.config);
+        }
+        let frame = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(t) | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
+            wgpu::CurrentSurfaceTexture::Outdated => {
+                self.surface.configure(&self.device, &self.config);
+                return Ok(());
+            }
+            wgpu::CurrentSurfaceTexture::Lost => return Err(JsError::new("the canvas surface was lost")),
+            _ => return Ok(()),
+        };
+        let view = frame.texture.create_view(&Default::default());
+        self.demo.frame(&self.device, &self.queue, &view, (width, height), dt.clamp(0.0, 1.0));
+        self.queue.present(frame);
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        Ok(())
+    }
+
+    /// Sets a parameter by name; an out-of-range value is clamped with a console warning.
+    /// Returns the value now in effect. Unknown names are an error listing the known ones.
+    pub fn set(&mut self, name: &str, value: f64) -> Result<f64, JsError> {
+        let out = self.demo.params.set_by_name(name, value as f32).map_err(|e| JsError::new(&e.to_string()))?;
+        if out.clamped {
+            let spec = params::find(name).expect("known");
+            warn(&format!(
+                "wavepool: {name} = {value} is outside [{}, {}]; using {}",
+                spec.min(),
+                spec.max(),
+                out.value
+            ));
+        }
+        Ok(to_js_number(out.value))
+    }
+
+    pub fn get(&self, name: &str) -> Result<f64, JsError> {
+        self.demo.params.get_by_name(name).map(to_js_number).map_err(|e| JsError::new(&e.to_string()))
+    }
+
+    /// A drop at pool coordinates x, z (m, in [-1, 1]) of `radius` (m) and `strength` (m);
+    /// values are clamped into the parameter ranges (with a console warning).
+    #[wasm_bindgen(js_name = addDrop)]
+    pub fn add_drop(&mut self, x: f64, z: f64, radius: f64, strength: f64) {
+        for (name, value) in [("drop_radius", radius), ("drop_strength", strength)] {
+            let spec = params::find(name).expect("known");
+            if spec.sanitise(value as f32) != value as f32 {
+                warn(&format!("wavepool: addDrop {name} {value} is outside [{}, {}]", spec.min(), spec.max()));
+            }
+        }
+        if x.abs() > 1.0 || z.abs() > 1.0 {
+            warn(&format!("wavepool: addDrop at ({x}, {z}) is outside the pool [-1, 1]; clamped"));
+        }
+        self.demo.add_drop(x as f32, z as f32, radius as f32, strength as f32);
+    }
+
+    /// Flattens the water and puts the sphere back.
+    pub fn reset(&mut self) {
+        self.demo.reset(&self.queue);
+    }
+
+    #[wasm_bindgen(js_name = pointerDown)]
+    pub fn pointer_down(&mut self, x: f32, y: f32) {
+        self.demo.pointer_down(x, y);
+    }
+
+    #[wasm_bindgen(js_name = pointerMove)]
+    pub fn pointer_move(&mut self, x: f32, y: f32) {
+        self.demo.pointer_move(x, y);
+    }
+
+    #[wasm_bindgen(js_name = pointerUp)]
+    pub fn pointer_up(&mut self) {
+        self.demo.pointer_up();
+    }
+
+    /// Positive moves the camera away (one wheel notch is about 1).
+    pub fn zoom(&mut self, amount: f32) {
+        self.demo.zoom(amount);
+    }
+
+    /// Turns the camera by pixel-like amounts (arrow keys).
+    pub fn orbit(&mut self, dx: f32, dy: f32) {
+        self.demo.camera.orbit(dx, dy);
+    }
+
+    /// A key by its `KeyboardEvent.code`; true when the demo used it.
+    pub fn key(&mut self, code: &str) -> bool {
+        let key = match code {
+            "Space" => Key::Space,
+            "KeyG" => Key::G,
+            "KeyL" => Key::L,
+            _ => return false,
+        };
+        self.demo.key(key);
+        true
+    }
+
+    /// Where a point of the pool (x, y, z in m; the water rests at y = 0, the pool spans
+    /// -1..1) appears on the canvas, as `[x, y]` in backing pixels; empty when behind the camera.
+    pub fn project(&self, x: f32, y: f32, z: f32) -> Vec<f32> {
+        let size = glam::Vec2::new(self.config.width as f32, self.config.height as f32);
+        self.demo.camera.project(glam::Vec3::new(x, y, z), size).map_or(Vec::new(), |p| vec![p.x, p.y])
+    }
+
+    /// `{ backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height }`;
+    /// the water statistics are read back asynchronously and are a frame or two old.
+    pub fn stats(&self) -> js_sys::Object {
+        let o = js_sys::Object::new();
+        let level = self.demo.water_level().unwrap_or_default();
+        set(&o, "backend", self.backend);
+        set(&o, "adapter", self.adapter.as_str());
+        set(&o, "simSize", self.demo.water().size());
+        set(&o, "simTime", self.demo.sim_time());
+        set(&o, "meanLevel", level.mean as f64);
+        set(&o, "maxAbsHeight", level.max_abs as f64);
+        set(&o, "width", self.config.width);
+        set(&o, "height", self.config.height);
+        o
+    }
+}

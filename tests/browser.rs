@@ -1,0 +1,234 @@
+//! The browser demo in Debian's headless Chromium: WebGPU, forced WebGL2, automatic fallback,
+//! clicks make ripples, controls change parameters, two demos on one page, and a readable
+//! message when the browser has no GPU backend at all. Needs `dist/` (scripts/test builds it).
+
+#[path = "support/browser.rs"]
+mod support;
+
+use std::sync::Mutex;
+use std::time::Duration;
+
+use support::{canvas_rect_js, changed_fraction, Browser, Graphics, Rect, StaticServer};
+
+/// One browser at a time: two software-rendered Chromiums on two cores only slow each other.
+static SERIAL: Mutex<()> = Mutex::new(());
+
+const READY: Duration = Duration::from_secs(120);
+
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Opens the page, waits for the first frame and checks the backend and that the canvas
+/// shows a picture (not a flat fill).
+async fn open_demo(graphics: Graphics, query: &str, expected_backend: &str) -> (Browser, StaticServer) {
+    let server = StaticServer::start();
+    let browser = Browser::open(graphics).await;
+    browser.goto(&server.url(&format!("/{query}"))).await;
+    let took = browser.wait_ready("#pool", READY).await;
+    let backend = browser.js("return document.querySelector('#pool').dataset.backend;").await;
+    assert_eq!(backend, expected_backend, "data-backend with {graphics:?} {query}");
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    assert!(rect.w >= 300 && rect.h >= 200, "canvas too small: {rect:?}");
+    let shot = browser.screenshot().await;
+    let spread = shot.luma_spread(rect);
+    assert!(spread > 12.0, "canvas looks flat on {expected_backend} (luma spread {spread:.1})");
+    eprintln!("{expected_backend} via {graphics:?} {query}: ready in {took:?}, luma spread {spread:.1}");
+    (browser, server)
+}
+
+#[tokio::test]
+async fn webgpu_runs_when_the_browser_has_it() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGpu, "", "webgpu").await;
+    let stats = browser.js("return window.demo.stats();").await;
+    assert_eq!(stats["backend"], "webgpu");
+    assert_eq!(stats["simSize"], 256);
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn webgl2_can_be_forced_from_the_url() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGpu, "?backend=webgl2", "webgl2").await;
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn falls_back_to_webgl2_without_webgpu() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
+    browser.close().await;
+}
+
+/// Both backends draw the same scene: mean colours of the canvas agree (sRGB handled on both).
+#[tokio::test]
+async fn both_backends_show_the_same_scene() {
+    let _g = serial();
+    let mut means = Vec::new();
+    for backend in ["webgpu", "webgl2"] {
+        let (browser, _server) = open_demo(Graphics::WebGpu, &format!("?backend={backend}&paused=1"), backend).await;
+        let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+        means.push(browser.screenshot().await.mean(rect));
+        browser.close().await;
+    }
+    for c in 0..3 {
+        let d = (means[0][c] - means[1][c]).abs();
+        assert!(d < 6.0, "channel {c}: WebGPU mean {:.1} vs WebGL2 {:.1}", means[0][c], means[1][c]);
+    }
+}
+
+/// A click on the water changes the picture near the click within a second and raises the
+/// largest wave height the simulation reports.
+async fn click_makes_ripples(graphics: Graphics, query: &str, backend: &str) {
+    let (browser, _server) = open_demo(graphics, query, backend).await;
+    let before = browser.js("return window.demo.stats();").await;
+    assert!(before["maxAbsHeight"].as_f64().unwrap() < 1e-4, "water not calm at start: {before}");
+    // A point of the water away from the sphere.
+    let p = browser.js("return window.demo.project(0.45, 0, -0.35);").await;
+    let (x, y) = (p["x"].as_f64().expect("projected x"), p["y"].as_f64().expect("projected y"));
+    let area = Rect::around(x, y, 40);
+    let shot_before = browser.screenshot().await;
+    browser.click_at(x, y).await;
+    let clicked = std::time::Instant::now();
+    let mut changed = 0.0;
+    while clicked.elapsed() < Duration::from_secs(1) && changed < 0.05 {
+        changed = changed_fraction(&shot_before, &browser.screenshot().await, area, 16);
+    }
+    assert!(changed >= 0.05, "{backend}: only {:.1}% of pixels near the click changed within 1 s", changed * 100.0);
+    assert!(
+        browser.wait_for("window.demo.stats().maxAbsHeight > 2e-3", Duration::from_secs(10)).await,
+        "{backend}: maxAbsHeight did not rise: {}",
+        browser.js("return window.demo.stats();").await
+    );
+    eprintln!("{backend}: {:.1}% of pixels near the click changed", changed * 100.0);
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn a_click_makes_ripples_on_webgpu() {
+    let _g = serial();
+    click_makes_ripples(Graphics::WebGpu, "", "webgpu").await;
+}
+
+#[tokio::test]
+async fn a_click_makes_ripples_on_webgl2() {
+    let _g = serial();
+    click_makes_ripples(Graphics::WebGl2Only, "", "webgl2").await;
+}
+
+/// The controls are generated from the parameter table and drive the core: a slider moved with
+/// the keyboard, a checkbox toggled by a click, read back with get(); the shown value has a unit.
+#[tokio::test]
+async fn controls_change_parameters() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
+    let table = browser.js("return window.demo.params().map((p) => p.name);").await;
+    let count = browser.js("return document.querySelector('#pool').shadowRoot.querySelectorAll('input').length;").await;
+    assert_eq!(table.as_array().unwrap().len() as u64, count.as_u64().unwrap(), "one input per parameter");
+    for name in [
+        "wave_speed",
+        "damping",
+        "drop_radius",
+        "drop_strength",
+        "sun_azimuth",
+        "caustics",
+        "sphere",
+        "gravity",
+        "paused",
+    ] {
+        assert!(table.as_array().unwrap().iter().any(|n| n == name), "no control for {name}");
+    }
+    let before = browser.js("return window.demo.get('wave_speed');").await.as_f64().unwrap();
+    browser.js("document.querySelector('#pool').shadowRoot.querySelector('input[name=wave_speed]').focus();").await;
+    let slider = browser.client.active_element().await.expect("focused slider");
+    slider.send_keys("\u{E014}\u{E014}").await.expect("arrow keys"); // ArrowRight twice
+    let after = browser.js("return window.demo.get('wave_speed');").await.as_f64().unwrap();
+    assert!((after - before - 0.1).abs() < 1e-3, "wave_speed {before} -> {after} after two steps of 0.05");
+    let shown = browser
+        .js("return document.querySelector('#pool').shadowRoot.querySelector('input[name=wave_speed] + output').textContent;")
+        .await;
+    assert!(shown.as_str().unwrap().ends_with("m/s"), "value shown without unit: {shown}");
+
+    browser.js("document.querySelector('#pool').shadowRoot.querySelector('input[name=gravity]').click();").await;
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0);
+    // And the API clamps with a warning, and names unknown parameters.
+    assert_eq!(browser.js("return window.demo.set('damping', 99);").await, 5.0);
+    let err =
+        browser.js("try { window.demo.set('nope', 1); return 'no error'; } catch (e) { return e.message; }").await;
+    assert!(err.as_str().unwrap().contains("wave_speed"), "unknown name error: {err}");
+    browser.close().await;
+}
+
+/// Keys reach the demo only when it has focus: space pauses, G toggles gravity.
+#[tokio::test]
+async fn keys_act_only_with_focus() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
+    let body = browser.client.find(fantoccini::Locator::Css("body")).await.unwrap();
+    body.send_keys("g").await.unwrap();
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 0.0, "key acted without focus");
+    browser.js("document.querySelector('#pool').shadowRoot.querySelector('canvas').focus();").await;
+    let canvas = browser.client.active_element().await.unwrap();
+    canvas.send_keys("g ").await.unwrap();
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0);
+    assert_eq!(browser.js("return window.demo.get('paused');").await, 1.0);
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn two_instances_run_independently() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGl2Only).await;
+    browser.goto(&server.url("/test/two.html")).await;
+    browser.wait_ready("#a", READY).await;
+    browser.wait_ready("#b", READY).await;
+    assert!(browser.wait_for("window.demos.a && window.demos.b", Duration::from_secs(10)).await);
+    assert_eq!(
+        browser.js("return [window.demos.a.get('wave_speed'), window.demos.b.get('wave_speed')];").await,
+        serde_json::json!([0.6, 1.5])
+    );
+    browser.js("window.demos.a.addDrop(0.3, 0.3, 0.1, 0.03);").await;
+    assert!(browser.wait_for("window.demos.a.stats().maxAbsHeight > 5e-3", Duration::from_secs(20)).await);
+    let b = browser.js("return window.demos.b.stats().maxAbsHeight;").await.as_f64().unwrap();
+    assert!(b < 1e-4, "a drop in one demo moved the other's water ({b} m)");
+    // The host page's canvas rule does not reach into the demo.
+    let border = browser
+        .js("return getComputedStyle(document.querySelector('#a').shadowRoot.querySelector('canvas')).borderTopWidth;")
+        .await;
+    assert_eq!(border, "0px");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn no_gpu_shows_a_message_in_the_page() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::Nothing).await;
+    browser.goto(&server.url("/")).await;
+    let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
+    let message = browser
+        .js("const m = document.querySelector('#pool').shadowRoot.querySelector('.message'); return m.hidden ? '' : m.textContent;")
+        .await;
+    assert!(failed, "no error state; message: {message}");
+    assert!(message.as_str().unwrap().contains("neither WebGPU nor WebGL2"), "message: {message}");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn snapshot_gives_a_png() {
+    let _g = serial();
+    let (browser, _server) = open_demo(Graphics::WebGpu, "", "webgpu").await;
+    let out = browser
+        .js_async(
+            "const blob = await window.demo.snapshot();
+             const bytes = new Uint8Array(await blob.arrayBuffer());
+             return { type: blob.type, size: blob.size, head: Array.from(bytes.slice(1, 4)) };",
+        )
+        .await;
+    assert_eq!(out["type"], "image/png", "{out}");
+    assert_eq!(out["head"], serde_json::json!([80, 78, 71]), "not a PNG: {out}"); // "PNG"
+    assert!(out["size"].as_u64().unwrap() > 20_000, "snapshot too small to hold the scene: {out}");
+    browser.close().await;
+}

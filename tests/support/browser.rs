@@ -1,0 +1,367 @@
+//! Drives Debian's headless Chromium through chromedriver against the built page (`dist/`),
+//! served by a small static server on 127.0.0.1. Shared by the browser tests and the browser
+//! benchmark. Nothing is skipped: a missing `dist/`, chromedriver or Chromium is a failure
+//! that says how to get it.
+#![allow(dead_code)]
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+use fantoccini::{Client, ClientBuilder};
+use serde_json::{json, Value};
+
+pub const CHROMIUM: &str = "/usr/bin/chromium";
+pub const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+
+/// The built page: `$WAVEPOOL_DIST` or `dist/` in the crate.
+pub fn dist_dir() -> PathBuf {
+    let dir = std::env::var_os("WAVEPOOL_DIST")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("dist"));
+    for file in ["index.html", "embed.js", "wavepool.js", "wavepool_bg.wasm"] {
+        assert!(
+            dir.join(file).is_file(),
+            "{} is missing: the browser tests need the built page; run ./scripts/test (it runs \
+             `trunk build --release` first)",
+            dir.join(file).display()
+        );
+    }
+    dir
+}
+
+fn content_type(path: &Path) -> &'static str {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("html") => "text/html; charset=utf-8",
+        Some("js") => "text/javascript",
+        Some("css") => "text/css",
+        Some("wasm") => "application/wasm",
+        Some("png") => "image/png",
+        _ => "application/octet-stream",
+    }
+}
+
+/// A static file server for `dist/` at `/` and `tests/pages/` at `/test/`.
+pub struct StaticServer {
+    pub port: u16,
+}
+
+impl StaticServer {
+    pub fn start() -> Self {
+        let dist = dist_dir();
+        let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
+        let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
+        let port = listener.local_addr().expect("address").port();
+        std::thread::spawn(move || {
+            for stream in listener.incoming().flatten() {
+                let (dist, pages) = (dist.clone(), pages.clone());
+                std::thread::spawn(move || serve(stream, &dist, &pages));
+            }
+        });
+        Self { port }
+    }
+
+    pub fn url(&self, path: &str) -> String {
+        format!("http://127.0.0.1:{}{path}", self.port)
+    }
+}
+
+fn serve(mut stream: TcpStream, dist: &Path, pages: &Path) {
+    let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
+    let mut request = String::new();
+    if reader.read_line(&mut request).is_err() {
+        return;
+    }
+    loop {
+        let mut header = String::new();
+        if reader.read_line(&mut header).map_or(true, |n| n == 0) || header == "\r\n" {
+            break;
+        }
+    }
+    let target = request.split_whitespace().nth(1).unwrap_or("/");
+    let path = target.split('?').next().unwrap_or("/");
+    let file = match path.strip_prefix("/test/") {
+        Some(rest) => pages.join(rest),
+        None if path == "/" => dist.join("index.html"),
+        None => dist.join(path.trim_start_matches('/')),
+    };
+    let safe = !path.contains("..");
+    let response = match std::fs::read(&file) {
+        Ok(body) if safe => {
+            let head = format!(
+                "HTTP/1.1 200 OK\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n",
+                content_type(&file),
+                body.len()
+            );
+            [head.into_bytes(), body].concat()
+        }
+        _ => b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n".to_vec(),
+    };
+    let _ = stream.write_all(&response);
+    let _ = stream.flush();
+    let mut rest = Vec::new();
+    let _ = reader.read_to_end(&mut rest);
+}
+
+/// What graphics the browser is started with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Graphics {
+    /// WebGPU and WebGL2 on SwiftShader (the flags from the team's toolchain notes).
+    WebGpu,
+    /// No WebGPU flags: `navigator.gpu` gives no adapter, WebGL2 works.
+    WebGl2Only,
+    /// No GPU process and no software rasteriser: neither WebGPU nor WebGL2.
+    Nothing,
+}
+
+const BASE_FLAGS: &[&str] = &[
+    "--headless=new",
+    "--no-sandbox",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--disable-quic",
+    "--window-size=1100,1000",
+    "--force-device-scale-factor=1",
+];
+
+const WEBGPU_FLAGS: &[&str] = &[
+    "--enable-unsafe-webgpu",
+    "--enable-features=Vulkan",
+    "--use-vulkan=swiftshader",
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
+];
+
+const NO_GPU_FLAGS: &[&str] = &["--disable-gpu", "--disable-software-rasterizer"];
+
+/// A Chromium session with its own chromedriver and a fresh profile; `close` ends both.
+pub struct Browser {
+    pub client: Client,
+    driver: Child,
+    profile: PathBuf,
+}
+
+fn free_port() -> u16 {
+    TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).expect("free port").port()
+}
+
+impl Browser {
+    pub async fn open(graphics: Graphics) -> Self {
+        for tool in [CHROMIUM, CHROMEDRIVER] {
+            assert!(
+                Path::new(tool).exists(),
+                "{tool} is missing: the browser tests need Debian's chromium and chromium-driver \
+                 (./scripts/test installs them)"
+            );
+        }
+        let port = free_port();
+        let driver = Command::new(CHROMEDRIVER)
+            .arg(format!("--port={port}"))
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("start chromedriver");
+        let start = Instant::now();
+        while TcpStream::connect(("127.0.0.1", port)).is_err() {
+            assert!(start.elapsed() < Duration::from_secs(20), "chromedriver did not start");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        let profile = std::env::temp_dir().join(format!("wavepool-chromium-{}-{port}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&profile);
+        let mut args: Vec<String> = BASE_FLAGS.iter().map(|s| s.to_string()).collect();
+        args.push(format!("--user-data-dir={}", profile.display()));
+        match graphics {
+            Graphics::WebGpu => args.extend(WEBGPU_FLAGS.iter().map(|s| s.to_string())),
+            Graphics::WebGl2Only => {}
+            Graphics::Nothing => args.extend(NO_GPU_FLAGS.iter().map(|s| s.to_string())),
+        }
+        let mut caps = serde_json::Map::new();
+        caps.insert("goog:chromeOptions".into(), json!({ "binary": CHROMIUM, "args": args }));
+        let client = ClientBuilder::new(hyper_util::client::legacy::connect::HttpConnector::new())
+            .capabilities(caps)
+            .connect(&format!("http://127.0.0.1:{port}"))
+            .await
+            .expect("open a Chromium session through chromedriver");
+        Self { client, driver, profile }
+    }
+
+    pub async fn close(mut self) {
+        let _ = self.client.clone().close().await;
+        let _ = self.driver.kill();
+        let _ = self.driver.wait();
+        let _ = std::fs::remove_dir_all(&self.profile);
+    }
+
+    pub async fn goto(&self, url: &str) {
+        self.client.goto(url).await.expect("load the page");
+    }
+
+    /// Runs `body` (a function body; `return` gives the result) in the page.
+    pub async fn js(&self, body: &str) -> Value {
+        self.client.execute(body, vec![]).await.unwrap_or_else(|e| panic!("script failed: {e}\n{body}"))
+    }
+
+    /// Runs an async function body in the page and waits for its result.
+    pub async fn js_async(&self, body: &str) -> Value {
+        let script = format!(
+            "const done = arguments[arguments.length - 1];
+             (async () => {{ {body} }})().then(done, (e) => done({{ error: String(e && e.message || e) }}));"
+        );
+        self.client.execute_async(&script, vec![]).await.unwrap_or_else(|e| panic!("script failed: {e}\n{body}"))
+    }
+
+    /// Waits until the element matching `selector` is ready (`data-ready="true"`); fails early
+    /// with the demo's own message when it shows an error.
+    pub async fn wait_ready(&self, selector: &str, timeout: Duration) -> Duration {
+        let start = Instant::now();
+        loop {
+            let state = self
+                .js(&format!(
+                    "const e = document.querySelector('{selector}');
+                     if (!e) return {{ missing: true }};
+                     const m = e.shadowRoot && e.shadowRoot.querySelector('.message');
+                     return {{ ready: e.dataset.ready === 'true', error: e.dataset.error === 'true',
+                               message: m ? m.textContent : '' }};"
+                ))
+                .await;
+            if state["ready"] == true {
+                return start.elapsed();
+            }
+            if state["error"] == true {
+                panic!("{selector} failed instead of becoming ready: {}", state["message"]);
+            }
+            if start.elapsed() > timeout {
+                panic!("{selector} not ready after {timeout:?}: {state}");
+            }
+            tokio::time::sleep(Duration::from_millis(200)).await;
+        }
+    }
+
+    /// Waits until `condition` (a JS expression) is true.
+    pub async fn wait_for(&self, condition: &str, timeout: Duration) -> bool {
+        let start = Instant::now();
+        while start.elapsed() < timeout {
+            if self.js(&format!("return Boolean({condition});")).await == true {
+                return true;
+            }
+            tokio::time::sleep(Duration::from_millis(100)).await;
+        }
+        false
+    }
+
+    pub async fn screenshot(&self) -> Shot {
+        Shot::decode(&self.client.screenshot().await.expect("screenshot"))
+    }
+
+    /// Presses the left mouse button at viewport point (x, y) (CSS pixels) and releases it.
+    pub async fn click_at(&self, x: f64, y: f64) {
+        use fantoccini::actions::{InputSource, MouseActions, PointerAction, MOUSE_BUTTON_LEFT};
+        let mouse = MouseActions::new("mouse".into())
+            .then(PointerAction::MoveTo { duration: None, x: x.round(), y: y.round() })
+            .then(PointerAction::Down { button: MOUSE_BUTTON_LEFT })
+            .then(PointerAction::Pause { duration: Duration::from_millis(50) })
+            .then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
+        self.client.perform_actions(mouse).await.expect("click");
+    }
+}
+
+/// A decoded screenshot (RGBA8).
+pub struct Shot {
+    pub width: u32,
+    pub height: u32,
+    pub rgba: Vec<u8>,
+}
+
+impl Shot {
+    pub fn decode(png_bytes: &[u8]) -> Self {
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
+        decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+        let mut reader = decoder.read_info().expect("png header");
+        let mut buf = vec![0; reader.output_buffer_size().expect("png size")];
+        let info = reader.next_frame(&mut buf).expect("png frame");
+        buf.truncate(info.buffer_size());
+        let rgba = match info.color_type {
+            png::ColorType::Rgba => buf,
+            png::ColorType::Rgb => buf.chunks(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect(),
+            other => panic!("unexpected screenshot colour type {other:?}"),
+        };
+        Self { width: info.width, height: info.height, rgba }
+    }
+
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
+        let i = ((y.min(self.height - 1) * self.width + x.min(self.width - 1)) * 4) as usize;
+        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2]]
+    }
+
+    /// Pixels of the rectangle (CSS px = screenshot px at scale factor 1).
+    pub fn region(&self, r: Rect) -> Vec<[u8; 3]> {
+        let mut out = Vec::new();
+        for y in r.y..r.y + r.h {
+            for x in r.x..r.x + r.w {
+                out.push(self.pixel(x, y));
+            }
+        }
+        out
+    }
+
+    /// Standard deviation of luma (0-255) over a rectangle: 0 for a flat fill.
+    pub fn luma_spread(&self, r: Rect) -> f64 {
+        let lumas: Vec<f64> =
+            self.region(r).iter().map(|p| 0.2126 * p[0] as f64 + 0.7152 * p[1] as f64 + 0.0722 * p[2] as f64).collect();
+        let mean = lumas.iter().sum::<f64>() / lumas.len() as f64;
+        (lumas.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / lumas.len() as f64).sqrt()
+    }
+
+    /// Mean colour over a rectangle.
+    pub fn mean(&self, r: Rect) -> [f64; 3] {
+        let px = self.region(r);
+        let mut m = [0.0; 3];
+        for p in &px {
+            for c in 0..3 {
+                m[c] += p[c] as f64 / px.len() as f64;
+            }
+        }
+        m
+    }
+}
+
+/// Share of pixels in `r` whose largest channel difference between two shots exceeds `threshold`.
+pub fn changed_fraction(a: &Shot, b: &Shot, r: Rect, threshold: u8) -> f64 {
+    let (pa, pb) = (a.region(r), b.region(r));
+    let changed = pa.iter().zip(&pb).filter(|(x, y)| (0..3).any(|c| x[c].abs_diff(y[c]) > threshold)).count();
+    changed as f64 / pa.len() as f64
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Rect {
+    pub x: u32,
+    pub y: u32,
+    pub w: u32,
+    pub h: u32,
+}
+
+impl Rect {
+    /// From a JS `{left, top, width, height}` (CSS px).
+    pub fn from_js(v: &Value) -> Self {
+        let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("rect field {k} in {v}"));
+        Self { x: f("left").max(0.0) as u32, y: f("top").max(0.0) as u32, w: f("width") as u32, h: f("height") as u32 }
+    }
+
+    /// A square of side `2 * half` around (cx, cy).
+    pub fn around(cx: f64, cy: f64, half: u32) -> Self {
+        Self { x: (cx as u32).saturating_sub(half), y: (cy as u32).saturating_sub(half), w: 2 * half, h: 2 * half }
+    }
+}
+
+/// The canvas rectangle of the demo mounted in `selector`, as JS code.
+pub fn canvas_rect_js(selector: &str) -> String {
+    format!(
+        "const c = document.querySelector('{selector}').shadowRoot.querySelector('canvas');
+         const r = c.getBoundingClientRect();
+         return {{ left: r.left, top: r.top, width: r.width, height: r.height }};"
+    )
+}

@@ -1,0 +1,584 @@
+// wavepool embedding module: `const demo = await mount(element, options)` puts an interactive
+// water pool (and, unless `controls: false`, its controls) inside `element`. Everything lives
+// in a shadow root, so the host page's CSS and ours never meet; nothing is put on `window`.
+// The simulation and rendering are Rust (wavepool.js + wavepool_bg.wasm, next to this file).
+
+import init, { WebDemo, paramTable } from "./wavepool.js";
+
+let ready = null; // one instantiation of the wasm module for every demo on the page
+const live = new Set(); // mounted demos, told when the wasm module panics
+
+function loadCore() {
+  if (!ready) {
+    ready = init().then(() => {
+      window.addEventListener("wavepool:panic", (event) => {
+        for (const demo of live) demo._fail(`The water demo crashed: ${event.detail}`);
+      });
+    });
+  }
+  return ready;
+}
+
+const SIM_SIZES = [128, 256, 512, 1024];
+
+/** Options understood by mount(), with defaults. Parameter names from `params()` are accepted too. */
+export const DEFAULT_OPTIONS = Object.freeze({
+  backend: "auto", // "auto" | "webgpu" | "webgl2"
+  simSize: 256, // simulation cells per side: 128, 256, 512 or 1024
+  controls: true, // show the controls under the canvas
+  maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
+  maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
+  aspect: 4 / 3, // width / height when the element has no height of its own
+});
+
+/** The parameter table: name, label, group, unit, kind, min, max, step, default, help. */
+export async function params() {
+  await loadCore();
+  return paramTable();
+}
+
+function warn(message) {
+  console.warn(`wavepool: ${message}`);
+}
+
+function clampNumber(name, value, min, max, fallback) {
+  const v = Number(value);
+  if (!Number.isFinite(v)) {
+    warn(`option ${name} = ${value} is not a number; using ${fallback}`);
+    return fallback;
+  }
+  if (v < min || v > max) {
+    const c = Math.min(max, Math.max(min, v));
+    warn(`option ${name} = ${v} is outside [${min}, ${max}]; using ${c}`);
+    return c;
+  }
+  return v;
+}
+
+// Splits user options into demo options and parameter values, clamping and warning.
+function readOptions(options, table) {
+  const out = { ...DEFAULT_OPTIONS, params: {} };
+  const names = new Set(table.map((p) => p.name));
+  for (const [key, value] of Object.entries(options || {})) {
+    if (key === "params" && value && typeof value === "object") {
+      Object.assign(out.params, value);
+    } else if (names.has(key)) {
+      out.params[key] = value;
+    } else if (key === "backend") {
+      const b = String(value).toLowerCase();
+      if (["auto", "webgpu", "webgl2"].includes(b)) out.backend = b;
+      else warn(`backend "${value}" is not auto, webgpu or webgl2; using auto`);
+    } else if (key === "simSize") {
+      const n = clampNumber(key, value, 128, 1024, 256);
+      out.simSize = SIM_SIZES.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a));
+      if (out.simSize !== n) warn(`simSize ${n} is not one of ${SIM_SIZES.join(", ")}; using ${out.simSize}`);
+    } else if (key === "controls") {
+      out.controls = !(value === false || value === 0 || value === "0" || value === "false");
+    } else if (key === "maxPixelRatio") {
+      out.maxPixelRatio = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.maxPixelRatio);
+    } else if (key === "maxPixels") {
+      out.maxPixels = clampNumber(key, value, 64 * 64, 8192 * 8192, DEFAULT_OPTIONS.maxPixels);
+    } else if (key === "aspect") {
+      out.aspect = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.aspect);
+    } else {
+      warn(`unknown option "${key}" ignored; options: ${Object.keys(DEFAULT_OPTIONS).join(", ")}, ` +
+        `and the parameters ${[...names].join(", ")}`);
+    }
+  }
+  return out;
+}
+
+// Turns "true"/"false"/"1.5" from a URL or attribute into a number for set().
+function toNumber(value) {
+  if (value === true || value === "true" || value === "on") return 1;
+  if (value === false || value === "false" || value === "off") return 0;
+  return Number(value);
+}
+
+function formatValue(p, v) {
+  if (p.kind === "toggle") return v >= 0.5 ? "on" : "off";
+  const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
+  return `${v.toFixed(decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${p.unit}`) : ""}`;
+}
+
+let instances = 0;
+
+/**
+ * Mounts a demo in `element`. Resolves to the demo's handle once the first frame is drawn;
+ * rejects (after showing a readable message in the element) when no GPU backend works.
+ */
+export async function mount(element, options = {}) {
+  if (!(element instanceof Element)) throw new TypeError("wavepool.mount: the first argument must be an element");
+  const started = performance.now();
+  const shadow = element.shadowRoot || element.attachShadow({ mode: "open" });
+  shadow.replaceChildren();
+  const fillsElement = element.clientHeight > 0;
+  const root = document.createElement("div");
+  root.className = "root" + (fillsElement ? " fill" : "");
+  const style = document.createElement("link");
+  style.rel = "stylesheet";
+  style.href = new URL("./wavepool.css", import.meta.url).href;
+  const stage = document.createElement("div");
+  stage.className = "stage";
+  const message = document.createElement("div");
+  message.className = "message";
+  message.setAttribute("role", "alert");
+  message.hidden = true;
+  stage.append(message);
+  root.append(stage);
+  shadow.append(style, root);
+  const id = ++instances;
+
+  const handle = new Demo(element, shadow, root, stage, message, id, started);
+  live.add(handle);
+  try {
+    handle._status("Loading the water…");
+    await loadCore();
+    const table = paramTable();
+    const opts = readOptions(options, table);
+    if (!fillsElement) stage.style.aspectRatio = String(opts.aspect);
+    handle._table = table;
+    handle._opts = opts;
+    await handle._start();
+    for (const [name, value] of Object.entries(opts.params)) handle.set(name, toNumber(value));
+    if (opts.controls) handle._buildControls();
+    handle._status(null);
+    handle._run();
+    await handle._firstFrame;
+    return handle;
+  } catch (error) {
+    handle._fail(String(error && error.message ? error.message : error));
+    throw error;
+  }
+}
+
+class Demo {
+  constructor(element, shadow, root, stage, message, id, started) {
+    this._element = element;
+    this._shadow = shadow;
+    this._root = root;
+    this._stage = stage;
+    this._message = message;
+    this._id = id;
+    this._started = started;
+    this._core = null;
+    this._canvas = null;
+    this._frame = 0; // requestAnimationFrame id
+    this._last = 0; // time of the last frame (ms)
+    this._frames = []; // times of recent frames, for fps
+    this._userPaused = false;
+    this._visible = true;
+    this._onScreen = true;
+    this._dead = false;
+    this._controls = new Map(); // parameter name -> update function
+    this._pointers = new Map(); // pointerId -> {x, y}
+    this._pinch = 0; // distance between two touching pointers (px), 0 when not pinching
+    this._firstFrameMs = null;
+    this._firstFrame = new Promise((resolve, reject) => {
+      this._firstFrameResolve = resolve;
+      this._firstFrameReject = reject;
+    });
+    this._firstFrame.catch(() => {});
+    this._cleanups = [];
+  }
+
+  // ---- set-up -------------------------------------------------------------------------
+
+  async _start() {
+    const order = this._opts.backend === "auto" ? ["webgpu", "webgl2"] : [this._opts.backend];
+    const failures = [];
+    for (const backend of order) {
+      if (backend === "webgpu" && !navigator.gpu) {
+        failures.push("WebGPU: not offered by this browser");
+        continue;
+      }
+      const canvas = this._makeCanvas();
+      try {
+        this._core = await WebDemo.create(canvas, backend, this._opts.simSize);
+        this._canvas = canvas;
+        this._element.dataset.backend = backend;
+        this._listen();
+        return;
+      } catch (error) {
+        canvas.remove();
+        failures.push(`${backend === "webgpu" ? "WebGPU" : "WebGL2"}: ${error.message || error}`);
+      }
+    }
+    throw new Error(
+      "This browser could not start the water demo: it offers neither WebGPU nor WebGL2 " +
+        "(graphics acceleration may be turned off). Details: " + failures.join("; "),
+    );
+  }
+
+  _makeCanvas() {
+    const canvas = document.createElement("canvas");
+    canvas.tabIndex = 0;
+    canvas.setAttribute("role", "application");
+    canvas.setAttribute(
+      "aria-label",
+      "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere " +
+        "to turn the camera. Keys: arrows turn, + and - zoom, space pauses, G gravity, L light.",
+    );
+    this._stage.prepend(canvas);
+    this._sizeCanvas(canvas);
+    return canvas;
+  }
+
+  // Backing-store size from the displayed size, devicePixelRatio and the caps.
+  _sizeCanvas(canvas) {
+    const rect = canvas.getBoundingClientRect();
+    const ratio = Math.min(window.devicePixelRatio || 1, this._opts.maxPixelRatio);
+    let w = Math.max(1, Math.round(rect.width * ratio));
+    let h = Math.max(1, Math.round(rect.height * ratio));
+    const scale = Math.min(1, Math.sqrt(this._opts.maxPixels / (w * h)));
+    w = Math.max(1, Math.floor(w * scale));
+    h = Math.max(1, Math.floor(h * scale));
+    if (canvas.width !== w) canvas.width = w;
+    if (canvas.height !== h) canvas.height = h;
+  }
+
+  _on(target, type, listener, options) {
+    target.addEventListener(type, listener, options);
+    this._cleanups.push(() => target.removeEventListener(type, listener, options));
+  }
+
+  _listen() {
+    const canvas = this._canvas;
+    const resize = new ResizeObserver(() => this._sizeCanvas(canvas));
+    resize.observe(canvas);
+    const onScreen = new IntersectionObserver((entries) => {
+      this._onScreen = entries[entries.length - 1].isIntersecting;
+      this._run();
+    });
+    onScreen.observe(this._element);
+    this._cleanups.push(() => resize.disconnect(), () => onScreen.disconnect());
+    this._on(document, "visibilitychange", () => {
+      this._visible = !document.hidden;
+      this._run();
+    });
+
+    // Pointer position in backing pixels.
+    const at = (e) => {
+      const r = canvas.getBoundingClientRect();
+      return [((e.clientX - r.left) * canvas.width) / r.width, ((e.clientY - r.top) * canvas.height) / r.height];
+    };
+    const spread = () => {
+      const [a, b] = [...this._pointers.values()];
+      return Math.hypot(a[0] - b[0], a[1] - b[1]);
+    };
+    this._on(canvas, "pointerdown", (e) => {
+      if (e.button !== 0 && e.pointerType === "mouse") return;
+      canvas.focus({ preventScroll: true });
+      canvas.setPointerCapture(e.pointerId);
+      this._pointers.set(e.pointerId, at(e));
+      if (this._pointers.size === 1) {
+        this._core.pointerDown(...at(e));
+      } else if (this._pointers.size === 2) {
+        this._core.pointerUp(); // a second finger turns the gesture into a pinch
+        this._pinch = spread();
+      }
+      e.preventDefault();
+    });
+    this._on(canvas, "pointermove", (e) => {
+      if (!this._pointers.has(e.pointerId)) return;
+      this._pointers.set(e.pointerId, at(e));
+      if (this._pointers.size === 1) {
+        this._core.pointerMove(...at(e));
+      } else if (this._pointers.size === 2 && this._pinch > 0) {
+        const d = spread();
+        if (d > 0) this._core.zoom(-10 * Math.log(d / this._pinch));
+        this._pinch = d;
+      }
+    });
+    const release = (e) => {
+      if (!this._pointers.delete(e.pointerId)) return;
+      if (this._pointers.size === 0) this._core.pointerUp();
+      if (this._pointers.size < 2) this._pinch = 0;
+    };
+    this._on(canvas, "pointerup", release);
+    this._on(canvas, "pointercancel", release);
+    this._on(canvas, "lostpointercapture", release);
+    this._on(
+      canvas,
+      "wheel",
+      (e) => {
+        const lines = e.deltaMode === 1 ? 33 : e.deltaMode === 2 ? 400 : 1;
+        this._core.zoom(Math.max(-3, Math.min(3, (e.deltaY * lines) / 100)));
+        e.preventDefault();
+      },
+      { passive: false },
+    );
+    // Keys act only while the canvas has focus, so the host page keeps its shortcuts.
+    this._on(canvas, "keydown", (e) => {
+      if (e.ctrlKey || e.metaKey || e.altKey) return;
+      const turn = { ArrowLeft: [-12, 0], ArrowRight: [12, 0], ArrowUp: [0, -12], ArrowDown: [0, 12] }[e.key];
+      let used = true;
+      if (turn) this._core.orbit(...turn);
+      else if (e.key === "+" || e.key === "=") this._core.zoom(-1);
+      else if (e.key === "-" || e.key === "_") this._core.zoom(1);
+      else used = this._core.key(e.code);
+      if (used) {
+        e.preventDefault();
+        this._refreshControls();
+      }
+    });
+  }
+
+  // ---- controls -----------------------------------------------------------------------
+
+  _buildControls() {
+    const panel = document.createElement("details");
+    panel.className = "controls";
+    panel.open = true;
+    const summary = document.createElement("summary");
+    summary.textContent = "Controls";
+    panel.append(summary);
+    const groups = new Map();
+    for (const p of this._table) {
+      if (!groups.has(p.group)) {
+        const fieldset = document.createElement("fieldset");
+        const legend = document.createElement("legend");
+        legend.textContent = p.group;
+        fieldset.append(legend);
+        groups.set(p.group, fieldset);
+        panel.append(fieldset);
+      }
+      groups.get(p.group).append(this._control(p));
+    }
+    const buttons = document.createElement("div");
+    buttons.className = "buttons";
+    const button = (label, title, action) => {
+      const b = document.createElement("button");
+      b.type = "button";
+      b.textContent = label;
+      b.title = title;
+      b.addEventListener("click", action);
+      buttons.append(b);
+    };
+    button("Reset water", "Flatten the water and put the sphere back", () => this._core && this._core.reset());
+    button("Defaults", "Set every parameter to its default", () => {
+      for (const p of this._table) this.set(p.name, p.default);
+    });
+    panel.append(buttons);
+    this._root.append(panel);
+  }
+
+  _control(p) {
+    const row = document.createElement("div");
+    row.className = "row";
+    const inputId = `wavepool-${this._id}-${p.name}`;
+    const label = document.createElement("label");
+    label.htmlFor = inputId;
+    label.textContent = p.label;
+    label.title = p.help;
+    const input = document.createElement("input");
+    input.id = inputId;
+    input.name = p.name;
+    input.title = p.help;
+    const output = document.createElement("output");
+    output.htmlFor = inputId;
+    if (p.kind === "toggle") {
+      input.type = "checkbox";
+      input.addEventListener("change", () => this.set(p.name, input.checked ? 1 : 0));
+    } else {
+      input.type = "range";
+      input.min = p.min;
+      input.max = p.max;
+      input.step = p.step;
+      input.addEventListener("input", () => this.set(p.name, Number(input.value)));
+    }
+    const update = () => {
+      const v = this.get(p.name);
+      if (p.kind === "toggle") input.checked = v >= 0.5;
+      else input.value = v;
+      output.textContent = formatValue(p, v);
+      input.setAttribute("aria-valuetext", output.textContent);
+    };
+    this._controls.set(p.name, update);
+    update();
+    row.append(label, input, output);
+    return row;
+  }
+
+  _refreshControls(name) {
+    if (name) {
+      const update = this._controls.get(name);
+      if (update) update();
+    } else {
+      for (const update of this._controls.values()) update();
+    }
+  }
+
+  // ---- frame loop ---------------------------------------------------------------------
+
+  _run() {
+    const wanted = !this._dead && this._core && !this._userPaused && this._visible && this._onScreen;
+    if (wanted && !this._frame) {
+      this._last = 0;
+      this._frame = requestAnimationFrame((t) => this._tick(t));
+    } else if (!wanted && this._frame) {
+      cancelAnimationFrame(this._frame);
+      this._frame = 0;
+      this._frames.length = 0;
+    }
+  }
+
+  _tick(time) {
+    this._frame = 0;
+    if (this._dead || !this._core) return;
+    const dt = this._last ? Math.min(0.25, (time - this._last) / 1000) : 1 / 60;
+    this._last = time;
+    try {
+      this._core.frame(dt, this._canvas.width, this._canvas.height);
+    } catch (error) {
+      this._recover(error);
+      return;
+    }
+    this._frames.push(time);
+    while (this._frames.length > 2 && time - this._frames[0] > 2000) this._frames.shift();
+    if (this._firstFrameMs === null) {
+      this._firstFrameMs = performance.now() - this._started;
+      // Ready once the browser has composited the first frame (the next animation frame).
+      requestAnimationFrame(() => {
+        if (this._dead) return;
+        this._element.dataset.ready = "true";
+        this._firstFrameResolve();
+      });
+    }
+    this._run();
+  }
+
+  // A lost device is recreated once on a fresh canvas; a second loss is reported.
+  async _recover(error) {
+    const text = String(error && error.message ? error.message : error);
+    if (this._recovering || !/lost/.test(text)) {
+      this._fail(`The water demo stopped: ${text}`);
+      return;
+    }
+    this._recovering = true;
+    const values = this._table.map((p) => [p.name, this.get(p.name)]);
+    this._detachCore();
+    try {
+      this._status("The graphics device was lost; restarting…");
+      await this._start();
+      for (const [name, v] of values) this._core.set(name, v);
+      this._status(null);
+      this._run();
+    } catch (e) {
+      this._fail(`The graphics device was lost and could not be restarted: ${e.message || e}`);
+    }
+  }
+
+  _detachCore() {
+    for (const cleanup of this._cleanups.splice(0)) cleanup();
+    if (this._frame) cancelAnimationFrame(this._frame);
+    this._frame = 0;
+    if (this._core) {
+      try {
+        this._core.free();
+      } catch (_) {
+        // a poisoned module cannot free; the page drops it anyway
+      }
+    }
+    this._core = null;
+    if (this._canvas) this._canvas.remove();
+    this._canvas = null;
+  }
+
+  _status(text) {
+    this._message.hidden = !text;
+    this._message.textContent = text || "";
+    this._message.classList.remove("error");
+  }
+
+  _fail(text) {
+    if (this._dead) return;
+    this._dead = true;
+    if (this._frame) cancelAnimationFrame(this._frame);
+    this._frame = 0;
+    this._message.hidden = false;
+    this._message.classList.add("error");
+    this._message.textContent = text;
+    this._element.dataset.error = "true";
+    console.error(`wavepool: ${text}`);
+    this._firstFrameReject(new Error(text));
+  }
+
+  _alive() {
+    if (this._dead || !this._core) throw new Error("wavepool: this demo is not running (destroyed or failed)");
+    return this._core;
+  }
+
+  // ---- public API ---------------------------------------------------------------------
+
+  /** Adds a drop at pool coordinates x, z (m, -1..1) with radius (m) and strength (m). */
+  addDrop(x, z, radius = this.get("drop_radius"), strength = this.get("drop_strength")) {
+    this._alive().addDrop(Number(x), Number(z), Number(radius), Number(strength));
+  }
+
+  /** Sets a parameter; out-of-range values are clamped (console warning). Returns the value in effect. */
+  set(name, value) {
+    const v = this._alive().set(String(name), toNumber(value));
+    this._refreshControls(String(name));
+    return v;
+  }
+
+  /** A parameter's current value; throws for unknown names. */
+  get(name) {
+    return this._alive().get(String(name));
+  }
+
+  /** Where pool point (x, y, z) in m appears, in CSS pixels relative to the page's viewport; null when not visible. */
+  project(x, y, z) {
+    const p = this._alive().project(Number(x), Number(y), Number(z));
+    if (p.length < 2) return null;
+    const r = this._canvas.getBoundingClientRect();
+    return { x: r.left + (p[0] * r.width) / this._canvas.width, y: r.top + (p[1] * r.height) / this._canvas.height };
+  }
+
+  /** The parameter table. */
+  params() {
+    return this._table.map((p) => ({ ...p }));
+  }
+
+  /** Stops the frame loop (and the water) until resume(). */
+  pause() {
+    this._userPaused = true;
+    this._run();
+  }
+
+  resume() {
+    this._userPaused = false;
+    this._run();
+  }
+
+  /** { fps, frameMs, firstFrameMs, backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height } */
+  stats() {
+    const s = this._alive().stats();
+    const f = this._frames;
+    const span = f.length > 1 ? f[f.length - 1] - f[0] : 0;
+    s.fps = span > 0 ? ((f.length - 1) * 1000) / span : 0;
+    s.frameMs = s.fps > 0 ? 1000 / s.fps : 0;
+    s.firstFrameMs = this._firstFrameMs;
+    return s;
+  }
+
+  /** The next frame as a PNG Blob. */
+  snapshot() {
+    const core = this._alive();
+    core.frame(0, this._canvas.width, this._canvas.height);
+    return new Promise((resolve, reject) =>
+      this._canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error("snapshot failed"))), "image/png"),
+    );
+  }
+
+  /** Stops the demo, frees its GPU resources and empties the element. */
+  destroy() {
+    this._detachCore();
+    this._dead = true;
+    live.delete(this);
+    this._shadow.replaceChildren();
+    delete this._element.dataset.backend;
+    delete this._element.dataset.ready;
+  }
+}
