@@ -193,8 +193,12 @@ fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
     return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
 }
 
+// The sky cubemap plus the sun's disk (about 1.5 degrees across, HDR so its reflections stay
+// bright), dimmed where the cubemap's alpha says clouds cover it.
 fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
-    return textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0).rgb;
+    let sky = textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0);
+    let disk = smoothstep(0.99988, 0.99995, dot(dir, scene.sun.xyz));
+    return sky.rgb + vec3<f32>(40.0, 36.0, 30.0) * disk * (1.0 - 0.8 * sky.a);
 }
 
 // Specular reflection of the sun on water, sharper and brighter than the cubemap's disk

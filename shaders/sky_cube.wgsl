@@ -1,6 +1,8 @@
 // Procedural sky, rendered once per cube face whenever the sun moves: a gradient from a
 // pale horizon to a deep zenith, stone ground below the horizon, soft clouds on a virtual
-// plane, and the sun as a small HDR disk with a glow (so its reflection on water is bright).
+// plane, and a glow around the sun. 8-bit sRGB (cheap to sample); the sun's HDR disk is added
+// analytically where the sky is looked up (scene.wgsl, sky_colour), and alpha carries the
+// cloud cover that dims it.
 
 struct SkyFace {
     sun: vec4<f32>,   // xyz unit vector towards the sun
@@ -60,8 +62,5 @@ fn fs_sky_face(in: FullscreenOut) -> @location(0) vec4<f32> {
     let c = clouds(dir);
     let cloud_colour = vec3<f32>(0.95, 0.95, 0.97) * (0.75 + 0.25 * max(cos_sun, 0.0));
     colour = mix(colour, cloud_colour, c * 0.85);
-    // Sun disk (about 1.5 degrees across, HDR so its reflections stay bright after blending).
-    let disk = smoothstep(cos(radians(0.9)), cos(radians(0.6)), cos_sun);
-    colour += vec3<f32>(40.0, 36.0, 30.0) * disk * (1.0 - c * 0.8);
-    return vec4<f32>(colour, 1.0);
+    return vec4<f32>(colour, c);
 }

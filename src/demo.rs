@@ -15,8 +15,9 @@ use crate::sim::{Drop, FixedStep, HeightField, WaterLevel, WaveSettings};
 pub const STEPS_PER_SECOND: u32 = 120;
 /// Simulated seconds per step.
 pub const STEP_DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
-/// Most steps one frame may take (a frame longer than this many steps drops the rest).
-pub const MAX_STEPS_PER_FRAME: u32 = 8;
+/// Most steps one frame may take (a frame longer than this many steps drops the rest, so
+/// below 30 frames/s the water runs in slow motion instead of making slow frames slower).
+pub const MAX_STEPS_PER_FRAME: u32 = 4;
 
 /// Where the sphere starts (m).
 const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);

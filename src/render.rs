@@ -359,7 +359,9 @@ impl Renderer {
                 address_mode_w: address,
                 mag_filter: wgpu::FilterMode::Linear,
                 min_filter: wgpu::FilterMode::Linear,
-                mipmap_filter: wgpu::MipmapFilterMode::Linear,
+                // Nearest mip level: the level is chosen per pixel already (tile_lod), and
+                // trilinear filtering costs software rasterisers twice the texel reads.
+                mipmap_filter: wgpu::MipmapFilterMode::Nearest,
                 ..Default::default()
             })
         };

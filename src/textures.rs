@@ -11,7 +11,7 @@ pub const TILES_PER_METRE: u32 = 8;
 pub const TILE_TEXTURE_SIZE: u32 = 512;
 /// Side of each sky cube face in texels.
 pub const SKY_FACE_SIZE: u32 = 256;
-pub const SKY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+pub const SKY_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
 
 fn srgb_to_linear(c: f32) -> f32 {
     if c <= 0.04045 {

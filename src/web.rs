@@ -96,6 +96,8 @@ impl WebDemo {
         canvas: web_sys::HtmlCanvasElement,
         backend: String,
         sim_size: u32,
+        surface_grid: u32,
+        caustics_size: u32,
     ) -> Result<WebDemo, JsError> {
         let (backends, backend) = match backend.as_str() {
             "webgpu" => (wgpu::Backends::BROWSER_WEBGPU, "webgpu"),
@@ -158,7 +160,11 @@ impl WebDemo {
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
         surface.configure(&device, &config);
-        let options = DemoOptions { sim_size: self::sim_size(sim_size), ..Default::default() };
+        let options = DemoOptions {
+            sim_size: self::sim_size(sim_size),
+            surface_grid: surface_grid.clamp(16, 512),
+            caustics_size: caustics_size.clamp(128, 2048).min(max_side),
+        };
         let demo = WaterDemo::new(&device, &queue, format, options);
         Ok(WebDemo { demo, surface, config, device, queue, backend, adapter: adapter.get_info().name, max_side, lost })
     }

@@ -25,6 +25,8 @@ const SIM_SIZES = [128, 256, 512, 1024];
 export const DEFAULT_OPTIONS = Object.freeze({
   backend: "auto", // "auto" | "webgpu" | "webgl2"
   simSize: 256, // simulation cells per side: 128, 256, 512 or 1024
+  meshSize: 128, // quads per side of the water surface and caustics meshes (16-512)
+  causticsSize: 1024, // texels per side of the caustics map (128-2048)
   controls: true, // show the controls under the canvas
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
@@ -72,6 +74,10 @@ function readOptions(options, table) {
       const n = clampNumber(key, value, 128, 1024, 256);
       out.simSize = SIM_SIZES.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a));
       if (out.simSize !== n) warn(`simSize ${n} is not one of ${SIM_SIZES.join(", ")}; using ${out.simSize}`);
+    } else if (key === "meshSize") {
+      out.meshSize = Math.round(clampNumber(key, value, 16, 512, DEFAULT_OPTIONS.meshSize));
+    } else if (key === "causticsSize") {
+      out.causticsSize = Math.round(clampNumber(key, value, 128, 2048, DEFAULT_OPTIONS.causticsSize));
     } else if (key === "controls") {
       out.controls = !(value === false || value === 0 || value === "0" || value === "false");
     } else if (key === "maxPixelRatio") {
@@ -194,7 +200,7 @@ class Demo {
       }
       const canvas = this._makeCanvas();
       try {
-        this._core = await WebDemo.create(canvas, backend, this._opts.simSize);
+        this._core = await WebDemo.create(canvas, backend, this._opts.simSize, this._opts.meshSize, this._opts.causticsSize);
         this._canvas = canvas;
         this._element.dataset.backend = backend;
         this._listen();
