@@ -24,8 +24,6 @@ async fn main() {
         tokio::time::sleep(warm_up).await;
         // Frames presented over the measuring window, counted in the page.
         let start = browser.js("return { t: performance.now(), s: window.demo.stats() };").await;
-        let frames_before = browser.js("return window.__frames || 0;").await;
-        let _ = frames_before;
         let count_script = "window.__count = 0; const tick = () => { window.__count++; if (!window.__stop) requestAnimationFrame(tick); }; requestAnimationFrame(tick);";
         browser.js(count_script).await;
         tokio::time::sleep(measure).await;
