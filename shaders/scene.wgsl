@@ -111,29 +111,20 @@ fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
 }
 
 // Inward normal of the pool face nearest to p (floor or one of the four walls).
+// Written with select rather than branches: it runs per pixel for two rays.
 fn pool_normal(p: vec3<f32>) -> vec3<f32> {
     let w = half_width();
     let dx = w - abs(p.x);
     let dz = w - abs(p.z);
     let dy = p.y + depth();
-    if (dy <= dx && dy <= dz) {
-        return vec3<f32>(0.0, 1.0, 0.0);
-    }
-    if (dx < dz) {
-        return vec3<f32>(-sign(p.x), 0.0, 0.0);
-    }
-    return vec3<f32>(0.0, 0.0, -sign(p.z));
+    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
+    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
 }
 
 // Texture coordinates (m) of the tiles at p on the face with inward normal n.
 fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
-    if (abs(n.y) > 0.5) {
-        return p.xz;
-    }
-    if (abs(n.x) > 0.5) {
-        return vec2<f32>(p.z, -p.y);
-    }
-    return vec2<f32>(p.x, -p.y);
+    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
+    return select(wall, p.xz, abs(n.y) > 0.5);
 }
 
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
@@ -151,11 +142,12 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
 }
 
-// Where a ray from inside the pool box leaves it (the tile it would hit).
-fn pool_exit(origin: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+// Distance (m) along a ray from inside the pool box to where it leaves it (the tile it
+// would hit, or the opening above the rim).
+fn pool_exit_distance(origin: vec3<f32>, dir: vec3<f32>) -> f32 {
     let w = half_width();
     let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
-    return origin + dir * max(box.y, 0.0);
+    return max(box.y, 0.0);
 }
 
 // Mip level for the tiles seen at `hit` through this pixel, from how fast the tile
@@ -208,11 +200,11 @@ fn sun_specular(dir: vec3<f32>) -> vec3<f32> {
 }
 
 // What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
-// water it crossed (Beer–Lambert). lod: tile mip level (see tile_lod).
-fn trace_water(origin: vec3<f32>, dir: vec3<f32>, lod: f32) -> vec3<f32> {
+// water it crossed (Beer–Lambert). t_exit: pool_exit_distance of the ray; lod: tile mip
+// level (see tile_lod).
+fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     let w = half_width();
-    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
-    var t = max(box.y, 0.0);
+    var t = t_exit;
     var colour: vec3<f32>;
     let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
     if (ts < t) {
@@ -225,15 +217,19 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, lod: f32) -> vec3<f32> {
     return colour * exp(-WATER_ABSORPTION * water_path(origin, origin + dir * t, w, depth()));
 }
 
-// What a ray starting at the surface and going up through air sees: the sphere, the pool
-// walls above the water line, or the sky. lod: tile mip level (see tile_lod).
-fn trace_air(origin: vec3<f32>, dir_in: vec3<f32>, lod: f32) -> vec3<f32> {
-    // A reflection that still points down (steep waves) is folded back up.
-    let dir = normalize(vec3<f32>(dir_in.x, abs(dir_in.y), dir_in.z));
+// A ray leaving the surface into the air, folded back up if it still points down (a
+// reflection off a steep wave); a zero vector (refract's total internal reflection) gives
+// straight up, so that its colour stays finite even where its weight is zero.
+fn upward(dir: vec3<f32>) -> vec3<f32> {
+    return normalize(vec3<f32>(dir.x, max(abs(dir.y), 1.0e-4), dir.z));
+}
+
+// What a ray starting at the surface and going up through air (see upward) sees: the
+// sphere, the pool walls above the water line, or the sky. t_exit: pool_exit_distance of
+// the ray; lod: tile mip level (see tile_lod).
+fn trace_air(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
-    let w = half_width();
-    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
-    let t = max(box.y, 0.0);
+    let t = t_exit;
     if (ts < t) {
         return sphere_colour(origin + dir * ts);
     }

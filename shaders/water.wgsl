@@ -18,36 +18,32 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
     return out;
 }
 
-// Seen from above: reflection of sky and rim, refraction into the pool.
+// One fragment shader for both sides, so the grid is drawn once. Front faces are the
+// surface seen from above: the reflected ray goes up into the air, the refracted one down
+// into the pool. Back faces are seen from below: the refracted ray leaves through Snell's
+// window to the sky, the reflected one (all of it beyond the critical angle) stays in the
+// water, and everything is dimmed by the water between eye and surface. Both rays are traced
+// without branching on the side, so screen derivatives (tile_lod) stay in uniform control flow.
 @fragment
-fn fs_above(in: SurfaceOut) -> @location(0) vec4<f32> {
-    let n = water_normal(water_at(in.world.xz));
+fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @location(0) vec4<f32> {
+    let n = select(-1.0, 1.0, from_above) * water_normal(water_at(in.world.xz));
+    let eta = select(IOR_WATER / IOR_AIR, IOR_AIR / IOR_WATER, from_above);
     let view = normalize(in.world - scene.eye.xyz);
     let reflected = reflect(view, n);
-    let refracted = refract(view, n, IOR_AIR / IOR_WATER);
-    let lod_refracted = tile_lod(pool_exit(in.world, refracted));
-    let lod_reflected = tile_lod(pool_exit(in.world, reflected));
-    let f = fresnel(dot(-view, n), IOR_AIR / IOR_WATER);
-    let colour = mix(trace_water(in.world, refracted, lod_refracted), trace_air(in.world, reflected, lod_reflected), f);
-    return finish(colour);
-}
-
-// Seen from below: refraction out to the sky inside Snell's window, total internal
-// reflection of the pool outside it, all dimmed by the water between eye and surface.
-@fragment
-fn fs_below(in: SurfaceOut) -> @location(0) vec4<f32> {
-    let n = -water_normal(water_at(in.world.xz));
-    let view = normalize(in.world - scene.eye.xyz);
-    let reflected = reflect(view, n);
-    let refracted = refract(view, n, IOR_WATER / IOR_AIR);
-    let lod_refracted = tile_lod(pool_exit(in.world, refracted));
-    let lod_reflected = tile_lod(pool_exit(in.world, reflected));
-    let f = fresnel(dot(-view, n), IOR_WATER / IOR_AIR);
-    var out_colour = vec3<f32>(0.0);
-    if (f < 1.0) {
-        out_colour = trace_air(in.world, refracted, lod_refracted);
+    let refracted = refract(view, n, eta);
+    let air_dir = upward(select(refracted, reflected, from_above));
+    let water_dir = select(reflected, refracted, from_above);
+    let t_air = pool_exit_distance(in.world, air_dir);
+    let t_water = pool_exit_distance(in.world, water_dir);
+    let lod_air = tile_lod(in.world + air_dir * t_air);
+    let lod_water = tile_lod(in.world + water_dir * t_water);
+    let reflectance = fresnel(dot(-view, n), eta);
+    let air_weight = select(1.0 - reflectance, reflectance, from_above);
+    let air = trace_air(in.world, air_dir, t_air, lod_air);
+    let water = trace_water(in.world, water_dir, t_water, lod_water);
+    var colour = mix(water, air, air_weight);
+    if (!from_above) {
+        colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
     }
-    var colour = mix(out_colour, trace_water(in.world, reflected, lod_reflected), f);
-    colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
     return finish(colour);
 }

@@ -48,8 +48,16 @@ pub struct RenderSettings {
     pub target_format: wgpu::TextureFormat,
     /// Side of the caustics map in texels.
     pub caustics_size: u32,
-    /// Quads per side of the water surface mesh (also the caustics mesh).
+    /// Quads per side of the water surface mesh. The fragment shader reads heights and
+    /// normals per pixel, so this only shapes the surface's outline and parallax.
     pub surface_grid: u32,
+}
+
+/// Quads per side of the mesh projected into the caustics map for a simulation of
+/// `sim_size` cells per side: one quad per two cells resolves the shortest waves that make
+/// caustics while keeping the triangle count, which software rasterisers pay for, low.
+pub fn caustics_grid(sim_size: u32) -> u32 {
+    (sim_size / 2).clamp(64, 256)
 }
 
 /// A triangle mesh in GPU buffers.
@@ -165,15 +173,16 @@ fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
     (positions.iter().map(|p| p.to_array()).collect(), indices)
 }
 
-/// The caustics map and the pipeline that draws the water grid into it.
+/// The caustics map and the pipeline that draws a water grid (see [`caustics_grid`]) into it.
 pub struct CausticsPass {
     texture: wgpu::Texture,
     view: wgpu::TextureView,
     pipeline: wgpu::RenderPipeline,
+    grid: Mesh,
 }
 
 impl CausticsPass {
-    fn new(device: &wgpu::Device, size: u32, water_layout: &wgpu::BindGroupLayout) -> Self {
+    fn new(device: &wgpu::Device, size: u32, sim_size: u32, water_layout: &wgpu::BindGroupLayout) -> Self {
         let texture = gpu::texture_2d(
             device,
             "caustics map",
@@ -209,7 +218,8 @@ impl CausticsPass {
                 depth: false,
             },
         );
-        Self { texture, view, pipeline }
+        let (grid_vertices, grid_indices) = water_grid(caustics_grid(sim_size));
+        Self { texture, view, pipeline, grid: Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices) }
     }
 
     /// The caustics map texture (for tests and debug views).
@@ -290,8 +300,8 @@ pub struct Renderer {
     sky: FullscreenPass,
     pool: wgpu::RenderPipeline,
     sphere: wgpu::RenderPipeline,
-    surface_above: wgpu::RenderPipeline,
-    surface_below: wgpu::RenderPipeline,
+    /// The water surface, both sides in one draw.
+    surface: wgpu::RenderPipeline,
     grid: Mesh,
     pool_mesh: Mesh,
     sphere_mesh: Mesh,
@@ -349,7 +359,7 @@ impl Renderer {
                 ],
             })
         });
-        let caustics = CausticsPass::new(device, settings.caustics_size, &water_layout);
+        let caustics = CausticsPass::new(device, settings.caustics_size, water.size(), &water_layout);
         let sky_cube = SkyCube::new(device);
         let tiles = textures::create_tile_texture(device, queue);
         let sampler = |address: wgpu::AddressMode| {
@@ -437,24 +447,8 @@ impl Renderer {
             Some(wgpu::Face::Back),
         );
         let grid_attrs = wgpu::vertex_attr_array![0 => Float32x2];
-        let surface_above = scene_pipeline(
-            "water from above",
-            &water_module,
-            "vs_surface",
-            "fs_above",
-            &grid_attrs,
-            8,
-            Some(wgpu::Face::Back),
-        );
-        let surface_below = scene_pipeline(
-            "water from below",
-            &water_module,
-            "vs_surface",
-            "fs_below",
-            &grid_attrs,
-            8,
-            Some(wgpu::Face::Front),
-        );
+        // Culling off: front faces are the surface seen from above, back faces from below.
+        let surface = scene_pipeline("water surface", &water_module, "vs_surface", "fs_surface", &grid_attrs, 8, None);
 
         let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
@@ -470,8 +464,7 @@ impl Renderer {
             sky,
             pool,
             sphere,
-            surface_above,
-            surface_below,
+            surface,
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
@@ -553,7 +546,7 @@ impl Renderer {
         });
         pass.set_pipeline(&self.caustics.pipeline);
         pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
-        self.grid.draw(&mut pass);
+        self.caustics.grid.draw(&mut pass);
     }
 
     fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {
@@ -606,9 +599,7 @@ impl Renderer {
         let water_group = &self.water_groups[water.state().current()];
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        pass.set_pipeline(&self.surface_above);
-        self.grid.draw(&mut pass);
-        pass.set_pipeline(&self.surface_below);
+        pass.set_pipeline(&self.surface);
         self.grid.draw(&mut pass);
         if view.sphere.is_some() {
             pass.set_pipeline(&self.sphere);

@@ -84,6 +84,8 @@ pub struct WebDemo {
     backend: &'static str,
     adapter: String,
     max_side: u32,
+    /// The sRGB view format drawn through, when the canvas format itself is not sRGB.
+    srgb_view: Option<wgpu::TextureFormat>,
     lost: Arc<Mutex<Option<String>>>,
 }
 
@@ -147,6 +149,9 @@ impl WebDemo {
         } else {
             caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto)
         };
+        // WebGPU canvases are plain UNORM, but may be viewed as sRGB: then the blending
+        // hardware encodes, instead of a pow() per pixel in every shader.
+        let srgb_view = (backend == "webgpu" && !format.is_srgb()).then(|| format.add_srgb_suffix());
         let max_side = device.limits().max_texture_dimension_2d;
         let config = wgpu::SurfaceConfiguration {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
@@ -156,7 +161,7 @@ impl WebDemo {
             present_mode: wgpu::PresentMode::Fifo,
             desired_maximum_frame_latency: 2,
             alpha_mode,
-            view_formats: vec![],
+            view_formats: srgb_view.into_iter().collect(),
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
         surface.configure(&device, &config);
@@ -165,8 +170,19 @@ impl WebDemo {
             surface_grid: surface_grid.clamp(16, 512),
             caustics_size: caustics_size.clamp(128, 2048).min(max_side),
         };
-        let demo = WaterDemo::new(&device, &queue, format, options);
-        Ok(WebDemo { demo, surface, config, device, queue, backend, adapter: adapter.get_info().name, max_side, lost })
+        let demo = WaterDemo::new(&device, &queue, srgb_view.unwrap_or(format), options);
+        Ok(WebDemo {
+            demo,
+            surface,
+            config,
+            srgb_view,
+            device,
+            queue,
+            backend,
+            adapter: adapter.get_info().name,
+            max_side,
+            lost,
+        })
     }
 
     /// "webgpu" or "webgl2".
@@ -196,7 +212,8 @@ impl WebDemo {
             wgpu::CurrentSurfaceTexture::Lost => return Err(JsError::new("the canvas surface was lost")),
             _ => return Ok(()),
         };
-        let view = frame.texture.create_view(&Default::default());
+        let view =
+            frame.texture.create_view(&wgpu::TextureViewDescriptor { format: self.srgb_view, ..Default::default() });
         self.demo.frame(&self.device, &self.queue, &view, (width, height), dt.clamp(0.0, 1.0));
         self.queue.present(frame);
         let _ = self.device.poll(wgpu::PollType::Poll);

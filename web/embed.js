@@ -25,8 +25,8 @@ const SIM_SIZES = [128, 256, 512, 1024];
 export const DEFAULT_OPTIONS = Object.freeze({
   backend: "auto", // "auto" | "webgpu" | "webgl2"
   simSize: 256, // simulation cells per side: 128, 256, 512 or 1024
-  meshSize: 128, // quads per side of the water surface and caustics meshes (16-512)
-  causticsSize: 1024, // texels per side of the caustics map (128-2048)
+  meshSize: 48, // quads per side of the water surface mesh (16-512)
+  causticsSize: 512, // texels per side of the caustics map (128-2048)
   controls: true, // show the controls under the canvas
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
