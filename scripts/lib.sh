@@ -78,7 +78,7 @@ ensure_web_toolchain() {
 # Builds the browser demo into dist/ with Trunk (release, wasm-opt -Oz), offline.
 build_web() {
     echo "==> building the browser demo (trunk build --release)"
-    TRUNK_SKIP_VERSION_CHECK=true trunk build --release --offline
+    TRUNK_SKIP_VERSION_CHECK=true trunk build --release --offline || return 1
     local wasm=dist/wavepool_bg.wasm js=dist/wavepool.js
     echo "    wasm $(stat -c %s "$wasm") bytes ($(gzip -9c "$wasm" | wc -c) gzip), JS $(cat "$js" dist/embed.js | wc -c) bytes ($(cat "$js" dist/embed.js | gzip -9c | wc -c) gzip)"
 }

@@ -22,21 +22,86 @@ pub const MAX_STEPS_PER_FRAME: u32 = 4;
 /// Where the sphere starts (m).
 const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
 
+/// Simulation sizes the demo accepts (cells per side).
+pub const SIM_SIZES: [u32; 4] = [128, 256, 512, 1024];
+
 /// Choices fixed when the demo is created.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct DemoOptions {
-    /// Simulation cells per side.
+    /// Simulation cells per side, one of [`SIM_SIZES`].
     pub sim_size: u32,
     /// Caustics map texels per side.
     pub caustics_size: u32,
     /// Quads per side of the water surface mesh. Software rasterisers pay mostly per
-    /// triangle, and the surface is shaded per pixel anyway: 64 costs little detail.
+    /// triangle, and the surface is shaded per pixel anyway: 48 costs little detail.
     pub surface_grid: u32,
+}
+
+/// One creation option as the shells show it (web mount options and URL, CLI flags): its
+/// name, range, default and, when only some values are allowed, those values.
+#[derive(Clone, Copy, Debug)]
+pub struct OptionSpec {
+    pub name: &'static str,
+    pub label: &'static str,
+    pub min: u32,
+    pub max: u32,
+    pub default: u32,
+    /// Allowed values (empty: any integer in range).
+    pub choices: &'static [u32],
+}
+
+impl OptionSpec {
+    /// `value` clamped to the range and snapped to the nearest choice, if there are any.
+    pub fn clamp(&self, value: u32) -> u32 {
+        let v = value.clamp(self.min, self.max);
+        self.choices.iter().copied().min_by_key(|c| c.abs_diff(v)).unwrap_or(v)
+    }
+}
+
+impl DemoOptions {
+    /// The creation options' table: the one source of their names, ranges and defaults.
+    pub const SPECS: [OptionSpec; 3] = [
+        OptionSpec {
+            name: "simSize",
+            label: "simulation cells per side",
+            min: 128,
+            max: 1024,
+            default: 256,
+            choices: &SIM_SIZES,
+        },
+        OptionSpec {
+            name: "meshSize",
+            label: "quads per side of the water surface mesh",
+            min: 16,
+            max: 512,
+            default: 48,
+            choices: &[],
+        },
+        OptionSpec {
+            name: "causticsSize",
+            label: "texels per side of the caustics map",
+            min: 128,
+            max: 2048,
+            default: 512,
+            choices: &[],
+        },
+    ];
+
+    /// Options from raw values (sim size, mesh size, caustics size), each clamped to its spec.
+    pub fn clamped(sim_size: u32, surface_grid: u32, caustics_size: u32) -> Self {
+        let [sim, mesh, caustics] = &Self::SPECS;
+        Self {
+            sim_size: sim.clamp(sim_size),
+            surface_grid: mesh.clamp(surface_grid),
+            caustics_size: caustics.clamp(caustics_size),
+        }
+    }
 }
 
 impl Default for DemoOptions {
     fn default() -> Self {
-        Self { sim_size: 256, caustics_size: 512, surface_grid: 48 }
+        let [sim, mesh, caustics] = &Self::SPECS;
+        Self { sim_size: sim.default, surface_grid: mesh.default, caustics_size: caustics.default }
     }
 }
 
@@ -361,5 +426,22 @@ impl WaterDemo {
         mark(encoder, Stage::AfterCaustics);
         self.renderer.encode_scene(device, encoder, target, size, &view, &self.water);
         mark(encoder, Stage::AfterScene);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn creation_options_clamp_and_snap_to_their_specs() {
+        assert_eq!(
+            DemoOptions::clamped(300, 4, 99_999),
+            DemoOptions { sim_size: 256, surface_grid: 16, caustics_size: 2048 }
+        );
+        assert_eq!(DemoOptions::clamped(5000, 100, 700).sim_size, 1024);
+        assert_eq!(DemoOptions::clamped(0, 100, 700).sim_size, 128);
+        let d = DemoOptions::default();
+        assert_eq!(DemoOptions::clamped(d.sim_size, d.surface_grid, d.caustics_size), d, "defaults lie in range");
     }
 }

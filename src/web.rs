@@ -25,6 +25,32 @@ pub fn start() {
     }));
 }
 
+/// The creation options (`simSize`, `meshSize`, `causticsSize`) as an array of
+/// `{ name, label, min, max, default, choices }`, for mount() to check and document them.
+#[wasm_bindgen(js_name = optionTable)]
+pub fn option_table() -> js_sys::Array {
+    DemoOptions::SPECS
+        .iter()
+        .map(|o| {
+            let object = js_sys::Object::new();
+            set(&object, "name", o.name);
+            set(&object, "label", o.label);
+            set(&object, "min", o.min);
+            set(&object, "max", o.max);
+            set(&object, "default", o.default);
+            set(&object, "choices", o.choices.iter().map(|&c| JsValue::from(c)).collect::<js_sys::Array>());
+            JsValue::from(object)
+        })
+        .collect()
+}
+
+/// Panics on purpose, for the test that a panic shows up in the page.
+#[doc(hidden)]
+#[wasm_bindgen(js_name = panicForTests)]
+pub fn panic_for_tests(message: &str) {
+    panic!("{message}");
+}
+
 fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
     let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), &value.into());
 }
@@ -54,14 +80,6 @@ pub fn param_table() -> js_sys::Array {
             JsValue::from(o)
         })
         .collect()
-}
-
-/// Simulation sizes the demo accepts (cells per side).
-pub const SIM_SIZES: [u32; 4] = [128, 256, 512, 1024];
-
-/// The nearest accepted simulation size to `requested`.
-fn sim_size(requested: u32) -> u32 {
-    *SIM_SIZES.iter().min_by_key(|s| (**s as i64 - requested as i64).abs()).expect("sizes")
 }
 
 /// An `f32` as the `f64` with the same shortest decimal form (0.6f32 -> 0.6, not 0.6000000238).
@@ -165,11 +183,8 @@ impl WebDemo {
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
         surface.configure(&device, &config);
-        let options = DemoOptions {
-            sim_size: self::sim_size(sim_size),
-            surface_grid: surface_grid.clamp(16, 512),
-            caustics_size: caustics_size.clamp(128, 2048).min(max_side),
-        };
+        let mut options = DemoOptions::clamped(sim_size, surface_grid, caustics_size);
+        options.caustics_size = options.caustics_size.min(max_side);
         let demo = WaterDemo::new(&device, &queue, srgb_view.unwrap_or(format), options);
         Ok(WebDemo {
             demo,
@@ -303,6 +318,14 @@ impl WebDemo {
     pub fn project(&self, x: f32, y: f32, z: f32) -> Vec<f32> {
         let size = glam::Vec2::new(self.config.width as f32, self.config.height as f32);
         self.demo.camera.project(glam::Vec3::new(x, y, z), size).map_or(Vec::new(), |p| vec![p.x, p.y])
+    }
+
+    /// Destroys the GPU device the way a driver reset loses it, for the test of the
+    /// recovery path: the next `frame` fails with "lost".
+    #[doc(hidden)]
+    #[wasm_bindgen(js_name = loseDeviceForTests)]
+    pub fn lose_device_for_tests(&self) {
+        self.device.destroy();
     }
 
     /// `{ backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height }`;

@@ -3,7 +3,7 @@
 // in a shadow root, so the host page's CSS and ours never meet; nothing is put on `window`.
 // The simulation and rendering are Rust (wavepool.js + wavepool_bg.wasm, next to this file).
 
-import init, { WebDemo, paramTable } from "./wavepool.js";
+import init, { WebDemo, optionTable, paramTable } from "./wavepool.js";
 
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
@@ -19,14 +19,10 @@ function loadCore() {
   return ready;
 }
 
-const SIM_SIZES = [128, 256, 512, 1024];
-
 /** Options understood by mount(), with defaults. Parameter names from `params()` are accepted too. */
 export const DEFAULT_OPTIONS = Object.freeze({
   backend: "auto", // "auto" | "webgpu" | "webgl2"
-  simSize: 256, // simulation cells per side: 128, 256, 512 or 1024
-  meshSize: 48, // quads per side of the water surface mesh (16-512)
-  causticsSize: 512, // texels per side of the caustics map (128-2048)
+  // simSize, meshSize, causticsSize: ranges and defaults from the core's optionTable()
   controls: true, // show the controls under the canvas
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
@@ -60,6 +56,8 @@ function clampNumber(name, value, min, max, fallback) {
 // Splits user options into demo options and parameter values, clamping and warning.
 function readOptions(options, table) {
   const out = { ...DEFAULT_OPTIONS, params: {} };
+  const created = new Map(optionTable().map((o) => [o.name, o]));
+  for (const o of created.values()) out[o.name] = o.default;
   const names = new Set(table.map((p) => p.name));
   for (const [key, value] of Object.entries(options || {})) {
     if (key === "params" && value && typeof value === "object") {
@@ -70,14 +68,12 @@ function readOptions(options, table) {
       const b = String(value).toLowerCase();
       if (["auto", "webgpu", "webgl2"].includes(b)) out.backend = b;
       else warn(`backend "${value}" is not auto, webgpu or webgl2; using auto`);
-    } else if (key === "simSize") {
-      const n = clampNumber(key, value, 128, 1024, 256);
-      out.simSize = SIM_SIZES.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a));
-      if (out.simSize !== n) warn(`simSize ${n} is not one of ${SIM_SIZES.join(", ")}; using ${out.simSize}`);
-    } else if (key === "meshSize") {
-      out.meshSize = Math.round(clampNumber(key, value, 16, 512, DEFAULT_OPTIONS.meshSize));
-    } else if (key === "causticsSize") {
-      out.causticsSize = Math.round(clampNumber(key, value, 128, 2048, DEFAULT_OPTIONS.causticsSize));
+    } else if (created.has(key)) {
+      const o = created.get(key);
+      const n = Math.round(clampNumber(key, value, o.min, o.max, o.default));
+      const c = o.choices;
+      out[key] = c.length ? c.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a)) : n;
+      if (out[key] !== n) warn(`${key} ${n} is not one of ${c.join(", ")}; using ${out[key]}`);
     } else if (key === "controls") {
       out.controls = !(value === false || value === 0 || value === "0" || value === "false");
     } else if (key === "maxPixelRatio") {
@@ -87,7 +83,7 @@ function readOptions(options, table) {
     } else if (key === "aspect") {
       out.aspect = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.aspect);
     } else {
-      warn(`unknown option "${key}" ignored; options: ${Object.keys(DEFAULT_OPTIONS).join(", ")}, ` +
+      warn(`unknown option "${key}" ignored; options: ${[...Object.keys(DEFAULT_OPTIONS), ...created.keys()].join(", ")}, ` +
         `and the parameters ${[...names].join(", ")}`);
     }
   }
@@ -176,6 +172,8 @@ class Demo {
     this._visible = true;
     this._onScreen = true;
     this._dead = false;
+    this._restarts = 0; // devices recreated after a loss
+    this._lastRestart = -Infinity;
     this._controls = new Map(); // parameter name -> update function
     this._pointers = new Map(); // pointerId -> {x, y}
     this._pinch = 0; // distance between two touching pointers (px), 0 when not pinching
@@ -454,14 +452,17 @@ class Demo {
     this._run();
   }
 
-  // A lost device is recreated once on a fresh canvas; a second loss is reported.
+  // A lost device is recreated on a fresh canvas; a loss within 10 s of the last restart
+  // (or any other error) is reported instead, so a failing device cannot loop.
   async _recover(error) {
     const text = String(error && error.message ? error.message : error);
-    if (this._recovering || !/lost/.test(text)) {
+    const now = performance.now();
+    if (!/lost/.test(text) || now - this._lastRestart < 10000) {
       this._fail(`The water demo stopped: ${text}`);
       return;
     }
-    this._recovering = true;
+    this._lastRestart = now;
+    this._restarts++;
     const values = this._table.map((p) => [p.name, this.get(p.name)]);
     this._detachCore();
     try {
@@ -558,7 +559,7 @@ class Demo {
     this._run();
   }
 
-  /** { fps, frameMs, firstFrameMs, backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height } */
+  /** { fps, frameMs, firstFrameMs, restarts, backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height } */
   stats() {
     const s = this._alive().stats();
     const f = this._frames;
@@ -566,6 +567,7 @@ class Demo {
     s.fps = span > 0 ? ((f.length - 1) * 1000) / span : 0;
     s.frameMs = s.fps > 0 ? 1000 / s.fps : 0;
     s.firstFrameMs = this._firstFrameMs;
+    s.restarts = this._restarts;
     return s;
   }
 
