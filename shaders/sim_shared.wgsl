@@ -4,8 +4,9 @@
 
 struct Sim {
     grid: vec4<f32>,        // x N, y 1/N, z cell size dx (m), w pool half width W (m)
-    step: vec4<f32>,        // x dt (s), y c^2 dt / dx^2 (1/s), z velocity damping per step exp(-k dt)
-    bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s)
+    step: vec4<f32>,        // x dt (s), y c^2 dt / dx^2 (1/s), z velocity damping per step exp(-k dt),
+                            // w sponge damping rate at the walls (1/s; 0: reflecting walls)
+    bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s), z sponge width (m)
     drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
     drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
 };
@@ -24,6 +25,14 @@ fn cell(p: vec2<i32>) -> vec4<f32> {
 
 fn cell_centre(p: vec2<i32>) -> vec2<f32> {
     return ((vec2<f32>(p) + 0.5) * sim.grid.y * 2.0 - 1.0) * sim.grid.w;
+}
+
+// The absorbing walls' damping layer at pool point x (m): 0 beyond the sponge width from every
+// wall, rising quadratically to 1 at the wall (sponge_profile in sim.rs).
+fn sponge_profile(x: vec2<f32>) -> f32 {
+    let from_wall = sim.grid.w - max(abs(x.x), abs(x.y));
+    let t = max(1.0 - from_wall / sim.bounds.z, 0.0);
+    return t * t;
 }
 
 fn texel(position: vec4<f32>) -> vec2<i32> {

@@ -416,6 +416,7 @@ impl WaterDemo {
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),
+            absorbing_walls: self.params.flag(ParamId::AbsorbingWalls),
         };
         mark(encoder, Stage::Start);
         self.water.encode(queue, encoder, steps, STEP_DT, settings);

@@ -9,6 +9,7 @@ use std::fmt;
 pub enum ParamId {
     WaveSpeed,
     Damping,
+    AbsorbingWalls,
     DropRadius,
     DropStrength,
     SunAzimuth,
@@ -98,6 +99,16 @@ pub const PARAMS: &[ParamSpec] = &[
         control: slider(0.0, 5.0, 0.05),
         default: 0.5,
         help: "Rate k at which waves lose energy (amplitude decays as exp(-k t / 2)).",
+    },
+    ParamSpec {
+        id: ParamId::AbsorbingWalls,
+        name: "absorbing_walls",
+        label: "Absorbing walls",
+        group: "Water",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "Walls swallow waves in a damping layer along them instead of reflecting them.",
     },
     ParamSpec {
         id: ParamId::DropRadius,

@@ -32,6 +32,33 @@ pub struct WaveSettings {
     pub wave_speed: f32,
     /// Velocity damping rate k (1/s).
     pub damping: f32,
+    /// Absorbing walls: a sponge layer along the walls (see [`sponge_profile`]) instead of
+    /// purely reflecting walls.
+    pub absorbing_walls: bool,
+}
+
+impl WaveSettings {
+    /// Reflecting walls.
+    pub fn reflecting(wave_speed: f32, damping: f32) -> Self {
+        Self { wave_speed, damping, absorbing_walls: false }
+    }
+}
+
+/// Width (m) of the damping layer along each wall when the walls absorb.
+pub const SPONGE_WIDTH: f32 = 0.25;
+
+/// Damping rate at the wall, in units of c / SPONGE_WIDTH: with the quadratic profile a wave
+/// crossing the layer and back loses amplitude by about exp(-2 * 12 / 3) = 3e-4, while the
+/// gentle ramp keeps its own reflection small.
+const SPONGE_STRENGTH: f32 = 12.0;
+
+/// Shape of the sponge layer at pool point (x, z) (m): 0 farther than [`SPONGE_WIDTH`] from
+/// every wall, rising quadratically to 1 at the wall. Both height and velocity decay there at
+/// `sponge rate * profile` per second, which swallows outgoing waves.
+pub fn sponge_profile(x: f32, z: f32, half_width: f32) -> f32 {
+    let from_wall = half_width - x.abs().max(z.abs());
+    let t = (1.0 - from_wall / SPONGE_WIDTH).max(0.0);
+    t * t
 }
 
 #[repr(C)]
@@ -68,6 +95,8 @@ pub struct StepPlan {
     pub coupling: f32,
     /// Factor exp(-k dt) applied to the velocity each update.
     pub velocity_decay: f32,
+    /// Sponge damping rate at the wall (1/s); 0 for reflecting walls.
+    pub sponge_rate: f32,
 }
 
 impl StepPlan {
@@ -86,6 +115,11 @@ impl StepPlan {
             dt: h,
             coupling: settings.wave_speed * settings.wave_speed * h / (dx * dx),
             velocity_decay: (-settings.damping.max(0.0) * h).exp(),
+            sponge_rate: if settings.absorbing_walls {
+                SPONGE_STRENGTH * settings.wave_speed.abs() / SPONGE_WIDTH
+            } else {
+                0.0
+            },
         }
     }
 
@@ -435,8 +469,8 @@ impl HeightField {
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         let mut u = SimUniforms::zeroed();
         u.grid = [self.size as f32, 1.0 / self.size as f32, self.cell_size(), self.half_width];
-        u.step = [plan.dt, plan.coupling, plan.velocity_decay, 0.0];
-        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, 0.0, 0.0];
+        u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
+        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
         u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
         for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];

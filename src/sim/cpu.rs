@@ -3,7 +3,7 @@
 //! [`StepPlan`]. Tests compare the GPU against it; it also serves where the GPU cannot render
 //! to float textures.
 
-use super::{drop_shape, Drop, StepPlan, WaveSettings, MAX_HEIGHT, MAX_VELOCITY};
+use super::{drop_shape, sponge_profile, Drop, StepPlan, WaveSettings, MAX_HEIGHT, MAX_VELOCITY};
 
 /// Mirrors the shaders' `bounded`: finite values clamped, NaN and infinity to rest.
 fn bounded(x: f32, limit: f32) -> f32 {
@@ -98,8 +98,14 @@ impl CpuHeightField {
                 let neighbours =
                     self.at(i + 1, j)[0] + self.at(i - 1, j)[0] + self.at(i, j + 1)[0] + self.at(i, j - 1)[0];
                 let laplacian = neighbours - 4.0 * c[0];
-                let v = bounded((c[1] + plan.coupling * laplacian) * plan.velocity_decay, MAX_VELOCITY);
-                let h = bounded(c[0] + plan.dt * v, MAX_HEIGHT);
+                let absorb = if plan.sponge_rate > 0.0 {
+                    let profile = sponge_profile(self.centre(i as u32), self.centre(j as u32), self.half_width);
+                    (-plan.sponge_rate * profile * plan.dt).exp()
+                } else {
+                    1.0 // exp(0): the same value the GPU computes, without the cost
+                };
+                let v = bounded((c[1] + plan.coupling * laplacian) * plan.velocity_decay * absorb, MAX_VELOCITY);
+                let h = bounded((c[0] + plan.dt * v) * absorb, MAX_HEIGHT);
                 self.scratch[(j * n + i) as usize] = [h, v, c[2], c[3]];
             }
         }
@@ -159,7 +165,7 @@ mod tests {
         water.cells[100][0] = f32::NAN;
         water.cells[200][1] = f32::INFINITY;
         water.cells[300][0] = 1.0e30;
-        water.advance(10, 1.0 / 120.0, WaveSettings { wave_speed: 0.6, damping: 0.5 });
+        water.advance(10, 1.0 / 120.0, WaveSettings::reflecting(0.6, 0.5));
         for c in water.cells() {
             assert!(c.iter().all(|v| v.is_finite()));
             assert!(c[0].abs() <= 2.0 * MAX_HEIGHT && c[1].abs() <= MAX_VELOCITY);
@@ -171,7 +177,7 @@ mod tests {
         let mut water = CpuHeightField::new(64, 1.0);
         water.add_drop(Drop { x: 0.9, z: -0.95, radius: 0.2, strength: 0.03 });
         water.add_drop(Drop { x: 0.0, z: 0.1, radius: 0.05, strength: -0.02 });
-        water.advance(50, 1.0 / 120.0, WaveSettings { wave_speed: 0.6, damping: 0.5 });
+        water.advance(50, 1.0 / 120.0, WaveSettings::reflecting(0.6, 0.5));
         assert!(water.mean_height().abs() < 1e-8, "{}", water.mean_height());
     }
 }
