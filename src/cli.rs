@@ -331,6 +331,10 @@ fn usage() -> String {
         .iter()
         .map(|p| match p.control {
             params::Control::Toggle => format!("  {:<14} 0 or 1, default {}  {}", p.name, p.default, p.label),
+            params::Control::Choice { values } => {
+                let list: Vec<String> = values.iter().map(|v| v.to_string()).collect();
+                format!("  {:<14} {} {}, default {}  {}", p.name, list.join("|"), p.unit, p.default, p.label)
+            }
             params::Control::Slider { min, max, .. } => {
                 format!("  {:<14} {min}..{max} {}, default {}  {}", p.name, p.unit, p.default, p.label)
             }

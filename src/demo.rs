@@ -22,13 +22,11 @@ pub const MAX_STEPS_PER_FRAME: u32 = 4;
 /// Where the sphere starts (m).
 const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
 
-/// Simulation sizes the demo accepts (cells per side).
-pub const SIM_SIZES: [u32; 4] = [128, 256, 512, 1024];
-
 /// Choices fixed when the demo is created.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct DemoOptions {
-    /// Simulation cells per side, one of [`SIM_SIZES`].
+    /// Simulation cells per side at the start (a power of two); the `sim_size` parameter
+    /// starts at the nearest of its choices and changes it later.
     pub sim_size: u32,
     /// Caustics map texels per side.
     pub caustics_size: u32,
@@ -60,15 +58,7 @@ impl OptionSpec {
 
 impl DemoOptions {
     /// The creation options' table: the one source of their names, ranges and defaults.
-    pub const SPECS: [OptionSpec; 3] = [
-        OptionSpec {
-            name: "simSize",
-            label: "simulation cells per side",
-            min: 128,
-            max: 1024,
-            default: 256,
-            choices: &SIM_SIZES,
-        },
+    pub const SPECS: [OptionSpec; 2] = [
         OptionSpec {
             name: "meshSize",
             label: "quads per side of the water surface mesh",
@@ -87,11 +77,12 @@ impl DemoOptions {
         },
     ];
 
-    /// Options from raw values (sim size, mesh size, caustics size), each clamped to its spec.
+    /// Options from raw values: the simulation size as the `sim_size` parameter would take it,
+    /// mesh and caustics sizes clamped to their specs.
     pub fn clamped(sim_size: u32, surface_grid: u32, caustics_size: u32) -> Self {
-        let [sim, mesh, caustics] = &Self::SPECS;
+        let [mesh, caustics] = &Self::SPECS;
         Self {
-            sim_size: sim.clamp(sim_size),
+            sim_size: crate::params::spec(ParamId::SimSize).sanitise(sim_size as f32) as u32,
             surface_grid: mesh.clamp(surface_grid),
             caustics_size: caustics.clamp(caustics_size),
         }
@@ -100,8 +91,12 @@ impl DemoOptions {
 
 impl Default for DemoOptions {
     fn default() -> Self {
-        let [sim, mesh, caustics] = &Self::SPECS;
-        Self { sim_size: sim.default, surface_grid: mesh.default, caustics_size: caustics.default }
+        let [mesh, caustics] = &Self::SPECS;
+        Self {
+            sim_size: crate::params::spec(ParamId::SimSize).default as u32,
+            surface_grid: mesh.default,
+            caustics_size: caustics.default,
+        }
     }
 }
 
@@ -135,6 +130,8 @@ pub enum Stage {
 
 pub struct WaterDemo {
     pub params: Params,
+    /// The `sim_size` parameter value the water was last built or resampled for.
+    applied_sim_size: f32,
     pub camera: OrbitCamera,
     sphere_centre: Vec3,
     sphere_body: SphereBody,
@@ -162,8 +159,11 @@ impl WaterDemo {
             RenderSettings { target_format, caustics_size: options.caustics_size, surface_grid: options.surface_grid },
             &water,
         );
+        let mut params = Params::default();
+        let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
         Self {
-            params: Params::default(),
+            params,
+            applied_sim_size,
             camera: OrbitCamera::default(),
             sphere_centre: START_SPHERE_CENTRE,
             sphere_body: SphereBody::default(),
@@ -413,6 +413,12 @@ impl WaterDemo {
         };
         self.steps_taken += steps as u64;
         self.step_sphere(steps);
+        let wanted_size = self.params.get(ParamId::SimSize);
+        if wanted_size != self.applied_sim_size {
+            self.applied_sim_size = wanted_size;
+            self.water = self.water.resampled(device, queue, encoder, wanted_size as u32);
+            self.renderer.rebind_water(device, &self.water);
+        }
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),

@@ -19,6 +19,7 @@ pub mod wgsl {
     pub const SIM_DROP: &str = include_str!("../shaders/sim_drop.wgsl");
     pub const SIM_UPDATE: &str = include_str!("../shaders/sim_update.wgsl");
     pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
+    pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
 }
 
@@ -243,6 +244,10 @@ impl PingPong {
     /// Index (0 or 1) of the texture that holds the latest state.
     pub fn current(&self) -> usize {
         self.current
+    }
+
+    pub fn current_view(&self) -> &wgpu::TextureView {
+        &self.views[self.current]
     }
 
     pub fn current_texture(&self) -> &wgpu::Texture {

@@ -19,13 +19,22 @@ pub enum ParamId {
     SphereRadius,
     SphereDensity,
     Gravity,
+    SimSize,
     Paused,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Control {
-    Slider { min: f32, max: f32, step: f32 },
+    Slider {
+        min: f32,
+        max: f32,
+        step: f32,
+    },
     Toggle,
+    /// One of a few values, in increasing order.
+    Choice {
+        values: &'static [f32],
+    },
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -47,6 +56,7 @@ impl ParamSpec {
         match self.control {
             Control::Slider { min, .. } => min,
             Control::Toggle => 0.0,
+            Control::Choice { values } => values[0],
         }
     }
 
@@ -54,10 +64,12 @@ impl ParamSpec {
         match self.control {
             Control::Slider { max, .. } => max,
             Control::Toggle => 1.0,
+            Control::Choice { values } => values[values.len() - 1],
         }
     }
 
-    /// The nearest valid value: clamped to the range; toggles snap to 0 or 1; NaN gives the default.
+    /// The nearest valid value: clamped to the range; toggles snap to 0 or 1, choices to the
+    /// nearest value; NaN gives the default.
     pub fn sanitise(&self, value: f32) -> f32 {
         if value.is_nan() {
             return self.default;
@@ -70,6 +82,9 @@ impl ParamSpec {
                 } else {
                     0.0
                 }
+            }
+            Control::Choice { values } => {
+                values.iter().copied().min_by(|a, b| (a - value).abs().total_cmp(&(b - value).abs())).unwrap_or(value)
             }
         }
     }
@@ -199,6 +214,16 @@ pub const PARAMS: &[ParamSpec] = &[
         control: Control::Toggle,
         default: 0.0,
         help: "Let the sphere fall, float and bob (G key).",
+    },
+    ParamSpec {
+        id: ParamId::SimSize,
+        name: "sim_size",
+        label: "Grid resolution",
+        group: "Simulation",
+        unit: "cells",
+        control: Control::Choice { values: &[128.0, 256.0, 512.0, 1024.0] },
+        default: 256.0,
+        help: "Cells per side of the simulation grid; a change resamples the water, it does not reset it.",
     },
     ParamSpec {
         id: ParamId::Paused,

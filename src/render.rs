@@ -179,6 +179,8 @@ pub struct CausticsPass {
     view: wgpu::TextureView,
     pipeline: wgpu::RenderPipeline,
     grid: Mesh,
+    /// Quads per side of `grid`.
+    grid_size: u32,
 }
 
 impl CausticsPass {
@@ -218,8 +220,10 @@ impl CausticsPass {
                 depth: false,
             },
         );
-        let (grid_vertices, grid_indices) = water_grid(caustics_grid(sim_size));
-        Self { texture, view, pipeline, grid: Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices) }
+        let grid_size = caustics_grid(sim_size);
+        let (grid_vertices, grid_indices) = water_grid(grid_size);
+        let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
+        Self { texture, view, pipeline, grid, grid_size }
     }
 
     /// The caustics map texture (for tests and debug views).
@@ -481,7 +485,15 @@ impl Renderer {
     }
 
     /// Rebinds the water state textures (after the heightfield was replaced).
+    /// Points the renderer at another heightfield (after a change of resolution); the caustics
+    /// mesh follows the new simulation size.
     pub fn rebind_water(&mut self, device: &wgpu::Device, water: &HeightField) {
+        let grid_size = caustics_grid(water.size());
+        if grid_size != self.caustics.grid_size {
+            let (vertices, indices) = water_grid(grid_size);
+            self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
+            self.caustics.grid_size = grid_size;
+        }
         let layout = &self.water_layout;
         let uniforms = &self.uniforms;
         self.water_groups = water.state().bind_groups(|view| {

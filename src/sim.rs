@@ -201,8 +201,10 @@ pub struct HeightField {
     half_width: f32,
     state: PingPong,
     uniforms: wgpu::Buffer,
+    layout: wgpu::BindGroupLayout,
     bind_groups: [wgpu::BindGroup; 2],
     drop_pass: FullscreenPass,
+    resample_pass: FullscreenPass,
     update_pass: FullscreenPass,
     normals_pass: FullscreenPass,
     mean: MeanLevel,
@@ -422,8 +424,10 @@ impl HeightField {
             drop_pass: pass("sim drop", gpu::wgsl::SIM_DROP, "fs_drop"),
             update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
             normals_pass: pass("sim normals", gpu::wgsl::SIM_NORMALS, "fs_normals"),
+            resample_pass: pass("sim resample", gpu::wgsl::SIM_RESAMPLE, "fs_resample"),
             state,
             uniforms,
+            layout,
             bind_groups,
             mean,
             probe: LevelProbe::new(device),
@@ -467,15 +471,7 @@ impl HeightField {
         settings: WaveSettings,
     ) {
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
-        let mut u = SimUniforms::zeroed();
-        u.grid = [self.size as f32, 1.0 / self.size as f32, self.cell_size(), self.half_width];
-        u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
-        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
-        u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
-        for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
-            *slot = [d.x, d.z, d.radius, d.strength];
-        }
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+        self.write_uniforms(queue, &plan);
         if !plan.drops.is_empty() {
             self.state.run(encoder, &self.drop_pass, &self.bind_groups);
         }
@@ -487,6 +483,56 @@ impl HeightField {
             self.state.run(encoder, &self.normals_pass, &self.bind_groups);
         }
         self.probe.encode(encoder, &self.mean.result);
+    }
+
+    /// A `size` x `size` heightfield holding this one's water resampled onto the new grid
+    /// (`shaders/sim_resample.wgsl`: box average when shrinking, bilinear when growing), with
+    /// its mean level held and normals redone; queued drops carry over. Records the passes
+    /// into `encoder`; like [`HeightField::encode`], it writes the new field's uniforms, and
+    /// encoding steps on the new field in the same submission is fine (same grid values).
+    pub fn resampled(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        size: u32,
+    ) -> HeightField {
+        let mut new = HeightField::new(device, size, self.half_width);
+        new.pending = self.pending.clone();
+        let from_old = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sim resample source"),
+            layout: &new.layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: new.uniforms.as_entire_binding() },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(self.state.current_view()),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(new.mean.result_view()),
+                },
+            ],
+        });
+        let mut no_drops = Vec::new();
+        let plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, WaveSettings::reflecting(0.0, 0.0));
+        new.write_uniforms(queue, &plan);
+        new.state.run(encoder, &new.resample_pass, &[from_old.clone(), from_old]);
+        new.mean.encode(encoder, new.state.current());
+        new.state.run(encoder, &new.normals_pass, &new.bind_groups);
+        new
+    }
+
+    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan) {
+        let mut u = SimUniforms::zeroed();
+        u.grid = [self.size as f32, 1.0 / self.size as f32, self.cell_size(), self.half_width];
+        u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
+        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
+        u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
+        for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
+            *slot = [d.x, d.z, d.radius, d.strength];
+        }
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
     }
 
     /// Call after submitting the frame that [`HeightField::encode`] recorded: starts the

@@ -25,7 +25,7 @@ pub fn start() {
     }));
 }
 
-/// The creation options (`simSize`, `meshSize`, `causticsSize`) as an array of
+/// The creation options (`meshSize`, `causticsSize`) as an array of
 /// `{ name, label, min, max, default, choices }`, for mount() to check and document them.
 #[wasm_bindgen(js_name = optionTable)]
 pub fn option_table() -> js_sys::Array {
@@ -56,7 +56,8 @@ fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
 }
 
 /// The parameter table (the core's one source of truth) as an array of plain objects:
-/// `{ name, label, group, unit, kind: "slider" | "toggle", min, max, step, default, help }`.
+/// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
+/// choices, default, help }` (`choices`: the allowed values of a choice, else empty).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
     PARAMS
@@ -67,10 +68,12 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "label", p.label);
             set(&o, "group", p.group);
             set(&o, "unit", p.unit);
-            let (kind, step) = match p.control {
-                Control::Slider { step, .. } => ("slider", step),
-                Control::Toggle => ("toggle", 1.0),
+            let (kind, step, choices) = match p.control {
+                Control::Slider { step, .. } => ("slider", step, &[][..]),
+                Control::Toggle => ("toggle", 1.0, &[][..]),
+                Control::Choice { values } => ("choice", 0.0, values),
             };
+            set(&o, "choices", choices.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
             set(&o, "kind", kind);
             set(&o, "min", to_js_number(p.min()));
             set(&o, "max", to_js_number(p.max()));

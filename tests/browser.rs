@@ -178,7 +178,8 @@ async fn controls_change_parameters() {
     let _g = serial();
     let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
     let table = browser.js("return window.demo.params().map((p) => p.name);").await;
-    let count = browser.js("return document.querySelector('#pool').shadowRoot.querySelectorAll('input').length;").await;
+    let count =
+        browser.js("return document.querySelector('#pool').shadowRoot.querySelectorAll('input, select').length;").await;
     assert_eq!(table.as_array().unwrap().len() as u64, count.as_u64().unwrap(), "one input per parameter");
     for name in [
         "wave_speed",
@@ -206,6 +207,15 @@ async fn controls_change_parameters() {
 
     browser.js("document.querySelector('#pool').shadowRoot.querySelector('input[name=gravity]').click();").await;
     assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0);
+    // The grid resolution is a choice (a select): changing it resamples the running water.
+    browser
+        .js("const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=sim_size]'); s.value = '512'; s.dispatchEvent(new Event('change'));")
+        .await;
+    assert!(
+        browser.wait_for("window.demo.stats().simSize === 512", Duration::from_secs(20)).await,
+        "sim_size select did not switch the grid: {}",
+        browser.js("return window.demo.stats();").await
+    );
     // And the API clamps with a warning, and names unknown parameters.
     assert_eq!(browser.js("return window.demo.set('damping', 99);").await, 5.0);
     let err =
@@ -334,13 +344,14 @@ async fn a_lost_device_is_recreated() {
     browser.close().await;
 }
 
-/// Creation options out of range or between the allowed values still give a running demo,
-/// with the values clamped or snapped as the core's option table says.
+/// Options out of range or between the allowed values still give a running demo, with the
+/// values clamped or snapped as the core's tables say.
 #[tokio::test]
 async fn creation_options_are_clamped() {
     let _g = serial();
-    let query = format!("{SMALL}&backend=webgl2&simSize=300&meshSize=2&causticsSize=99999");
+    let query = format!("{SMALL}&backend=webgl2&sim_size=300&meshSize=2&causticsSize=99999");
     let (browser, _server) = open_demo(Graphics::WebGl2Only, &query, "webgl2").await;
-    assert_eq!(browser.js("return window.demo.stats().simSize;").await, 256, "simSize 300 snaps to 256");
+    assert_eq!(browser.js("return window.demo.stats().simSize;").await, 256, "sim_size 300 snaps to 256");
+    assert_eq!(browser.js("return window.demo.get('sim_size');").await, 256);
     browser.close().await;
 }

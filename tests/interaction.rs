@@ -96,3 +96,20 @@ fn keys_and_zoom() {
     demo.zoom(f32::NAN);
     assert!(demo.camera.distance.is_finite());
 }
+
+/// The sim_size parameter switches the grid at run time (the next frame) and keeps the waves.
+#[test]
+fn the_sim_size_parameter_switches_resolution_without_a_reset() {
+    let mut demo = common::demo(DemoOptions { sim_size: 128, ..DemoOptions::default() });
+    assert_eq!(demo.params.get(ParamId::SimSize), 128.0);
+    demo.params.set(ParamId::Sphere, 0.0);
+    demo.add_drop(0.2, -0.1, 0.15, 0.02);
+    let _ = common::render(&mut demo, SIZE.0, SIZE.1, 3, 1.0 / 60.0);
+    let before = max_height(&demo);
+    assert_eq!(demo.params.set(ParamId::SimSize, 500.0).value, 512.0, "snaps to the nearest choice");
+    let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    assert_eq!(demo.water().size(), 512);
+    let after = max_height(&demo);
+    println!("max |h| at 128: {before:e} m; one frame later at 512: {after:e} m");
+    assert!(before > 1e-3 && after > 0.5 * before, "the water was reset: {before} -> {after}");
+}

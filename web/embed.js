@@ -22,7 +22,7 @@ function loadCore() {
 /** Options understood by mount(), with defaults. Parameter names from `params()` are accepted too. */
 export const DEFAULT_OPTIONS = Object.freeze({
   backend: "auto", // "auto" | "webgpu" | "webgl2"
-  // simSize, meshSize, causticsSize: ranges and defaults from the core's optionTable()
+  // meshSize, causticsSize: ranges and defaults from the core's optionTable()
   controls: true, // show the controls under the canvas
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
@@ -99,6 +99,7 @@ function toNumber(value) {
 
 function formatValue(p, v) {
   if (p.kind === "toggle") return v >= 0.5 ? "on" : "off";
+  if (p.kind === "choice") return `${v}${p.unit ? ` ${p.unit}` : ""}`;
   const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
   return `${v.toFixed(decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${p.unit}`) : ""}`;
 }
@@ -198,7 +199,9 @@ class Demo {
       }
       const canvas = this._makeCanvas();
       try {
-        this._core = await WebDemo.create(canvas, backend, this._opts.simSize, this._opts.meshSize, this._opts.causticsSize);
+        // The grid starts at the sim_size parameter's value (resampled if it changes later).
+        const simSize = Number(this._opts.params.sim_size ?? this._table.find((p) => p.name === "sim_size").default);
+        this._core = await WebDemo.create(canvas, backend, simSize, this._opts.meshSize, this._opts.causticsSize);
         this._canvas = canvas;
         this._element.dataset.backend = backend;
         this._listen();
@@ -375,7 +378,7 @@ class Demo {
     label.htmlFor = inputId;
     label.textContent = p.label;
     label.title = p.help;
-    const input = document.createElement("input");
+    const input = document.createElement(p.kind === "choice" ? "select" : "input");
     input.id = inputId;
     input.name = p.name;
     input.title = p.help;
@@ -384,6 +387,9 @@ class Demo {
     if (p.kind === "toggle") {
       input.type = "checkbox";
       input.addEventListener("change", () => this.set(p.name, input.checked ? 1 : 0));
+    } else if (p.kind === "choice") {
+      for (const v of p.choices) input.append(new Option(formatValue(p, v), String(v)));
+      input.addEventListener("change", () => this.set(p.name, Number(input.value)));
     } else {
       input.type = "range";
       input.min = p.min;
@@ -394,7 +400,7 @@ class Demo {
     const update = () => {
       const v = this.get(p.name);
       if (p.kind === "toggle") input.checked = v >= 0.5;
-      else input.value = v;
+      else input.value = String(v);
       output.textContent = formatValue(p, v);
       input.setAttribute("aria-valuetext", output.textContent);
     };
