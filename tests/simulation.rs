@@ -180,7 +180,7 @@ fn gpu_matches_cpu(settings: WaveSettings) {
     let on_gpu = gpu.read_state(&g.device, &g.queue);
     let peak = cpu.cells().iter().map(|c| c[0].abs()).fold(0.0f32, f32::max);
     let mut worst = [0.0f32; 4];
-    for (a, b) in on_gpu.iter().zip(cpu.cells()) {
+    for (a, b) in on_gpu.iter().zip(&cpu.cells()) {
         for k in 0..4 {
             worst[k] = worst[k].max((a[k] - b[k]).abs());
         }
@@ -266,9 +266,9 @@ fn absorbing_walls_swallow_a_ring_that_reflecting_walls_keep() {
         water.add_drop(Drop { x: 0.0, z: 0.0, radius: 0.08, strength: 0.01 });
         let settings = WaveSettings { absorbing_walls: absorbing, ..WaveSettings::reflecting(c, 0.0) };
         water.advance(60, DT, settings); // 0.5 s: the ring is 0.4 m out, short of the layer
-        let early = wave_energy(water.cells(), SIDE as usize, dx, c);
+        let early = wave_energy(&water.cells(), SIDE as usize, dx, c);
         water.advance(540, DT, settings); // 5 s: it has crossed the pool and met the walls twice
-        (early, wave_energy(water.cells(), SIDE as usize, dx, c))
+        (early, wave_energy(&water.cells(), SIDE as usize, dx, c))
     };
     let (reflect_early, reflect_late) = run(false);
     let (absorb_early, absorb_late) = run(true);

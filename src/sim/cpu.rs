@@ -14,31 +14,60 @@ fn bounded(x: f32, limit: f32) -> f32 {
     }
 }
 
-/// A heightfield in memory: `size * size` cells of (height m, velocity m/s, normal x, normal z),
-/// row by row along +z, the same layout as the GPU state texture.
+/// A heightfield in memory: `size * size` cells, row by row along +z (the GPU state texture's
+/// layout), stored as separate planes of height (m), vertical velocity (m/s) and the normal's
+/// x and z, so that the update streams through two planes with vectorisable loops.
 #[derive(Clone, Debug)]
 pub struct CpuHeightField {
     size: u32,
     half_width: f32,
-    cells: Vec<[f32; 4]>,
-    scratch: Vec<[f32; 4]>,
+    height: Vec<f32>,
+    velocity: Vec<f32>,
+    normal_x: Vec<f32>,
+    normal_z: Vec<f32>,
+    /// Write buffers for the update, swapped with `height` and `velocity` after each.
+    next_height: Vec<f32>,
+    next_velocity: Vec<f32>,
+    /// Per-cell factor exp(-sigma dt) of the absorbing walls, for the (rate, dt) it was made for.
+    absorb: Option<(f32, f32, Vec<f32>)>,
     pending: Vec<Drop>,
+}
+
+/// One cell's update, as in `shaders/sim_update.wgsl` (same operations in the same order).
+#[inline(always)]
+fn update_cell(h: f32, v: f32, neighbours: f32, plan: &StepPlan, absorb: f32) -> (f32, f32) {
+    let laplacian = neighbours - 4.0 * h;
+    let v = bounded((v + plan.coupling * laplacian) * plan.velocity_decay * absorb, MAX_VELOCITY);
+    let h = bounded((h + plan.dt * v) * absorb, MAX_HEIGHT);
+    (h, v)
 }
 
 impl CpuHeightField {
     /// A calm heightfield; `size` must be a power of two (as on the GPU).
     pub fn new(size: u32, half_width: f32) -> Self {
         assert!(size.is_power_of_two() && size >= 2, "simulation size must be a power of two");
-        let calm = vec![[0.0; 4]; (size * size) as usize];
-        Self { size, half_width, cells: calm.clone(), scratch: calm, pending: Vec::new() }
+        let zeros = vec![0.0; (size * size) as usize];
+        Self {
+            size,
+            half_width,
+            height: zeros.clone(),
+            velocity: zeros.clone(),
+            normal_x: zeros.clone(),
+            normal_z: zeros.clone(),
+            next_height: zeros.clone(),
+            next_velocity: zeros,
+            absorb: None,
+            pending: Vec::new(),
+        }
     }
 
     pub fn size(&self) -> u32 {
         self.size
     }
 
-    pub fn cells(&self) -> &[[f32; 4]] {
-        &self.cells
+    /// The state as the GPU texture holds it: (height, velocity, normal x, normal z) per cell.
+    pub fn cells(&self) -> Vec<[f32; 4]> {
+        (0..self.height.len()).map(|k| [self.height[k], self.velocity[k], self.normal_x[k], self.normal_z[k]]).collect()
     }
 
     /// Queues a drop for the next [`CpuHeightField::advance`]; same rules as the GPU.
@@ -47,12 +76,6 @@ impl CpuHeightField {
         if ok && drop.radius > 0.0 && drop.strength != 0.0 {
             self.pending.push(drop);
         }
-    }
-
-    fn at(&self, i: i64, j: i64) -> [f32; 4] {
-        let n = self.size as i64;
-        let (i, j) = (i.clamp(0, n - 1), j.clamp(0, n - 1));
-        self.cells[(j * n + i) as usize]
     }
 
     fn centre(&self, i: u32) -> f32 {
@@ -65,6 +88,9 @@ impl CpuHeightField {
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         if !plan.drops.is_empty() {
             self.apply_drops(&plan);
+        }
+        if plan.sponge_rate > 0.0 {
+            self.prepare_absorb(&plan);
         }
         for _ in 0..plan.updates {
             self.update(&plan);
@@ -80,42 +106,82 @@ impl CpuHeightField {
             let z = self.centre(j);
             for i in 0..n {
                 let x = self.centre(i);
-                let cell = &mut self.cells[(j * n + i) as usize];
+                let h = &mut self.height[(j * n + i) as usize];
                 for d in &plan.drops {
                     let dist = ((x - d.x).powi(2) + (z - d.z).powi(2)).sqrt();
-                    cell[0] += d.strength * drop_shape(dist, d.radius);
+                    *h += d.strength * drop_shape(dist, d.radius);
                 }
-                cell[0] = bounded(cell[0] - plan.correction, MAX_HEIGHT);
+                *h = bounded(*h - plan.correction, MAX_HEIGHT);
             }
         }
     }
 
-    fn update(&mut self, plan: &StepPlan) {
-        let n = self.size as i64;
+    /// Fills the absorbing walls' per-cell factors for this plan's rate and time step.
+    fn prepare_absorb(&mut self, plan: &StepPlan) {
+        if matches!(&self.absorb, Some((rate, dt, _)) if *rate == plan.sponge_rate && *dt == plan.dt) {
+            return;
+        }
+        let n = self.size;
+        let mut factors = Vec::with_capacity((n * n) as usize);
         for j in 0..n {
             for i in 0..n {
-                let c = self.at(i, j);
-                let neighbours =
-                    self.at(i + 1, j)[0] + self.at(i - 1, j)[0] + self.at(i, j + 1)[0] + self.at(i, j - 1)[0];
-                let laplacian = neighbours - 4.0 * c[0];
-                let absorb = if plan.sponge_rate > 0.0 {
-                    let profile = sponge_profile(self.centre(i as u32), self.centre(j as u32), self.half_width);
-                    (-plan.sponge_rate * profile * plan.dt).exp()
-                } else {
-                    1.0 // exp(0): the same value the GPU computes, without the cost
-                };
-                let v = bounded((c[1] + plan.coupling * laplacian) * plan.velocity_decay * absorb, MAX_VELOCITY);
-                let h = bounded((c[0] + plan.dt * v) * absorb, MAX_HEIGHT);
-                self.scratch[(j * n + i) as usize] = [h, v, c[2], c[3]];
+                let profile = sponge_profile(self.centre(i), self.centre(j), self.half_width);
+                factors.push((-plan.sponge_rate * profile * plan.dt).exp());
             }
         }
-        std::mem::swap(&mut self.cells, &mut self.scratch);
+        self.absorb = Some((plan.sponge_rate, plan.dt, factors));
+    }
+
+    /// One update of every cell. Rows are handled as slices (the row, the rows above and
+    /// below, clamped at the walls like the GPU's `cell`), the first and last cell of a row
+    /// apart, so the inner loop has no bounds checks and vectorises.
+    fn update(&mut self, plan: &StepPlan) {
+        let n = self.size as usize;
+        let m = n - 2;
+        let absorb: Option<&[f32]> = match &self.absorb {
+            Some((_, _, factors)) if plan.sponge_rate > 0.0 => Some(factors),
+            _ => None,
+        };
+        for j in 0..n {
+            let row = &self.height[j * n..(j + 1) * n];
+            let up = &self.height[(j + 1).min(n - 1) * n..][..n];
+            let down = &self.height[j.saturating_sub(1) * n..][..n];
+            let v = &self.velocity[j * n..(j + 1) * n];
+            let out_h = &mut self.next_height[j * n..(j + 1) * n];
+            let out_v = &mut self.next_velocity[j * n..(j + 1) * n];
+            let factor = |i: usize| absorb.map_or(1.0, |a| a[j * n + i]);
+            // Walls: the cell beyond mirrors the edge cell.
+            for i in [0, n - 1] {
+                let (left, right) = (row[i.saturating_sub(1)], row[(i + 1).min(n - 1)]);
+                (out_h[i], out_v[i]) = update_cell(row[i], v[i], right + left + up[i] + down[i], plan, factor(i));
+            }
+            let (h_in, v_in, up_in, down_in) = (&row[1..=m], &v[1..=m], &up[1..=m], &down[1..=m]);
+            let (left, right) = (&row[..m], &row[2..]);
+            let (oh, ov) = (&mut out_h[1..=m], &mut out_v[1..=m]);
+            match absorb {
+                None => {
+                    for k in 0..m {
+                        let neighbours = right[k] + left[k] + up_in[k] + down_in[k];
+                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, plan, 1.0);
+                    }
+                }
+                Some(a) => {
+                    let f = &a[j * n + 1..][..m];
+                    for k in 0..m {
+                        let neighbours = right[k] + left[k] + up_in[k] + down_in[k];
+                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, plan, f[k]);
+                    }
+                }
+            }
+        }
+        std::mem::swap(&mut self.height, &mut self.next_height);
+        std::mem::swap(&mut self.velocity, &mut self.next_velocity);
     }
 
     /// Mean height by the same 2x2 pairwise averaging as `shaders/sim_mean.wgsl`.
     fn reduced_mean(&self) -> f32 {
         let mut side = self.size as usize;
-        let mut level: Vec<f32> = self.cells.iter().map(|c| c[0]).collect();
+        let mut level = self.height.clone();
         while side > 1 {
             let half = side / 2;
             let mut next = vec![0.0f32; half * half];
@@ -133,25 +199,38 @@ impl CpuHeightField {
         level[0]
     }
 
+    /// Normals from central differences, and the mean level brought back to rest, as in
+    /// `shaders/sim_normals.wgsl`.
     fn update_normals(&mut self) {
         let mean = self.reduced_mean();
-        let n = self.size as i64;
+        let n = self.size as usize;
         let two_dx = 2.0 * (2.0 * self.half_width / self.size as f32);
+        let h = &self.height;
+        let at = |i: usize, j: usize| h[j * n + i];
         for j in 0..n {
+            let (jd, ju) = (j.saturating_sub(1), (j + 1).min(n - 1));
             for i in 0..n {
-                let c = self.at(i, j);
-                let slope_x = (self.at(i + 1, j)[0] - self.at(i - 1, j)[0]) / two_dx;
-                let slope_z = (self.at(i, j + 1)[0] - self.at(i, j - 1)[0]) / two_dx;
+                let (il, ir) = (i.saturating_sub(1), (i + 1).min(n - 1));
+                let slope_x = (at(ir, j) - at(il, j)) / two_dx;
+                let slope_z = (at(i, ju) - at(i, jd)) / two_dx;
                 let len = (slope_x * slope_x + 1.0 + slope_z * slope_z).sqrt();
-                self.scratch[(j * n + i) as usize] = [c[0] - mean, c[1], -slope_x / len, -slope_z / len];
+                self.normal_x[j * n + i] = -slope_x / len;
+                self.normal_z[j * n + i] = -slope_z / len;
+                self.next_height[j * n + i] = at(i, j) - mean;
             }
         }
-        std::mem::swap(&mut self.cells, &mut self.scratch);
+        std::mem::swap(&mut self.height, &mut self.next_height);
     }
 
     /// Mean height over all cells (m).
     pub fn mean_height(&self) -> f64 {
-        self.cells.iter().map(|c| c[0] as f64).sum::<f64>() / self.cells.len() as f64
+        self.height.iter().map(|&h| h as f64).sum::<f64>() / self.height.len() as f64
+    }
+
+    /// Sets one cell's height and velocity (tests: feeding it bad values).
+    pub fn set_cell(&mut self, index: usize, height: f32, velocity: f32) {
+        self.height[index] = height;
+        self.velocity[index] = velocity;
     }
 }
 
@@ -162,9 +241,9 @@ mod tests {
     #[test]
     fn nan_and_huge_values_never_enter_the_state() {
         let mut water = CpuHeightField::new(32, 1.0);
-        water.cells[100][0] = f32::NAN;
-        water.cells[200][1] = f32::INFINITY;
-        water.cells[300][0] = 1.0e30;
+        water.set_cell(100, f32::NAN, 0.0);
+        water.set_cell(200, 0.0, f32::INFINITY);
+        water.set_cell(300, 1.0e30, 0.0);
         water.advance(10, 1.0 / 120.0, WaveSettings::reflecting(0.6, 0.5));
         for c in water.cells() {
             assert!(c.iter().all(|v| v.is_finite()));
