@@ -29,42 +29,45 @@ fn time_per_call(budget: Duration, mut f: impl FnMut()) -> f64 {
     best
 }
 
+/// The CPU reference's update at 256² (state in cache) and 1024² (state in main memory),
+/// each against copying the same bytes between buffers of the same size.
 fn cpu_step_against_bandwidth() {
-    const N: u32 = 256;
-    // Slow waves, so one step is one update (no CFL substeps) at 256².
-    let settings = WaveSettings::reflecting(0.6, 0.5);
-    let mut water = CpuHeightField::new(N, 1.0);
-    for d in random_drops(7, 30, 1.0, 0.05, 0.01) {
-        water.add_drop(d);
+    for n in [256u32, 1024] {
+        // Slow waves, so one step is one update (no CFL substeps) at both sizes.
+        let settings = WaveSettings::reflecting(0.3, 0.5);
+        let mut water = CpuHeightField::new(n, 1.0);
+        for d in random_drops(7, 30, 1.0, 0.05, 0.01) {
+            water.add_drop(d);
+        }
+        let steps = if n <= 256 { 200 } else { 40 };
+        let per_batch = time_per_call(Duration::from_secs(3), || water.advance(steps, DT, settings));
+        let step_s = per_batch / steps as f64;
+        // The bytes a step must move at least: read every cell's height and velocity once and
+        // write them once (4 planes x 4 B per cell). Bound: copying the two planes' bytes (8 B
+        // per cell read, 8 B written) from one buffer to another.
+        let cells = (n * n) as usize;
+        let bytes = 16 * cells;
+        let source = vec![1.0f32; 2 * cells];
+        let mut target = vec![0.0f32; 2 * cells];
+        let copy_s = time_per_call(Duration::from_secs(2), || {
+            target.copy_from_slice(black_box(&source));
+            black_box(&mut target);
+        });
+        println!(
+            "{}",
+            serde_json::json!({
+                "what": "cpu reference step",
+                "size": n,
+                "steps_per_s": (1.0 / step_s).round(),
+                "ns_per_cell": step_s * 1e9 / cells as f64,
+                "bytes_per_step": bytes,
+                "copy_bound_steps_per_s": (1.0 / copy_s).round(),
+                "copy_gb_per_s": bytes as f64 / copy_s / 1e9,
+                "ratio_to_bound": step_s / copy_s,
+                "note": format!("one wave-equation update per cell (normals and mean once per {steps} steps); bound: copying the same bytes"),
+            })
+        );
     }
-    const STEPS: u32 = 50;
-    let per_batch = time_per_call(Duration::from_secs(3), || water.advance(STEPS, DT, settings));
-    let step_s = per_batch / STEPS as f64;
-    // The bytes a step must move at least: read every cell's height and velocity once and
-    // write them once (4 planes x 4 B per cell). Bound: copying the two planes' bytes (8 B
-    // per cell read, 8 B written) between buffers of the same size.
-    let cells = (N * N) as usize;
-    let bytes = 16 * cells;
-    let source = vec![1.0f32; 2 * cells];
-    let mut target = vec![0.0f32; 2 * cells];
-    let copy_s = time_per_call(Duration::from_secs(2), || {
-        target.copy_from_slice(black_box(&source));
-        black_box(&mut target);
-    });
-    println!(
-        "{}",
-        serde_json::json!({
-            "what": "cpu reference step",
-            "size": N,
-            "steps_per_s": (1.0 / step_s).round(),
-            "ns_per_cell": step_s * 1e9 / cells as f64,
-            "bytes_per_step": bytes,
-            "copy_bound_steps_per_s": (1.0 / copy_s).round(),
-            "copy_gb_per_s": bytes as f64 / copy_s / 1e9,
-            "ratio_to_bound": step_s / copy_s,
-            "note": "step = one wave-equation update per cell (normals and mean once per 50 steps); bound = copying the same bytes",
-        })
-    );
 }
 
 fn gpu_steps(gpu: &HeadlessGpu) {
