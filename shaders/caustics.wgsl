@@ -41,5 +41,6 @@ fn fs_caustics(in: CausticsOut) -> @location(0) vec4<f32> {
     let calm = area(dpdx(in.calm_entry), dpdy(in.calm_entry));
     let wavy = area(dpdx(in.wavy_entry), dpdy(in.wavy_entry));
     let intensity = min(calm / max(wavy, 1.0e-12), 40.0);
-    return vec4<f32>(intensity * in.visibility, 0.0, 1.0);
+    // Stored divided by the map's scale (1 for float maps; an 8-bit map clips at 1.0).
+    return vec4<f32>(intensity * in.visibility / scene.water.w, 0.0, 1.0);
 }

@@ -9,7 +9,8 @@ struct Scene {
     refracted_sun: vec4<f32>,  // xyz unit direction sunlight travels after a flat surface (downwards)
     sphere: vec4<f32>,         // xyz centre (m), w radius (m); radius 0 = no sphere
     pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
-    water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1)
+    water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
+                               // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format)
 };
 
@@ -83,7 +84,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
         return 0.0;
     }
     if (scene.water.z > 0.5) {
-        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0);
+        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0) * scene.water.w;
         return select(c.r, c.g, with_sphere_shadow);
     }
     // Caustics off: a calm surface, with the same rim and sphere shadows.

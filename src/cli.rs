@@ -17,9 +17,10 @@ wavepool: interactive water, headless tools
 USAGE:
   wavepool render --out FILE.png [--width W] [--height H] [--frames N]
                   [--drops K] [--seed S] [--yaw DEG] [--pitch DEG] [--distance M]
-                  [--sim-size N] [--surface-grid N] [--caustics-size N] [--set NAME=VALUE]...
+                  [--sim-size N] [--surface-grid N] [--caustics-size N] [--float auto|none]
+                  [--set NAME=VALUE]...
   wavepool bench  [--width W] [--height H] [--frames N] [--sim-size N] [--surface-grid N]
-                  [--caustics-size N] [--set NAME=VALUE]...
+                  [--caustics-size N] [--float auto|none] [--set NAME=VALUE]...
 
 render  simulates N frames of 1/60 s (K seeded random drops at the start) and writes the
         last frame as PNG. Defaults: 800x600, 60 frames, 12 drops, seed 1.
@@ -27,6 +28,8 @@ bench   renders N frames (default 120) after a warm-up and prints one JSON objec
         adapter, frame times and per-stage GPU times.
 
 --set takes any parameter of the table, e.g. --set caustics=0 --set sun_elevation=30.
+--float none takes the path for devices without float render targets (water simulated on
+the CPU, 8-bit caustics map).
 Parameters:";
 
 /// A usage error: message for stderr, exit code 2.
@@ -57,6 +60,8 @@ struct Options {
     sim_size: u32,
     surface_grid: u32,
     caustics_size: u32,
+    /// False with `--float none`: the path for devices without float render targets.
+    float_targets: bool,
     sets: Vec<(String, f32)>,
 }
 
@@ -74,6 +79,7 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
         sim_size: 256,
         surface_grid: DemoOptions::default().surface_grid,
         caustics_size: DemoOptions::default().caustics_size,
+        float_targets: true,
         sets: Vec::new(),
     };
     let mut it = args.iter();
@@ -97,6 +103,13 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
             }
             "--surface-grid" => o.surface_grid = parse_number(flag, value, 8, 1024)?,
             "--caustics-size" => o.caustics_size = parse_number(flag, value, 64, 4096)?,
+            "--float" => {
+                o.float_targets = match value.as_str() {
+                    "auto" => true,
+                    "none" => false,
+                    _ => return Err(UsageError(format!("--float: expected auto or none, got '{value}'"))),
+                }
+            }
             "--set" => {
                 let (name, v) = value
                     .split_once('=')
@@ -117,7 +130,12 @@ fn make_demo(gpu: &HeadlessGpu, o: &Options) -> WaterDemo {
         &gpu.device,
         &gpu.queue,
         OFFSCREEN_FORMAT,
-        DemoOptions { sim_size: o.sim_size, surface_grid: o.surface_grid, caustics_size: o.caustics_size },
+        DemoOptions {
+            sim_size: o.sim_size,
+            surface_grid: o.surface_grid,
+            caustics_size: o.caustics_size,
+            float_targets: o.float_targets,
+        },
     );
     for (name, v) in &o.sets {
         demo.params.set_by_name(name, *v).expect("names checked while parsing");

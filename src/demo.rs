@@ -9,7 +9,7 @@ use crate::params::{ParamId, Params};
 use crate::physics::SphereBody;
 use crate::render::{RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
-use crate::sim::{Drop, FixedStep, HeightField, WaterLevel, WaveSettings};
+use crate::sim::{Drop, FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;
@@ -33,6 +33,9 @@ pub struct DemoOptions {
     /// Quads per side of the water surface mesh. Software rasterisers pay mostly per
     /// triangle, and the surface is shaded per pixel anyway: 48 costs little detail.
     pub surface_grid: u32,
+    /// Whether the device can render into float textures. Without, the water is simulated
+    /// by the CPU reference and the caustics map is 8-bit; the picture stays the same.
+    pub float_targets: bool,
 }
 
 /// One creation option as the shells show it (web mount options and URL, CLI flags): its
@@ -85,6 +88,7 @@ impl DemoOptions {
             sim_size: crate::params::spec(ParamId::SimSize).sanitise(sim_size as f32) as u32,
             surface_grid: mesh.clamp(surface_grid),
             caustics_size: caustics.clamp(caustics_size),
+            float_targets: true,
         }
     }
 }
@@ -96,6 +100,7 @@ impl Default for DemoOptions {
             sim_size: crate::params::spec(ParamId::SimSize).default as u32,
             surface_grid: mesh.default,
             caustics_size: caustics.default,
+            float_targets: true,
         }
     }
 }
@@ -152,13 +157,15 @@ impl WaterDemo {
         target_format: wgpu::TextureFormat,
         options: DemoOptions,
     ) -> Self {
-        let water = HeightField::new(device, options.sim_size, scene::HALF_WIDTH);
-        let renderer = Renderer::new(
-            device,
-            queue,
-            RenderSettings { target_format, caustics_size: options.caustics_size, surface_grid: options.surface_grid },
-            &water,
-        );
+        let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
+        let water = HeightField::new_on(device, options.sim_size, scene::HALF_WIDTH, engine);
+        let settings = RenderSettings {
+            target_format,
+            caustics_size: options.caustics_size,
+            surface_grid: options.surface_grid,
+            float_targets: options.float_targets,
+        };
+        let renderer = Renderer::new(device, queue, settings, &water);
         let mut params = Params::default();
         let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
         Self {
@@ -444,7 +451,7 @@ mod tests {
     fn creation_options_clamp_and_snap_to_their_specs() {
         assert_eq!(
             DemoOptions::clamped(300, 4, 99_999),
-            DemoOptions { sim_size: 256, surface_grid: 16, caustics_size: 2048 }
+            DemoOptions { sim_size: 256, surface_grid: 16, caustics_size: 2048, float_targets: true }
         );
         assert_eq!(DemoOptions::clamped(5000, 100, 700).sim_size, 1024);
         assert_eq!(DemoOptions::clamped(0, 100, 700).sim_size, 128);

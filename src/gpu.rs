@@ -220,7 +220,17 @@ pub struct PingPong {
 }
 
 impl PingPong {
-    pub fn new(device: &wgpu::Device, label: &str, width: u32, height: u32, format: wgpu::TextureFormat) -> Self {
+    /// Two `width` x `height` textures of `format`, to render into (`render_target`) or to
+    /// fill from the CPU; either way sampleable and copyable.
+    pub fn new(
+        device: &wgpu::Device,
+        label: &str,
+        width: u32,
+        height: u32,
+        format: wgpu::TextureFormat,
+        render_target: bool,
+    ) -> Self {
+        let target = if render_target { wgpu::TextureUsages::RENDER_ATTACHMENT } else { wgpu::TextureUsages::empty() };
         let make = |i: usize| {
             texture_2d(
                 device,
@@ -230,7 +240,7 @@ impl PingPong {
                 1,
                 1,
                 format,
-                wgpu::TextureUsages::RENDER_ATTACHMENT
+                target
                     | wgpu::TextureUsages::TEXTURE_BINDING
                     | wgpu::TextureUsages::COPY_SRC
                     | wgpu::TextureUsages::COPY_DST,

@@ -14,6 +14,12 @@ pub const SUN_STRENGTH: f32 = 0.8;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Caustics map: red = light, green = light with the sphere's shadow.
 pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
+/// Caustics map where float render targets are missing: 8-bit, holding light / [`CAUSTICS_8BIT_SCALE`].
+pub const CAUSTICS_FORMAT_8BIT: wgpu::TextureFormat = wgpu::TextureFormat::Rg8Unorm;
+/// Light (relative to a calm surface) that the 8-bit caustics map's 1.0 stands for: focused
+/// light up to 4x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
+/// has flattened them by then anyway).
+pub const CAUSTICS_8BIT_SCALE: f32 = 4.0;
 
 /// Everything a frame's picture depends on besides the water state.
 #[derive(Clone, Copy, Debug)]
@@ -51,6 +57,20 @@ pub struct RenderSettings {
     /// Quads per side of the water surface mesh. The fragment shader reads heights and
     /// normals per pixel, so this only shapes the surface's outline and parallax.
     pub surface_grid: u32,
+    /// Whether the device can render (and blend) into float textures; without, the caustics
+    /// map is 8-bit ([`CAUSTICS_FORMAT_8BIT`]).
+    pub float_targets: bool,
+}
+
+impl RenderSettings {
+    /// Format and scale (light per unit stored) of the caustics map.
+    pub fn caustics_format(&self) -> (wgpu::TextureFormat, f32) {
+        if self.float_targets {
+            (CAUSTICS_FORMAT, 1.0)
+        } else {
+            (CAUSTICS_FORMAT_8BIT, CAUSTICS_8BIT_SCALE)
+        }
+    }
 }
 
 /// Quads per side of the mesh projected into the caustics map for a simulation of
@@ -184,7 +204,13 @@ pub struct CausticsPass {
 }
 
 impl CausticsPass {
-    fn new(device: &wgpu::Device, size: u32, sim_size: u32, water_layout: &wgpu::BindGroupLayout) -> Self {
+    fn new(
+        device: &wgpu::Device,
+        size: u32,
+        format: wgpu::TextureFormat,
+        sim_size: u32,
+        water_layout: &wgpu::BindGroupLayout,
+    ) -> Self {
         let texture = gpu::texture_2d(
             device,
             "caustics map",
@@ -192,7 +218,7 @@ impl CausticsPass {
             size,
             1,
             1,
-            CAUSTICS_FORMAT,
+            format,
             wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC,
@@ -215,7 +241,7 @@ impl CausticsPass {
                 attributes: &wgpu::vertex_attr_array![0 => Float32x2],
                 stride: 8,
                 cull: None,
-                format: CAUSTICS_FORMAT,
+                format,
                 blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
                 depth: false,
             },
@@ -363,7 +389,13 @@ impl Renderer {
                 ],
             })
         });
-        let caustics = CausticsPass::new(device, settings.caustics_size, water.size(), &water_layout);
+        let caustics = CausticsPass::new(
+            device,
+            settings.caustics_size,
+            settings.caustics_format().0,
+            water.size(),
+            &water_layout,
+        );
         let sky_cube = SkyCube::new(device);
         let tiles = textures::create_tile_texture(device, queue);
         let sampler = |address: wgpu::AddressMode| {
@@ -528,7 +560,7 @@ impl Renderer {
             refracted_sun: refracted.extend(0.0).to_array(),
             sphere,
             pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, scene::IOR_WATER],
-            water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, 0.0],
+            water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
             output: [if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 }, 0.0, 0.0, 0.0],
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));

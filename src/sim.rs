@@ -195,11 +195,19 @@ impl FixedStep {
     }
 }
 
-/// The heightfield: state textures, the three passes, and queued drops.
-pub struct HeightField {
-    size: u32,
-    half_width: f32,
-    state: PingPong,
+/// Where the water is simulated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SimEngine {
+    /// Full-screen fragment passes into float render targets (the normal path).
+    Gpu,
+    /// The CPU reference ([`cpu::CpuHeightField`]), its state uploaded to the same texture
+    /// each frame: for devices that cannot render to float textures (many phones, WebGL2
+    /// without EXT_color_buffer_float). Same arithmetic, so the same water.
+    Cpu,
+}
+
+/// The GPU engine's passes and buffers.
+struct GpuSim {
     uniforms: wgpu::Buffer,
     layout: wgpu::BindGroupLayout,
     bind_groups: [wgpu::BindGroup; 2],
@@ -209,6 +217,20 @@ pub struct HeightField {
     normals_pass: FullscreenPass,
     mean: MeanLevel,
     probe: LevelProbe,
+}
+
+enum Engine {
+    Gpu(Box<GpuSim>),
+    Cpu { water: Box<cpu::CpuHeightField>, level: Option<WaterLevel> },
+}
+
+/// The heightfield: the state textures the renderer reads, the engine that advances them,
+/// and queued drops.
+pub struct HeightField {
+    size: u32,
+    half_width: f32,
+    state: PingPong,
+    engine: Engine,
     pending: Vec<Drop>,
 }
 
@@ -369,9 +391,8 @@ impl LevelProbe {
     }
 }
 
-impl HeightField {
-    /// A calm `size` x `size` heightfield over a pool of the given half width (m).
-    pub fn new(device: &wgpu::Device, size: u32, half_width: f32) -> Self {
+impl GpuSim {
+    fn new(device: &wgpu::Device, state: &PingPong, size: u32) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sim layout"),
             entries: &[
@@ -390,10 +411,8 @@ impl HeightField {
                 ),
             ],
         });
-        assert!(size.is_power_of_two() && size >= 16, "simulation size must be a power of two, at least 16");
         let uniforms = gpu::uniform_buffer(device, "sim uniforms", &SimUniforms::zeroed());
-        let state = PingPong::new(device, "water state", size, size, STATE_FORMAT);
-        let mean = MeanLevel::new(device, &state, size);
+        let mean = MeanLevel::new(device, state, size);
         let bind_groups = state.bind_groups(|view| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("sim bind group"),
@@ -419,19 +438,55 @@ impl HeightField {
             )
         };
         Self {
-            size,
-            half_width,
             drop_pass: pass("sim drop", gpu::wgsl::SIM_DROP, "fs_drop"),
             update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
             normals_pass: pass("sim normals", gpu::wgsl::SIM_NORMALS, "fs_normals"),
             resample_pass: pass("sim resample", gpu::wgsl::SIM_RESAMPLE, "fs_resample"),
-            state,
             uniforms,
             layout,
             bind_groups,
             mean,
             probe: LevelProbe::new(device),
-            pending: Vec::new(),
+        }
+    }
+
+    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan, size: u32, half_width: f32) {
+        let mut u = SimUniforms::zeroed();
+        u.grid = [size as f32, 1.0 / size as f32, 2.0 * half_width / size as f32, half_width];
+        u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
+        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
+        u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
+        for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
+            *slot = [d.x, d.z, d.radius, d.strength];
+        }
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+    }
+}
+
+impl HeightField {
+    /// A calm `size` x `size` heightfield over a pool of the given half width (m), simulated
+    /// on the GPU.
+    pub fn new(device: &wgpu::Device, size: u32, half_width: f32) -> Self {
+        Self::new_on(device, size, half_width, SimEngine::Gpu)
+    }
+
+    /// A calm heightfield simulated by `engine`. The CPU engine's state texture is only
+    /// sampled and written from the CPU, never rendered to.
+    pub fn new_on(device: &wgpu::Device, size: u32, half_width: f32, engine: SimEngine) -> Self {
+        assert!(size.is_power_of_two() && size >= 16, "simulation size must be a power of two, at least 16");
+        let state = PingPong::new(device, "water state", size, size, STATE_FORMAT, engine == SimEngine::Gpu);
+        let engine = match engine {
+            SimEngine::Gpu => Engine::Gpu(Box::new(GpuSim::new(device, &state, size))),
+            SimEngine::Cpu => Engine::Cpu { water: Box::new(cpu::CpuHeightField::new(size, half_width)), level: None },
+        };
+        Self { size, half_width, state, engine, pending: Vec::new() }
+    }
+
+    /// Which engine advances this heightfield.
+    pub fn engine(&self) -> SimEngine {
+        match self.engine {
+            Engine::Gpu(_) => SimEngine::Gpu,
+            Engine::Cpu { .. } => SimEngine::Cpu,
         }
     }
 
@@ -449,7 +504,10 @@ impl HeightField {
     pub fn add_drop(&mut self, drop: Drop) {
         let ok = [drop.x, drop.z, drop.radius, drop.strength].iter().all(|v| v.is_finite());
         if ok && drop.radius > 0.0 && drop.strength != 0.0 {
-            self.pending.push(drop);
+            match &mut self.engine {
+                Engine::Gpu(_) => self.pending.push(drop),
+                Engine::Cpu { water, .. } => water.add_drop(drop),
+            }
         }
     }
 
@@ -470,26 +528,38 @@ impl HeightField {
         dt: f32,
         settings: WaveSettings,
     ) {
+        let sim = match &mut self.engine {
+            Engine::Gpu(sim) => sim,
+            Engine::Cpu { water, level } => {
+                let changed = water.advance(steps, dt, settings);
+                if changed {
+                    upload(queue, self.state.current_texture(), water);
+                }
+                *level = Some(water.level());
+                return;
+            }
+        };
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
-        self.write_uniforms(queue, &plan);
+        sim.write_uniforms(queue, &plan, self.size, self.half_width);
         if !plan.drops.is_empty() {
-            self.state.run(encoder, &self.drop_pass, &self.bind_groups);
+            self.state.run(encoder, &sim.drop_pass, &sim.bind_groups);
         }
         for _ in 0..plan.updates {
-            self.state.run(encoder, &self.update_pass, &self.bind_groups);
+            self.state.run(encoder, &sim.update_pass, &sim.bind_groups);
         }
         if plan.changes_state() {
-            self.mean.encode(encoder, self.state.current());
-            self.state.run(encoder, &self.normals_pass, &self.bind_groups);
+            sim.mean.encode(encoder, self.state.current());
+            self.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
         }
-        self.probe.encode(encoder, &self.mean.result);
+        sim.probe.encode(encoder, &sim.mean.result);
     }
 
-    /// A `size` x `size` heightfield holding this one's water resampled onto the new grid
-    /// (`shaders/sim_resample.wgsl`: box average when shrinking, bilinear when growing), with
-    /// its mean level held and normals redone; queued drops carry over. Records the passes
-    /// into `encoder`; like [`HeightField::encode`], it writes the new field's uniforms, and
-    /// encoding steps on the new field in the same submission is fine (same grid values).
+    /// A `size` x `size` heightfield on the same engine holding this one's water resampled
+    /// onto the new grid (box average when shrinking, bilinear when growing: on the GPU
+    /// `shaders/sim_resample.wgsl`, on the CPU its mirror), with its mean level held and
+    /// normals redone; queued drops carry over. Records the GPU passes into `encoder`; like
+    /// [`HeightField::encode`], it writes the new field's uniforms, and encoding steps on the
+    /// new field in the same submission is fine (same grid values).
     pub fn resampled(
         &self,
         device: &wgpu::Device,
@@ -497,60 +567,68 @@ impl HeightField {
         encoder: &mut wgpu::CommandEncoder,
         size: u32,
     ) -> HeightField {
-        let mut new = HeightField::new(device, size, self.half_width);
+        let mut new = HeightField::new_on(device, size, self.half_width, self.engine());
         new.pending = self.pending.clone();
-        let from_old = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("sim resample source"),
-            layout: &new.layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: new.uniforms.as_entire_binding() },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(self.state.current_view()),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: wgpu::BindingResource::TextureView(new.mean.result_view()),
-                },
-            ],
-        });
-        let mut no_drops = Vec::new();
-        let plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, WaveSettings::reflecting(0.0, 0.0));
-        new.write_uniforms(queue, &plan);
-        new.state.run(encoder, &new.resample_pass, &[from_old.clone(), from_old]);
-        new.mean.encode(encoder, new.state.current());
-        new.state.run(encoder, &new.normals_pass, &new.bind_groups);
-        new
-    }
-
-    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan) {
-        let mut u = SimUniforms::zeroed();
-        u.grid = [self.size as f32, 1.0 / self.size as f32, self.cell_size(), self.half_width];
-        u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
-        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
-        u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
-        for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
-            *slot = [d.x, d.z, d.radius, d.strength];
+        match (&self.engine, &mut new.engine) {
+            (Engine::Cpu { water: old, .. }, Engine::Cpu { water, level }) => {
+                **water = old.resampled(size);
+                upload(queue, new.state.current_texture(), water);
+                *level = Some(water.level());
+            }
+            (Engine::Gpu(_), Engine::Gpu(sim)) => {
+                let from_old = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("sim resample source"),
+                    layout: &sim.layout,
+                    entries: &[
+                        wgpu::BindGroupEntry { binding: 0, resource: sim.uniforms.as_entire_binding() },
+                        wgpu::BindGroupEntry {
+                            binding: 1,
+                            resource: wgpu::BindingResource::TextureView(self.state.current_view()),
+                        },
+                        wgpu::BindGroupEntry {
+                            binding: 2,
+                            resource: wgpu::BindingResource::TextureView(sim.mean.result_view()),
+                        },
+                    ],
+                });
+                let mut no_drops = Vec::new();
+                let calm = WaveSettings::reflecting(0.0, 0.0);
+                let plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, calm);
+                sim.write_uniforms(queue, &plan, size, self.half_width);
+                new.state.run(encoder, &sim.resample_pass, &[from_old.clone(), from_old]);
+                sim.mean.encode(encoder, new.state.current());
+                new.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
+            }
+            _ => unreachable!("the new field was made on the same engine"),
         }
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+        new
     }
 
     /// Call after submitting the frame that [`HeightField::encode`] recorded: starts the
     /// asynchronous read of the water statistics (never waits).
     pub fn after_submit(&self) {
-        self.probe.after_submit();
+        if let Engine::Gpu(sim) = &self.engine {
+            sim.probe.after_submit();
+        }
     }
 
     /// The latest water statistics read back, one to a few frames old; `None` until the
     /// first read completes. Reads complete as the device is polled (natively) or as the
     /// browser runs its event loop.
     pub fn level(&self) -> Option<WaterLevel> {
-        self.probe.latest
+        match &self.engine {
+            Engine::Gpu(sim) => sim.probe.latest,
+            Engine::Cpu { level, .. } => *level,
+        }
     }
 
     /// Flattens the water and forgets queued drops.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.pending.clear();
+        if let Engine::Cpu { water, level } = &mut self.engine {
+            **water = cpu::CpuHeightField::new(self.size, self.half_width);
+            *level = None;
+        }
         let zeros = vec![0u8; (self.size * self.size * 16) as usize];
         for texture in self.state.textures() {
             queue.write_texture(
@@ -571,9 +649,23 @@ impl HeightField {
     /// row by row along +z. Blocking; for tests and tools.
     #[cfg(not(target_arch = "wasm32"))]
     pub fn read_state(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<[f32; 4]> {
+        if let Engine::Cpu { water, .. } = &self.engine {
+            return water.cells();
+        }
         let bytes = gpu::read_texture(device, queue, self.state.current_texture());
         bytemuck::cast_slice(&bytes).to_vec()
     }
+}
+
+/// Writes the CPU engine's state into the texture the renderer samples (16 B per cell).
+fn upload(queue: &wgpu::Queue, texture: &wgpu::Texture, water: &cpu::CpuHeightField) {
+    let cells = water.cells();
+    queue.write_texture(
+        texture.as_image_copy(),
+        bytemuck::cast_slice(&cells),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(water.size() * 16), rows_per_image: None },
+        texture.size(),
+    );
 }
 
 use bytemuck::Zeroable;

@@ -100,7 +100,17 @@ fn keys_and_zoom() {
 /// The sim_size parameter switches the grid at run time (the next frame) and keeps the waves.
 #[test]
 fn the_sim_size_parameter_switches_resolution_without_a_reset() {
-    let mut demo = common::demo(DemoOptions { sim_size: 128, ..DemoOptions::default() });
+    switch_resolution(true);
+}
+
+/// The same on the CPU engine (no float render targets).
+#[test]
+fn the_sim_size_parameter_switches_resolution_on_the_cpu_engine() {
+    switch_resolution(false);
+}
+
+fn switch_resolution(float_targets: bool) {
+    let mut demo = common::demo(DemoOptions { sim_size: 128, float_targets, ..DemoOptions::default() });
     assert_eq!(demo.params.get(ParamId::SimSize), 128.0);
     demo.params.set(ParamId::Sphere, 0.0);
     demo.add_drop(0.2, -0.1, 0.15, 0.02);

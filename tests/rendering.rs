@@ -143,3 +143,36 @@ fn reference_frame_matches() {
         );
     }
 }
+
+/// The path for devices without float render targets (the CPU reference simulates the water,
+/// its state is uploaded each frame, the caustics map is 8-bit) draws the same picture as the
+/// float path: far closer to it than the same scene without its ripples is.
+#[test]
+fn the_no_float_path_renders_the_same_frame() {
+    use wavepool::sim::SimEngine;
+    let run = |float_targets: bool, drops: u32| {
+        let mut demo = common::demo(DemoOptions { float_targets, ..DemoOptions::default() });
+        let engine = if float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
+        assert_eq!(demo.water().engine(), engine);
+        for d in random_drops(8, drops, 1.0, 0.06, 0.015) {
+            demo.add_drop(d.x, d.z, d.radius, d.strength);
+        }
+        render(&mut demo, W, H, 30, 1.0 / 60.0)
+    };
+    let float = run(true, 20);
+    let no_float = run(false, 20);
+    let calm = run(true, 0);
+    let (diff, changed) = (float.mean_abs_diff(&no_float, Rect::ALL), float.changed_fraction(&no_float, Rect::ALL, 16));
+    let (ripple_diff, ripple_changed) =
+        (float.mean_abs_diff(&calm, Rect::ALL), float.changed_fraction(&calm, Rect::ALL, 16));
+    let (mean_f, mean_n) = (float.luma_stats(Rect::ALL), no_float.luma_stats(Rect::ALL));
+    println!(
+        "float vs no float: mean |diff| {diff:.3}/255, {:.2}% of pixels off by >16; ripples vs calm: {ripple_diff:.3}/255, {:.2}%; luma mean/var {mean_f:?} vs {mean_n:?}",
+        changed * 100.0,
+        ripple_changed * 100.0
+    );
+    assert!(ripple_changed > 0.05, "the drops should show: {:.2}% changed", ripple_changed * 100.0);
+    assert!(diff < 0.5, "no-float frame differs by {diff}/255 on average");
+    assert!(changed < 0.01, "{:.2}% of pixels differ by more than 16/255", changed * 100.0);
+    assert!(diff < 0.1 * ripple_diff, "the no-float path is not much closer than a calm pool");
+}

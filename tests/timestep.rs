@@ -9,7 +9,8 @@ use wavepool::headless::OffscreenTarget;
 
 fn run(fps: f64, until: f64) -> Vec<[f32; 4]> {
     let g = common::gpu();
-    let mut demo = common::demo(DemoOptions { sim_size: 128, caustics_size: 256, surface_grid: 32 });
+    let mut demo =
+        common::demo(DemoOptions { sim_size: 128, caustics_size: 256, surface_grid: 32, ..DemoOptions::default() });
     let target = OffscreenTarget::new(&g.device, 64, 48);
     // Drops at these simulated times (s): multiples of 1/30 s, reached exactly at every rate.
     let mut drops = vec![(0.0, 0.2, -0.3), (0.2, -0.5, 0.1), (0.5, 0.0, 0.6), (0.9, 0.4, 0.4)];

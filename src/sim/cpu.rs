@@ -30,6 +30,8 @@ pub struct CpuHeightField {
     next_velocity: Vec<f32>,
     /// Per-cell factor exp(-sigma dt) of the absorbing walls, for the (rate, dt) it was made for.
     absorb: Option<(f32, f32, Vec<f32>)>,
+    /// Mean height found before the last normals update brought it back to rest (m).
+    last_mean: f32,
     pending: Vec<Drop>,
 }
 
@@ -57,6 +59,7 @@ impl CpuHeightField {
             next_height: zeros.clone(),
             next_velocity: zeros,
             absorb: None,
+            last_mean: 0.0,
             pending: Vec::new(),
         }
     }
@@ -83,8 +86,9 @@ impl CpuHeightField {
     }
 
     /// Applies the queued drops, `steps` steps of `dt` seconds, the mean-level hold and the
-    /// normals, exactly as [`super::HeightField::encode`] does on the GPU.
-    pub fn advance(&mut self, steps: u32, dt: f32, settings: WaveSettings) {
+    /// normals, exactly as [`super::HeightField::encode`] does on the GPU. Returns whether
+    /// the state changed.
+    pub fn advance(&mut self, steps: u32, dt: f32, settings: WaveSettings) -> bool {
         let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         if !plan.drops.is_empty() {
             self.apply_drops(&plan);
@@ -98,6 +102,58 @@ impl CpuHeightField {
         if plan.changes_state() {
             self.update_normals();
         }
+        plan.changes_state()
+    }
+
+    /// The water statistics the GPU engine reads back: the mean height before the last
+    /// correction and the largest |height| (m).
+    pub fn level(&self) -> super::WaterLevel {
+        let max_abs = self.height.iter().fold(0.0f32, |m, h| m.max(h.abs()));
+        super::WaterLevel { mean: self.last_mean, max_abs }
+    }
+
+    /// This water on an `size` x `size` grid, as `shaders/sim_resample.wgsl` does it: each
+    /// new cell averages the old cells it covers when shrinking, and interpolates the old
+    /// cells bilinearly when growing; then the normals are redone. Queued drops carry over.
+    pub fn resampled(&self, size: u32) -> CpuHeightField {
+        let mut new = CpuHeightField::new(size, self.half_width);
+        new.pending = self.pending.clone();
+        let (old_n, n) = (self.size as usize, size as usize);
+        let old = |plane: &[f32], i: i64, j: i64| {
+            let (i, j) = (i.clamp(0, old_n as i64 - 1) as usize, j.clamp(0, old_n as i64 - 1) as usize);
+            plane[j * old_n + i]
+        };
+        for j in 0..n {
+            for i in 0..n {
+                let mut hv = [0.0f32; 2];
+                for (k, plane) in [&self.height, &self.velocity].into_iter().enumerate() {
+                    hv[k] = if old_n >= n {
+                        let f = old_n / n;
+                        let mut sum = 0.0;
+                        for dj in 0..f {
+                            for di in 0..f {
+                                sum += old(plane, (i * f + di) as i64, (j * f + dj) as i64);
+                            }
+                        }
+                        sum / (f * f) as f32
+                    } else {
+                        let q = |c: usize| (c as f32 + 0.5) * old_n as f32 / n as f32 - 0.5;
+                        let (qx, qz) = (q(i), q(j));
+                        let (bx, bz) = (qx.floor(), qz.floor());
+                        let (tx, tz) = (qx - bx, qz - bz);
+                        let (bx, bz) = (bx as i64, bz as i64);
+                        let mix = |a: f32, b: f32, t: f32| a * (1.0 - t) + b * t;
+                        let a = mix(old(plane, bx, bz), old(plane, bx + 1, bz), tx);
+                        let b = mix(old(plane, bx, bz + 1), old(plane, bx + 1, bz + 1), tx);
+                        mix(a, b, tz)
+                    };
+                }
+                new.height[j * n + i] = hv[0];
+                new.velocity[j * n + i] = hv[1];
+            }
+        }
+        new.update_normals();
+        new
     }
 
     fn apply_drops(&mut self, plan: &StepPlan) {
@@ -203,6 +259,7 @@ impl CpuHeightField {
     /// `shaders/sim_normals.wgsl`.
     fn update_normals(&mut self) {
         let mean = self.reduced_mean();
+        self.last_mean = mean;
         let n = self.size as usize;
         let two_dx = 2.0 * (2.0 * self.half_width / self.size as f32);
         let h = &self.height;
