@@ -1,7 +1,8 @@
 //! Browser benchmark: frames per second of the demo at 800x600 (default quality) in headless
 //! Chromium on this machine, on WebGPU and on WebGL2, plus the time to the first frame.
-//! Run with `cargo bench --bench browser` after `trunk build --release` (./scripts/bench does
-//! both). Prints one JSON object per backend.
+//! Run with `cargo bench --bench browser` after building dist/ (`./scripts/serve`, or `trunk build
+//! --release`). Prints one JSON object per backend. WAVEPOOL_BENCH_QUERY adds page options
+//! (`&float=none`), WAVEPOOL_BENCH_SECONDS and WAVEPOOL_BENCH_WARMUP set the timing.
 
 #[path = "../tests/support/browser.rs"]
 mod support;
@@ -14,11 +15,13 @@ use support::{Browser, Graphics, StaticServer};
 async fn main() {
     let warm_up = Duration::from_secs(env_secs("WAVEPOOL_BENCH_WARMUP", 5));
     let measure = Duration::from_secs(env_secs("WAVEPOOL_BENCH_SECONDS", 20));
+    // Extra page options, e.g. WAVEPOOL_BENCH_QUERY='&float=none'.
+    let extra = std::env::var("WAVEPOOL_BENCH_QUERY").unwrap_or_default();
     let server = StaticServer::start();
     for backend in ["webgpu", "webgl2"] {
         let browser = Browser::open(Graphics::WebGpu).await;
         let opened = Instant::now();
-        browser.goto(&server.url(&format!("/test/sized.html?width=800&height=600&backend={backend}"))).await;
+        browser.goto(&server.url(&format!("/test/sized.html?width=800&height=600&backend={backend}{extra}"))).await;
         let ready = browser.wait_ready("#pool", Duration::from_secs(180)).await;
         let load_to_ready = opened.elapsed();
         tokio::time::sleep(warm_up).await;
@@ -37,6 +40,7 @@ async fn main() {
             "{}",
             serde_json::json!({
                 "backend": stats["backend"],
+                "sim_engine": stats["simEngine"],
                 "adapter": stats["adapter"],
                 "canvas": [stats["width"], stats["height"]],
                 "fps": (fps * 100.0).round() / 100.0,

@@ -8,6 +8,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::demo::{DemoOptions, Key, WaterDemo};
 use crate::params::{self, Control, PARAMS};
+use crate::sim::SimEngine;
 
 /// Runs once when the module is instantiated: a panic goes to the console (with a stack)
 /// and to the page, as a `wavepool:panic` event whose detail is the message.
@@ -85,6 +86,17 @@ pub fn param_table() -> js_sys::Array {
         .collect()
 }
 
+/// Whether the adapter can render into the float formats the GPU simulation and the float
+/// caustics map use, and blend the latter (WebGL2 needs EXT_color_buffer_float for it).
+fn float_targets(adapter: &wgpu::Adapter) -> bool {
+    use wgpu::TextureFormat as F;
+    let features = |f: F| adapter.get_texture_format_features(f);
+    let renders = |f: F| features(f).allowed_usages.contains(wgpu::TextureUsages::RENDER_ATTACHMENT);
+    renders(F::Rgba32Float)
+        && renders(F::Rg16Float)
+        && features(F::Rg16Float).flags.contains(wgpu::TextureFormatFeatureFlags::BLENDABLE)
+}
+
 /// An `f32` as the `f64` with the same shortest decimal form (0.6f32 -> 0.6, not 0.6000000238).
 fn to_js_number(v: f32) -> f64 {
     v.to_string().parse().unwrap_or(v as f64)
@@ -115,12 +127,15 @@ impl WebDemo {
     /// Opens `backend` ("webgpu" or "webgl2") on `canvas` and builds the scene. Fails with a
     /// readable message when the browser cannot give that backend; a canvas that failed
     /// must not be reused for the other backend (a canvas keeps its first context type).
+    /// `allow_float` false forces the path for devices without float render targets, which
+    /// is taken anyway when the device lacks them.
     pub async fn create(
         canvas: web_sys::HtmlCanvasElement,
         backend: String,
         sim_size: u32,
         surface_grid: u32,
         caustics_size: u32,
+        allow_float: bool,
     ) -> Result<WebDemo, JsError> {
         let (backends, backend) = match backend.as_str() {
             "webgpu" => (wgpu::Backends::BROWSER_WEBGPU, "webgpu"),
@@ -188,6 +203,7 @@ impl WebDemo {
         surface.configure(&device, &config);
         let mut options = DemoOptions::clamped(sim_size, surface_grid, caustics_size);
         options.caustics_size = options.caustics_size.min(max_side);
+        options.float_targets = allow_float && float_targets(&adapter);
         let demo = WaterDemo::new(&device, &queue, srgb_view.unwrap_or(format), options);
         Ok(WebDemo {
             demo,
@@ -339,6 +355,7 @@ impl WebDemo {
         set(&o, "backend", self.backend);
         set(&o, "adapter", self.adapter.as_str());
         set(&o, "simSize", self.demo.water().size());
+        set(&o, "simEngine", if self.demo.water().engine() == SimEngine::Gpu { "gpu" } else { "cpu" });
         set(&o, "simTime", self.demo.sim_time());
         set(&o, "meanLevel", level.mean as f64);
         set(&o, "maxAbsHeight", level.max_abs as f64);

@@ -128,7 +128,12 @@ return true;
 /// page, from the pointerdown to the frame that shows it) and raises the largest wave height
 /// the simulation reports.
 async fn click_makes_ripples(graphics: Graphics, backend: &str) {
-    let (browser, _server) = open_demo(graphics, &format!("{SMALL}&backend={backend}"), backend).await;
+    click_makes_ripples_with(graphics, backend, "", "gpu").await;
+}
+
+async fn click_makes_ripples_with(graphics: Graphics, backend: &str, extra: &str, engine: &str) {
+    let (browser, _server) = open_demo(graphics, &format!("{SMALL}&backend={backend}{extra}"), backend).await;
+    assert_eq!(browser.js("return window.demo.stats().simEngine;").await, engine, "simulation engine");
     let before = browser.js("return window.demo.stats();").await;
     assert!(before["maxAbsHeight"].as_f64().unwrap() < 1e-4, "water not calm at start: {before}");
     // A point of the water away from the sphere.
@@ -169,6 +174,14 @@ async fn a_click_makes_ripples_on_webgpu() {
 async fn a_click_makes_ripples_on_webgl2() {
     let _g = serial();
     click_makes_ripples(Graphics::WebGl2Only, "webgl2").await;
+}
+
+/// `float=none` takes the path for devices without float render targets (the CPU engine and
+/// an 8-bit caustics map); clicks still make ripples within a second.
+#[tokio::test]
+async fn a_click_makes_ripples_without_float_targets() {
+    let _g = serial();
+    click_makes_ripples_with(Graphics::WebGl2Only, "webgl2", "&float=none", "cpu").await;
 }
 
 /// The controls are generated from the parameter table and drive the core: a slider moved with

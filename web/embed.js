@@ -22,6 +22,7 @@ function loadCore() {
 /** Options understood by mount(), with defaults. Parameter names from `params()` are accepted too. */
 export const DEFAULT_OPTIONS = Object.freeze({
   backend: "auto", // "auto" | "webgpu" | "webgl2"
+  float: "auto", // "none": simulate on the CPU and keep 8-bit caustics, as without float render targets
   // meshSize, causticsSize: ranges and defaults from the core's optionTable()
   controls: true, // show the controls under the canvas
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
@@ -68,6 +69,10 @@ function readOptions(options, table) {
       const b = String(value).toLowerCase();
       if (["auto", "webgpu", "webgl2"].includes(b)) out.backend = b;
       else warn(`backend "${value}" is not auto, webgpu or webgl2; using auto`);
+    } else if (key === "float") {
+      const f = String(value).toLowerCase();
+      if (["auto", "none"].includes(f)) out.float = f;
+      else warn(`float "${value}" is not auto or none; using auto`);
     } else if (created.has(key)) {
       const o = created.get(key);
       const n = Math.round(clampNumber(key, value, o.min, o.max, o.default));
@@ -201,7 +206,8 @@ class Demo {
       try {
         // The grid starts at the sim_size parameter's value (resampled if it changes later).
         const simSize = Number(this._opts.params.sim_size ?? this._table.find((p) => p.name === "sim_size").default);
-        this._core = await WebDemo.create(canvas, backend, simSize, this._opts.meshSize, this._opts.causticsSize);
+        const o = this._opts;
+        this._core = await WebDemo.create(canvas, backend, simSize, o.meshSize, o.causticsSize, o.float !== "none");
         this._canvas = canvas;
         this._element.dataset.backend = backend;
         this._listen();
@@ -565,7 +571,7 @@ class Demo {
     this._run();
   }
 
-  /** { fps, frameMs, firstFrameMs, restarts, backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height } */
+  /** { fps, frameMs, firstFrameMs, restarts, backend, adapter, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height } */
   stats() {
     const s = this._alive().stats();
     const f = this._frames;
