@@ -12,9 +12,10 @@ use wavepool::scene::HALF_WIDTH;
 use wavepool::sim::random_drops;
 
 const USAGE: &str = "\
-wavepool: interactive water, headless tools
+wavepool: interactive water, a desktop viewer and headless tools
 
 USAGE:
+  wavepool [--frames N --screenshot FILE.png] [--sim-size N] [--float auto|none] [--set NAME=VALUE]...
   wavepool render --out FILE.png [--width W] [--height H] [--frames N]
                   [--drops K] [--seed S] [--yaw DEG] [--pitch DEG] [--distance M]
                   [--sim-size N] [--surface-grid N] [--caustics-size N] [--float auto|none]
@@ -22,6 +23,8 @@ USAGE:
   wavepool bench  [--width W] [--height H] [--frames N] [--sim-size N] [--surface-grid N]
                   [--caustics-size N] [--float auto|none] [--set NAME=VALUE]...
 
+(no command) opens the viewer window: the pool and a panel with every parameter. With
+        --frames N it closes after N frames, with --screenshot it first saves the window.
 render  simulates N frames of 1/60 s (K seeded random drops at the start) and writes the
         last frame as PNG. Defaults: 800x600, 60 frames, 12 drops, seed 1.
 bench   renders N frames (default 120) after a warm-up and prints one JSON object with the
@@ -54,6 +57,10 @@ struct Options {
     drops: u32,
     seed: u64,
     out: Option<PathBuf>,
+    /// The viewer's `--screenshot FILE.png`.
+    screenshot: Option<PathBuf>,
+    /// Whether `--frames` was given (the viewer runs until closed without it).
+    frames_given: bool,
     yaw: Option<f32>,
     pitch: Option<f32>,
     distance: Option<f32>,
@@ -73,6 +80,8 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
         drops: 12,
         seed: 1,
         out: None,
+        screenshot: None,
+        frames_given: false,
         yaw: None,
         pitch: None,
         distance: None,
@@ -88,7 +97,11 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
         match flag.as_str() {
             "--width" => o.width = parse_number(flag, value, 16, 8192)?,
             "--height" => o.height = parse_number(flag, value, 16, 8192)?,
-            "--frames" => o.frames = parse_number(flag, value, 1, 1_000_000)?,
+            "--frames" => {
+                o.frames = parse_number(flag, value, 1, 1_000_000)?;
+                o.frames_given = true;
+            }
+            "--screenshot" => o.screenshot = Some(PathBuf::from(value)),
             "--drops" => o.drops = parse_number(flag, value, 0, 100_000)?,
             "--seed" => o.seed = parse_number(flag, value, 0, u64::MAX)?,
             "--out" => o.out = Some(PathBuf::from(value)),
@@ -361,20 +374,42 @@ fn usage() -> String {
     format!("{USAGE}\n{}\n", names.join("\n"))
 }
 
+/// Flags of the desktop viewer (no command): `--frames N`, `--screenshot FILE.png`, and the
+/// demo options `--sim-size`, `--surface-grid`, `--caustics-size`, `--float`, `--set`.
+fn parse_viewer(args: &[String]) -> Result<crate::viewer::ViewerOptions, UsageError> {
+    let o = parse(args, 0)?;
+    if o.out.is_some() {
+        return Err(UsageError("the viewer takes --screenshot FILE, not --out (that is for render)".into()));
+    }
+    let demo = DemoOptions {
+        sim_size: o.sim_size,
+        surface_grid: o.surface_grid,
+        caustics_size: o.caustics_size,
+        float_targets: o.float_targets,
+    };
+    if o.screenshot.is_some() && !o.frames_given {
+        return Err(UsageError("--screenshot needs --frames N".into()));
+    }
+    Ok(crate::viewer::ViewerOptions {
+        frames: o.frames_given.then_some(o.frames),
+        screenshot: o.screenshot.clone(),
+        demo,
+        sets: o.sets.clone(),
+    })
+}
+
 pub fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (command, rest) = match args.split_first() {
-        Some((c, rest)) => (c.as_str(), rest),
-        None => {
-            eprint!("{}", usage());
-            return ExitCode::from(2);
-        }
+        Some((c, rest)) if !c.starts_with("--") => (c.as_str(), rest),
+        _ => ("view", &args[..]),
     };
-    if matches!(command, "-h" | "--help" | "help") {
+    if matches!(command, "-h" | "help") || args.iter().any(|a| a == "--help") {
         print!("{}", usage());
         return ExitCode::SUCCESS;
     }
     let result = match command {
+        "view" => parse_viewer(rest).map(crate::viewer::run),
         "render" => parse(rest, 60).map(|o| render(&o)),
         "bench" => parse(rest, 120).map(|o| bench(&o)),
         other => Err(UsageError(format!("unknown command '{other}'"))),

@@ -18,7 +18,8 @@ fn stderr(o: &Output) -> String {
 #[test]
 fn bad_arguments_give_usage_and_exit_2() {
     let cases: &[(&[&str], &str)] = &[
-        (&[], "USAGE"),
+        (&["--screenshot", "x.png"], "needs --frames"),
+        (&["--out", "x.png"], "not --out"),
         (&["fly"], "unknown command"),
         (&["render", "--width", "abc", "--out", "x.png"], "not a number"),
         (&["render", "--frames", "0", "--out", "x.png"], "outside"),

@@ -1,0 +1,349 @@
+//! The desktop viewer: an eframe window with the pool next to an egui panel generated from the
+//! parameter table. The scene is drawn by the same `WaterDemo` as in the browser, on egui's own
+//! wgpu device, into a texture that egui shows as an image; pointer, wheel and keys go through
+//! the core's input API. `--frames N --screenshot FILE.png` saves what the window showed after
+//! N frames and closes it (used by CI under Xvfb).
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+use std::time::Instant;
+
+use eframe::egui;
+
+use wavepool::demo::{DemoOptions, Key, WaterDemo};
+use wavepool::params::{Control, ParamSpec, PARAMS};
+
+/// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
+const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// How the viewer runs.
+#[derive(Clone, Debug, Default)]
+pub struct ViewerOptions {
+    /// Close after this many frames (with `screenshot`, after saving it).
+    pub frames: Option<u32>,
+    /// Where to save a PNG of the window after `frames` frames.
+    pub screenshot: Option<PathBuf>,
+    /// Starting options of the demo (simulation size, meshes).
+    pub demo: DemoOptions,
+    /// Starting parameter values by name (already checked against the table).
+    pub sets: Vec<(String, f32)>,
+}
+
+/// Opens the window and runs until it is closed (or the frame count is reached).
+pub fn run(options: ViewerOptions) -> Result<(), String> {
+    let native = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default().with_title("wavepool").with_inner_size([1100.0, 680.0]),
+        renderer: eframe::Renderer::Wgpu,
+        ..Default::default()
+    };
+    let outcome = Arc::new(Mutex::new(None::<Result<(), String>>));
+    let app_outcome = outcome.clone();
+    eframe::run_native(
+        "wavepool",
+        native,
+        Box::new(move |cc| {
+            let state = cc.wgpu_render_state.as_ref().ok_or("eframe started without a wgpu renderer")?;
+            Ok(Box::new(Viewer::new(state, options, app_outcome)))
+        }),
+    )
+    .map_err(|e| format!("could not open the viewer window: {e}"))?;
+    let result = outcome.lock().map(|o| o.clone()).unwrap_or(None);
+    result.unwrap_or(Ok(()))
+}
+
+/// The texture the scene is drawn into, and its id for egui.
+struct SceneTarget {
+    texture: wgpu::Texture,
+    view: wgpu::TextureView,
+    id: egui::TextureId,
+}
+
+struct Viewer {
+    demo: WaterDemo,
+    render_state: egui_wgpu::RenderState,
+    target: Option<SceneTarget>,
+    options: ViewerOptions,
+    frames: u32,
+    last_frame: Option<Instant>,
+    /// Smoothed CPU time of recording and submitting a frame (ms) and interval between frames (ms).
+    cpu_ms: f32,
+    interval_ms: f32,
+    /// Whether the primary button went down on the pool and is still held.
+    pressing: bool,
+    last_pointer: Option<egui::Pos2>,
+    /// Set when the screenshot was requested; filled by the callback with the outcome.
+    screenshot: Option<Arc<Mutex<Option<Result<(), String>>>>>,
+    outcome: Arc<Mutex<Option<Result<(), String>>>>,
+}
+
+use eframe::egui_wgpu;
+
+impl Viewer {
+    fn new(
+        state: &egui_wgpu::RenderState,
+        options: ViewerOptions,
+        outcome: Arc<Mutex<Option<Result<(), String>>>>,
+    ) -> Self {
+        let mut demo = WaterDemo::new(&state.device, &state.queue, SCENE_FORMAT, options.demo);
+        for (name, value) in &options.sets {
+            let _ = demo.params.set_by_name(name, *value);
+        }
+        Self {
+            demo,
+            render_state: state.clone(),
+            target: None,
+            options,
+            frames: 0,
+            last_frame: None,
+            cpu_ms: 0.0,
+            interval_ms: 0.0,
+            pressing: false,
+            last_pointer: None,
+            screenshot: None,
+            outcome,
+        }
+    }
+
+    /// The scene texture at `size` pixels, made (and registered with egui) when the size changes.
+    fn target(&mut self, size: (u32, u32)) -> &SceneTarget {
+        let stale = self.target.as_ref().is_none_or(|t| (t.texture.width(), t.texture.height()) != size);
+        if stale {
+            let device = &self.render_state.device;
+            let texture = wavepool::gpu::texture_2d(
+                device,
+                "viewer scene",
+                size.0,
+                size.1,
+                1,
+                1,
+                SCENE_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            );
+            let view = texture.create_view(&Default::default());
+            let mut renderer = self.render_state.renderer.write();
+            let id = match &self.target {
+                Some(old) => {
+                    renderer.update_egui_texture_from_wgpu_texture(device, &view, wgpu::FilterMode::Linear, old.id);
+                    old.id
+                }
+                None => renderer.register_native_texture(device, &view, wgpu::FilterMode::Linear),
+            };
+            self.target = Some(SceneTarget { texture, view, id });
+        }
+        self.target.as_ref().expect("target just made")
+    }
+
+    /// The parameter panel: one group per table group, a control per parameter with its unit
+    /// and a reset-to-default button, then whole-demo buttons and the frame times.
+    fn panel(&mut self, ui: &mut egui::Ui) {
+        ui.heading("wavepool");
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            let mut groups: Vec<&str> = Vec::new();
+            for p in PARAMS {
+                if !groups.contains(&p.group) {
+                    groups.push(p.group);
+                }
+            }
+            for group in groups {
+                egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
+                    for spec in PARAMS.iter().filter(|p| p.group == group) {
+                        self.control(ui, spec);
+                    }
+                });
+            }
+            ui.separator();
+            ui.horizontal(|ui| {
+                if ui.button("Reset water").on_hover_text("Flatten the water and put the sphere back").clicked() {
+                    self.demo.reset(&self.render_state.queue);
+                }
+                if ui.button("Defaults").on_hover_text("Every parameter back to its default").clicked() {
+                    for p in PARAMS {
+                        self.demo.params.reset(p.id);
+                    }
+                }
+            });
+            ui.separator();
+            ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
+            ui.label(format!(
+                "water: {}² cells, {:.1} s simulated",
+                self.demo.water().size(),
+                self.demo.sim_time()
+            ));
+            ui.label(format!("adapter: {}", self.render_state.adapter.get_info().name));
+            ui.small("Drag the water for ripples, the sphere to move it, elsewhere to turn; wheel zooms. Keys: space pause, G gravity, L light from the camera.");
+        });
+    }
+
+    fn control(&mut self, ui: &mut egui::Ui, spec: &ParamSpec) {
+        let mut value = self.demo.params.get(spec.id);
+        ui.horizontal(|ui| {
+            let changed = match spec.control {
+                Control::Slider { min, max, step } => {
+                    let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+                    ui.add(
+                        egui::Slider::new(&mut value, min..=max).step_by(step as f64).suffix(suffix).text(spec.label),
+                    )
+                    .on_hover_text(spec.help)
+                    .changed()
+                }
+                Control::Toggle => {
+                    let mut on = value >= 0.5;
+                    let r = ui.checkbox(&mut on, spec.label).on_hover_text(spec.help);
+                    value = if on { 1.0 } else { 0.0 };
+                    r.changed()
+                }
+                Control::Choice { values } => {
+                    let before = value;
+                    egui::ComboBox::from_label(spec.label)
+                        .selected_text(format!("{value} {}", spec.unit))
+                        .show_ui(ui, |ui| {
+                            for &v in values {
+                                ui.selectable_value(&mut value, v, format!("{v} {}", spec.unit));
+                            }
+                        })
+                        .response
+                        .on_hover_text(spec.help);
+                    value != before
+                }
+            };
+            if changed {
+                self.demo.params.set(spec.id, value);
+            }
+            let at_default = self.demo.params.get(spec.id) == spec.default;
+            if ui
+                .add_enabled(!at_default, egui::Button::new("reset").small())
+                .on_hover_text("Reset to default")
+                .clicked()
+            {
+                self.demo.params.reset(spec.id);
+            }
+        });
+    }
+
+    /// Pointer, wheel and keys on the pool image, through the core's input API.
+    fn input(&mut self, ui: &egui::Ui, response: &egui::Response, pixels_per_point: f32) {
+        let to_pixels = |p: egui::Pos2| ((p - response.rect.min) * pixels_per_point).to_pos2();
+        let (pressed, down, released, pos, scroll) = ui.input(|i| {
+            (
+                i.pointer.primary_pressed(),
+                i.pointer.primary_down(),
+                i.pointer.primary_released(),
+                i.pointer.interact_pos(),
+                i.smooth_scroll_delta.y,
+            )
+        });
+        if pressed && response.hovered() {
+            if let Some(p) = pos.map(to_pixels) {
+                self.demo.pointer_down(p.x, p.y);
+                self.pressing = true;
+                self.last_pointer = Some(p);
+            }
+        } else if self.pressing && down {
+            if let Some(p) = pos.map(to_pixels) {
+                if self.last_pointer != Some(p) {
+                    self.demo.pointer_move(p.x, p.y);
+                    self.last_pointer = Some(p);
+                }
+            }
+        }
+        if self.pressing && (released || !down) {
+            self.demo.pointer_up();
+            self.pressing = false;
+        }
+        if response.hovered() && scroll != 0.0 {
+            self.demo.zoom((-scroll / 40.0).clamp(-3.0, 3.0));
+        }
+        // Keys reach the pool unless a text field has focus.
+        if !ui.ctx().egui_wants_keyboard_input() {
+            ui.input(|i| {
+                for (key, action) in [(egui::Key::Space, Key::Space), (egui::Key::G, Key::G), (egui::Key::L, Key::L)] {
+                    if i.key_pressed(key) {
+                        self.demo.key(action);
+                    }
+                }
+                let turn = [
+                    (egui::Key::ArrowLeft, (-12.0, 0.0)),
+                    (egui::Key::ArrowRight, (12.0, 0.0)),
+                    (egui::Key::ArrowUp, (0.0, -12.0)),
+                    (egui::Key::ArrowDown, (0.0, 12.0)),
+                ];
+                for (key, (dx, dy)) in turn {
+                    if i.key_pressed(key) {
+                        self.demo.camera.orbit(dx, dy);
+                    }
+                }
+                if i.key_pressed(egui::Key::Plus) || i.key_pressed(egui::Key::Equals) {
+                    self.demo.zoom(-1.0);
+                }
+                if i.key_pressed(egui::Key::Minus) {
+                    self.demo.zoom(1.0);
+                }
+            });
+        }
+    }
+
+    /// After the requested number of frames: a screenshot (if asked), then close.
+    fn finish_when_due(&mut self, ctx: &egui::Context) {
+        let Some(limit) = self.options.frames else { return };
+        if self.frames < limit {
+            return;
+        }
+        match (&self.options.screenshot, &self.screenshot) {
+            (Some(path), None) => {
+                let slot = Arc::new(Mutex::new(None));
+                self.screenshot = Some(slot.clone());
+                let path = path.clone();
+                ctx.request_screenshot(move |image| {
+                    let rgba: Vec<u8> = image.pixels.iter().flat_map(|c| c.to_array()).collect();
+                    let saved = wavepool::headless::write_png(&path, image.size[0] as u32, image.size[1] as u32, &rgba);
+                    if let Ok(mut s) = slot.lock() {
+                        *s = Some(saved);
+                    }
+                });
+            }
+            (Some(_), Some(slot)) => {
+                let done = slot.lock().ok().and_then(|s| s.clone());
+                if let Some(saved) = done {
+                    if let Ok(mut o) = self.outcome.lock() {
+                        *o = Some(saved);
+                    }
+                    ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                }
+            }
+            (None, _) => ctx.send_viewport_cmd(egui::ViewportCommand::Close),
+        }
+    }
+}
+
+impl eframe::App for Viewer {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let now = Instant::now();
+        let dt = self.last_frame.map_or(1.0 / 60.0, |t| (now - t).as_secs_f32());
+        if let Some(t) = self.last_frame {
+            self.interval_ms = 0.9 * self.interval_ms + 0.1 * (now - t).as_secs_f32() * 1000.0;
+        }
+        self.last_frame = Some(now);
+
+        egui::Panel::left("parameters").resizable(true).default_size(300.0).show(ui, |ui| self.panel(ui));
+        egui::CentralPanel::default().frame(egui::Frame::NONE).show(ui, |ui| {
+            let pixels_per_point = ui.ctx().pixels_per_point();
+            let points = ui.available_size();
+            let size = (
+                (points.x * pixels_per_point).round().max(1.0) as u32,
+                (points.y * pixels_per_point).round().max(1.0) as u32,
+            );
+            let started = Instant::now();
+            let target = self.target(size);
+            let (view, id) = (target.view.clone(), target.id);
+            let (device, queue) = (&self.render_state.device, &self.render_state.queue);
+            self.demo.frame(device, queue, &view, size, dt.min(0.25));
+            self.cpu_ms = 0.9 * self.cpu_ms + 0.1 * started.elapsed().as_secs_f32() * 1000.0;
+            let image = egui::Image::new((id, points)).sense(egui::Sense::click_and_drag());
+            let response = ui.add(image);
+            self.input(ui, &response, pixels_per_point);
+        });
+        self.frames += 1;
+        self.finish_when_due(ui.ctx());
+        ui.ctx().request_repaint();
+    }
+}
