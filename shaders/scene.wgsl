@@ -11,7 +11,8 @@ struct Scene {
     pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
     water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
-    output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format)
+    output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format);
+                               // y debug view (0 none, see debug_view.wgsl)
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;

@@ -362,8 +362,12 @@ fn usage() -> String {
         .iter()
         .map(|p| match p.control {
             params::Control::Toggle => format!("  {:<14} 0 or 1, default {}  {}", p.name, p.default, p.label),
-            params::Control::Choice { values } => {
-                let list: Vec<String> = values.iter().map(|v| v.to_string()).collect();
+            params::Control::Choice { values, names } => {
+                let list: Vec<String> = values
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| names.get(i).map_or(v.to_string(), |n| format!("{v}={n}")))
+                    .collect();
                 format!("  {:<14} {} {}, default {}  {}", p.name, list.join("|"), p.unit, p.default, p.label)
             }
             params::Control::Slider { min, max, .. } => {

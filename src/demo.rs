@@ -7,7 +7,7 @@ use glam::{Vec2, Vec3};
 use crate::camera::{OrbitCamera, Pick};
 use crate::params::{ParamId, Params};
 use crate::physics::SphereBody;
-use crate::render::{RenderSettings, Renderer, View};
+use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
 use crate::sim::{Drop, FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
 
@@ -367,6 +367,8 @@ impl WaterDemo {
             sun: self.sun(),
             sphere: self.sphere(),
             caustics: self.params.flag(ParamId::Caustics),
+            debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
+                .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
         }
     }
 

@@ -19,6 +19,7 @@ pub mod wgsl {
     pub const SIM_DROP: &str = include_str!("../shaders/sim_drop.wgsl");
     pub const SIM_UPDATE: &str = include_str!("../shaders/sim_update.wgsl");
     pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
+    pub const DEBUG_VIEW: &str = include_str!("../shaders/debug_view.wgsl");
     pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
 }

@@ -21,6 +21,8 @@ pub enum ParamId {
     Gravity,
     SimSize,
     Paused,
+    DebugView,
+    DebugInset,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -31,9 +33,11 @@ pub enum Control {
         step: f32,
     },
     Toggle,
-    /// One of a few values, in increasing order.
+    /// One of a few values, in increasing order; `names` (empty, or one per value) are what
+    /// controls show instead of the numbers.
     Choice {
         values: &'static [f32],
+        names: &'static [&'static str],
     },
 }
 
@@ -56,7 +60,7 @@ impl ParamSpec {
         match self.control {
             Control::Slider { min, .. } => min,
             Control::Toggle => 0.0,
-            Control::Choice { values } => values[0],
+            Control::Choice { values, .. } => values[0],
         }
     }
 
@@ -64,7 +68,7 @@ impl ParamSpec {
         match self.control {
             Control::Slider { max, .. } => max,
             Control::Toggle => 1.0,
-            Control::Choice { values } => values[values.len() - 1],
+            Control::Choice { values, .. } => values[values.len() - 1],
         }
     }
 
@@ -83,7 +87,7 @@ impl ParamSpec {
                     0.0
                 }
             }
-            Control::Choice { values } => {
+            Control::Choice { values, .. } => {
                 values.iter().copied().min_by(|a, b| (a - value).abs().total_cmp(&(b - value).abs())).unwrap_or(value)
             }
         }
@@ -221,7 +225,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Grid resolution",
         group: "Simulation",
         unit: "cells",
-        control: Control::Choice { values: &[128.0, 256.0, 512.0, 1024.0] },
+        control: Control::Choice { values: &[128.0, 256.0, 512.0, 1024.0], names: &[] },
         default: 256.0,
         help: "Cells per side of the simulation grid; a change resamples the water, it does not reset it.",
     },
@@ -235,7 +239,46 @@ pub const PARAMS: &[ParamSpec] = &[
         default: 0.0,
         help: "Freeze the water (space bar).",
     },
+    ParamSpec {
+        id: ParamId::DebugView,
+        name: "debug_view",
+        label: "Debug view",
+        group: "Debug",
+        unit: "",
+        control: Control::Choice {
+            values: &[0.0, 1.0, 2.0, 3.0, 4.0],
+            names: &["off", "height", "normals", "velocity", "caustics"],
+        },
+        default: 0.0,
+        help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map.",
+    },
+    ParamSpec {
+        id: ParamId::DebugInset,
+        name: "debug_inset",
+        label: "Debug view as inset",
+        group: "Debug",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "Show the debug view in a corner of the scene (on) or over all of it (off).",
+    },
 ];
+
+/// The label a choice parameter shows for `value` (its name, or the number with its unit).
+pub fn choice_label(spec: &ParamSpec, value: f32) -> String {
+    if let Control::Choice { values, names } = spec.control {
+        if let Some(i) = values.iter().position(|&v| v == value) {
+            if let Some(name) = names.get(i) {
+                return (*name).to_owned();
+            }
+        }
+    }
+    if spec.unit.is_empty() {
+        format!("{value}")
+    } else {
+        format!("{value} {}", spec.unit)
+    }
+}
 
 pub fn spec(id: ParamId) -> &'static ParamSpec {
     &PARAMS[id as usize]

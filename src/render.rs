@@ -31,6 +31,52 @@ pub struct View {
     pub sun: Vec3,
     pub sphere: Option<Sphere>,
     pub caustics: bool,
+    /// A view of the simulation's textures drawn over the scene, if any.
+    pub debug: Option<DebugView>,
+}
+
+/// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DebugView {
+    pub texture: DebugTexture,
+    /// In the lower right corner (a square of 40% of the shorter side) instead of the whole target.
+    pub inset: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DebugTexture {
+    Height = 1,
+    Normals = 2,
+    Velocity = 3,
+    Caustics = 4,
+}
+
+impl DebugTexture {
+    /// From the `debug_view` parameter's value (0 = none).
+    pub fn from_param(value: f32) -> Option<Self> {
+        match value.round() as i32 {
+            1 => Some(Self::Height),
+            2 => Some(Self::Normals),
+            3 => Some(Self::Velocity),
+            4 => Some(Self::Caustics),
+            _ => None,
+        }
+    }
+}
+
+impl DebugView {
+    /// Viewport (x, y, width, height in pixels) of the view in a target of `size` pixels.
+    pub fn viewport(&self, size: (u32, u32)) -> [f32; 4] {
+        let (w, h) = (size.0 as f32, size.1 as f32);
+        if !self.inset {
+            // The largest centred square: the pool's square stays square.
+            let side = w.min(h);
+            return [(w - side) / 2.0, (h - side) / 2.0, side, side];
+        }
+        let side = (0.4 * w.min(h)).floor();
+        let margin = (0.02 * w.min(h)).floor();
+        [w - side - margin, h - side - margin, side, side]
+    }
 }
 
 #[repr(C)]
@@ -332,6 +378,7 @@ pub struct Renderer {
     sphere: wgpu::RenderPipeline,
     /// The water surface, both sides in one draw.
     surface: wgpu::RenderPipeline,
+    debug: FullscreenPass,
     grid: Mesh,
     pool_mesh: Mesh,
     sphere_mesh: Mesh,
@@ -442,6 +489,14 @@ impl Renderer {
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
+        let debug = FullscreenPass::new(
+            device,
+            "debug view",
+            &[gpu::wgsl::SCENE, gpu::wgsl::DEBUG_VIEW],
+            "fs_debug",
+            &layouts,
+            FullscreenTarget { format, blend: None, depth: None },
+        );
         let pool_module = gpu::shader(device, "pool", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::POOL]);
         let sphere_module = gpu::shader(device, "sphere", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::SPHERE]);
         let water_module =
@@ -501,6 +556,7 @@ impl Renderer {
             pool,
             sphere,
             surface,
+            debug,
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
@@ -561,7 +617,12 @@ impl Renderer {
             sphere,
             pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, scene::IOR_WATER],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
-            output: [if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 }, 0.0, 0.0, 0.0],
+            output: [
+                if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 },
+                view.debug.map_or(0.0, |d| d.texture as u32 as f32),
+                0.0,
+                0.0,
+            ],
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         self.sky_cube.update(queue, encoder, view.sun);
@@ -652,5 +713,24 @@ impl Renderer {
         pass.set_pipeline(&self.pool);
         self.pool_mesh.draw(&mut pass);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+        drop(pass);
+        if let Some(debug) = view.debug {
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("debug view"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: target,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+                })],
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            let [x, y, w, h] = debug.viewport(size);
+            pass.set_viewport(x, y, w, h, 0.0, 1.0);
+            self.debug.draw(&mut pass, &[water_group, &self.textures_group]);
+        }
     }
 }

@@ -11,7 +11,7 @@ use std::time::Instant;
 use eframe::egui;
 
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
-use wavepool::params::{Control, ParamSpec, PARAMS};
+use wavepool::params::{choice_label, Control, ParamSpec, PARAMS};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
 const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -192,13 +192,13 @@ impl Viewer {
                     value = if on { 1.0 } else { 0.0 };
                     r.changed()
                 }
-                Control::Choice { values } => {
+                Control::Choice { values, .. } => {
                     let before = value;
                     egui::ComboBox::from_label(spec.label)
-                        .selected_text(format!("{value} {}", spec.unit))
+                        .selected_text(choice_label(spec, value))
                         .show_ui(ui, |ui| {
                             for &v in values {
-                                ui.selectable_value(&mut value, v, format!("{v} {}", spec.unit));
+                                ui.selectable_value(&mut value, v, choice_label(spec, v));
                             }
                         })
                         .response

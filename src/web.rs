@@ -58,7 +58,8 @@ fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
 
 /// The parameter table (the core's one source of truth) as an array of plain objects:
 /// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
-/// choices, default, help }` (`choices`: the allowed values of a choice, else empty).
+/// choices, choiceNames, default, help }` (`choices`: the allowed values of a choice, else
+/// empty; `choiceNames`: what to show for them, or empty to show the numbers).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
     PARAMS
@@ -69,12 +70,13 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "label", p.label);
             set(&o, "group", p.group);
             set(&o, "unit", p.unit);
-            let (kind, step, choices) = match p.control {
-                Control::Slider { step, .. } => ("slider", step, &[][..]),
-                Control::Toggle => ("toggle", 1.0, &[][..]),
-                Control::Choice { values } => ("choice", 0.0, values),
+            let (kind, step, choices, names) = match p.control {
+                Control::Slider { step, .. } => ("slider", step, &[][..], &[][..]),
+                Control::Toggle => ("toggle", 1.0, &[][..], &[][..]),
+                Control::Choice { values, names } => ("choice", 0.0, values, names),
             };
             set(&o, "choices", choices.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
+            set(&o, "choiceNames", names.iter().map(|&n| JsValue::from_str(n)).collect::<js_sys::Array>());
             set(&o, "kind", kind);
             set(&o, "min", to_js_number(p.min()));
             set(&o, "max", to_js_number(p.max()));

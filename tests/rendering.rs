@@ -176,3 +176,42 @@ fn the_no_float_path_renders_the_same_frame() {
     assert!(changed < 0.01, "{:.2}% of pixels differ by more than 16/255", changed * 100.0);
     assert!(diff < 0.1 * ripple_diff, "the no-float path is not much closer than a calm pool");
 }
+
+/// The debug views show the simulation's textures where they belong: after one central drop,
+/// the height, velocity and normals views (full screen: the pool's square centred in the
+/// frame) have their strongest colour on a ring at the distance the wave has travelled, and
+/// the caustics view shows the ring's focused light.
+#[test]
+fn debug_views_show_the_ring_where_it_is() {
+    const C: f32 = 0.6;
+    let frames = 30; // 0.5 s
+    let travelled = C * frames as f32 / 60.0; // m from the centre
+    for (view, name) in [(1.0, "height"), (2.0, "normals"), (3.0, "velocity"), (4.0, "caustics")] {
+        let mut demo = common::demo(DemoOptions::default());
+        demo.params.set(ParamId::Sphere, 0.0);
+        demo.params.set(ParamId::WaveSpeed, C);
+        demo.params.set(ParamId::DebugView, view);
+        demo.params.set(ParamId::DebugInset, 0.0);
+        demo.add_drop(0.0, 0.0, 0.06, 0.015);
+        let frame = render(&mut demo, W, H, frames, 1.0 / 60.0);
+        // The view is the largest centred square: H pixels for 2 m of pool.
+        let side = H.min(W) as f32;
+        let (cx, cy) = (W as f32 / 2.0, H as f32 / 2.0);
+        // How far each pixel of the centre row is from the view's rest colour, sampled where
+        // the pool is calm (a corner of the square).
+        let corner = frame.pixel((cx - side * 0.45) as u32, (cy - side * 0.45) as u32);
+        let strength = |x: u32| {
+            let p = frame.pixel(x, cy as u32);
+            (0..3).map(|k| (p[k] - corner[k]).abs()).sum::<f32>()
+        };
+        let xs = (cx - side * 0.48) as u32..(cx + side * 0.48) as u32;
+        let (peak_x, peak) = xs.map(|x| (x, strength(x))).fold((0, 0.0f32), |a, b| if b.1 > a.1 { b } else { a });
+        let radius_m = (peak_x as f32 - cx).abs() / side * 2.0;
+        println!("{name}: strongest at {radius_m:.3} m from the centre (wave travelled {travelled:.2} m), strength {peak:.3}, corner {corner:?}");
+        assert!(peak > 0.08, "{name}: the view shows no ring (strongest difference {peak})");
+        assert!(
+            (radius_m - travelled).abs() < 0.12,
+            "{name}: strongest colour at {radius_m:.3} m, the ring should be near {travelled:.2} m"
+        );
+    }
+}

@@ -104,7 +104,11 @@ function toNumber(value) {
 
 function formatValue(p, v) {
   if (p.kind === "toggle") return v >= 0.5 ? "on" : "off";
-  if (p.kind === "choice") return `${v}${p.unit ? ` ${p.unit}` : ""}`;
+  if (p.kind === "choice") {
+    const i = p.choices.indexOf(v);
+    if (i >= 0 && p.choiceNames[i]) return p.choiceNames[i];
+    return `${v}${p.unit ? ` ${p.unit}` : ""}`;
+  }
   const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
   return `${v.toFixed(decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${p.unit}`) : ""}`;
 }
