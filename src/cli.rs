@@ -10,6 +10,7 @@ use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORM
 use wavepool::params::{self, ParamId};
 use wavepool::scene::HALF_WIDTH;
 use wavepool::sim::random_drops;
+use wavepool::timing::StageTimer;
 
 const USAGE: &str = "\
 wavepool: interactive water, a desktop viewer and headless tools
@@ -198,67 +199,11 @@ fn percentile(sorted: &[f64], p: f64) -> f64 {
     sorted[i]
 }
 
-/// Per-stage GPU timestamps: one query per [`Stage`] boundary, read back after each frame.
-struct StageTimer {
-    queries: wgpu::QuerySet,
-    resolve: wgpu::Buffer,
-    readback: wgpu::Buffer,
-    period_ns: f32,
-}
-
-impl StageTimer {
-    fn new(gpu: &HeadlessGpu) -> Option<Self> {
-        let needed = wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS;
-        if !gpu.device.features().contains(needed) {
-            return None;
-        }
-        let queries = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
-            label: Some("stage timestamps"),
-            ty: wgpu::QueryType::Timestamp,
-            count: 4,
-        });
-        let buffer = |usage| {
-            gpu.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("timestamps"),
-                size: 32,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
-        Some(Self {
-            queries,
-            resolve: buffer(wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC),
-            readback: buffer(wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ),
-            period_ns: gpu.queue.get_timestamp_period(),
-        })
-    }
-
-    fn index(stage: Stage) -> u32 {
-        match stage {
-            Stage::Start => 0,
-            Stage::AfterSimulation => 1,
-            Stage::AfterCaustics => 2,
-            Stage::AfterScene => 3,
-        }
-    }
-
-    /// Milliseconds of (simulation, caustics, scene) of the frame just submitted.
-    fn read(&self, gpu: &HeadlessGpu) -> [f64; 3] {
-        let slice = self.readback.slice(..);
-        slice.map_async(wgpu::MapMode::Read, |r| r.expect("map timestamps"));
-        gpu.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
-        let ticks: Vec<u64> = bytemuck::cast_slice(&slice.get_mapped_range().expect("timestamps")).to_vec();
-        self.readback.unmap();
-        let ms = |a: usize, b: usize| ticks[b].saturating_sub(ticks[a]) as f64 * self.period_ns as f64 / 1.0e6;
-        [ms(0, 1), ms(1, 2), ms(2, 3)]
-    }
-}
-
 fn bench(o: &Options) -> Result<(), String> {
     let gpu = HeadlessGpu::new()?;
     let mut demo = make_demo(&gpu, o);
     let target = OffscreenTarget::new(&gpu.device, o.width, o.height);
-    let timer = StageTimer::new(&gpu);
+    let mut timer = StageTimer::new(&gpu.device, &gpu.queue);
     let wait = || gpu.device.poll(wgpu::PollType::wait_indefinitely()).map(|_| ()).map_err(|e| e.to_string());
     // Warm-up: pipelines compiled, caches filled, sky painted.
     for _ in 0..5 {
@@ -273,7 +218,7 @@ fn bench(o: &Options) -> Result<(), String> {
             demo.add_drop(((i / 30) as f32 * 0.37).sin() * 0.6, ((i / 30) as f32 * 0.61).cos() * 0.6, 0.04, 0.012);
         }
         let start = Instant::now();
-        match &timer {
+        match &mut timer {
             Some(t) => {
                 let mut encoder = gpu.device.create_command_encoder(&Default::default());
                 demo.encode_frame(
@@ -283,16 +228,16 @@ fn bench(o: &Options) -> Result<(), String> {
                     &target.view,
                     target.size(),
                     1.0 / 60.0,
-                    &mut |enc, stage| {
-                        enc.write_timestamp(&t.queries, StageTimer::index(stage));
-                    },
+                    &mut |enc, stage| t.mark(enc, stage),
                 );
-                encoder.resolve_query_set(&t.queries, 0..4, &t.resolve, 0);
-                encoder.copy_buffer_to_buffer(&t.resolve, 0, &t.readback, 0, 32);
+                t.finish(&mut encoder);
                 gpu.queue.submit([encoder.finish()]);
+                t.after_submit();
                 wait()?;
                 frame_ms.push(start.elapsed().as_secs_f64() * 1e3);
-                stage_ms.push(t.read(&gpu));
+                // The frame waited for the GPU, so its timestamps are ready now.
+                t.collect();
+                stage_ms.extend(t.latest());
             }
             None => {
                 // No timestamps: submit each stage separately and time submit + wait on the CPU.

@@ -284,6 +284,68 @@ impl PingPong {
     }
 }
 
+/// A small buffer read back from the GPU without ever waiting: the caller records a copy
+/// into it when [`AsyncReadback::is_idle`], calls [`AsyncReadback::after_submit`] once that
+/// frame is submitted, and later frames [`AsyncReadback::take`] the bytes once mapping has
+/// completed (one to a few frames later). At most one read is in flight.
+pub struct AsyncReadback {
+    buffer: wgpu::Buffer,
+    /// 0 idle, 1 copy recorded, 2 mapping, 3 mapped and ready to read.
+    state: std::sync::Arc<std::sync::atomic::AtomicU8>,
+}
+
+impl AsyncReadback {
+    const IDLE: u8 = 0;
+    const RECORDED: u8 = 1;
+    const MAPPING: u8 = 2;
+    const READY: u8 = 3;
+
+    pub fn new(device: &wgpu::Device, label: &str, size: u64) -> Self {
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(label),
+            size,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        Self { buffer, state: Default::default() }
+    }
+
+    fn state(&self) -> u8 {
+        self.state.load(std::sync::atomic::Ordering::Acquire)
+    }
+
+    /// The buffer to copy into, when no read is in flight; marks the copy as recorded.
+    pub fn record(&self) -> Option<&wgpu::Buffer> {
+        (self.state() == Self::IDLE).then(|| {
+            self.state.store(Self::RECORDED, std::sync::atomic::Ordering::Release);
+            &self.buffer
+        })
+    }
+
+    /// Starts mapping a copy recorded into a frame that has now been submitted.
+    pub fn after_submit(&self) {
+        if self.state() == Self::RECORDED {
+            self.state.store(Self::MAPPING, std::sync::atomic::Ordering::Release);
+            let state = self.state.clone();
+            self.buffer.slice(..).map_async(wgpu::MapMode::Read, move |r| {
+                let next = if r.is_ok() { Self::READY } else { Self::IDLE };
+                state.store(next, std::sync::atomic::Ordering::Release);
+            });
+        }
+    }
+
+    /// The bytes of a completed read (then idle again), or `None` while none has completed.
+    pub fn take(&self) -> Option<Vec<u8>> {
+        if self.state() != Self::READY {
+            return None;
+        }
+        let bytes = self.buffer.slice(..).get_mapped_range().ok().map(|data| data.to_vec());
+        self.buffer.unmap();
+        self.state.store(Self::IDLE, std::sync::atomic::Ordering::Release);
+        bytes
+    }
+}
+
 /// Copies a whole 2-D texture (mip 0, layer 0) back to the CPU, rows unpadded.
 /// Blocking: for tests, the CLI and benchmarks, never for the frame path.
 #[cfg(not(target_arch = "wasm32"))]

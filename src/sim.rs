@@ -321,73 +321,39 @@ pub struct WaterLevel {
     pub max_abs: f32,
 }
 
-/// Reads the one-texel [`MeanLevel`] result back without ever waiting: a copy is recorded
-/// into a frame, mapped after that frame is submitted, and read when the map has completed
-/// (one to a few frames later). At most one copy is in flight.
+/// Reads the one-texel [`MeanLevel`] result back without ever waiting (see
+/// [`gpu::AsyncReadback`]): the statistics are one to a few frames old.
 struct LevelProbe {
-    buffer: wgpu::Buffer,
-    /// 0 idle, 1 copy recorded, 2 mapping, 3 mapped and ready to read.
-    state: std::sync::Arc<std::sync::atomic::AtomicU8>,
+    readback: gpu::AsyncReadback,
     latest: Option<WaterLevel>,
 }
 
 impl LevelProbe {
-    const IDLE: u8 = 0;
-    const RECORDED: u8 = 1;
-    const MAPPING: u8 = 2;
-    const READY: u8 = 3;
-
     fn new(device: &wgpu::Device) -> Self {
-        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("water level readback"),
-            size: 16,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        Self { buffer, state: Default::default(), latest: None }
-    }
-
-    fn state(&self) -> u8 {
-        self.state.load(std::sync::atomic::Ordering::Acquire)
-    }
-
-    fn set_state(&self, value: u8) {
-        self.state.store(value, std::sync::atomic::Ordering::Release);
+        Self { readback: gpu::AsyncReadback::new(device, "water level readback", 16), latest: None }
     }
 
     /// Takes a finished read and, when idle, records a new copy of `result`.
     fn encode(&mut self, encoder: &mut wgpu::CommandEncoder, result: &wgpu::Texture) {
-        if self.state() == Self::READY {
-            if let Ok(data) = self.buffer.slice(..).get_mapped_range() {
-                let v: [f32; 4] = bytemuck::pod_read_unaligned(&data[..16]);
-                self.latest = Some(WaterLevel { mean: v[0], max_abs: v[1] });
-            }
-            self.buffer.unmap();
-            self.set_state(Self::IDLE);
+        if let Some(bytes) = self.readback.take() {
+            let v: [f32; 4] = bytemuck::pod_read_unaligned(&bytes[..16]);
+            self.latest = Some(WaterLevel { mean: v[0], max_abs: v[1] });
         }
-        if self.state() == Self::IDLE {
+        if let Some(buffer) = self.readback.record() {
             encoder.copy_texture_to_buffer(
                 result.as_image_copy(),
                 wgpu::TexelCopyBufferInfo {
-                    buffer: &self.buffer,
+                    buffer,
                     layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: None, rows_per_image: None },
                 },
                 wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
             );
-            self.set_state(Self::RECORDED);
         }
     }
 
     /// Starts mapping a copy recorded into a frame that has now been submitted.
     fn after_submit(&self) {
-        if self.state() == Self::RECORDED {
-            self.set_state(Self::MAPPING);
-            let state = self.state.clone();
-            self.buffer.slice(..).map_async(wgpu::MapMode::Read, move |r| {
-                let next = if r.is_ok() { Self::READY } else { Self::IDLE };
-                state.store(next, std::sync::atomic::Ordering::Release);
-            });
-        }
+        self.readback.after_submit();
     }
 }
 

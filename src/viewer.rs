@@ -12,6 +12,7 @@ use eframe::egui;
 
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::params::{choice_label, Control, ParamSpec, PARAMS};
+use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
 const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -31,9 +32,21 @@ pub struct ViewerOptions {
 
 /// Opens the window and runs until it is closed (or the frame count is reached).
 pub fn run(options: ViewerOptions) -> Result<(), String> {
+    // egui's usual device, plus timestamp queries where the adapter has them (GPU time per stage).
+    let mut setup = egui_wgpu::WgpuSetupCreateNew::without_display_handle();
+    let base = setup.device_descriptor.clone();
+    setup.device_descriptor = Arc::new(move |adapter| {
+        let mut descriptor = base(adapter);
+        descriptor.required_features |= adapter.features() & TIMESTAMP_FEATURES;
+        descriptor
+    });
     let native = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default().with_title("wavepool").with_inner_size([1100.0, 680.0]),
         renderer: eframe::Renderer::Wgpu,
+        wgpu_options: egui_wgpu::WgpuConfiguration {
+            wgpu_setup: egui_wgpu::WgpuSetup::CreateNew(setup),
+            ..Default::default()
+        },
         ..Default::default()
     };
     let outcome = Arc::new(Mutex::new(None::<Result<(), String>>));
@@ -61,6 +74,8 @@ struct SceneTarget {
 struct Viewer {
     demo: WaterDemo,
     render_state: egui_wgpu::RenderState,
+    /// GPU time per stage, where the device has timestamp queries.
+    timer: Option<StageTimer>,
     target: Option<SceneTarget>,
     options: ViewerOptions,
     frames: u32,
@@ -91,6 +106,7 @@ impl Viewer {
         Self {
             demo,
             render_state: state.clone(),
+            timer: StageTimer::new(&state.device, &state.queue),
             target: None,
             options,
             frames: 0,
@@ -164,6 +180,13 @@ impl Viewer {
             });
             ui.separator();
             ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
+            match self.timer.as_ref().and_then(|t| t.latest()) {
+                Some([sim, caustics, scene]) => ui.label(format!(
+                    "GPU: simulation {sim:.1} ms, caustics {caustics:.1} ms, scene {scene:.1} ms"
+                )),
+                None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
+                None => ui.label("GPU time: waiting for the first timestamps"),
+            };
             ui.label(format!(
                 "water: {}² cells, {:.1} s simulated",
                 self.demo.water().size(),
@@ -180,11 +203,13 @@ impl Viewer {
             let changed = match spec.control {
                 Control::Slider { min, max, step } => {
                     let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
-                    ui.add(
-                        egui::Slider::new(&mut value, min..=max).step_by(step as f64).suffix(suffix).text(spec.label),
-                    )
-                    .on_hover_text(spec.help)
-                    .changed()
+                    // In f64 from the table's decimal values, so that egui's snapping to the
+                    // step lands on them exactly (f32 -> f64 casts would drift by an ulp).
+                    let mut wide = decimal(value);
+                    let slider = egui::Slider::new(&mut wide, decimal(min)..=decimal(max)).step_by(decimal(step));
+                    let response = ui.add(slider.suffix(suffix).text(spec.label)).on_hover_text(spec.help);
+                    value = wide as f32;
+                    response.changed()
                 }
                 Control::Toggle => {
                     let mut on = value >= 0.5;
@@ -315,6 +340,12 @@ impl Viewer {
     }
 }
 
+/// An `f32` as the `f64` with the same shortest decimal form (0.001f32 -> 0.001), so that
+/// egui's rounding to the step gives back the table's values exactly.
+fn decimal(v: f32) -> f64 {
+    v.to_string().parse().unwrap_or(v as f64)
+}
+
 impl eframe::App for Viewer {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let now = Instant::now();
@@ -336,7 +367,20 @@ impl eframe::App for Viewer {
             let target = self.target(size);
             let (view, id) = (target.view.clone(), target.id);
             let (device, queue) = (&self.render_state.device, &self.render_state.queue);
-            self.demo.frame(device, queue, &view, size, dt.min(0.25));
+            let mut encoder = device.create_command_encoder(&Default::default());
+            let dt = dt.min(0.25);
+            match &mut self.timer {
+                Some(timer) => {
+                    self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |e, s| timer.mark(e, s));
+                    timer.finish(&mut encoder);
+                }
+                None => self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |_, _| {}),
+            }
+            queue.submit([encoder.finish()]);
+            self.demo.after_submit();
+            if let Some(timer) = &self.timer {
+                timer.after_submit();
+            }
             self.cpu_ms = 0.9 * self.cpu_ms + 0.1 * started.elapsed().as_secs_f32() * 1000.0;
             let image = egui::Image::new((id, points)).sense(egui::Sense::click_and_drag());
             let response = ui.add(image);

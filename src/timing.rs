@@ -1,0 +1,85 @@
+//! GPU time per stage of a frame (simulation, caustics, scene) from timestamp queries, read
+//! back without waiting (one to a few frames late), for the viewer's readout and the bench.
+
+use crate::demo::Stage;
+use crate::gpu::AsyncReadback;
+
+/// The device features stage timing needs; request them where the adapter has them.
+pub const TIMESTAMP_FEATURES: wgpu::Features =
+    wgpu::Features::TIMESTAMP_QUERY.union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS);
+
+/// Timestamps at the [`Stage`] boundaries of a frame.
+pub struct StageTimer {
+    queries: wgpu::QuerySet,
+    resolve: wgpu::Buffer,
+    readback: AsyncReadback,
+    period_ns: f32,
+    latest: Option<[f64; 3]>,
+}
+
+impl StageTimer {
+    /// `None` when the device was made without [`TIMESTAMP_FEATURES`].
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Option<Self> {
+        if !device.features().contains(TIMESTAMP_FEATURES) {
+            return None;
+        }
+        let queries = device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: Some("stage timestamps"),
+            ty: wgpu::QueryType::Timestamp,
+            count: 4,
+        });
+        let resolve = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("stage timestamps"),
+            size: 32,
+            usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        Some(Self {
+            queries,
+            resolve,
+            readback: AsyncReadback::new(device, "stage timestamps readback", 32),
+            period_ns: queue.get_timestamp_period(),
+            latest: None,
+        })
+    }
+
+    /// Writes the timestamp of `stage` (pass as the `mark` of `WaterDemo::encode_frame`).
+    pub fn mark(&self, encoder: &mut wgpu::CommandEncoder, stage: Stage) {
+        let index = match stage {
+            Stage::Start => 0,
+            Stage::AfterSimulation => 1,
+            Stage::AfterCaustics => 2,
+            Stage::AfterScene => 3,
+        };
+        encoder.write_timestamp(&self.queries, index);
+    }
+
+    /// After the frame's stages: takes a finished read, and copies this frame's timestamps
+    /// out when no read is in flight.
+    pub fn finish(&mut self, encoder: &mut wgpu::CommandEncoder) {
+        self.collect();
+        if let Some(buffer) = self.readback.record() {
+            encoder.resolve_query_set(&self.queries, 0..4, &self.resolve, 0);
+            encoder.copy_buffer_to_buffer(&self.resolve, 0, buffer, 0, 32);
+        }
+    }
+
+    /// Takes a completed read into [`StageTimer::latest`], if there is one.
+    pub fn collect(&mut self) {
+        if let Some(bytes) = self.readback.take() {
+            let ticks: [u64; 4] = bytemuck::pod_read_unaligned(&bytes[..32]);
+            let ms = |a: usize, b: usize| ticks[b].saturating_sub(ticks[a]) as f64 * self.period_ns as f64 / 1.0e6;
+            self.latest = Some([ms(0, 1), ms(1, 2), ms(2, 3)]);
+        }
+    }
+
+    /// Call once the frame recorded with [`StageTimer::finish`] is submitted.
+    pub fn after_submit(&self) {
+        self.readback.after_submit();
+    }
+
+    /// Milliseconds of (simulation, caustics, scene) of a recent frame.
+    pub fn latest(&self) -> Option<[f64; 3]> {
+        self.latest
+    }
+}
