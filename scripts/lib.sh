@@ -25,7 +25,15 @@ ensure_cargo() {
     if ! command -v cargo >/dev/null 2>&1 && [ -x "$HOME/.cargo/bin/cargo" ]; then
         export PATH="$HOME/.cargo/bin:$PATH"
     fi
-    command -v cargo >/dev/null 2>&1 || { echo "error: cargo not found; install Rust with rustup first" >&2; exit 1; }
+    if ! command -v cargo >/dev/null 2>&1; then
+        # No Rust at all: rustup's installer, with the toolchain the crate needs (rust-version).
+        echo "==> installing Rust with rustup"
+        command -v curl >/dev/null 2>&1 || ensure_apt_packages curl ca-certificates
+        curl --proto '=https' --tlsv1.2 -sSf https://sh.rustup.rs | sh -s -- -y --profile minimal \
+            --default-toolchain "$(sed -n 's/^rust-version = "\(.*\)"/\1/p' Cargo.toml)" --component rustfmt \
+            || { echo "error: could not install Rust (https://rustup.rs); install it and run this again" >&2; exit 1; }
+        export PATH="$HOME/.cargo/bin:$PATH"
+    fi
 }
 
 # Adds the wasm32 target to the Rust toolchain when it is missing.
