@@ -363,6 +363,28 @@ mod tests {
     use super::*;
 
     #[test]
+    fn choices_snap_to_the_nearest_value_and_show_their_names() {
+        let size = spec(ParamId::SimSize);
+        assert_eq!(size.sanitise(300.0), 256.0);
+        assert_eq!(size.sanitise(5000.0), 1024.0);
+        assert_eq!(size.sanitise(-3.0), 128.0);
+        assert_eq!(size.sanitise(f32::NAN), size.default);
+        assert_eq!(choice_label(size, 512.0), "512 cells");
+        let view = spec(ParamId::DebugView);
+        assert_eq!(view.sanitise(2.4), 2.0);
+        assert_eq!(choice_label(view, 0.0), "off");
+        assert_eq!(choice_label(view, 4.0), "caustics");
+        // Every choice parameter names all of its values or none.
+        for p in PARAMS {
+            if let Control::Choice { values, names } = p.control {
+                assert!(names.is_empty() || names.len() == values.len(), "{}: names do not match values", p.name);
+                assert!(values.windows(2).all(|w| w[0] < w[1]), "{}: values not increasing", p.name);
+                assert!(values.contains(&p.default), "{}: default is not a choice", p.name);
+            }
+        }
+    }
+
+    #[test]
     fn table_is_indexed_by_id_and_defaults_are_in_range() {
         for (i, p) in PARAMS.iter().enumerate() {
             assert_eq!(p.id as usize, i, "{} out of place", p.name);
