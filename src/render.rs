@@ -385,6 +385,25 @@ pub struct Renderer {
     depth: Option<DepthBuffer>,
 }
 
+/// The scene uniforms with each of the water's two state textures (group 0 of every scene pass).
+fn water_bind_groups(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    uniforms: &wgpu::Buffer,
+    water: &HeightField,
+) -> [wgpu::BindGroup; 2] {
+    water.state().bind_groups(|view| {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("scene + water"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
+            ],
+        })
+    })
+}
+
 impl Renderer {
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: RenderSettings, water: &HeightField) -> Self {
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
@@ -426,16 +445,7 @@ impl Renderer {
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
-        let water_groups = water.state().bind_groups(|view| {
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("scene + water"),
-                layout: &water_layout,
-                entries: &[
-                    wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
-                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
-                ],
-            })
-        });
+        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water);
         let caustics = CausticsPass::new(
             device,
             settings.caustics_size,
@@ -582,18 +592,7 @@ impl Renderer {
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
-        let layout = &self.water_layout;
-        let uniforms = &self.uniforms;
-        self.water_groups = water.state().bind_groups(|view| {
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("scene + water"),
-                layout,
-                entries: &[
-                    wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
-                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
-                ],
-            })
-        });
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water);
     }
 
     /// Writes this frame's uniforms and repaints the sky if the sun moved.

@@ -221,7 +221,12 @@ struct GpuSim {
 
 enum Engine {
     Gpu(Box<GpuSim>),
-    Cpu { water: Box<cpu::CpuHeightField>, level: Option<WaterLevel> },
+    /// `upload`: the interleaved state written to the texture, kept between frames.
+    Cpu {
+        water: Box<cpu::CpuHeightField>,
+        level: Option<WaterLevel>,
+        upload: Vec<[f32; 4]>,
+    },
 }
 
 /// The heightfield: the state textures the renderer reads, the engine that advances them,
@@ -443,7 +448,11 @@ impl HeightField {
         let state = PingPong::new(device, "water state", size, size, STATE_FORMAT, engine == SimEngine::Gpu);
         let engine = match engine {
             SimEngine::Gpu => Engine::Gpu(Box::new(GpuSim::new(device, &state, size))),
-            SimEngine::Cpu => Engine::Cpu { water: Box::new(cpu::CpuHeightField::new(size, half_width)), level: None },
+            SimEngine::Cpu => Engine::Cpu {
+                water: Box::new(cpu::CpuHeightField::new(size, half_width)),
+                level: None,
+                upload: Vec::new(),
+            },
         };
         Self { size, half_width, state, engine, pending: Vec::new() }
     }
@@ -496,12 +505,11 @@ impl HeightField {
     ) {
         let sim = match &mut self.engine {
             Engine::Gpu(sim) => sim,
-            Engine::Cpu { water, level } => {
-                let changed = water.advance(steps, dt, settings);
-                if changed {
-                    upload(queue, self.state.current_texture(), water);
+            Engine::Cpu { water, level, upload: cells } => {
+                if water.advance(steps, dt, settings) {
+                    upload(queue, self.state.current_texture(), water, cells);
+                    *level = Some(water.level());
                 }
-                *level = Some(water.level());
                 return;
             }
         };
@@ -536,9 +544,9 @@ impl HeightField {
         let mut new = HeightField::new_on(device, size, self.half_width, self.engine());
         new.pending = self.pending.clone();
         match (&self.engine, &mut new.engine) {
-            (Engine::Cpu { water: old, .. }, Engine::Cpu { water, level }) => {
+            (Engine::Cpu { water: old, .. }, Engine::Cpu { water, level, upload: cells }) => {
                 **water = old.resampled(size);
-                upload(queue, new.state.current_texture(), water);
+                upload(queue, new.state.current_texture(), water, cells);
                 *level = Some(water.level());
             }
             (Engine::Gpu(_), Engine::Gpu(sim)) => {
@@ -591,7 +599,7 @@ impl HeightField {
     /// Flattens the water and forgets queued drops.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.pending.clear();
-        if let Engine::Cpu { water, level } = &mut self.engine {
+        if let Engine::Cpu { water, level, .. } = &mut self.engine {
             **water = cpu::CpuHeightField::new(self.size, self.half_width);
             *level = None;
         }
@@ -624,11 +632,12 @@ impl HeightField {
 }
 
 /// Writes the CPU engine's state into the texture the renderer samples (16 B per cell).
-fn upload(queue: &wgpu::Queue, texture: &wgpu::Texture, water: &cpu::CpuHeightField) {
-    let cells = water.cells();
+/// `cells` is a buffer kept between frames.
+fn upload(queue: &wgpu::Queue, texture: &wgpu::Texture, water: &cpu::CpuHeightField, cells: &mut Vec<[f32; 4]>) {
+    water.write_cells(cells);
     queue.write_texture(
         texture.as_image_copy(),
-        bytemuck::cast_slice(&cells),
+        bytemuck::cast_slice(cells),
         wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(water.size() * 16), rows_per_image: None },
         texture.size(),
     );

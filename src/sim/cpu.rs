@@ -30,8 +30,10 @@ pub struct CpuHeightField {
     next_velocity: Vec<f32>,
     /// Per-cell factor exp(-sigma dt) of the absorbing walls, for the (rate, dt) it was made for.
     absorb: Option<(f32, f32, Vec<f32>)>,
-    /// Mean height found before the last normals update brought it back to rest (m).
+    /// Mean height found before the last normals update brought it back to rest (m), and the
+    /// largest |height| after it.
     last_mean: f32,
+    last_max_abs: f32,
     pending: Vec<Drop>,
 }
 
@@ -60,6 +62,7 @@ impl CpuHeightField {
             next_velocity: zeros,
             absorb: None,
             last_mean: 0.0,
+            last_max_abs: 0.0,
             pending: Vec::new(),
         }
     }
@@ -70,7 +73,17 @@ impl CpuHeightField {
 
     /// The state as the GPU texture holds it: (height, velocity, normal x, normal z) per cell.
     pub fn cells(&self) -> Vec<[f32; 4]> {
-        (0..self.height.len()).map(|k| [self.height[k], self.velocity[k], self.normal_x[k], self.normal_z[k]]).collect()
+        let mut cells = Vec::new();
+        self.write_cells(&mut cells);
+        cells
+    }
+
+    /// [`CpuHeightField::cells`] into a buffer the caller keeps (no allocation per frame).
+    pub fn write_cells(&self, out: &mut Vec<[f32; 4]>) {
+        out.clear();
+        out.extend(
+            (0..self.height.len()).map(|k| [self.height[k], self.velocity[k], self.normal_x[k], self.normal_z[k]]),
+        );
     }
 
     /// Queues a drop for the next [`CpuHeightField::advance`]; same rules as the GPU.
@@ -108,8 +121,7 @@ impl CpuHeightField {
     /// The water statistics the GPU engine reads back: the mean height before the last
     /// correction and the largest |height| (m).
     pub fn level(&self) -> super::WaterLevel {
-        let max_abs = self.height.iter().fold(0.0f32, |m, h| m.max(h.abs()));
-        super::WaterLevel { mean: self.last_mean, max_abs }
+        super::WaterLevel { mean: self.last_mean, max_abs: self.last_max_abs }
     }
 
     /// This water on an `size` x `size` grid, as `shaders/sim_resample.wgsl` does it: each
@@ -264,6 +276,8 @@ impl CpuHeightField {
         let two_dx = 2.0 * (2.0 * self.half_width / self.size as f32);
         let h = &self.height;
         let at = |i: usize, j: usize| h[j * n + i];
+        // Largest |height| before the correction, as the GPU's level reduction reports it.
+        let mut max_abs = 0.0f32;
         for j in 0..n {
             let (jd, ju) = (j.saturating_sub(1), (j + 1).min(n - 1));
             for i in 0..n {
@@ -274,8 +288,10 @@ impl CpuHeightField {
                 self.normal_x[j * n + i] = -slope_x / len;
                 self.normal_z[j * n + i] = -slope_z / len;
                 self.next_height[j * n + i] = at(i, j) - mean;
+                max_abs = max_abs.max(at(i, j).abs());
             }
         }
+        self.last_max_abs = max_abs;
         std::mem::swap(&mut self.height, &mut self.next_height);
     }
 
