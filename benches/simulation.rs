@@ -40,7 +40,9 @@ fn cpu_step_against_bandwidth() {
             water.add_drop(d);
         }
         let steps = if n <= 256 { 200 } else { 40 };
-        let per_batch = time_per_call(Duration::from_secs(3), || water.advance(steps, DT, settings));
+        let per_batch = time_per_call(Duration::from_secs(3), || {
+            water.advance(steps, DT, settings);
+        });
         let step_s = per_batch / steps as f64;
         // The bytes a step must move at least: read every cell's height and velocity once and
         // write them once (4 planes x 4 B per cell). Bound: copying the two planes' bytes (8 B

@@ -2,8 +2,8 @@
 // floor; where the waves focus light the triangle shrinks, and its brightness is the ratio
 // of its calm-surface area to its projected area (energy conservation), summed additively.
 // The map is indexed by where a calm surface would have let the light in (see light_entry),
-// so any underwater point can look its light up. Red: light; green: light with the sphere's
-// shadow. The rim's shadow is in both.
+// so any underwater point can look its light up. Red: light; green: light with the shadows
+// of the sphere and the duck. The rim's shadow is in both.
 
 struct CausticsOut {
     @builtin(position) clip: vec4<f32>,
@@ -26,8 +26,7 @@ fn vs_caustics(@location(0) grid: vec2<f32>) -> CausticsOut {
     out.calm_entry = xz;
     out.wavy_entry = entry;
     let rim_light = rim_visibility(p);
-    let sphere_light = sphere_visibility(p, ray, t_floor, scene.sphere.xyz, scene.sphere.w)
-        * sphere_visibility(p, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+    let sphere_light = objects_visibility(p, ray, t_floor) * objects_visibility(p, scene.sun.xyz, 10.0);
     out.visibility = vec2<f32>(rim_light, rim_light * sphere_light);
     return out;
 }

@@ -1,5 +1,5 @@
 // Scene bindings and the shading every scene pass shares: water sampling, pool tiles,
-// caustic light, the sphere, the sky, and tracing a ray through air or water to what it hits.
+// caustic light, the sphere and the duck, the sky, and tracing a ray through air or water to what it hits.
 
 struct Scene {
     view_proj: mat4x4<f32>,
@@ -13,6 +13,11 @@ struct Scene {
                                // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format);
                                // y debug view (0 none, see debug_view.wgsl)
+    duck_pose: mat4x4<f32>,    // the duck's frame: rotation in columns 0-2, position (m) in column 3
+    duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
+    // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
+    // and linear colour.
+    duck_parts: array<vec4<f32>, 12>,
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -27,6 +32,9 @@ struct Scene {
 
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
+
+const DUCK_PARTS: i32 = 4;
+const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.62, 0.60, 0.56);
 
 fn half_width() -> f32 { return scene.pool.x; }
 fn depth() -> f32 { return scene.pool.y; }
@@ -76,8 +84,83 @@ fn rim_visibility(p: vec3<f32>) -> f32 {
     return smoothstep(rim() - 0.02, rim() + 0.02, height);
 }
 
+// What a ray hits on an object: distance (NO_HIT for nothing), outward normal, colour.
+struct ObjectHit {
+    t: f32,
+    normal: vec3<f32>,
+    albedo: vec3<f32>,
+};
+
+fn duck_rotation() -> mat3x3<f32> {
+    return mat3x3<f32>(scene.duck_pose[0].xyz, scene.duck_pose[1].xyz, scene.duck_pose[2].xyz);
+}
+
+// Whether the segment origin + t dir, t in [0, t_max], comes near the duck at all.
+fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
+    if (scene.duck_bound.w <= 0.0) {
+        return false;
+    }
+    let t = clamp(dot(scene.duck_bound.xyz - origin, dir), 0.0, t_max);
+    return distance(origin + dir * t, scene.duck_bound.xyz) < scene.duck_bound.w;
+}
+
+// Nearest hit of a ray with the duck. Each part is a unit ball stretched by its semi-axes, so
+// the ray is taken into the duck's frame and divided by them: there the hit is a ray-sphere
+// test with the same t, and the normal is the unit-ball point divided by the semi-axes.
+fn intersect_duck(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
+    var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
+    if (!near_duck(origin, dir, NO_HIT)) {
+        return hit;
+    }
+    let to_duck = transpose(duck_rotation());
+    let o_duck = to_duck * (origin - scene.duck_pose[3].xyz);
+    let d_duck = to_duck * dir;
+    for (var i = 0; i < DUCK_PARTS; i++) {
+        let radii = scene.duck_parts[3 * i + 1].xyz;
+        let o = (o_duck - scene.duck_parts[3 * i].xyz) / radii;
+        let d = d_duck / radii;
+        let a = dot(d, d);
+        let b = dot(o, d);
+        let disc = b * b - a * (dot(o, o) - 1.0);
+        if (disc >= 0.0) {
+            let t = (-b - sqrt(disc)) / a;
+            if (t > 1.0e-4 && t < hit.t) {
+                hit.t = t;
+                hit.normal = normalize(duck_rotation() * ((o + d * t) / radii));
+                hit.albedo = scene.duck_parts[3 * i + 2].rgb;
+            }
+        }
+    }
+    return hit;
+}
+
+// Light the duck lets through along a segment, like sphere_visibility: per part, how close
+// the segment passes to its centre in the part's unit-ball space.
+fn duck_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    if (!near_duck(origin, dir, t_max)) {
+        return 1.0;
+    }
+    let to_duck = transpose(duck_rotation());
+    let o_duck = to_duck * (origin - scene.duck_pose[3].xyz);
+    let d_duck = to_duck * dir;
+    var light = 1.0;
+    for (var i = 0; i < DUCK_PARTS; i++) {
+        let radii = scene.duck_parts[3 * i + 1].xyz;
+        let o = (o_duck - scene.duck_parts[3 * i].xyz) / radii;
+        let d = d_duck / radii;
+        let t = clamp(-dot(o, d) / dot(d, d), 0.0, t_max);
+        light *= smoothstep(0.85, 1.1, length(o + d * t));
+    }
+    return light;
+}
+
+// Light both objects let through towards the sun from p (above the water).
+fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    return sphere_visibility(p, dir, t_max, scene.sphere.xyz, scene.sphere.w) * duck_visibility(p, dir, t_max);
+}
+
 // Sunlight reaching an underwater point p, relative to a flat calm surface (1 = calm).
-// with_sphere_shadow: whether the sphere's own shadow is included (not for the sphere itself).
+// with_sphere_shadow: whether the objects' shadows are included (not for the objects themselves).
 fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     let entry = light_entry(p);
     let inside = all(abs(entry) <= vec2<f32>(half_width()));
@@ -93,8 +176,8 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     var light = rim_visibility(surface);
     if (with_sphere_shadow) {
         let r = scene.refracted_sun.xyz;
-        light *= sphere_visibility(surface, r, distance(surface, p), scene.sphere.xyz, scene.sphere.w);
-        light *= sphere_visibility(surface, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+        light *= objects_visibility(surface, r, distance(surface, p));
+        light *= objects_visibility(surface, scene.sun.xyz, 10.0);
     }
     return light;
 }
@@ -137,8 +220,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     if (p.y < 0.0) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
     } else {
-        direct = max(dot(n, scene.sun.xyz), 0.0)
-            * sphere_visibility(p, scene.sun.xyz, 10.0, scene.sphere.xyz, scene.sphere.w);
+        direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
     }
     let ambient = AMBIENT * (1.0 - 0.9 * sphere_occlusion(p, n));
     return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
@@ -167,16 +249,16 @@ fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
     return pool_colour(p, n, albedo);
 }
 
-// Lit colour of the sphere at surface point p: diffuse sunlight (through the caustics under
-// water), ambient darkened where the floor and walls are close (ambient occlusion).
-fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
-    let n = normalize(p - scene.sphere.xyz);
-    let albedo = vec3<f32>(0.62, 0.60, 0.56);
+// Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
+// sunlight (through the caustics under water, shadowed by the other object above it),
+// ambient darkened where the floor and walls are close (ambient occlusion).
+fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     var direct: f32;
     if (p.y < 0.0) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
     } else {
-        direct = max(dot(n, scene.sun.xyz), 0.0);
+        // Offset along the normal so an object does not shadow itself.
+        direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p + n * 0.02, scene.sun.xyz, 10.0);
     }
     // Occlusion by the floor and walls falls off with distance from each plane.
     let w = half_width();
@@ -185,6 +267,21 @@ fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
     occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
     let ambient = AMBIENT * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
     return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
+}
+
+fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
+    return object_colour(p, normalize(p - scene.sphere.xyz), SPHERE_ALBEDO);
+}
+
+// The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,
+// seen along dir, where the sun reaches it directly.
+fn duck_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    var colour = object_colour(p, n, albedo);
+    if (p.y >= 0.0) {
+        let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 40.0);
+        colour += SUN_COLOUR * scene.sun.w * 0.35 * gloss;
+    }
+    return colour;
 }
 
 // The sky cubemap plus the sun's disk (about 1.5 degrees across, HDR so its reflections stay
@@ -209,7 +306,11 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
     var t = t_exit;
     var colour: vec3<f32>;
     let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
-    if (ts < t) {
+    let duck = intersect_duck(origin, dir);
+    if (duck.t < t && duck.t < ts) {
+        t = duck.t;
+        colour = duck_colour(origin + dir * t, duck.normal, duck.albedo, dir);
+    } else if (ts < t) {
         t = ts;
         colour = sphere_colour(origin + dir * t);
     } else {
@@ -232,6 +333,10 @@ fn upward(dir: vec3<f32>) -> vec3<f32> {
 fn trace_air(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
     let t = t_exit;
+    let duck = intersect_duck(origin, dir);
+    if (duck.t < t && duck.t < ts) {
+        return duck_colour(origin + dir * duck.t, duck.normal, duck.albedo, dir);
+    }
     if (ts < t) {
         return sphere_colour(origin + dir * ts);
     }

@@ -9,6 +9,12 @@ struct Sim {
     bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s), z sponge width (m)
     drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
     drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
+    bodies: vec4<f32>,      // x number of hull moves, y rest level the mean is held at (m),
+                            // z depth over which a body's push fades (m)
+    // Per hull move, 8 entries: before, then after the move, each the ellipsoid's centre (m)
+    // and the three columns of the matrix taking offsets from it into the unit ball.
+    hulls: array<vec4<f32>, 24>,
+    probes: array<vec4<f32>, 8>, // points (x, z in m) to sample for the bodies, two per entry
 };
 
 @group(0) @binding(0) var<uniform> sim: Sim;
@@ -43,4 +49,20 @@ fn texel(position: vec4<f32>) -> vec2<i32> {
 // value can never spread through the grid.
 fn bounded(x: f32, limit: f32) -> f32 {
     return clamp(select(0.0, x, abs(x) <= 3.0e38), -limit, limit);
+}
+
+// Height bounded around the rest level (which bodies in the water raise).
+fn bounded_height(h: f32) -> f32 {
+    return bounded(h - sim.bodies.y, sim.bounds.x) + sim.bodies.y;
+}
+
+// Bilinear height and velocity at pool point x (m), by hand with textureLoad (no filtering
+// of 32-bit floats needed).
+fn sample_state(x: vec2<f32>) -> vec4<f32> {
+    let p = (x / sim.grid.w * 0.5 + 0.5) * sim.grid.x - 0.5;
+    let base = vec2<i32>(floor(p));
+    let f = p - floor(p);
+    let a = mix(cell(base), cell(base + vec2<i32>(1, 0)), f.x);
+    let b = mix(cell(base + vec2<i32>(0, 1)), cell(base + vec2<i32>(1, 1)), f.x);
+    return mix(a, b, f.y);
 }

@@ -2,8 +2,9 @@
 // semi-implicit Euler: v += dt c^2 lap(h) / dx^2, v *= exp(-k dt), h += dt v.
 // Stable while c dt / dx <= 1/sqrt(2) (CFL); the CPU picks substeps to keep it so.
 // Height and velocity are clamped to fixed bounds (NaN becomes rest): bounded under any input.
-// Absorbing walls: both also decay by exp(-sigma dt) in a layer along the walls, with sigma
-// rising from 0 to the sponge rate at the wall, so outgoing waves die instead of reflecting.
+// Absorbing walls: both (height measured from the rest level) also decay by exp(-sigma dt) in
+// a layer along the walls, with sigma rising from 0 to the sponge rate at the wall, so
+// outgoing waves die instead of reflecting.
 
 @fragment
 fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
@@ -14,6 +15,7 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     let laplacian = neighbours - 4.0 * c.x;
     let absorb = exp(-sim.step.w * sponge_profile(cell_centre(p)) * sim.step.x);
     let v = bounded((c.y + sim.step.y * laplacian) * sim.step.z * absorb, sim.bounds.y);
-    let h = bounded((c.x + sim.step.x * v) * absorb, sim.bounds.x);
+    let level = sim.bodies.y;
+    let h = bounded((c.x - level + sim.step.x * v) * absorb, sim.bounds.x) + level;
     return vec4<f32>(h, v, c.z, c.w);
 }

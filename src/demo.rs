@@ -2,14 +2,15 @@
 //! by a small input API (pointer in pixels, keys, frame time). The browser and native shells
 //! only forward events to it and hand it a target to draw into.
 
-use glam::{Vec2, Vec3};
+use glam::{Quat, Vec2, Vec3};
 
-use crate::camera::{OrbitCamera, Pick};
+use crate::camera::{self, OrbitCamera, Pick};
+use crate::duck;
 use crate::params::{ParamId, Params};
-use crate::physics::SphereBody;
+use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
-use crate::sim::{Drop, FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
+use crate::sim::{self, BodyCoupling, Drop, FixedStep, HeightField, HullMove, HullSlot, SimEngine, WaterLevel, WaveSettings};
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;
@@ -21,6 +22,23 @@ pub const MAX_STEPS_PER_FRAME: u32 = 4;
 
 /// Where the sphere starts (m).
 const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
+/// Where the duck starts (x, z in m; it starts at its floating height) and where it looks
+/// (turn about the vertical, radians; 0 is along +x).
+const START_DUCK_XZ: Vec2 = Vec2::new(0.35, -0.3);
+const START_DUCK_TURN: f32 = 2.4;
+/// Points on the ring around each body where the water is sampled for its buoyancy.
+const PROBES_PER_BODY: usize = 8;
+
+/// The things that float in the pool.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BodyId {
+    Sphere = 0,
+    Duck = 1,
+}
+
+impl BodyId {
+    pub const ALL: [BodyId; 2] = [BodyId::Sphere, BodyId::Duck];
+}
 
 /// Choices fixed when the demo is created.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -121,7 +139,7 @@ enum Drag {
     None,
     Orbit { last: Vec2 },
     Water { last: Vec2 },
-    Sphere { offset: Vec3, plane_normal: Vec3, plane_point: Vec3 },
+    Body { id: BodyId, offset: Vec3, plane_normal: Vec3, plane_point: Vec3 },
 }
 
 /// Stages of a frame, for timing.
@@ -138,8 +156,14 @@ pub struct WaterDemo {
     /// The `sim_size` parameter value the water was last built or resampled for.
     applied_sim_size: f32,
     pub camera: OrbitCamera,
-    sphere_centre: Vec3,
-    sphere_body: SphereBody,
+    /// The sphere and the duck, indexed by [`BodyId`].
+    bodies: [FloatingBody; 2],
+    /// Each body's hull ellipsoids as the water last took them in (`None`: not in the pool).
+    pushed: [Option<Vec<HullSlot>>; 2],
+    /// Each body's submerged volume after the last step (m³).
+    submerged: [f32; 2],
+    /// Frames between the water heights the bodies last used and the frame using them.
+    probe_latency: Option<u64>,
     water: HeightField,
     renderer: Renderer,
     clock: FixedStep,
@@ -168,19 +192,32 @@ impl WaterDemo {
         let renderer = Renderer::new(device, queue, settings, &water);
         let mut params = Params::default();
         let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
-        Self {
+        let mut demo = Self {
             params,
             applied_sim_size,
             camera: OrbitCamera::default(),
-            sphere_centre: START_SPHERE_CENTRE,
-            sphere_body: SphereBody::default(),
+            bodies: [FloatingBody::at(Pose::at(START_SPHERE_CENTRE)), FloatingBody::at(Pose::at(Vec3::ZERO))],
+            pushed: [None, None],
+            submerged: [0.0; 2],
+            probe_latency: None,
             water,
             renderer,
             clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
             viewport: Vec2::new(800.0, 600.0),
             drag: Drag::None,
             steps_taken: 0,
-        }
+        };
+        demo.place_duck_at_start();
+        demo
+    }
+
+    fn place_duck_at_start(&mut self) {
+        let y = duck::shape(self.params.get(ParamId::DuckDensity)).floating_height(0.0);
+        let pose = Pose {
+            position: Vec3::new(START_DUCK_XZ.x, y, START_DUCK_XZ.y),
+            rotation: Quat::from_rotation_y(START_DUCK_TURN),
+        };
+        self.bodies[BodyId::Duck as usize] = FloatingBody::at(pose);
     }
 
     pub fn water(&self) -> &HeightField {
@@ -201,21 +238,94 @@ impl WaterDemo {
         self.steps_taken
     }
 
+    /// Whether a body is in the pool (the `objects` parameter: none, sphere, duck, both).
+    pub fn shows(&self, id: BodyId) -> bool {
+        let objects = self.params.get(ParamId::Objects) as u32;
+        objects & (1 << id as u32) != 0
+    }
+
     /// The sphere, if shown.
     pub fn sphere(&self) -> Option<Sphere> {
-        self.params.flag(ParamId::Sphere).then(|| {
-            let mut s = Sphere { centre: self.sphere_centre, radius: self.params.get(ParamId::SphereRadius) };
+        self.shows(BodyId::Sphere).then(|| {
+            let mut s = Sphere { centre: self.bodies[0].pose.position, radius: self.params.get(ParamId::SphereRadius) };
             s.clamp_to_pool();
             s
         })
     }
 
+    /// The duck's pose, if shown.
+    pub fn duck(&self) -> Option<Pose> {
+        self.shows(BodyId::Duck).then_some(self.bodies[BodyId::Duck as usize].pose)
+    }
+
+    /// A body's motion (shown or not).
+    pub fn body(&self, id: BodyId) -> &FloatingBody {
+        &self.bodies[id as usize]
+    }
+
     pub fn set_sphere_centre(&mut self, centre: Vec3) {
-        if centre.is_finite() {
-            let mut s = Sphere { centre, radius: self.params.get(ParamId::SphereRadius) };
-            s.clamp_to_pool();
-            self.sphere_centre = s.centre;
+        self.set_body_pose(BodyId::Sphere, Pose::at(centre));
+    }
+
+    /// Puts a body somewhere (kept inside the pool) and stops it.
+    pub fn set_body_pose(&mut self, id: BodyId, pose: Pose) {
+        if pose.position.is_finite() && pose.rotation.is_finite() {
+            let mut pose = Pose { position: pose.position, rotation: pose.rotation.normalize() };
+            physics::keep_in_pool(&mut pose, &self.hull(id));
+            self.bodies[id as usize] = FloatingBody::at(pose);
         }
+    }
+
+    /// A body's hull ellipsoids, in its own frame.
+    fn hull(&self, id: BodyId) -> Vec<Ellipsoid> {
+        match id {
+            BodyId::Sphere => {
+                vec![Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(self.params.get(ParamId::SphereRadius)) }]
+            }
+            BodyId::Duck => duck::HULL.to_vec(),
+        }
+    }
+
+    fn density(&self, id: BodyId) -> f32 {
+        match id {
+            BodyId::Sphere => self.params.get(ParamId::SphereDensity),
+            BodyId::Duck => self.params.get(ParamId::DuckDensity),
+        }
+    }
+
+    fn centre_of_mass(id: BodyId) -> Vec3 {
+        match id {
+            BodyId::Sphere => Vec3::ZERO,
+            BodyId::Duck => duck::CENTRE_OF_MASS,
+        }
+    }
+
+    /// Radius (m) of the ring around a body on which the water is sampled for it: just
+    /// outside its waterline, so the water it pushes up itself counts little.
+    fn ring_radius(&self, id: BodyId) -> f32 {
+        match id {
+            BodyId::Sphere => self.params.get(ParamId::SphereRadius) * 1.1 + 0.02,
+            BodyId::Duck => 0.19,
+        }
+    }
+
+    /// Radius (m) of a ball standing in for a body when the two bump into each other.
+    fn bump_radius(&self, id: BodyId) -> f32 {
+        match id {
+            BodyId::Sphere => self.params.get(ParamId::SphereRadius),
+            BodyId::Duck => 0.13,
+        }
+    }
+
+    /// Frames between the water heights the bodies last used and the frame that used them
+    /// (1 when a readback completes within a frame); `None` before the first arrived.
+    pub fn probe_latency(&self) -> Option<u64> {
+        self.probe_latency
+    }
+
+    /// Volume (m³) of the bodies under water after the last step.
+    pub fn submerged_volume(&self) -> f32 {
+        BodyId::ALL.iter().filter(|&&id| self.shows(id)).map(|&id| self.submerged[id as usize]).sum()
     }
 
     /// Unit vector towards the sun.
@@ -248,16 +358,37 @@ impl WaterDemo {
         self.camera.pick(pixel, self.viewport, self.sphere().as_ref())
     }
 
-    /// Pointer pressed at pixel (x, y): on the sphere starts moving it, on the water
-    /// starts drawing ripples, elsewhere starts orbiting.
+    /// The nearest body under pixel (x, y) and the point hit (m), if any.
+    pub fn pick_body(&self, pixel: Vec2) -> Option<(BodyId, Vec3)> {
+        let ray = self.camera.ray(pixel, self.viewport);
+        let sphere = self.sphere().and_then(|s| camera::ray_sphere(&ray, s.centre, s.radius));
+        let duck = self.duck().and_then(|pose| {
+            duck::TRACED_PARTS
+                .iter()
+                .filter_map(|p| p.shape.ray_hit(&pose, ray.origin, ray.dir))
+                .min_by(|a, b| a.total_cmp(b))
+        });
+        let hit = |t: f32| ray.origin + ray.dir * t;
+        match (sphere, duck) {
+            (Some(s), Some(d)) if d < s => Some((BodyId::Duck, hit(d))),
+            (Some(s), _) => Some((BodyId::Sphere, hit(s))),
+            (None, Some(d)) => Some((BodyId::Duck, hit(d))),
+            (None, None) => None,
+        }
+    }
+
+    /// Pointer pressed at pixel (x, y): on the sphere or the duck starts moving it, on the
+    /// water starts drawing ripples, elsewhere starts orbiting.
     pub fn pointer_down(&mut self, x: f32, y: f32) {
         let p = Vec2::new(x, y);
-        self.drag = match self.pick(p) {
-            Pick::Sphere { hit } => {
-                let centre = self.sphere().map_or(hit, |s| s.centre);
-                let plane_normal = (self.camera.eye() - hit).normalize();
-                Drag::Sphere { offset: centre - hit, plane_normal, plane_point: hit }
-            }
+        if let Some((id, hit)) = self.pick_body(p) {
+            let centre = self.bodies[id as usize].pose.position;
+            let plane_normal = (self.camera.eye() - hit).normalize();
+            self.drag = Drag::Body { id, offset: centre - hit, plane_normal, plane_point: hit };
+            return;
+        }
+        self.drag = match self.camera.pick(p, self.viewport, None) {
+            Pick::Sphere { .. } => Drag::None,
             Pick::Water { x, z } => {
                 self.click_drop(x, z);
                 Drag::Water { last: p }
@@ -292,13 +423,14 @@ impl WaterDemo {
                 }
                 self.drag = Drag::Water { last: p };
             }
-            Drag::Sphere { offset, plane_normal, plane_point } => {
+            Drag::Body { id, offset, plane_normal, plane_point } => {
                 let ray = self.camera.ray(p, self.viewport);
                 let denom = ray.dir.dot(plane_normal);
                 if denom.abs() > 1e-5 {
                     let t = (plane_point - ray.origin).dot(plane_normal) / denom;
                     if t > 0.0 {
-                        self.set_sphere_centre(ray.origin + ray.dir * t + offset);
+                        let rotation = self.bodies[id as usize].pose.rotation;
+                        self.set_body_pose(id, Pose { position: ray.origin + ray.dir * t + offset, rotation });
                     }
                 }
             }
@@ -321,6 +453,7 @@ impl WaterDemo {
                 self.params.set(ParamId::Paused, if paused { 0.0 } else { 1.0 });
             }
             Key::G => {
+                // Gravity on the sphere and the duck.
                 let on = self.params.flag(ParamId::Gravity);
                 self.params.set(ParamId::Gravity, if on { 0.0 } else { 1.0 });
             }
@@ -332,32 +465,107 @@ impl WaterDemo {
         }
     }
 
-    /// Moves the sphere through `steps` fixed steps, unless it is held by the pointer.
-    fn step_sphere(&mut self, steps: u32) {
-        let held = matches!(self.drag, Drag::Sphere { .. });
-        let Some(mut sphere) = self.sphere() else { return };
-        if held {
-            self.sphere_body = SphereBody::default();
-            return;
+    /// The water plane under each body from the newest probe heights (flat at the rest level
+    /// before any have arrived).
+    fn water_planes(&mut self) -> [WaterPlane; 2] {
+        let frame = self.water.frames() + 1;
+        let level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
+        let mut planes = [WaterPlane::flat(level); 2];
+        if let Some(samples) = self.water.probes() {
+            self.probe_latency = Some(frame.saturating_sub(samples.frame));
+            for id in BodyId::ALL {
+                let k = id as usize * PROBES_PER_BODY;
+                if let Some(heights) = samples.heights.get(k..k + PROBES_PER_BODY) {
+                    let radius = samples.points[k].distance(samples.points[k + PROBES_PER_BODY / 2]) / 2.0;
+                    planes[id as usize] = WaterPlane::from_ring(heights, radius);
+                }
+            }
         }
-        let density = self.params.get(ParamId::SphereDensity);
-        let gravity = self.params.flag(ParamId::Gravity);
-        for _ in 0..steps {
-            self.sphere_body.step(&mut sphere, density, gravity, STEP_DT);
-        }
-        self.sphere_centre = sphere.centre;
+        planes
     }
 
-    /// Flattens the water and puts the sphere back where it started, at rest.
+    /// Moves the bodies through `steps` fixed steps on the water planes under them; a body
+    /// held by the pointer stays put. The two bump off each other.
+    fn step_bodies(&mut self, steps: u32) {
+        let planes = self.water_planes();
+        let gravity = self.params.flag(ParamId::Gravity);
+        let held = match self.drag {
+            Drag::Body { id, .. } => Some(id),
+            _ => None,
+        };
+        let hulls = [self.hull(BodyId::Sphere), self.hull(BodyId::Duck)];
+        let shapes = BodyId::ALL.map(|id| Shape {
+            hull: &hulls[id as usize],
+            centre_of_mass: Self::centre_of_mass(id),
+            density: self.density(id),
+        });
+        let both = self.shows(BodyId::Sphere) && self.shows(BodyId::Duck);
+        for _ in 0..steps.max(1) {
+            for id in BodyId::ALL {
+                let k = id as usize;
+                let body = &mut self.bodies[k];
+                self.submerged[k] = if held == Some(id) || steps == 0 {
+                    if held == Some(id) {
+                        body.hold();
+                    }
+                    shapes[k].submerged(&body.pose, &planes[k]).0
+                } else {
+                    body.step(&shapes[k], gravity, &planes[k], STEP_DT)
+                };
+            }
+            if both {
+                let mass = |id: BodyId| if held == Some(id) { f32::INFINITY } else { shapes[id as usize].mass() };
+                let (ms, md) = (mass(BodyId::Sphere), mass(BodyId::Duck));
+                let (rs, rd) = (self.bump_radius(BodyId::Sphere), self.bump_radius(BodyId::Duck));
+                let [sphere, duck] = &mut self.bodies;
+                physics::separate(sphere, rs, ms, duck, rd, md);
+                for (k, id) in BodyId::ALL.iter().enumerate() {
+                    physics::keep_in_pool(&mut self.bodies[k].pose, &hulls[*id as usize]);
+                }
+            }
+        }
+    }
+
+    /// Tells the water what the bodies did this frame: how their hulls moved since it last
+    /// took them in (only when it steps), the rest level their submerged volume raises, and
+    /// where to sample heights for the next frames.
+    fn couple_water(&mut self, steps: u32) {
+        let mut moves = Vec::new();
+        let mut probes = Vec::with_capacity(2 * PROBES_PER_BODY);
+        for id in BodyId::ALL {
+            let k = id as usize;
+            let pose = self.bodies[k].pose;
+            let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
+            if !self.shows(id) {
+                self.pushed[k] = None;
+            } else if steps > 0 || self.pushed[k].is_none() {
+                if let Some(previous) = &self.pushed[k] {
+                    moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
+                }
+                self.pushed[k] = Some(current);
+            }
+            let radius = self.ring_radius(id);
+            for i in 0..PROBES_PER_BODY {
+                let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
+                probes.push(Vec2::new(pose.position.x, pose.position.z) + radius * Vec2::new(a.cos(), a.sin()));
+            }
+        }
+        let rest_level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
+        self.water.set_bodies(BodyCoupling { moves, rest_level, probes });
+    }
+
+    /// Flattens the water and puts the bodies back where they started, at rest.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.water.reset(queue);
-        self.sphere_centre = START_SPHERE_CENTRE;
-        self.sphere_body = SphereBody::default();
+        self.bodies[BodyId::Sphere as usize] = FloatingBody::at(Pose::at(START_SPHERE_CENTRE));
+        self.place_duck_at_start();
+        self.pushed = [None, None];
     }
 
     /// Flattens the water.
     pub fn reset_water(&mut self, queue: &wgpu::Queue) {
         self.water.reset(queue);
+        self.pushed = [None, None];
     }
 
     fn view(&self) -> View {
@@ -366,6 +574,7 @@ impl WaterDemo {
             eye: self.camera.eye(),
             sun: self.sun(),
             sphere: self.sphere(),
+            duck: self.duck(),
             caustics: self.params.flag(ParamId::Caustics),
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
@@ -421,13 +630,16 @@ impl WaterDemo {
             self.clock.advance(frame_time)
         };
         self.steps_taken += steps as u64;
-        self.step_sphere(steps);
+        self.step_bodies(steps);
         let wanted_size = self.params.get(ParamId::SimSize);
         if wanted_size != self.applied_sim_size {
             self.applied_sim_size = wanted_size;
+            let frames = self.water.frames();
             self.water = self.water.resampled(device, queue, encoder, wanted_size as u32);
+            self.water.set_frames(frames);
             self.renderer.rebind_water(device, &self.water);
         }
+        self.couple_water(steps);
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),

@@ -13,6 +13,7 @@ pub mod wgsl {
     pub const SKY_CUBE: &str = include_str!("../shaders/sky_cube.wgsl");
     pub const POOL: &str = include_str!("../shaders/pool.wgsl");
     pub const SPHERE: &str = include_str!("../shaders/sphere.wgsl");
+    pub const DUCK: &str = include_str!("../shaders/duck.wgsl");
     pub const WATER: &str = include_str!("../shaders/water.wgsl");
     pub const CAUSTICS: &str = include_str!("../shaders/caustics.wgsl");
     pub const SIM_SHARED: &str = include_str!("../shaders/sim_shared.wgsl");
@@ -21,6 +22,7 @@ pub mod wgsl {
     pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
     pub const DEBUG_VIEW: &str = include_str!("../shaders/debug_view.wgsl");
     pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
+    pub const SIM_PROBE: &str = include_str!("../shaders/sim_probe.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
 }
 

@@ -4,6 +4,7 @@
 
 pub mod camera;
 pub mod demo;
+pub mod duck;
 pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;

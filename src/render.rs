@@ -4,6 +4,7 @@
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
+use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::scene::{self, Sphere};
 use crate::sim::HeightField;
@@ -30,6 +31,8 @@ pub struct View {
     /// Unit vector towards the sun.
     pub sun: Vec3,
     pub sphere: Option<Sphere>,
+    /// The rubber duck's pose, if it is in the pool.
+    pub duck: Option<crate::physics::Pose>,
     pub caustics: bool,
     /// A view of the simulation's textures drawn over the scene, if any.
     pub debug: Option<DebugView>,
@@ -91,6 +94,9 @@ struct SceneUniforms {
     pool: [f32; 4],
     water: [f32; 4],
     output: [f32; 4],
+    duck_pose: [[f32; 4]; 4],
+    duck_bound: [f32; 4],
+    duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
 }
 
 /// Renderer settings fixed at creation.
@@ -239,6 +245,18 @@ fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
     (positions.iter().map(|p| p.to_array()).collect(), indices)
 }
 
+/// The duck's traced parts as the scene shader takes them: per part its centre and semi-axes
+/// in the duck's frame (m), and its colour.
+fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
+    let mut out = [[0.0; 4]; 3 * duck::TRACED_PARTS.len()];
+    for (slots, part) in out.chunks_mut(3).zip(&duck::TRACED_PARTS) {
+        slots[0] = part.shape.centre.extend(0.0).to_array();
+        slots[1] = part.shape.radii.extend(0.0).to_array();
+        slots[2] = part.colour.extend(1.0).to_array();
+    }
+    out
+}
+
 /// The caustics map and the pipeline that draws a water grid (see [`caustics_grid`]) into it.
 pub struct CausticsPass {
     texture: wgpu::Texture,
@@ -382,6 +400,8 @@ pub struct Renderer {
     grid: Mesh,
     pool_mesh: Mesh,
     sphere_mesh: Mesh,
+    duck: wgpu::RenderPipeline,
+    duck_mesh: Mesh,
     depth: Option<DepthBuffer>,
 }
 
@@ -547,6 +567,16 @@ impl Renderer {
             12,
             Some(wgpu::Face::Back),
         );
+        let duck_module = gpu::shader(device, "duck", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::DUCK]);
+        let duck = scene_pipeline(
+            "duck",
+            &duck_module,
+            "vs_duck",
+            "fs_duck",
+            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
+            36,
+            Some(wgpu::Face::Back),
+        );
         let grid_attrs = wgpu::vertex_attr_array![0 => Float32x2];
         // Culling off: front faces are the surface seen from above, back faces from below.
         let surface = scene_pipeline("water surface", &water_module, "vs_surface", "fs_surface", &grid_attrs, 8, None);
@@ -554,6 +584,7 @@ impl Renderer {
         let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
         let (sphere_vertices, sphere_indices) = unit_sphere(24, 48);
+        let (duck_vertices, duck_indices) = duck::mesh();
         Self {
             settings,
             uniforms,
@@ -570,6 +601,8 @@ impl Renderer {
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
+            duck,
+            duck_mesh: Mesh::new(device, "duck", &duck_vertices, &duck_indices),
             depth: None,
         }
     }
@@ -622,6 +655,12 @@ impl Renderer {
                 0.0,
                 0.0,
             ],
+            duck_pose: view
+                .duck
+                .map_or(Mat4::IDENTITY, |p| Mat4::from_rotation_translation(p.rotation, p.position))
+                .to_cols_array_2d(),
+            duck_bound: view.duck.map_or([0.0; 4], |p| p.position.extend(duck::bounding_radius()).to_array()),
+            duck_parts: duck_parts(),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         self.sky_cube.update(queue, encoder, view.sun);
@@ -708,6 +747,10 @@ impl Renderer {
         if view.sphere.is_some() {
             pass.set_pipeline(&self.sphere);
             self.sphere_mesh.draw(&mut pass);
+        }
+        if view.duck.is_some() {
+            pass.set_pipeline(&self.duck);
+            self.duck_mesh.draw(&mut pass);
         }
         pass.set_pipeline(&self.pool);
         self.pool_mesh.draw(&mut pass);

@@ -2,6 +2,8 @@
 //! full-screen fragment passes (so WebGL2, without compute shaders, runs the same code).
 //! State per cell: height above rest (m), vertical velocity (m/s), normal x and z.
 
+use glam::{Mat3, Vec2, Vec3};
+
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
 pub mod cpu;
@@ -23,6 +25,79 @@ pub struct Drop {
     pub radius: f32,
     /// Height of the bump's centre (m); negative dips.
     pub strength: f32,
+}
+
+/// One ellipsoid of a body as the displacement pass takes it: its centre (m) and the matrix
+/// taking offsets from the centre (m) into the unit ball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HullSlot {
+    pub centre: Vec3,
+    pub unit_from_world: Mat3,
+}
+
+/// An ellipsoid's move since the water last took the bodies in (see [`displaced_column`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HullMove {
+    pub from: HullSlot,
+    pub to: HullSlot,
+}
+
+/// Most ellipsoid moves one frame passes to the water (the sphere, and the duck's body and head).
+pub const MAX_HULL_MOVES: usize = 3;
+/// Most points the water is sampled at for the bodies each frame.
+pub const MAX_PROBES: usize = 16;
+/// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).
+pub const DISPLACEMENT_DEPTH: f32 = 0.1;
+/// Area of the pool's water surface (m²) for a half width of 1 m; scale by half width².
+pub fn pool_area(half_width: f32) -> f32 {
+    4.0 * half_width * half_width
+}
+
+/// How much water (m, a column height) a body's ellipsoid pushes up at pool point (x, z): the
+/// part of the vertical line through (x, z) inside the ellipsoid and below the rest level,
+/// each depth y weighted by exp(y / [`DISPLACEMENT_DEPTH`]). A body moving from `from` to `to`
+/// raises the surface by column(to) - column(from): water ahead of it and above it rises and
+/// falls behind it, fully submerged too (weaker the deeper it is), and a body entering the
+/// water pushes its volume out around itself. (`shaders/sim_drop.wgsl` mirrors this.)
+pub fn displaced_column(x: f32, z: f32, hull: &HullSlot) -> f32 {
+    let u0 = hull.unit_from_world * (Vec3::new(x, 0.0, z) - hull.centre);
+    let d = hull.unit_from_world.col(1);
+    let (a, b, c) = (d.dot(d), u0.dot(d), u0.dot(u0) - 1.0);
+    let disc = b * b - a * c;
+    if disc <= 0.0 || a <= 0.0 {
+        return 0.0;
+    }
+    let s = disc.sqrt();
+    let y0 = (-b - s) / a;
+    let y1 = ((-b + s) / a).min(0.0);
+    if y1 <= y0 {
+        return 0.0;
+    }
+    DISPLACEMENT_DEPTH * ((y1 / DISPLACEMENT_DEPTH).exp() - (y0 / DISPLACEMENT_DEPTH).exp())
+}
+
+/// What the bodies in the pool do to the water in a frame, set before [`HeightField::encode`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BodyCoupling {
+    /// Ellipsoid moves to push the water by (at most [`MAX_HULL_MOVES`]).
+    pub moves: Vec<HullMove>,
+    /// Mean height (m) the water is held at: the bodies' submerged volume over the pool's
+    /// area, because that volume of water has been pushed up into the surface.
+    pub rest_level: f32,
+    /// Points (x, z in m) to sample the water at for the bodies' buoyancy (at most
+    /// [`MAX_PROBES`]); the heights come back a frame or two later ([`HeightField::probes`]).
+    pub probes: Vec<Vec2>,
+}
+
+/// Heights sampled for the bodies.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProbeSamples {
+    /// The points (x, z in m) asked for.
+    pub points: Vec<Vec2>,
+    /// Water height at each (m).
+    pub heights: Vec<f32>,
+    /// Frame ([`HeightField::frames`]) whose water they were sampled from.
+    pub frame: u64,
 }
 
 /// Physical settings of a step.
@@ -69,6 +144,9 @@ struct SimUniforms {
     bounds: [f32; 4],
     drops_info: [f32; 4],
     drops: [[f32; 4]; MAX_DROPS_PER_PASS],
+    bodies: [f32; 4],
+    hulls: [[f32; 4]; MAX_HULL_MOVES * 8],
+    probes: [[f32; 4]; MAX_PROBES / 2],
 }
 
 /// Largest |height| an update may leave (m); it clamps to it and replaces NaN or infinity
@@ -97,6 +175,10 @@ pub struct StepPlan {
     pub velocity_decay: f32,
     /// Sponge damping rate at the wall (1/s); 0 for reflecting walls.
     pub sponge_rate: f32,
+    /// Body moves applied with the drops.
+    pub moves: Vec<HullMove>,
+    /// Mean height the water is held at (m); heights are bounded around it.
+    pub rest_level: f32,
 }
 
 impl StepPlan {
@@ -120,12 +202,19 @@ impl StepPlan {
             } else {
                 0.0
             },
+            moves: Vec::new(),
+            rest_level: 0.0,
         }
+    }
+
+    /// Whether the drop pass has anything to do.
+    pub fn pushes_water(&self) -> bool {
+        !self.drops.is_empty() || !self.moves.is_empty()
     }
 
     /// Whether the normals need recomputing after this batch.
     pub fn changes_state(&self) -> bool {
-        self.updates > 0 || !self.drops.is_empty()
+        self.updates > 0 || self.pushes_water()
     }
 }
 
@@ -217,6 +306,7 @@ struct GpuSim {
     normals_pass: FullscreenPass,
     mean: MeanLevel,
     probe: LevelProbe,
+    bodies: BodyProbe,
 }
 
 enum Engine {
@@ -237,6 +327,10 @@ pub struct HeightField {
     state: PingPong,
     engine: Engine,
     pending: Vec<Drop>,
+    coupling: BodyCoupling,
+    /// Frames encoded so far.
+    frames: u64,
+    probes: Option<ProbeSamples>,
 }
 
 /// Format of the level reduction textures: x mean height (m), y largest |height| (m).
@@ -362,6 +456,67 @@ impl LevelProbe {
     }
 }
 
+/// Samples the water at the bodies' probe points in a full-screen pass into a row of texels
+/// (`shaders/sim_probe.wgsl`) and reads that row back without waiting ([`gpu::AsyncReadback`]):
+/// 256 bytes, ready one or two frames later. The bodies never make a frame wait on the GPU.
+struct BodyProbe {
+    target: wgpu::Texture,
+    view: wgpu::TextureView,
+    pass: FullscreenPass,
+    readback: gpu::AsyncReadback,
+    /// The points and frame of the read in flight.
+    in_flight: std::cell::RefCell<Option<(Vec<Vec2>, u64)>>,
+}
+
+impl BodyProbe {
+    fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Self {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
+        let target = gpu::texture_2d(device, "body probes", MAX_PROBES as u32, 1, 1, 1, STATE_FORMAT, usage);
+        Self {
+            view: target.create_view(&Default::default()),
+            target,
+            pass: FullscreenPass::new(
+                device,
+                "sim body probes",
+                &[gpu::wgsl::SIM_SHARED, gpu::wgsl::SIM_PROBE],
+                "fs_probe",
+                &[layout],
+                FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
+            ),
+            readback: gpu::AsyncReadback::new(device, "body probe readback", MAX_PROBES as u64 * 16),
+            in_flight: Default::default(),
+        }
+    }
+
+    /// A completed read, if any.
+    fn take(&self) -> Option<ProbeSamples> {
+        let bytes = self.readback.take()?;
+        let (points, frame) = self.in_flight.borrow_mut().take()?;
+        let cells: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+        let heights = cells.iter().take(points.len()).map(|c| c[0]).collect();
+        Some(ProbeSamples { points, heights, frame })
+    }
+
+    /// Samples `points` of the state `group` binds, when no read is in flight.
+    fn encode(&self, encoder: &mut wgpu::CommandEncoder, group: &wgpu::BindGroup, points: &[Vec2], frame: u64) {
+        if points.is_empty() {
+            return;
+        }
+        if let Some(buffer) = self.readback.record() {
+            self.pass.run(encoder, &self.view, &[group]);
+            encoder.copy_texture_to_buffer(
+                self.target.as_image_copy(),
+                wgpu::TexelCopyBufferInfo {
+                    buffer,
+                    layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: None, rows_per_image: None },
+                },
+                wgpu::Extent3d { width: MAX_PROBES as u32, height: 1, depth_or_array_layers: 1 },
+            );
+            *self.in_flight.borrow_mut() = Some((points.to_vec(), frame));
+        }
+    }
+}
+
 impl GpuSim {
     fn new(device: &wgpu::Device, state: &PingPong, size: u32) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -408,6 +563,7 @@ impl GpuSim {
                 FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
             )
         };
+        let bodies = BodyProbe::new(device, &layout);
         Self {
             drop_pass: pass("sim drop", gpu::wgsl::SIM_DROP, "fs_drop"),
             update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
@@ -418,10 +574,11 @@ impl GpuSim {
             bind_groups,
             mean,
             probe: LevelProbe::new(device),
+            bodies,
         }
     }
 
-    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan, size: u32, half_width: f32) {
+    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan, probes: &[Vec2], size: u32, half_width: f32) {
         let mut u = SimUniforms::zeroed();
         u.grid = [size as f32, 1.0 / size as f32, 2.0 * half_width / size as f32, half_width];
         u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
@@ -429,6 +586,18 @@ impl GpuSim {
         u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
         for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];
+        }
+        u.bodies = [plan.moves.len() as f32, plan.rest_level, DISPLACEMENT_DEPTH, 0.0];
+        for (slots, m) in u.hulls.chunks_mut(8).zip(&plan.moves) {
+            for (k, hull) in [m.from, m.to].iter().enumerate() {
+                slots[4 * k] = hull.centre.extend(0.0).to_array();
+                for c in 0..3 {
+                    slots[4 * k + 1 + c] = hull.unit_from_world.col(c).extend(0.0).to_array();
+                }
+            }
+        }
+        for (k, p) in probes.iter().take(MAX_PROBES).enumerate() {
+            u.probes[k / 2][2 * (k % 2)..][..2].copy_from_slice(&p.to_array());
         }
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
     }
@@ -454,7 +623,16 @@ impl HeightField {
                 upload: Vec::new(),
             },
         };
-        Self { size, half_width, state, engine, pending: Vec::new() }
+        Self {
+            size,
+            half_width,
+            state,
+            engine,
+            pending: Vec::new(),
+            coupling: BodyCoupling::default(),
+            frames: 0,
+            probes: None,
+        }
     }
 
     /// Which engine advances this heightfield.
@@ -503,19 +681,34 @@ impl HeightField {
         dt: f32,
         settings: WaveSettings,
     ) {
+        self.frames += 1;
+        // Moves and probes are used once; the rest level stays until set again.
+        let mut coupling = BodyCoupling {
+            moves: std::mem::take(&mut self.coupling.moves),
+            rest_level: self.coupling.rest_level,
+            probes: std::mem::take(&mut self.coupling.probes),
+        };
+        coupling.moves.truncate(MAX_HULL_MOVES);
+        coupling.probes.truncate(MAX_PROBES);
         let sim = match &mut self.engine {
             Engine::Gpu(sim) => sim,
             Engine::Cpu { water, level, upload: cells } => {
-                if water.advance(steps, dt, settings) {
+                if water.advance_with(steps, dt, settings, coupling.moves, coupling.rest_level) {
                     upload(queue, self.state.current_texture(), water, cells);
                     *level = Some(water.level());
+                }
+                if !coupling.probes.is_empty() {
+                    let heights = coupling.probes.iter().map(|p| water.height_at(p.x, p.y)).collect();
+                    self.probes = Some(ProbeSamples { points: coupling.probes, heights, frame: self.frames });
                 }
                 return;
             }
         };
-        let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
-        sim.write_uniforms(queue, &plan, self.size, self.half_width);
-        if !plan.drops.is_empty() {
+        let mut plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
+        plan.moves = coupling.moves;
+        plan.rest_level = coupling.rest_level;
+        sim.write_uniforms(queue, &plan, &coupling.probes, self.size, self.half_width);
+        if plan.pushes_water() {
             self.state.run(encoder, &sim.drop_pass, &sim.bind_groups);
         }
         for _ in 0..plan.updates {
@@ -526,6 +719,34 @@ impl HeightField {
             self.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
         }
         sim.probe.encode(encoder, &sim.mean.result);
+        sim.bodies.encode(encoder, &sim.bind_groups[self.state.current()], &coupling.probes, self.frames);
+    }
+
+    /// Sets what the bodies do to the water in the next [`HeightField::encode`].
+    pub fn set_bodies(&mut self, coupling: BodyCoupling) {
+        self.coupling = coupling;
+    }
+
+    /// Frames encoded so far.
+    pub fn frames(&self) -> u64 {
+        self.frames
+    }
+
+    /// Carries the frame count over to a heightfield that replaces this one.
+    pub fn set_frames(&mut self, frames: u64) {
+        self.frames = frames;
+    }
+
+    /// The newest heights sampled at the bodies' probe points. On the GPU they arrive one or
+    /// two frames after they were asked for (asynchronous readback, never waited for); the
+    /// CPU engine samples at the end of its frame. Call once at the start of a frame.
+    pub fn probes(&mut self) -> Option<&ProbeSamples> {
+        if let Engine::Gpu(sim) = &self.engine {
+            if let Some(samples) = sim.bodies.take() {
+                self.probes = Some(samples);
+            }
+        }
+        self.probes.as_ref()
     }
 
     /// A `size` x `size` heightfield on the same engine holding this one's water resampled
@@ -543,6 +764,7 @@ impl HeightField {
     ) -> HeightField {
         let mut new = HeightField::new_on(device, size, self.half_width, self.engine());
         new.pending = self.pending.clone();
+        new.coupling.rest_level = self.coupling.rest_level;
         match (&self.engine, &mut new.engine) {
             (Engine::Cpu { water: old, .. }, Engine::Cpu { water, level, upload: cells }) => {
                 **water = old.resampled(size);
@@ -567,8 +789,9 @@ impl HeightField {
                 });
                 let mut no_drops = Vec::new();
                 let calm = WaveSettings::reflecting(0.0, 0.0);
-                let plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, calm);
-                sim.write_uniforms(queue, &plan, size, self.half_width);
+                let mut plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, calm);
+                plan.rest_level = self.coupling.rest_level;
+                sim.write_uniforms(queue, &plan, &[], size, self.half_width);
                 new.state.run(encoder, &sim.resample_pass, &[from_old.clone(), from_old]);
                 sim.mean.encode(encoder, new.state.current());
                 new.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
@@ -583,6 +806,7 @@ impl HeightField {
     pub fn after_submit(&self) {
         if let Engine::Gpu(sim) = &self.engine {
             sim.probe.after_submit();
+            sim.bodies.readback.after_submit();
         }
     }
 

@@ -201,7 +201,8 @@ async fn controls_change_parameters() {
         "drop_strength",
         "sun_azimuth",
         "caustics",
-        "sphere",
+        "objects",
+        "duck_density",
         "gravity",
         "paused",
     ] {

@@ -18,7 +18,7 @@ fn max_height(demo: &wavepool::WaterDemo) -> f32 {
 #[test]
 fn dragging_on_the_water_makes_ripples_along_the_stroke() {
     let mut demo = common::demo(DemoOptions::default());
-    demo.params.set(ParamId::Sphere, 0.0);
+    demo.params.set(ParamId::Objects, 0.0);
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     assert_eq!(max_height(&demo), 0.0, "water should start calm");
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
@@ -112,7 +112,7 @@ fn the_sim_size_parameter_switches_resolution_on_the_cpu_engine() {
 fn switch_resolution(float_targets: bool) {
     let mut demo = common::demo(DemoOptions { sim_size: 128, float_targets, ..DemoOptions::default() });
     assert_eq!(demo.params.get(ParamId::SimSize), 128.0);
-    demo.params.set(ParamId::Sphere, 0.0);
+    demo.params.set(ParamId::Objects, 0.0);
     demo.add_drop(0.2, -0.1, 0.15, 0.02);
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 3, 1.0 / 60.0);
     let before = max_height(&demo);

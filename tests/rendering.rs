@@ -55,7 +55,7 @@ fn sky_region_has_the_sky_colour() {
 #[test]
 fn caustics_add_contrast_on_the_floor() {
     let mut demo = with_drops(5, 30);
-    demo.params.set(ParamId::Sphere, 0.0);
+    demo.params.set(ParamId::Objects, 0.0);
     demo.camera.pitch = 89.0;
     demo.camera.distance = 3.0;
     demo.camera.target = Vec3::new(0.0, -1.0, 0.0);
@@ -188,7 +188,7 @@ fn debug_views_show_the_ring_where_it_is() {
     let travelled = C * frames as f32 / 60.0; // m from the centre
     for (view, name) in [(1.0, "height"), (2.0, "normals"), (3.0, "velocity"), (4.0, "caustics")] {
         let mut demo = common::demo(DemoOptions::default());
-        demo.params.set(ParamId::Sphere, 0.0);
+        demo.params.set(ParamId::Objects, 0.0);
         demo.params.set(ParamId::WaveSpeed, C);
         demo.params.set(ParamId::DebugView, view);
         demo.params.set(ParamId::DebugInset, 0.0);

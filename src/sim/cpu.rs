@@ -3,7 +3,9 @@
 //! [`StepPlan`]. Tests compare the GPU against it; it also serves where the GPU cannot render
 //! to float textures.
 
-use super::{drop_shape, sponge_profile, Drop, StepPlan, WaveSettings, MAX_HEIGHT, MAX_VELOCITY};
+use super::{
+    displaced_column, drop_shape, sponge_profile, Drop, HullMove, StepPlan, WaveSettings, MAX_HEIGHT, MAX_VELOCITY,
+};
 
 /// Mirrors the shaders' `bounded`: finite values clamped, NaN and infinity to rest.
 fn bounded(x: f32, limit: f32) -> f32 {
@@ -35,6 +37,8 @@ pub struct CpuHeightField {
     last_mean: f32,
     last_max_abs: f32,
     pending: Vec<Drop>,
+    /// Rest level of the last advance (m).
+    rest_level: f32,
 }
 
 /// One cell's update, as in `shaders/sim_update.wgsl` (same operations in the same order).
@@ -42,7 +46,8 @@ pub struct CpuHeightField {
 fn update_cell(h: f32, v: f32, neighbours: f32, plan: &StepPlan, absorb: f32) -> (f32, f32) {
     let laplacian = neighbours - 4.0 * h;
     let v = bounded((v + plan.coupling * laplacian) * plan.velocity_decay * absorb, MAX_VELOCITY);
-    let h = bounded((h + plan.dt * v) * absorb, MAX_HEIGHT);
+    let level = plan.rest_level;
+    let h = bounded((h - level + plan.dt * v) * absorb, MAX_HEIGHT) + level;
     (h, v)
 }
 
@@ -64,6 +69,7 @@ impl CpuHeightField {
             last_mean: 0.0,
             last_max_abs: 0.0,
             pending: Vec::new(),
+            rest_level: 0.0,
         }
     }
 
@@ -102,8 +108,24 @@ impl CpuHeightField {
     /// normals, exactly as [`super::HeightField::encode`] does on the GPU. Returns whether
     /// the state changed.
     pub fn advance(&mut self, steps: u32, dt: f32, settings: WaveSettings) -> bool {
-        let plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
-        if !plan.drops.is_empty() {
+        self.advance_with(steps, dt, settings, Vec::new(), 0.0)
+    }
+
+    /// [`CpuHeightField::advance`] with bodies: their moves push the water with the drops, and
+    /// the mean is held at `rest_level` (m), as on the GPU.
+    pub fn advance_with(
+        &mut self,
+        steps: u32,
+        dt: f32,
+        settings: WaveSettings,
+        moves: Vec<HullMove>,
+        rest_level: f32,
+    ) -> bool {
+        let mut plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
+        plan.moves = moves;
+        plan.rest_level = rest_level;
+        self.rest_level = rest_level;
+        if plan.pushes_water() {
             self.apply_drops(&plan);
         }
         if plan.sponge_rate > 0.0 {
@@ -113,9 +135,27 @@ impl CpuHeightField {
             self.update(&plan);
         }
         if plan.changes_state() {
-            self.update_normals();
+            self.update_normals(plan.rest_level);
         }
         plan.changes_state()
+    }
+
+    /// Height (m) at pool point (x, z), bilinear between cell centres (as the GPU's
+    /// `sample_state`).
+    pub fn height_at(&self, x: f32, z: f32) -> f32 {
+        let n = self.size as i64;
+        let q = |c: f32| (c / self.half_width * 0.5 + 0.5) * self.size as f32 - 0.5;
+        let (px, pz) = (q(x), q(z));
+        if !(px.is_finite() && pz.is_finite()) {
+            return 0.0;
+        }
+        let (bx, bz) = (px.floor(), pz.floor());
+        let (fx, fz) = (px - bx, pz - bz);
+        let at = |i: i64, j: i64| self.height[(j.clamp(0, n - 1) * n + i.clamp(0, n - 1)) as usize];
+        let (i, j) = (bx as i64, bz as i64);
+        let a = at(i, j) + (at(i + 1, j) - at(i, j)) * fx;
+        let b = at(i, j + 1) + (at(i + 1, j + 1) - at(i, j + 1)) * fx;
+        a + (b - a) * fz
     }
 
     /// The water statistics the GPU engine reads back: the mean height before the last
@@ -164,24 +204,67 @@ impl CpuHeightField {
                 new.velocity[j * n + i] = hv[1];
             }
         }
-        new.update_normals();
+        new.rest_level = self.rest_level;
+        new.update_normals(self.rest_level);
         new
     }
 
+    /// Drops over the whole grid, body moves over the cells their ellipsoids can reach, then the
+    /// correction and bounds everywhere: the sums of `shaders/sim_drop.wgsl` in its order.
     fn apply_drops(&mut self, plan: &StepPlan) {
-        let n = self.size;
-        for j in 0..n {
-            let z = self.centre(j);
-            for i in 0..n {
-                let x = self.centre(i);
-                let h = &mut self.height[(j * n + i) as usize];
-                for d in &plan.drops {
-                    let dist = ((x - d.x).powi(2) + (z - d.z).powi(2)).sqrt();
-                    *h += d.strength * drop_shape(dist, d.radius);
+        let n = self.size as usize;
+        if !plan.drops.is_empty() {
+            for j in 0..n {
+                let z = self.centre(j as u32);
+                for i in 0..n {
+                    let x = self.centre(i as u32);
+                    let h = &mut self.height[j * n + i];
+                    for d in &plan.drops {
+                        let dist = ((x - d.x).powi(2) + (z - d.z).powi(2)).sqrt();
+                        *h += d.strength * drop_shape(dist, d.radius);
+                    }
                 }
-                *h = bounded(*h - plan.correction, MAX_HEIGHT);
             }
         }
+        for m in &plan.moves {
+            let (i0, i1, j0, j1) = self.cells_under(&[m.from, m.to]);
+            for j in j0..=j1 {
+                let z = self.centre(j as u32);
+                for i in i0..=i1 {
+                    let x = self.centre(i as u32);
+                    self.height[j * n + i] += displaced_column(x, z, &m.to) - displaced_column(x, z, &m.from);
+                }
+            }
+        }
+        let level = plan.rest_level;
+        for h in &mut self.height {
+            *h = bounded(*h - plan.correction - level, MAX_HEIGHT) + level;
+        }
+    }
+
+    /// Index ranges (x from, x to, z from, z to) of the cells over which the ellipsoids reach.
+    fn cells_under(&self, hulls: &[super::HullSlot]) -> (usize, usize, usize, usize) {
+        let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
+        for hull in hulls {
+            let to_world = hull.unit_from_world.inverse();
+            // Support of the ellipsoid along x and z: the length of that row of the matrix.
+            let reach = glam::Vec2::new(to_world.row(0).length(), to_world.row(2).length());
+            let c = glam::Vec2::new(hull.centre.x, hull.centre.z);
+            lo = lo.min(c - reach);
+            hi = hi.max(c + reach);
+        }
+        let dx = 2.0 * self.half_width / self.size as f32;
+        let last = self.size as f32 - 1.0;
+        let index = |v: f32| ((v + self.half_width) / dx - 0.5).clamp(0.0, last);
+        if !(lo.is_finite() && hi.is_finite()) {
+            return (0, self.size as usize - 1, 0, self.size as usize - 1);
+        }
+        (
+            index(lo.x).floor() as usize,
+            index(hi.x).ceil() as usize,
+            index(lo.y).floor() as usize,
+            index(hi.y).ceil() as usize,
+        )
     }
 
     /// Fills the absorbing walls' per-cell factors for this plan's rate and time step.
@@ -267,9 +350,9 @@ impl CpuHeightField {
         level[0]
     }
 
-    /// Normals from central differences, and the mean level brought back to rest, as in
-    /// `shaders/sim_normals.wgsl`.
-    fn update_normals(&mut self) {
+    /// Normals from central differences, and the mean level brought back to `rest_level` (m),
+    /// as in `shaders/sim_normals.wgsl`.
+    fn update_normals(&mut self, rest_level: f32) {
         let mean = self.reduced_mean();
         self.last_mean = mean;
         let n = self.size as usize;
@@ -287,7 +370,7 @@ impl CpuHeightField {
                 let len = (slope_x * slope_x + 1.0 + slope_z * slope_z).sqrt();
                 self.normal_x[j * n + i] = -slope_x / len;
                 self.normal_z[j * n + i] = -slope_z / len;
-                self.next_height[j * n + i] = at(i, j) - mean;
+                self.next_height[j * n + i] = at(i, j) - (mean - rest_level);
                 max_abs = max_abs.max(at(i, j).abs());
             }
         }

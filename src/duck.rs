@@ -1,0 +1,134 @@
+//! The rubber duck, built here from ellipsoids (our own geometry, under the project's
+//! licence): body, head, beak, tail and two eyes, in the duck's frame (m), x forward, y up.
+//! The same parts give the mesh drawn directly, the shapes the scene shader traces for
+//! reflections, refractions and shadows, and the hull its buoyancy comes from.
+
+use glam::Vec3;
+
+use crate::physics::{Ellipsoid, Shape};
+
+/// One piece of the duck: its ellipsoid and colour (linear RGB).
+#[derive(Clone, Copy, Debug)]
+pub struct DuckPart {
+    pub shape: Ellipsoid,
+    pub colour: Vec3,
+}
+
+const YELLOW: Vec3 = Vec3::new(0.95, 0.62, 0.03);
+const ORANGE: Vec3 = Vec3::new(0.95, 0.22, 0.02);
+const EYE: Vec3 = Vec3::new(0.02, 0.02, 0.03);
+
+const fn part(centre: [f32; 3], radii: [f32; 3], colour: Vec3) -> DuckPart {
+    DuckPart {
+        shape: Ellipsoid {
+            centre: Vec3::new(centre[0], centre[1], centre[2]),
+            radii: Vec3::new(radii[0], radii[1], radii[2]),
+        },
+        colour,
+    }
+}
+
+/// The parts the scene shader traces (reflections, refractions, shadows): body, head, beak,
+/// tail. The eyes are too small to matter there and are only in the mesh.
+pub const TRACED_PARTS: [DuckPart; 4] = [
+    part([0.0, 0.0, 0.0], [0.15, 0.085, 0.11], YELLOW),
+    part([0.085, 0.115, 0.0], [0.068, 0.065, 0.064], YELLOW),
+    part([0.16, 0.105, 0.0], [0.05, 0.016, 0.04], ORANGE),
+    part([-0.125, 0.045, 0.0], [0.05, 0.045, 0.06], YELLOW),
+];
+
+/// The eyes, drawn in the mesh only.
+pub const EYES: [DuckPart; 2] =
+    [part([0.128, 0.14, 0.038], [0.012, 0.014, 0.012], EYE), part([0.128, 0.14, -0.038], [0.012, 0.014, 0.012], EYE)];
+
+/// The hull buoyancy is computed from: body and head (the beak and tail are small).
+pub const HULL: [Ellipsoid; 2] = [TRACED_PARTS[0].shape, TRACED_PARTS[1].shape];
+
+/// Centre of mass in the duck's frame (m): low in the body, as a weighted bath toy, so it
+/// floats upright and rights itself.
+pub const CENTRE_OF_MASS: Vec3 = Vec3::new(0.0, -0.04, 0.0);
+
+/// Radius (m) of a ball around the duck's origin holding all its parts (for early outs).
+pub fn bounding_radius() -> f32 {
+    TRACED_PARTS.iter().chain(&EYES).map(|p| p.shape.centre.length() + p.shape.radii.max_element()).fold(0.0, f32::max)
+}
+
+/// The duck's physical shape for a density (kg/m³).
+pub fn shape(density: f32) -> Shape<'static> {
+    Shape { hull: &HULL, centre_of_mass: CENTRE_OF_MASS, density }
+}
+
+/// Mesh vertex: position and normal in the duck's frame, colour (linear RGB).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct DuckVertex {
+    pub position: [f32; 3],
+    pub normal: [f32; 3],
+    pub colour: [f32; 3],
+}
+
+/// The duck as triangles: every part a latitude-longitude ellipsoid, wound to face outwards.
+pub fn mesh() -> (Vec<DuckVertex>, Vec<u32>) {
+    let (stacks, slices) = (16u32, 24u32);
+    let mut vertices = Vec::new();
+    let mut indices = Vec::new();
+    for p in TRACED_PARTS.iter().chain(&EYES) {
+        let base = vertices.len() as u32;
+        for i in 0..=stacks {
+            let theta = std::f32::consts::PI * i as f32 / stacks as f32;
+            for j in 0..=slices {
+                let phi = std::f32::consts::TAU * j as f32 / slices as f32;
+                let unit = Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+                let position = p.shape.centre + unit * p.shape.radii;
+                // The normal of an ellipsoid at unit-sphere point u is u / radii (normalised).
+                let normal = (unit / p.shape.radii).normalize();
+                vertices.push(DuckVertex {
+                    position: position.to_array(),
+                    normal: normal.to_array(),
+                    colour: p.colour.to_array(),
+                });
+            }
+        }
+        let row = slices + 1;
+        for i in 0..stacks {
+            for j in 0..slices {
+                let a = base + i * row + j;
+                let (b, c, e) = (a + 1, a + row, a + row + 1);
+                // theta runs from the top down, phi from +x towards +z: (a, b, c) faces outwards.
+                if i != 0 {
+                    indices.extend_from_slice(&[a, b, c]);
+                }
+                if i != stacks - 1 {
+                    indices.extend_from_slice(&[b, e, c]);
+                }
+            }
+        }
+    }
+    (vertices, indices)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::{Pose, WaterPlane, WATER_DENSITY};
+
+    #[test]
+    fn mesh_faces_outwards() {
+        let (vertices, indices) = mesh();
+        for tri in indices.chunks(3) {
+            let [a, b, c] = [0, 1, 2].map(|k| Vec3::from(vertices[tri[k] as usize].position));
+            let normal = Vec3::from(vertices[tri[0] as usize].normal);
+            let face = (b - a).cross(c - a);
+            assert!(face.length() < 1e-9 || face.dot(normal) > 0.0, "inward triangle {tri:?}");
+        }
+    }
+
+    #[test]
+    fn a_light_duck_floats_with_most_of_its_body_dry() {
+        let shape = shape(300.0);
+        let y = shape.floating_height(0.0);
+        let (submerged, _) = shape.submerged(&Pose::at(Vec3::new(0.0, y, 0.0)), &WaterPlane::flat(0.0));
+        assert!((submerged - shape.mass() / WATER_DENSITY).abs() < 1e-6);
+        assert!(y > 0.0 && y < HULL[0].radii.y, "floats with its centre at {y} m");
+    }
+}
