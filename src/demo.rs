@@ -10,7 +10,9 @@ use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
-use crate::sim::{self, BodyCoupling, Drop, FixedStep, HeightField, HullMove, HullSlot, SimEngine, WaterLevel, WaveSettings};
+use crate::sim::{
+    self, BodyCoupling, Drop, FixedStep, HeightField, HullMove, HullSlot, SimEngine, WaterLevel, WaveSettings,
+};
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;
@@ -305,7 +307,7 @@ impl WaterDemo {
     fn ring_radius(&self, id: BodyId) -> f32 {
         match id {
             BodyId::Sphere => self.params.get(ParamId::SphereRadius) * 1.1 + 0.02,
-            BodyId::Duck => 0.19,
+            BodyId::Duck => 0.3,
         }
     }
 
@@ -595,6 +597,8 @@ impl WaterDemo {
         self.encode_frame(device, queue, &mut encoder, target, size, frame_time, &mut |_, _| {});
         queue.submit([encoder.finish()]);
         self.after_submit();
+        // Never waits: only lets finished readbacks (water statistics, body probes) complete.
+        let _ = device.poll(wgpu::PollType::Poll);
     }
 
     /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts the

@@ -16,9 +16,9 @@ pub const WATER_DENSITY: f32 = 1000.0;
 /// Drag coefficient of a round body at the Reynolds numbers of a pool toy.
 const DRAG_COEFFICIENT: f32 = 0.47;
 /// Extra linear damping in water (1/s), standing in for the energy lost to waves.
-const WAVE_DAMPING: f32 = 1.5;
+const WAVE_DAMPING: f32 = 6.0;
 /// Angular damping in water and in air (1/s).
-const SPIN_DAMPING_WATER: f32 = 4.0;
+const SPIN_DAMPING_WATER: f32 = 10.0;
 const SPIN_DAMPING_AIR: f32 = 0.3;
 /// Fraction of the normal speed kept in a bounce.
 const RESTITUTION: f32 = 0.35;
@@ -116,7 +116,8 @@ impl Ellipsoid {
         let delta = water.normal.dot(p0 - centre) / length;
         let (unit_volume, unit_moment) = unit_ball_below(delta);
         let volume = unit_volume * self.radii.x * self.radii.y * self.radii.z;
-        let centroid = if unit_volume > 1e-9 { centre + m * (along / length * (unit_moment / unit_volume)) } else { centre };
+        let centroid =
+            if unit_volume > 1e-9 { centre + m * (along / length * (unit_moment / unit_volume)) } else { centre };
         (volume, centroid)
     }
 
@@ -141,7 +142,10 @@ impl Ellipsoid {
 
     /// The ellipsoid as the simulation's displacement pass takes it (see `sim::HullSlot`).
     pub fn hull_slot(&self, pose: &Pose) -> crate::sim::HullSlot {
-        crate::sim::HullSlot { centre: pose.to_world(self.centre), unit_from_world: self.world_from_unit(pose).inverse() }
+        crate::sim::HullSlot {
+            centre: pose.to_world(self.centre),
+            unit_from_world: self.world_from_unit(pose).inverse(),
+        }
     }
 }
 

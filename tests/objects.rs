@@ -1,0 +1,287 @@
+//! Things in the water, on the GPU (lavapipe in CI): the sphere and the duck fall, float and
+//! come to rest at their waterlines; bodies push the water, also fully submerged; the mean
+//! level accounts for the volume they take up; the duck is drawn and casts a shadow; and the
+//! water heights the bodies use come back asynchronously, never waited for on the frame path.
+
+mod common;
+
+use glam::{Quat, Vec2, Vec3};
+use wavepool::demo::{BodyId, DemoOptions};
+use wavepool::duck;
+use wavepool::headless::OffscreenTarget;
+use wavepool::params::ParamId;
+use wavepool::physics::{Ellipsoid, Pose, Shape};
+use wavepool::sim::pool_area;
+use wavepool::WaterDemo;
+
+const NONE: f32 = 0.0;
+const SPHERE: f32 = 1.0;
+const DUCK: f32 = 2.0;
+
+/// Runs `frames` frames of 1/60 s into a small target. After each frame the test waits for the
+/// GPU to finish, as a display's frame pacing would (the browser gives a frame per vsync); the
+/// demo itself never waits.
+fn run(demo: &mut WaterDemo, frames: u32, mut each: impl FnMut(&mut WaterDemo, u32)) {
+    let g = common::gpu();
+    let target = OffscreenTarget::new(&g.device, 64, 48);
+    for k in 0..frames {
+        each(demo, k);
+        demo.frame(&g.device, &g.queue, &target.view, target.size(), 1.0 / 60.0);
+        g.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    }
+}
+
+fn heights(demo: &WaterDemo) -> Vec<f32> {
+    let g = common::gpu();
+    demo.water().read_state(&g.device, &g.queue).iter().map(|c| c[0]).collect()
+}
+
+fn mean(h: &[f32]) -> f64 {
+    h.iter().map(|&v| v as f64).sum::<f64>() / h.len() as f64
+}
+
+fn demo_with(objects: f32, float_targets: bool) -> WaterDemo {
+    let mut demo = common::demo(DemoOptions { sim_size: 128, float_targets, ..DemoOptions::default() });
+    demo.params.set(ParamId::Objects, objects);
+    demo
+}
+
+#[test]
+fn a_released_sphere_falls_enters_and_rests_at_its_floating_line() {
+    let mut demo = demo_with(SPHERE, true);
+    demo.params.set(ParamId::SphereRadius, 0.2);
+    demo.params.set(ParamId::SphereDensity, 500.0);
+    demo.params.set(ParamId::Gravity, 1.0);
+    demo.set_sphere_centre(Vec3::new(0.1, 0.35, -0.1));
+    let (mut lowest, mut latency) = (f32::INFINITY, 0);
+    run(&mut demo, 8 * 60, |demo, _| {
+        lowest = lowest.min(demo.sphere().unwrap().centre.y);
+        latency = latency.max(demo.probe_latency().unwrap_or(0));
+    });
+    let sphere = demo.sphere().unwrap();
+    let level = demo.submerged_volume() / pool_area(1.0);
+    let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(0.2) }];
+    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0 }.floating_height(level);
+    let speed = demo.body(BodyId::Sphere).velocity.length();
+    println!(
+        "sphere: lowest {lowest:.3} m, rests at {:.4} m (floating line {expected:.4} m, water level {level:.4} m), \
+         speed {speed:.4} m/s, probe latency up to {latency} frames",
+        sphere.centre.y
+    );
+    assert!(lowest < -0.02, "the sphere never went below its floating line: lowest {lowest}");
+    assert!((sphere.centre.y - expected).abs() < 0.015, "rests at {} m, expected {expected} m", sphere.centre.y);
+    assert!(speed < 0.03, "still moving at {speed} m/s");
+    assert!((1..=2).contains(&latency), "water heights arrived {latency} frames late");
+}
+
+/// A sphere 10 cm under the surface moved sideways at 0.5 m/s: the water above its path rises
+/// and falls by millimetres; the same sphere held still leaves the water flat.
+fn submerged_wake(float_targets: bool) {
+    let path = |demo: &mut WaterDemo, moving: bool| {
+        demo.params.set(ParamId::SphereRadius, 0.15);
+        demo.params.set(ParamId::Gravity, 0.0);
+        let (start, depth) = (-0.5, -0.25);
+        run(demo, 150, |demo, k| {
+            let t = k.saturating_sub(30) as f32 / 60.0;
+            let x = if moving { (start + 0.5 * t).min(0.5) } else { start };
+            demo.set_sphere_centre(Vec3::new(x, depth, 0.0));
+        });
+        let h = heights(demo);
+        let level = demo.submerged_volume() / pool_area(1.0);
+        let n = demo.water().size() as usize;
+        let mut peak = 0.0f32;
+        for j in 0..n {
+            let z = (j as f32 + 0.5) / n as f32 * 2.0 - 1.0;
+            for i in 0..n {
+                let x = (i as f32 + 0.5) / n as f32 * 2.0 - 1.0;
+                if z.abs() < 0.1 && x.abs() < 0.6 {
+                    peak = peak.max((h[j * n + i] - level).abs());
+                }
+            }
+        }
+        (peak, mean(&h) - level as f64)
+    };
+    let (moving, moving_mean) = path(&mut demo_with(SPHERE, float_targets), true);
+    let (still, still_mean) = path(&mut demo_with(SPHERE, float_targets), false);
+    println!(
+        "float targets {float_targets}: largest |h - level| over the path {:.2} mm moving, {:.4} mm still; \
+         mean minus level {moving_mean:e} / {still_mean:e} m",
+        moving * 1e3,
+        still * 1e3
+    );
+    assert!(moving > 2e-3, "a submerged sphere moving sideways left only {moving} m above its path");
+    assert!(still < 1e-4, "a sphere held still disturbed the water by {still} m");
+    assert!(moving_mean.abs() < 1e-5 && still_mean.abs() < 1e-5, "the mean left the rest level");
+}
+
+#[test]
+fn a_submerged_sphere_moved_sideways_raises_a_wake_above_its_path() {
+    submerged_wake(true);
+}
+
+#[test]
+fn a_submerged_sphere_moved_sideways_raises_a_wake_on_the_cpu_engine() {
+    submerged_wake(false);
+}
+
+#[test]
+fn entering_raises_the_level_and_leaving_lowers_it_back() {
+    let mut demo = demo_with(SPHERE, true);
+    demo.params.set(ParamId::SphereRadius, 0.2);
+    demo.params.set(ParamId::Gravity, 0.0);
+    let r: f32 = 0.2;
+    let volume = 4.0 / 3.0 * std::f32::consts::PI * r.powi(3);
+    let (mut near_peak, far_probe) = (0.0f32, Vec2::new(-0.7, -0.7));
+    let mut far_max = 0.0f32;
+    // Above the water, then down into it over half a second, then held under.
+    run(&mut demo, 90, |demo, k| {
+        let y = if k < 10 { 0.4 } else { (0.4 - (k - 10) as f32 / 30.0).max(-0.5) };
+        demo.set_sphere_centre(Vec3::new(0.0, y, 0.0));
+    });
+    let h = heights(&demo);
+    let n = demo.water().size() as usize;
+    for j in 0..n {
+        for i in 0..n {
+            let p = Vec2::new(i as f32 + 0.5, j as f32 + 0.5) / n as f32 * 2.0 - 1.0;
+            if p.length() < 0.4 {
+                near_peak = near_peak.max(h[j * n + i]);
+            }
+            if p.distance(far_probe) < 0.1 {
+                far_max = far_max.max(h[j * n + i]);
+            }
+        }
+    }
+    let under = mean(&h);
+    let expected = (volume / pool_area(1.0)) as f64;
+    run(&mut demo, 90, |demo, k| {
+        let y = (-0.5 + k as f32 / 30.0).min(0.4);
+        demo.set_sphere_centre(Vec3::new(0.0, y, 0.0));
+    });
+    let out = mean(&heights(&demo));
+    println!(
+        "mean level: {:.3} mm under water (volume / area {:.3} mm), {:.5} mm after leaving; near peak {:.1} mm",
+        under * 1e3,
+        expected * 1e3,
+        out * 1e3,
+        near_peak * 1e3
+    );
+    assert!((under - expected).abs() < 0.01 * expected, "level {under} m with the sphere in, expected {expected} m");
+    assert!(out.abs() < 1e-5, "level {out} m after the sphere left");
+    assert!(near_peak > expected as f32 + 2e-3, "the entry pushed no water up around the sphere: {near_peak} m");
+}
+
+#[test]
+fn a_dropped_duck_floats_upright_at_its_waterline() {
+    let mut demo = demo_with(DUCK, true);
+    demo.params.set(ParamId::Gravity, 1.0);
+    let tilted = Quat::from_rotation_x(0.6) * Quat::from_rotation_y(1.0);
+    demo.set_body_pose(BodyId::Duck, Pose { position: Vec3::new(-0.2, 0.3, 0.1), rotation: tilted });
+    run(&mut demo, 10 * 60, |_, _| {});
+    let pose = demo.duck().unwrap();
+    let up = pose.rotation * Vec3::Y;
+    let level = demo.submerged_volume() / pool_area(1.0);
+    let expected = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(level);
+    println!(
+        "duck: up {up:.3} ({:.1} degrees from vertical), origin at {:.4} m, floating line {expected:.4} m",
+        up.y.acos().to_degrees(),
+        pose.position.y
+    );
+    assert!(up.y > 8f32.to_radians().cos(), "the duck floats tilted: up = {up}");
+    assert!((pose.position.y - expected).abs() < 0.015, "floats at {} m, expected {expected} m", pose.position.y);
+}
+
+/// Counts duck-yellow pixels in a square around pixel `p`.
+fn yellow_pixels(frame: &common::Frame, p: Vec2, half: u32) -> u32 {
+    let mut count = 0;
+    for y in (p.y as u32).saturating_sub(half)..(p.y as u32 + half).min(frame.height) {
+        for x in (p.x as u32).saturating_sub(half)..(p.x as u32 + half).min(frame.width) {
+            let [r, g, b] = frame.pixel(x, y);
+            if r > 0.7 && g > 0.45 && b < 0.35 && r - b > 0.5 {
+                count += 1;
+            }
+        }
+    }
+    count
+}
+
+#[test]
+fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
+    let (w, h) = (320u32, 240u32);
+    let shot = |objects: f32| {
+        let mut demo = demo_with(objects, true);
+        demo.params.set(ParamId::Gravity, 0.0);
+        demo.params.set(ParamId::SunAzimuth, 90.0);
+        demo.params.set(ParamId::SunElevation, 50.0);
+        demo.camera.yaw = 0.0;
+        demo.camera.pitch = 80.0;
+        demo.camera.distance = 3.2;
+        let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
+        demo.set_body_pose(BodyId::Duck, Pose::at(Vec3::new(0.25, y, 0.0)));
+        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+        (demo, frame)
+    };
+    let (demo, with) = shot(DUCK);
+    let (_, without) = shot(NONE);
+    let size = Vec2::new(w as f32, h as f32);
+    let duck_px = demo.camera.project(demo.duck().unwrap().position, size).unwrap();
+    // Where sunlight through the duck's waterline meets the floor.
+    let sun = demo.sun();
+    let r = wavepool::scene::refracted_sun(sun);
+    let waterline = Vec3::new(0.25, 0.0, 0.0);
+    let floor = waterline + r * (-wavepool::scene::DEPTH / r.y);
+    let shadow_px = demo.camera.project(floor, size).unwrap();
+    let (yellow_with, yellow_without) = (yellow_pixels(&with, duck_px, 14), yellow_pixels(&without, duck_px, 14));
+    let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
+    let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
+    println!(
+        "duck at pixel {duck_px}: {yellow_with} yellow pixels (none: {yellow_without}); floor at {floor} (pixel \
+         {shadow_px}): luma {shadow:.3} with the duck, {lit:.3} without"
+    );
+    assert!(yellow_with > 200 && yellow_without == 0, "duck not seen: {yellow_with} / {yellow_without}");
+    assert!(shadow < 0.75 * lit, "no shadow on the floor: {shadow} vs {lit}");
+}
+
+#[test]
+fn the_bodies_use_water_heights_read_back_asynchronously() {
+    // The frame path never blocks on the GPU: no blocking poll in the core's sources (tests,
+    // the CLI and the benchmarks wait; the demo only polls without waiting).
+    for (name, source) in [
+        ("demo.rs", include_str!("../src/demo.rs")),
+        ("sim.rs", include_str!("../src/sim.rs")),
+        ("physics.rs", include_str!("../src/physics.rs")),
+        ("render.rs", include_str!("../src/render.rs")),
+        ("web.rs", include_str!("../src/web.rs")),
+        ("viewer.rs", include_str!("../src/viewer.rs")),
+    ] {
+        for blocking in ["wait_indefinitely", "PollType::Wait", "read_texture(", "read_state("] {
+            let code: String = source.lines().filter(|l| !l.trim_start().starts_with("//")).collect();
+            // HeightField::read_state, for tests and tools, reads the whole texture back.
+            let allowed = name == "sim.rs" && blocking.starts_with("read_");
+            assert!(allowed || !code.contains(blocking), "{name} calls {blocking}");
+        }
+    }
+    // The heights do arrive, one or two frames after they were asked for, and follow the
+    // water: a duck on a wave sees it.
+    let mut demo = demo_with(DUCK, true);
+    demo.params.set(ParamId::Gravity, 1.0);
+    let mut latencies = Vec::new();
+    let mut heights = Vec::new();
+    run(&mut demo, 120, |demo, k| {
+        if k == 60 {
+            demo.add_drop(0.35, -0.3, 0.25, 0.04);
+        }
+        latencies.extend(demo.probe_latency());
+        heights.push(demo.body(BodyId::Duck).pose.position.y);
+    });
+    let spread =
+        |h: &[f32]| h.iter().fold(f32::NEG_INFINITY, |a, &b| a.max(b)) - h.iter().fold(f32::INFINITY, |a, &b| a.min(b));
+    let (calm, wave) = (spread(&heights[40..60]), spread(&heights[60..]));
+    println!(
+        "probe latency per frame: {latencies:?}; duck bobbing {:.2} mm calm, {:.1} mm on the wave",
+        calm * 1e3,
+        wave * 1e3
+    );
+    assert!(latencies.len() >= 115, "heights arrived in only {} of 120 frames", latencies.len());
+    assert!(latencies.iter().all(|&l| (1..=2).contains(&l)), "latencies {latencies:?}");
+    assert!(wave > 5e-3 && wave > 10.0 * calm, "the duck did not ride the wave: {wave} m vs {calm} m calm");
+}
