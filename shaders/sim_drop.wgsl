@@ -29,21 +29,30 @@ fn displaced_column(x: vec2<f32>, first: i32) -> f32 {
     return depth * (exp(y1 / depth) - exp(y0 / depth));
 }
 
+// Which step of the frame this pass comes before: its moves are applied, and the drops
+// with step 0 only.
+struct Step {
+    index: vec4<f32>,
+};
+@group(1) @binding(0) var<uniform> push_step: Step;
+
 @fragment
 fn fs_drop(in: FullscreenOut) -> @location(0) vec4<f32> {
     let p = texel(in.position);
     var s = cell(p);
     let x = cell_centre(p);
-    let count = i32(sim.drops_info.x);
+    let first_step = push_step.index.x < 0.5;
+    let count = select(0, i32(sim.drops_info.x), first_step);
     for (var i = 0; i < count; i++) {
         let drop = sim.drops[i];
         let d = length(x - drop.xy) / drop.z;
         s.x += drop.w * (0.5 - 0.5 * cos(PI * max(1.0 - d, 0.0)));
     }
     let moves = i32(sim.bodies.x);
+    let base = i32(push_step.index.x) * 24;
     for (var i = 0; i < moves; i++) {
-        s.x += displaced_column(x, 8 * i + 4) - displaced_column(x, 8 * i);
+        s.x += displaced_column(x, base + 8 * i + 4) - displaced_column(x, base + 8 * i);
     }
-    s.x = bounded_height(s.x - sim.drops_info.y);
+    s.x = bounded_height(s.x - select(0.0, sim.drops_info.y, first_step));
     return s;
 }

@@ -11,9 +11,10 @@ struct Sim {
     drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
     bodies: vec4<f32>,      // x number of hull moves, y rest level the mean is held at (m),
                             // z depth over which a body's push fades (m)
-    // Per hull move, 8 entries: before, then after the move, each the ellipsoid's centre (m)
-    // and the three columns of the matrix taking offsets from it into the unit ball.
-    hulls: array<vec4<f32>, 24>,
+    // Per step of the frame (4), per hull move (3), 8 entries: before, then after the move,
+    // each the ellipsoid's centre (m) and the three columns of the matrix taking offsets from
+    // it into the unit ball.
+    hulls: array<vec4<f32>, 96>,
     probes: array<vec4<f32>, 8>, // points (x, z in m) to sample for the bodies, two per entry
 };
 

@@ -487,8 +487,9 @@ impl WaterDemo {
     }
 
     /// Moves the bodies through `steps` fixed steps on the water planes under them; a body
-    /// held by the pointer stays put. The two bump off each other.
-    fn step_bodies(&mut self, steps: u32) {
+    /// held by the pointer stays put. The two bump off each other. Returns, per step, how the
+    /// bodies' hulls moved in it, to push the water by.
+    fn step_bodies(&mut self, steps: u32) -> Vec<Vec<HullMove>> {
         let planes = self.water_planes();
         let gravity = self.params.flag(ParamId::Gravity);
         let held = match self.drag {
@@ -502,6 +503,7 @@ impl WaterDemo {
             density: self.density(id),
         });
         let both = self.shows(BodyId::Sphere) && self.shows(BodyId::Duck);
+        let mut pushes = Vec::with_capacity(steps as usize);
         for _ in 0..steps.max(1) {
             for id in BodyId::ALL {
                 let k = id as usize;
@@ -525,26 +527,43 @@ impl WaterDemo {
                     physics::keep_in_pool(&mut self.bodies[k].pose, &hulls[*id as usize]);
                 }
             }
+            if steps > 0 {
+                pushes.push(self.take_pushes());
+            }
         }
+        pushes
     }
 
-    /// Tells the water what the bodies did this frame: how their hulls moved since it last
-    /// took them in (only when it steps), the rest level their submerged volume raises, and
-    /// where to sample heights for the next frames.
-    fn couple_water(&mut self, steps: u32) {
+    /// How each body's hull moved since the water last took it in; records where it is now.
+    /// A body that just appeared only records its place (the rest level accounts for it).
+    fn take_pushes(&mut self) -> Vec<HullMove> {
         let mut moves = Vec::new();
+        for id in BodyId::ALL {
+            let k = id as usize;
+            if !self.shows(id) {
+                self.pushed[k] = None;
+                continue;
+            }
+            let pose = self.bodies[k].pose;
+            let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
+            if let Some(previous) = &self.pushed[k] {
+                moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
+            }
+            self.pushed[k] = Some(current);
+        }
+        moves
+    }
+
+    /// Tells the water what the bodies did this frame: how their hulls moved in each step
+    /// (`pushes`), the rest level their submerged volume raises, and where to sample heights
+    /// for the next frames.
+    fn couple_water(&mut self, pushes: Vec<Vec<HullMove>>) {
         let mut probes = Vec::with_capacity(2 * PROBES_PER_BODY);
         for id in BodyId::ALL {
             let k = id as usize;
             let pose = self.bodies[k].pose;
-            let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
-            if !self.shows(id) {
-                self.pushed[k] = None;
-            } else if steps > 0 || self.pushed[k].is_none() {
-                if let Some(previous) = &self.pushed[k] {
-                    moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
-                }
-                self.pushed[k] = Some(current);
+            if self.shows(id) && self.pushed[k].is_none() {
+                self.pushed[k] = Some(self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
             }
             let radius = self.ring_radius(id);
             for i in 0..PROBES_PER_BODY {
@@ -553,7 +572,7 @@ impl WaterDemo {
             }
         }
         let rest_level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
-        self.water.set_bodies(BodyCoupling { moves, rest_level, probes });
+        self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
     }
 
     /// Flattens the water and puts the bodies back where they started, at rest.
@@ -634,7 +653,7 @@ impl WaterDemo {
             self.clock.advance(frame_time)
         };
         self.steps_taken += steps as u64;
-        self.step_bodies(steps);
+        let pushes = self.step_bodies(steps);
         let wanted_size = self.params.get(ParamId::SimSize);
         if wanted_size != self.applied_sim_size {
             self.applied_sim_size = wanted_size;
@@ -643,7 +662,7 @@ impl WaterDemo {
             self.water.set_frames(frames);
             self.renderer.rebind_water(device, &self.water);
         }
-        self.couple_water(steps);
+        self.couple_water(pushes);
         let settings = WaveSettings {
             wave_speed: self.params.get(ParamId::WaveSpeed),
             damping: self.params.get(ParamId::Damping),

@@ -280,8 +280,22 @@ impl PingPong {
     /// Runs `pass` reading the current texture (through `groups[current]`) and writing the
     /// other, then makes the written one current.
     pub fn run(&mut self, encoder: &mut wgpu::CommandEncoder, pass: &FullscreenPass, groups: &[wgpu::BindGroup; 2]) {
+        self.run_with(encoder, pass, groups, None);
+    }
+
+    /// [`PingPong::run`] with one more bind group (group 1) that does not depend on the side.
+    pub fn run_with(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        pass: &FullscreenPass,
+        groups: &[wgpu::BindGroup; 2],
+        extra: Option<&wgpu::BindGroup>,
+    ) {
         let next = 1 - self.current;
-        pass.run(encoder, &self.views[next], &[&groups[self.current]]);
+        match extra {
+            Some(extra) => pass.run(encoder, &self.views[next], &[&groups[self.current], extra]),
+            None => pass.run(encoder, &self.views[next], &[&groups[self.current]]),
+        }
         self.current = next;
     }
 }

@@ -42,8 +42,11 @@ pub struct HullMove {
     pub to: HullSlot,
 }
 
-/// Most ellipsoid moves one frame passes to the water (the sphere, and the duck's body and head).
+/// Most ellipsoid moves one step passes to the water (the sphere, and the duck's body and head).
 pub const MAX_HULL_MOVES: usize = 3;
+/// Steps of one frame whose body moves are applied each before its own step (later steps' moves
+/// are added to the last), so that the water is pushed the same at any frame rate.
+pub const MAX_PUSH_STEPS: usize = 4;
 /// Most points the water is sampled at for the bodies each frame.
 pub const MAX_PROBES: usize = 16;
 /// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).
@@ -79,8 +82,9 @@ pub fn displaced_column(x: f32, z: f32, hull: &HullSlot) -> f32 {
 /// What the bodies in the pool do to the water in a frame, set before [`HeightField::encode`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct BodyCoupling {
-    /// Ellipsoid moves to push the water by (at most [`MAX_HULL_MOVES`]).
-    pub moves: Vec<HullMove>,
+    /// Per step of the frame, the ellipsoid moves to push the water by before that step (at
+    /// most [`MAX_HULL_MOVES`] per step, [`MAX_PUSH_STEPS`] steps).
+    pub moves: Vec<Vec<HullMove>>,
     /// Mean height (m) the water is held at: the bodies' submerged volume over the pool's
     /// area, because that volume of water has been pushed up into the surface.
     pub rest_level: f32,
@@ -145,7 +149,7 @@ struct SimUniforms {
     drops_info: [f32; 4],
     drops: [[f32; 4]; MAX_DROPS_PER_PASS],
     bodies: [f32; 4],
-    hulls: [[f32; 4]; MAX_HULL_MOVES * 8],
+    hulls: [[f32; 4]; MAX_PUSH_STEPS * MAX_HULL_MOVES * 8],
     probes: [[f32; 4]; MAX_PROBES / 2],
 }
 
@@ -175,8 +179,8 @@ pub struct StepPlan {
     pub velocity_decay: f32,
     /// Sponge damping rate at the wall (1/s); 0 for reflecting walls.
     pub sponge_rate: f32,
-    /// Body moves applied with the drops.
-    pub moves: Vec<HullMove>,
+    /// Body moves per step: the first step's with the drops, each later one's before its step.
+    pub moves: Vec<Vec<HullMove>>,
     /// Mean height the water is held at (m); heights are bounded around it.
     pub rest_level: f32,
 }
@@ -207,14 +211,23 @@ impl StepPlan {
         }
     }
 
-    /// Whether the drop pass has anything to do.
-    pub fn pushes_water(&self) -> bool {
-        !self.drops.is_empty() || !self.moves.is_empty()
+    /// Whether the drop pass has anything to do before step `step` (0: with the drops).
+    pub fn pushes_water(&self, step: usize) -> bool {
+        (step == 0 && !self.drops.is_empty()) || self.moves.get(step).is_some_and(|m| !m.is_empty())
+    }
+
+    /// Updates (substeps) per step.
+    pub fn updates_per_step(&self, steps: u32) -> u32 {
+        if steps == 0 {
+            0
+        } else {
+            self.updates / steps
+        }
     }
 
     /// Whether the normals need recomputing after this batch.
     pub fn changes_state(&self) -> bool {
-        self.updates > 0 || self.pushes_water()
+        self.updates > 0 || (0..self.moves.len().max(1)).any(|k| self.pushes_water(k))
     }
 }
 
@@ -300,6 +313,8 @@ struct GpuSim {
     uniforms: wgpu::Buffer,
     layout: wgpu::BindGroupLayout,
     bind_groups: [wgpu::BindGroup; 2],
+    /// Per step of a frame, a group telling the drop pass which step's moves to apply.
+    step_groups: Vec<wgpu::BindGroup>,
     drop_pass: FullscreenPass,
     resample_pass: FullscreenPass,
     update_pass: FullscreenPass,
@@ -563,9 +578,32 @@ impl GpuSim {
                 FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
             )
         };
+        let step_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sim step layout"),
+            entries: &[gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT)],
+        });
+        let step_groups = (0..MAX_PUSH_STEPS)
+            .map(|k| {
+                let buffer = gpu::uniform_buffer(device, "sim step", &[k as f32, 0.0, 0.0, 0.0]);
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("sim step group"),
+                    layout: &step_layout,
+                    entries: &[wgpu::BindGroupEntry { binding: 0, resource: buffer.as_entire_binding() }],
+                })
+            })
+            .collect();
+        let drop_pass = FullscreenPass::new(
+            device,
+            "sim drop",
+            &[gpu::wgsl::SIM_SHARED, gpu::wgsl::SIM_DROP],
+            "fs_drop",
+            &[&layout, &step_layout],
+            FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
+        );
         let bodies = BodyProbe::new(device, &layout);
         Self {
-            drop_pass: pass("sim drop", gpu::wgsl::SIM_DROP, "fs_drop"),
+            drop_pass,
+            step_groups,
             update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
             normals_pass: pass("sim normals", gpu::wgsl::SIM_NORMALS, "fs_normals"),
             resample_pass: pass("sim resample", gpu::wgsl::SIM_RESAMPLE, "fs_resample"),
@@ -587,12 +625,17 @@ impl GpuSim {
         for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];
         }
-        u.bodies = [plan.moves.len() as f32, plan.rest_level, DISPLACEMENT_DEPTH, 0.0];
-        for (slots, m) in u.hulls.chunks_mut(8).zip(&plan.moves) {
-            for (k, hull) in [m.from, m.to].iter().enumerate() {
-                slots[4 * k] = hull.centre.extend(0.0).to_array();
-                for c in 0..3 {
-                    slots[4 * k + 1 + c] = hull.unit_from_world.col(c).extend(0.0).to_array();
+        let per_step = plan.moves.iter().map(Vec::len).max().unwrap_or(0);
+        u.bodies = [per_step as f32, plan.rest_level, DISPLACEMENT_DEPTH, 0.0];
+        for (step, moves) in plan.moves.iter().enumerate().take(MAX_PUSH_STEPS) {
+            let slots = &mut u.hulls[step * MAX_HULL_MOVES * 8..][..MAX_HULL_MOVES * 8];
+            // Steps with fewer moves keep zero entries: a zero matrix displaces nothing.
+            for (slots, m) in slots.chunks_mut(8).zip(moves) {
+                for (k, hull) in [m.from, m.to].iter().enumerate() {
+                    slots[4 * k] = hull.centre.extend(0.0).to_array();
+                    for c in 0..3 {
+                        slots[4 * k + 1 + c] = hull.unit_from_world.col(c).extend(0.0).to_array();
+                    }
                 }
             }
         }
@@ -688,7 +731,7 @@ impl HeightField {
             rest_level: self.coupling.rest_level,
             probes: std::mem::take(&mut self.coupling.probes),
         };
-        coupling.moves.truncate(MAX_HULL_MOVES);
+        coupling.moves = merge_push_steps(coupling.moves);
         coupling.probes.truncate(MAX_PROBES);
         let sim = match &mut self.engine {
             Engine::Gpu(sim) => sim,
@@ -708,11 +751,15 @@ impl HeightField {
         plan.moves = coupling.moves;
         plan.rest_level = coupling.rest_level;
         sim.write_uniforms(queue, &plan, &coupling.probes, self.size, self.half_width);
-        if plan.pushes_water() {
-            self.state.run(encoder, &sim.drop_pass, &sim.bind_groups);
-        }
-        for _ in 0..plan.updates {
-            self.state.run(encoder, &sim.update_pass, &sim.bind_groups);
+        let per_step = plan.updates_per_step(steps);
+        for step in 0..(steps as usize).max(1) {
+            if plan.pushes_water(step) {
+                let slot = step.min(MAX_PUSH_STEPS - 1);
+                self.state.run_with(encoder, &sim.drop_pass, &sim.bind_groups, Some(&sim.step_groups[slot]));
+            }
+            for _ in 0..per_step {
+                self.state.run(encoder, &sim.update_pass, &sim.bind_groups);
+            }
         }
         if plan.changes_state() {
             sim.mean.encode(encoder, self.state.current());
@@ -853,6 +900,24 @@ impl HeightField {
         let bytes = gpu::read_texture(device, queue, self.state.current_texture());
         bytemuck::cast_slice(&bytes).to_vec()
     }
+}
+
+/// At most [`MAX_PUSH_STEPS`] steps of at most [`MAX_HULL_MOVES`] moves: the moves of later
+/// steps join the last step's (the same ellipsoid's moves chain: from of the first, to of
+/// the last).
+fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMove>> {
+    for step in &mut moves {
+        step.truncate(MAX_HULL_MOVES);
+    }
+    while moves.len() > MAX_PUSH_STEPS {
+        let later = moves.pop().expect("more than one step");
+        if let Some(last) = moves.last_mut() {
+            for (m, l) in last.iter_mut().zip(later) {
+                m.to = l.to;
+            }
+        }
+    }
+    moves
 }
 
 /// Writes the CPU engine's state into the texture the renderer samples (16 B per cell).

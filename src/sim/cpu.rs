@@ -118,21 +118,24 @@ impl CpuHeightField {
         steps: u32,
         dt: f32,
         settings: WaveSettings,
-        moves: Vec<HullMove>,
+        moves: Vec<Vec<HullMove>>,
         rest_level: f32,
     ) -> bool {
         let mut plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         plan.moves = moves;
         plan.rest_level = rest_level;
         self.rest_level = rest_level;
-        if plan.pushes_water() {
-            self.apply_drops(&plan);
-        }
         if plan.sponge_rate > 0.0 {
             self.prepare_absorb(&plan);
         }
-        for _ in 0..plan.updates {
-            self.update(&plan);
+        let per_step = plan.updates_per_step(steps);
+        for step in 0..(steps as usize).max(1) {
+            if plan.pushes_water(step) {
+                self.apply_drops(&plan, step);
+            }
+            for _ in 0..per_step {
+                self.update(&plan);
+            }
         }
         if plan.changes_state() {
             self.update_normals(plan.rest_level);
@@ -211,9 +214,10 @@ impl CpuHeightField {
 
     /// Drops over the whole grid, body moves over the cells their ellipsoids can reach, then the
     /// correction and bounds everywhere: the sums of `shaders/sim_drop.wgsl` in its order.
-    fn apply_drops(&mut self, plan: &StepPlan) {
+    fn apply_drops(&mut self, plan: &StepPlan, step: usize) {
         let n = self.size as usize;
-        if !plan.drops.is_empty() {
+        let first = step == 0;
+        if first && !plan.drops.is_empty() {
             for j in 0..n {
                 let z = self.centre(j as u32);
                 for i in 0..n {
@@ -226,7 +230,7 @@ impl CpuHeightField {
                 }
             }
         }
-        for m in &plan.moves {
+        for m in plan.moves.get(step).into_iter().flatten() {
             let (i0, i1, j0, j1) = self.cells_under(&[m.from, m.to]);
             for j in j0..=j1 {
                 let z = self.centre(j as u32);
@@ -237,8 +241,9 @@ impl CpuHeightField {
             }
         }
         let level = plan.rest_level;
+        let correction = if first { plan.correction } else { 0.0 };
         for h in &mut self.height {
-            *h = bounded(*h - plan.correction - level, MAX_HEIGHT) + level;
+            *h = bounded(*h - correction - level, MAX_HEIGHT) + level;
         }
     }
 
