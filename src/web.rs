@@ -349,8 +349,11 @@ impl WebDemo {
         self.device.destroy();
     }
 
-    /// `{ backend, adapter, simSize, simTime, meanLevel, maxAbsHeight, width, height }`;
-    /// the water statistics are read back asynchronously and are a frame or two old.
+    /// `{ backend, adapter, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
+    /// spherePosition, duckPosition, submergedVolume, probeLatency }`; the water statistics
+    /// are read back asynchronously and are a frame or two old; positions are [x, y, z] in m
+    /// or null when the object is not in the pool; probeLatency is how many frames old the
+    /// water heights the objects last floated on were (null before the first arrived).
     pub fn stats(&self) -> js_sys::Object {
         let o = js_sys::Object::new();
         let level = self.demo.water_level().unwrap_or_default();
@@ -363,6 +366,16 @@ impl WebDemo {
         set(&o, "maxAbsHeight", level.max_abs as f64);
         set(&o, "width", self.config.width);
         set(&o, "height", self.config.height);
+        let position = |p: Option<glam::Vec3>| match p {
+            Some(p) => {
+                JsValue::from(p.to_array().iter().map(|&v| JsValue::from_f64(v as f64)).collect::<js_sys::Array>())
+            }
+            None => JsValue::NULL,
+        };
+        set(&o, "spherePosition", position(self.demo.sphere().map(|s| s.centre)));
+        set(&o, "duckPosition", position(self.demo.duck().map(|p| p.position)));
+        set(&o, "submergedVolume", self.demo.submerged_volume() as f64);
+        set(&o, "probeLatency", self.demo.probe_latency().map_or(JsValue::NULL, |l| JsValue::from_f64(l as f64)));
         o
     }
 }

@@ -80,7 +80,8 @@ async fn both_backends_show_the_same_scene() {
 
 /// Page with one demo in a 400x300 element and a lighter mesh: software rendering here
 /// draws about one frame a second at this size (see the README's figures).
-const SMALL: &str = "test/sized.html?width=400&height=300&drop_radius=0.1&drop_strength=0.04";
+/// The pool without objects, so the water is calm until clicked.
+const SMALL: &str = "test/sized.html?width=400&height=300&drop_radius=0.1&drop_strength=0.04&objects=none";
 
 /// Page script: watches a 50x50 CSS-pixel square of the demo's canvas around (__X__, __Y__) in every
 /// animation frame, right after the demo has drawn it (same task, so both WebGPU and WebGL2
@@ -220,7 +221,7 @@ async fn controls_change_parameters() {
     assert!(shown.as_str().unwrap().ends_with("m/s"), "value shown without unit: {shown}");
 
     browser.js("document.querySelector('#pool').shadowRoot.querySelector('input[name=gravity]').click();").await;
-    assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0);
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 0.0, "gravity starts on; a click turns it off");
     // The grid resolution is a choice (a select): changing it resamples the running water.
     browser
         .js("const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=sim_size]'); s.value = '512'; s.dispatchEvent(new Event('change'));")
@@ -245,11 +246,11 @@ async fn keys_act_only_with_focus() {
     let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
     let body = browser.client.find(fantoccini::Locator::Css("body")).await.unwrap();
     body.send_keys("g").await.unwrap();
-    assert_eq!(browser.js("return window.demo.get('gravity');").await, 0.0, "key acted without focus");
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0, "key acted without focus");
     browser.js("document.querySelector('#pool').shadowRoot.querySelector('canvas').focus();").await;
     let canvas = browser.client.active_element().await.unwrap();
     canvas.send_keys("g ").await.unwrap();
-    assert_eq!(browser.js("return window.demo.get('gravity');").await, 1.0);
+    assert_eq!(browser.js("return window.demo.get('gravity');").await, 0.0);
     assert_eq!(browser.js("return window.demo.get('paused');").await, 1.0);
     browser.close().await;
 }
@@ -368,4 +369,59 @@ async fn creation_options_are_clamped() {
     assert_eq!(browser.js("return window.demo.stats().simSize;").await, 256, "sim_size 300 snaps to 256");
     assert_eq!(browser.js("return window.demo.get('sim_size');").await, 256);
     browser.close().await;
+}
+
+/// The sphere and the duck in the browser: the duck is drawn where it floats (duck-yellow
+/// pixels around its projection; none there with objects=none), it floats near its waterline,
+/// the water heights the objects float on are at most two frames old, and the `objects`
+/// option takes the choice's name.
+async fn objects_float(graphics: Graphics, backend: &str) {
+    let page = format!("test/sized.html?width=400&height=300&backend={backend}&objects=duck");
+    let (browser, _server) = open_demo(graphics, &page, backend).await;
+    assert_eq!(browser.js("return window.demo.get('objects');").await, 2.0, "objects=duck by name");
+    assert!(
+        browser.wait_for("window.demo.stats().probeLatency !== null && window.demo.stats().simTime > 1", READY).await,
+        "{backend}: no water heights came back: {}",
+        browser.js("return window.demo.stats();").await
+    );
+    let mut latencies = Vec::new();
+    for _ in 0..5 {
+        latencies.push(browser.js("return window.demo.stats().probeLatency;").await.as_f64().unwrap());
+        tokio::time::sleep(Duration::from_millis(300)).await;
+    }
+    let stats = browser.js("return window.demo.stats();").await;
+    let duck = &stats["duckPosition"];
+    assert!(stats["spherePosition"].is_null(), "objects=duck shows the sphere: {stats}");
+    let y = duck[1].as_f64().expect("duck position");
+    assert!(y.abs() < 0.05, "{backend}: the duck is not floating at the surface: {stats}");
+    let p = browser.js(&format!("return window.demo.project({}, {}, {});", duck[0], duck[1], duck[2])).await;
+    let (x, y) = (p["x"].as_f64().unwrap(), p["y"].as_f64().unwrap());
+    let yellow = |shot: &support::Shot| {
+        shot.region(Rect::around(x, y, 14))
+            .iter()
+            .filter(|p| p[0] > 180 && p[1] > 115 && p[2] < 90 && p[0] as i32 - p[2] as i32 > 120)
+            .count()
+    };
+    let with_duck = yellow(&browser.screenshot().await);
+    browser.js("window.demo.set('objects', 'none');").await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let without = yellow(&browser.screenshot().await);
+    eprintln!(
+        "{backend}: duck at ({x:.0}, {y:.0}): {with_duck} yellow pixels, {without} without; latencies {latencies:?}"
+    );
+    assert!(with_duck > 60 && without == 0, "{backend}: duck not seen ({with_duck} yellow pixels, {without} without)");
+    assert!(latencies.iter().all(|&l| (1.0..=2.0).contains(&l)), "{backend}: heights {latencies:?} frames old");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn objects_float_on_webgpu() {
+    let _g = serial();
+    objects_float(Graphics::WebGpu, "webgpu").await;
+}
+
+#[tokio::test]
+async fn objects_float_on_webgl2() {
+    let _g = serial();
+    objects_float(Graphics::WebGl2Only, "webgl2").await;
 }

@@ -95,8 +95,13 @@ function readOptions(options, table) {
   return out;
 }
 
-// Turns "true"/"false"/"1.5" from a URL or attribute into a number for set().
-function toNumber(value) {
+// Turns "true"/"false"/"1.5" from a URL or attribute, or a choice's name ("duck" for
+// objects), into a number for set(). `spec`: the parameter's table entry, if known.
+function toNumber(value, spec) {
+  if (spec && spec.kind === "choice" && typeof value === "string") {
+    const i = spec.choiceNames.indexOf(value.toLowerCase());
+    if (i >= 0) return spec.choices[i];
+  }
   if (value === true || value === "true" || value === "on") return 1;
   if (value === false || value === "false" || value === "off") return 0;
   return Number(value);
@@ -152,7 +157,7 @@ export async function mount(element, options = {}) {
     handle._table = table;
     handle._opts = opts;
     await handle._start();
-    for (const [name, value] of Object.entries(opts.params)) handle.set(name, toNumber(value));
+    for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.controls) handle._buildControls();
     handle._status(null);
     handle._run();
@@ -541,7 +546,8 @@ class Demo {
 
   /** Sets a parameter; out-of-range values are clamped (console warning). Returns the value in effect. */
   set(name, value) {
-    const v = this._alive().set(String(name), toNumber(value));
+    const spec = this._table && this._table.find((p) => p.name === String(name));
+    const v = this._alive().set(String(name), toNumber(value, spec));
     this._refreshControls(String(name));
     return v;
   }
