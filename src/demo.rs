@@ -620,8 +620,9 @@ impl WaterDemo {
         let _ = device.poll(wgpu::PollType::Poll);
     }
 
-    /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts the
-    /// asynchronous read of the water statistics ([`WaterDemo::water_level`]).
+    /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts any
+    /// asynchronous read of the water statistics ([`WaterDemo::water_level`]) and the
+    /// objects' water samples not yet started (encode_frame starts them already).
     pub fn after_submit(&self) {
         self.water.after_submit();
     }
@@ -632,8 +633,10 @@ impl WaterDemo {
         self.water.level()
     }
 
-    /// Records a frame into `encoder`; `mark` is called at each [`Stage`] boundary (for
-    /// timestamps). Writes uniform buffers, so submit before encoding another frame.
+    /// Simulates a frame (submitted at once, in a command buffer of its own) and records its
+    /// drawing into `encoder`; `mark` is called at each [`Stage`] boundary (for timestamps;
+    /// the first two in the simulation's encoder). Writes uniform buffers, so submit before
+    /// encoding another frame.
     #[allow(clippy::too_many_arguments)]
     pub fn encode_frame(
         &mut self,
@@ -654,11 +657,16 @@ impl WaterDemo {
         };
         self.steps_taken += steps as u64;
         let pushes = self.step_bodies(steps);
+        // The simulation goes in a submission of its own, ahead of the drawing: the objects'
+        // water samples and the water statistics can then be mapped as soon as the water is
+        // done rather than after the whole frame, which keeps them a frame old even where
+        // drawing is slow (software rendering in a browser).
+        let mut sim_encoder = device.create_command_encoder(&Default::default());
         let wanted_size = self.params.get(ParamId::SimSize);
         if wanted_size != self.applied_sim_size {
             self.applied_sim_size = wanted_size;
             let frames = self.water.frames();
-            self.water = self.water.resampled(device, queue, encoder, wanted_size as u32);
+            self.water = self.water.resampled(device, queue, &mut sim_encoder, wanted_size as u32);
             self.water.set_frames(frames);
             self.renderer.rebind_water(device, &self.water);
         }
@@ -668,9 +676,11 @@ impl WaterDemo {
             damping: self.params.get(ParamId::Damping),
             absorbing_walls: self.params.flag(ParamId::AbsorbingWalls),
         };
-        mark(encoder, Stage::Start);
-        self.water.encode(queue, encoder, steps, STEP_DT, settings);
-        mark(encoder, Stage::AfterSimulation);
+        mark(&mut sim_encoder, Stage::Start);
+        self.water.encode(queue, &mut sim_encoder, steps, STEP_DT, settings);
+        mark(&mut sim_encoder, Stage::AfterSimulation);
+        queue.submit([sim_encoder.finish()]);
+        self.water.after_submit();
         let view = self.view();
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(encoder, &view, &self.water);
