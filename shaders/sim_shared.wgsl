@@ -15,7 +15,6 @@ struct Sim {
     // each the ellipsoid's centre (m) and the three columns of the matrix taking offsets from
     // it into the unit ball.
     hulls: array<vec4<f32>, 96>,
-    probes: array<vec4<f32>, 8>, // points (x, z in m) to sample for the bodies, two per entry
 };
 
 @group(0) @binding(0) var<uniform> sim: Sim;
@@ -55,15 +54,4 @@ fn bounded(x: f32, limit: f32) -> f32 {
 // Height bounded around the rest level (which bodies in the water raise).
 fn bounded_height(h: f32) -> f32 {
     return bounded(h - sim.bodies.y, sim.bounds.x) + sim.bodies.y;
-}
-
-// Bilinear height and velocity at pool point x (m), by hand with textureLoad (no filtering
-// of 32-bit floats needed).
-fn sample_state(x: vec2<f32>) -> vec4<f32> {
-    let p = (x / sim.grid.w * 0.5 + 0.5) * sim.grid.x - 0.5;
-    let base = vec2<i32>(floor(p));
-    let f = p - floor(p);
-    let a = mix(cell(base), cell(base + vec2<i32>(1, 0)), f.x);
-    let b = mix(cell(base + vec2<i32>(0, 1)), cell(base + vec2<i32>(1, 1)), f.x);
-    return mix(a, b, f.y);
 }

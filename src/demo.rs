@@ -319,8 +319,9 @@ impl WaterDemo {
         }
     }
 
-    /// Frames between the water heights the bodies last used and the frame that used them
-    /// (1 when a readback completes within a frame); `None` before the first arrived.
+    /// Frames between the water heights the bodies last used and the frame that used them:
+    /// 1, the heights of the water as the frame starts (sampled on the CPU at the end of the
+    /// frame before, see [`HeightField::probes`]); `None` before the first frame.
     pub fn probe_latency(&self) -> Option<u64> {
         self.probe_latency
     }

@@ -22,7 +22,6 @@ pub mod wgsl {
     pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
     pub const DEBUG_VIEW: &str = include_str!("../shaders/debug_view.wgsl");
     pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
-    pub const SIM_PROBE: &str = include_str!("../shaders/sim_probe.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
 }
 

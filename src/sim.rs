@@ -47,6 +47,11 @@ pub const MAX_HULL_MOVES: usize = 3;
 /// Steps of one frame whose body moves are applied each before its own step (later steps' moves
 /// are added to the last), so that the water is pushed the same at any frame rate.
 pub const MAX_PUSH_STEPS: usize = 4;
+/// Cells per side of the CPU copy of the water the GPU engine keeps for the bodies' buoyancy
+/// (at most; a smaller grid keeps its own size). It gets the same drops, pushes and steps, so
+/// it holds the same waves at a resolution that still resolves everything a body of 0.2 m or
+/// more responds to, for about 0.1 ms per step.
+pub const SHADOW_SIZE: u32 = 128;
 /// Most points the water is sampled at for the bodies each frame.
 pub const MAX_PROBES: usize = 16;
 /// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).
@@ -89,7 +94,7 @@ pub struct BodyCoupling {
     /// area, because that volume of water has been pushed up into the surface.
     pub rest_level: f32,
     /// Points (x, z in m) to sample the water at for the bodies' buoyancy (at most
-    /// [`MAX_PROBES`]); the heights come back a frame or two later ([`HeightField::probes`]).
+    /// [`MAX_PROBES`]); see [`HeightField::probes`].
     pub probes: Vec<Vec2>,
 }
 
@@ -150,7 +155,6 @@ struct SimUniforms {
     drops: [[f32; 4]; MAX_DROPS_PER_PASS],
     bodies: [f32; 4],
     hulls: [[f32; 4]; MAX_PUSH_STEPS * MAX_HULL_MOVES * 8],
-    probes: [[f32; 4]; MAX_PROBES / 2],
 }
 
 /// Largest |height| an update may leave (m); it clamps to it and replaces NaN or infinity
@@ -321,7 +325,8 @@ struct GpuSim {
     normals_pass: FullscreenPass,
     mean: MeanLevel,
     probe: LevelProbe,
-    bodies: BodyProbe,
+    /// The water again, on the CPU at [`SHADOW_SIZE`], for the bodies' buoyancy.
+    shadow: Box<cpu::CpuHeightField>,
 }
 
 enum Engine {
@@ -471,69 +476,8 @@ impl LevelProbe {
     }
 }
 
-/// Samples the water at the bodies' probe points in a full-screen pass into a row of texels
-/// (`shaders/sim_probe.wgsl`) and reads that row back without waiting ([`gpu::AsyncReadback`]):
-/// 256 bytes, ready one or two frames later. The bodies never make a frame wait on the GPU.
-struct BodyProbe {
-    target: wgpu::Texture,
-    view: wgpu::TextureView,
-    pass: FullscreenPass,
-    readback: gpu::AsyncReadback,
-    /// The points and frame of the read in flight.
-    in_flight: std::cell::RefCell<Option<(Vec<Vec2>, u64)>>,
-}
-
-impl BodyProbe {
-    fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout) -> Self {
-        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
-        let target = gpu::texture_2d(device, "body probes", MAX_PROBES as u32, 1, 1, 1, STATE_FORMAT, usage);
-        Self {
-            view: target.create_view(&Default::default()),
-            target,
-            pass: FullscreenPass::new(
-                device,
-                "sim body probes",
-                &[gpu::wgsl::SIM_SHARED, gpu::wgsl::SIM_PROBE],
-                "fs_probe",
-                &[layout],
-                FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
-            ),
-            readback: gpu::AsyncReadback::new(device, "body probe readback", MAX_PROBES as u64 * 16),
-            in_flight: Default::default(),
-        }
-    }
-
-    /// A completed read, if any.
-    fn take(&self) -> Option<ProbeSamples> {
-        let bytes = self.readback.take()?;
-        let (points, frame) = self.in_flight.borrow_mut().take()?;
-        let cells: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-        let heights = cells.iter().take(points.len()).map(|c| c[0]).collect();
-        Some(ProbeSamples { points, heights, frame })
-    }
-
-    /// Samples `points` of the state `group` binds, when no read is in flight.
-    fn encode(&self, encoder: &mut wgpu::CommandEncoder, group: &wgpu::BindGroup, points: &[Vec2], frame: u64) {
-        if points.is_empty() {
-            return;
-        }
-        if let Some(buffer) = self.readback.record() {
-            self.pass.run(encoder, &self.view, &[group]);
-            encoder.copy_texture_to_buffer(
-                self.target.as_image_copy(),
-                wgpu::TexelCopyBufferInfo {
-                    buffer,
-                    layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: None, rows_per_image: None },
-                },
-                wgpu::Extent3d { width: MAX_PROBES as u32, height: 1, depth_or_array_layers: 1 },
-            );
-            *self.in_flight.borrow_mut() = Some((points.to_vec(), frame));
-        }
-    }
-}
-
 impl GpuSim {
-    fn new(device: &wgpu::Device, state: &PingPong, size: u32) -> Self {
+    fn new(device: &wgpu::Device, state: &PingPong, size: u32, half_width: f32) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sim layout"),
             entries: &[
@@ -600,7 +544,6 @@ impl GpuSim {
             &[&layout, &step_layout],
             FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
         );
-        let bodies = BodyProbe::new(device, &layout);
         Self {
             drop_pass,
             step_groups,
@@ -612,11 +555,11 @@ impl GpuSim {
             bind_groups,
             mean,
             probe: LevelProbe::new(device),
-            bodies,
+            shadow: Box::new(cpu::CpuHeightField::new(size.min(SHADOW_SIZE), half_width)),
         }
     }
 
-    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan, probes: &[Vec2], size: u32, half_width: f32) {
+    fn write_uniforms(&self, queue: &wgpu::Queue, plan: &StepPlan, size: u32, half_width: f32) {
         let mut u = SimUniforms::zeroed();
         u.grid = [size as f32, 1.0 / size as f32, 2.0 * half_width / size as f32, half_width];
         u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
@@ -639,9 +582,6 @@ impl GpuSim {
                 }
             }
         }
-        for (k, p) in probes.iter().take(MAX_PROBES).enumerate() {
-            u.probes[k / 2][2 * (k % 2)..][..2].copy_from_slice(&p.to_array());
-        }
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
     }
 }
@@ -659,7 +599,7 @@ impl HeightField {
         assert!(size.is_power_of_two() && size >= 16, "simulation size must be a power of two, at least 16");
         let state = PingPong::new(device, "water state", size, size, STATE_FORMAT, engine == SimEngine::Gpu);
         let engine = match engine {
-            SimEngine::Gpu => Engine::Gpu(Box::new(GpuSim::new(device, &state, size))),
+            SimEngine::Gpu => Engine::Gpu(Box::new(GpuSim::new(device, &state, size, half_width))),
             SimEngine::Cpu => Engine::Cpu {
                 water: Box::new(cpu::CpuHeightField::new(size, half_width)),
                 level: None,
@@ -701,7 +641,10 @@ impl HeightField {
         let ok = [drop.x, drop.z, drop.radius, drop.strength].iter().all(|v| v.is_finite());
         if ok && drop.radius > 0.0 && drop.strength != 0.0 {
             match &mut self.engine {
-                Engine::Gpu(_) => self.pending.push(drop),
+                Engine::Gpu(sim) => {
+                    self.pending.push(drop);
+                    sim.shadow.add_drop(drop);
+                }
                 Engine::Cpu { water, .. } => water.add_drop(drop),
             }
         }
@@ -750,7 +693,12 @@ impl HeightField {
         let mut plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         plan.moves = coupling.moves;
         plan.rest_level = coupling.rest_level;
-        sim.write_uniforms(queue, &plan, &coupling.probes, self.size, self.half_width);
+        sim.shadow.advance_with(steps, dt, settings, plan.moves.clone(), plan.rest_level);
+        if !coupling.probes.is_empty() {
+            let heights = coupling.probes.iter().map(|p| sim.shadow.height_at(p.x, p.y)).collect();
+            self.probes = Some(ProbeSamples { points: coupling.probes, heights, frame: self.frames });
+        }
+        sim.write_uniforms(queue, &plan, self.size, self.half_width);
         let per_step = plan.updates_per_step(steps);
         for step in 0..(steps as usize).max(1) {
             if plan.pushes_water(step) {
@@ -766,7 +714,6 @@ impl HeightField {
             self.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
         }
         sim.probe.encode(encoder, &sim.mean.result);
-        sim.bodies.encode(encoder, &sim.bind_groups[self.state.current()], &coupling.probes, self.frames);
     }
 
     /// Sets what the bodies do to the water in the next [`HeightField::encode`].
@@ -784,15 +731,11 @@ impl HeightField {
         self.frames = frames;
     }
 
-    /// The newest heights sampled at the bodies' probe points. On the GPU they arrive one or
-    /// two frames after they were asked for (asynchronous readback, never waited for); the
-    /// CPU engine samples at the end of its frame. Call once at the start of a frame.
-    pub fn probes(&mut self) -> Option<&ProbeSamples> {
-        if let Engine::Gpu(sim) = &self.engine {
-            if let Some(samples) = sim.bodies.take() {
-                self.probes = Some(samples);
-            }
-        }
+    /// The heights at the bodies' probe points, sampled at the end of the last
+    /// [`HeightField::encode`]: the water as the next frame starts from. Sampled on the CPU
+    /// (the CPU engine's own grid, or the GPU engine's [`SHADOW_SIZE`] shadow), so nothing is
+    /// ever read back from the GPU for them.
+    pub fn probes(&self) -> Option<&ProbeSamples> {
         self.probes.as_ref()
     }
 
@@ -818,7 +761,8 @@ impl HeightField {
                 upload(queue, new.state.current_texture(), water, cells);
                 *level = Some(water.level());
             }
-            (Engine::Gpu(_), Engine::Gpu(sim)) => {
+            (Engine::Gpu(old), Engine::Gpu(sim)) => {
+                *sim.shadow = old.shadow.resampled(size.min(SHADOW_SIZE));
                 let from_old = device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("sim resample source"),
                     layout: &sim.layout,
@@ -838,7 +782,7 @@ impl HeightField {
                 let calm = WaveSettings::reflecting(0.0, 0.0);
                 let mut plan = StepPlan::new(&mut no_drops, size, self.half_width, 0, 0.0, calm);
                 plan.rest_level = self.coupling.rest_level;
-                sim.write_uniforms(queue, &plan, &[], size, self.half_width);
+                sim.write_uniforms(queue, &plan, size, self.half_width);
                 new.state.run(encoder, &sim.resample_pass, &[from_old.clone(), from_old]);
                 sim.mean.encode(encoder, new.state.current());
                 new.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
@@ -853,7 +797,6 @@ impl HeightField {
     pub fn after_submit(&self) {
         if let Engine::Gpu(sim) = &self.engine {
             sim.probe.after_submit();
-            sim.bodies.readback.after_submit();
         }
     }
 
@@ -870,9 +813,12 @@ impl HeightField {
     /// Flattens the water and forgets queued drops.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.pending.clear();
-        if let Engine::Cpu { water, level, .. } = &mut self.engine {
-            **water = cpu::CpuHeightField::new(self.size, self.half_width);
-            *level = None;
+        match &mut self.engine {
+            Engine::Cpu { water, level, .. } => {
+                **water = cpu::CpuHeightField::new(self.size, self.half_width);
+                *level = None;
+            }
+            Engine::Gpu(sim) => *sim.shadow = cpu::CpuHeightField::new(sim.shadow.size(), self.half_width),
         }
         let zeros = vec![0u8; (self.size * self.size * 16) as usize];
         for texture in self.state.textures() {
