@@ -250,15 +250,14 @@ fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
 }
 
 // Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
-// sunlight (through the caustics under water, shadowed by the other object above it),
+// sunlight (through the caustics under water),
 // ambient darkened where the floor and walls are close (ambient occlusion).
 fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     var direct: f32;
     if (p.y < 0.0) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
     } else {
-        // Offset along the normal so an object does not shadow itself.
-        direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p + n * 0.02, scene.sun.xyz, 10.0);
+        direct = max(dot(n, scene.sun.xyz), 0.0);
     }
     // Occlusion by the floor and walls falls off with distance from each plane.
     let w = half_width();
