@@ -20,8 +20,9 @@ const SPHERE: f32 = 1.0;
 const DUCK: f32 = 2.0;
 
 /// Runs `frames` frames of 1/60 s into a small target. After each frame the test waits for the
-/// GPU to finish, as a display's frame pacing would (the browser gives a frame per vsync); the
-/// demo itself never waits.
+/// GPU to finish, as a display's frame pacing would (the browser gives a frame per vsync), so
+/// the water statistics read back without waiting are current; the demo itself never waits,
+/// and the bodies' heights come from the CPU's copy of the water whatever the pacing.
 fn run(demo: &mut WaterDemo, frames: u32, mut each: impl FnMut(&mut WaterDemo, u32)) {
     let g = common::gpu();
     let target = OffscreenTarget::new(&g.device, 64, 48);
