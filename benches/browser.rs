@@ -1,60 +1,346 @@
-//! Browser benchmark: frames per second of the demo at 800x600 (default quality) in headless
-//! Chromium on this machine, on WebGPU and on WebGL2, plus the time to the first frame.
-//! Run with `cargo bench --bench browser` after building dist/ (`./scripts/serve`, or `trunk build
-//! --release`). Prints one JSON object per backend. WAVEPOOL_BENCH_QUERY adds page options
-//! (`&float=none`), WAVEPOOL_BENCH_SECONDS and WAVEPOOL_BENCH_WARMUP set the timing.
+//! Browser benchmark: the frames per second our page DRAWS against Evan Wallace's classic WebGL
+//! Water, in the same headless Chromium run, counted the same way for both (the init script
+//! tests/pages/frame_counter.js, as /work/shared/notes/measuring.md describes: default-framebuffer
+//! draws per animation frame on WebGL, finished frames by `onSubmittedWorkDone` on WebGPU), not
+//! `requestAnimationFrame` callbacks, which overstate the rate of a page that queues work.
+//!
+//! For each backend (WebGPU, WebGL2) one Chromium with the WebGPU flags and an 800x600 viewport
+//! loads, alternately (A B A B), our `/index.html?backend=...` and the classic
+//! `/classic/index.html` (WebGL1 whatever the backend; served read-only from
+//! ../shared/anchors/webgl-water). Each page: load, wait until ready, warm up, reset the counter,
+//! measure, read it. Before each page the machine is left to settle (CPU mostly idle), so work a
+//! previous page queued does not land in the next one's window.
+//!
+//! Run: `cargo bench --bench browser` after building dist/ (`./scripts/serve` or
+//! `trunk build --release`; `WAVEPOOL_DIST` points elsewhere). Nothing else should run meanwhile:
+//! the benchmark ends leftover Chromium processes of earlier tests first and warns about any other.
+//! Settings (environment):
+//! - `WAVEPOOL_BENCH_ROUNDS` (2): how many A B pairs per backend;
+//! - `WAVEPOOL_BENCH_WARMUP` (5) and `WAVEPOOL_BENCH_SECONDS` (20): warm-up and window, s;
+//! - `WAVEPOOL_BENCH_QUERY`: extra options for our page, e.g. `&objects=none&quality=1`.
+//!
+//! Prints one JSON line per measurement, then one summary line per backend: mean drawn fps of
+//! ours and of the classic, their ratio, and the ratio per canvas pixel (fps x backing pixels).
 
 #[path = "../tests/support/browser.rs"]
 mod support;
 
 use std::time::{Duration, Instant};
 
-use support::{Browser, Graphics, StaticServer};
+use serde_json::{json, Value};
+use support::{end_stray_browsers, process_tree, processes, Browser, Graphics, StaticServer, FRAME_COUNTER_JS};
 
-#[tokio::main(flavor = "current_thread")]
-async fn main() {
-    let warm_up = Duration::from_secs(env_secs("WAVEPOOL_BENCH_WARMUP", 5));
-    let measure = Duration::from_secs(env_secs("WAVEPOOL_BENCH_SECONDS", 20));
-    // Extra page options, e.g. WAVEPOOL_BENCH_QUERY='&float=none'.
-    let extra = std::env::var("WAVEPOOL_BENCH_QUERY").unwrap_or_default();
-    let server = StaticServer::start();
-    for backend in ["webgpu", "webgl2"] {
-        let browser = Browser::open(Graphics::WebGpu).await;
-        let opened = Instant::now();
-        browser.goto(&server.url(&format!("/test/sized.html?width=800&height=600&backend={backend}{extra}"))).await;
-        let ready = browser.wait_ready("#pool", Duration::from_secs(180)).await;
-        let load_to_ready = opened.elapsed();
-        tokio::time::sleep(warm_up).await;
-        // Frames presented over the measuring window, counted in the page.
-        let start = browser.js("return { t: performance.now(), s: window.demo.stats() };").await;
-        let count_script = "window.__count = 0; const tick = () => { window.__count++; if (!window.__stop) requestAnimationFrame(tick); }; requestAnimationFrame(tick);";
-        browser.js(count_script).await;
-        tokio::time::sleep(measure).await;
-        let end = browser
-            .js("window.__stop = true; return { t: performance.now(), n: window.__count, s: window.demo.stats() };")
-            .await;
-        let seconds = (end["t"].as_f64().unwrap() - start["t"].as_f64().unwrap()) / 1000.0;
-        let fps = end["n"].as_f64().unwrap() / seconds;
-        let stats = &end["s"];
-        println!(
-            "{}",
-            serde_json::json!({
-                "backend": stats["backend"],
-                "sim_engine": stats["simEngine"],
-                "adapter": stats["adapter"],
-                "canvas": [stats["width"], stats["height"]],
-                "fps": (fps * 100.0).round() / 100.0,
-                "fps_demo_window": stats["fps"],
-                "first_frame_ms_since_mount": stats["firstFrameMs"],
-                "page_load_to_ready_ms": load_to_ready.as_millis() as u64,
-                "ready_wait_ms": ready.as_millis() as u64,
-                "measured_s": seconds,
-            })
-        );
-        browser.close().await;
+/// The viewport both pages are measured in (CSS px), as in measuring.md.
+const VIEWPORT: (u32, u32) = (800, 600);
+/// Our backends; the classic is measured in each browser too (it is WebGL1 in both).
+const BACKENDS: [&str; 2] = ["webgpu", "webgl2"];
+/// Longest wait for our page to show its first frame (SwiftShader compiles slowly).
+const READY_TIMEOUT: Duration = Duration::from_secs(180);
+/// The classic has no ready signal: it is running once its "Loading..." text is gone; it then
+/// gets this long before the warm-up starts.
+const CLASSIC_SETTLE: Duration = Duration::from_secs(3);
+/// Before loading a page, wait (at most `SETTLE_MAX`) until the machine's CPUs are busy less
+/// than this fraction of a second: a previous page's queued GPU work must not be measured.
+const SETTLE_BUSY: f64 = 0.3;
+const SETTLE_MAX: Duration = Duration::from_secs(30);
+
+struct Settings {
+    warm_up: Duration,
+    window: Duration,
+    rounds: u32,
+    /// Appended to our page's query string.
+    extra_query: String,
+}
+
+impl Settings {
+    fn from_env() -> Self {
+        let number = |name: &str, default: u64| -> u64 {
+            std::env::var(name)
+                .ok()
+                .map_or(default, |v| v.parse().unwrap_or_else(|_| panic!("{name}={v}: not a number")))
+        };
+        Self {
+            warm_up: Duration::from_secs(number("WAVEPOOL_BENCH_WARMUP", 5)),
+            window: Duration::from_secs(number("WAVEPOOL_BENCH_SECONDS", 20)),
+            rounds: number("WAVEPOOL_BENCH_ROUNDS", 2) as u32,
+            extra_query: std::env::var("WAVEPOOL_BENCH_QUERY").unwrap_or_default(),
+        }
     }
 }
 
-fn env_secs(name: &str, default: u64) -> u64 {
-    std::env::var(name).ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Page {
+    Ours,
+    Classic,
+}
+
+impl Page {
+    fn name(self) -> &'static str {
+        match self {
+            Page::Ours => "wavepool",
+            Page::Classic => "classic",
+        }
+    }
+
+    fn path(self, backend: &str, extra_query: &str) -> String {
+        match self {
+            Page::Ours => format!("/index.html?backend={backend}{extra_query}"),
+            Page::Classic => "/classic/index.html".to_string(),
+        }
+    }
+
+    /// JS expression: the page's canvas.
+    fn canvas_js(self) -> &'static str {
+        match self {
+            Page::Ours => "document.querySelector('#pool').shadowRoot.querySelector('canvas')",
+            Page::Classic => "document.querySelector('canvas')",
+        }
+    }
+}
+
+/// One page measured once: what the summary needs.
+struct Measurement {
+    page: Page,
+    backend: &'static str,
+    /// Frames drawn per second (the counter's figure).
+    fps: f64,
+    /// Animation frames per second in which the page's callbacks ran.
+    callbacks_fps: f64,
+    /// Backing pixels of the canvas.
+    pixels: f64,
+}
+
+#[tokio::main(flavor = "current_thread")]
+async fn main() {
+    let settings = Settings::from_env();
+    // A leftover Chromium makes every figure several times worse.
+    let strays = end_stray_browsers();
+    println!("{}", json!({ "strays_ended": strays.ended, "other_browsers": strays.others }));
+    if !strays.others.is_empty() {
+        eprintln!(
+            "warning: other Chromium/chromedriver processes are running (left alone, they belong to \
+             something still running); the figures will be lower than they should be:\n  {}",
+            strays.others.join("\n  ")
+        );
+    }
+    let server = StaticServer::start_with_classic();
+    let mut results = Vec::new();
+    for backend in BACKENDS {
+        // The WebGPU flags in both cases: our page is told its backend in the URL.
+        let browser = Browser::open(Graphics::WebGpu).await;
+        browser.add_init_script(FRAME_COUNTER_JS).await;
+        let (width, height) = browser.set_viewport(VIEWPORT.0, VIEWPORT.1).await;
+        let version = browser.cdp("Browser.getVersion", json!({})).await;
+        println!(
+            "{}",
+            json!({ "backend": backend, "viewport": [width, height], "browser": version["product"],
+                    "warm_up_s": settings.warm_up.as_secs(), "window_s": settings.window.as_secs() })
+        );
+        for round in 1..=settings.rounds {
+            for page in [Page::Ours, Page::Classic] {
+                results.push(measure(&browser, &server, page, backend, round, &settings).await);
+            }
+        }
+        browser.close().await;
+    }
+    for backend in BACKENDS {
+        println!("{}", summary(&results, backend));
+    }
+}
+
+/// Loads `page`, waits until it runs, warms up, counts its drawn frames over the window and
+/// prints one JSON line.
+async fn measure(
+    browser: &Browser,
+    server: &StaticServer,
+    page: Page,
+    backend: &'static str,
+    round: u32,
+    settings: &Settings,
+) -> Measurement {
+    browser.goto("about:blank").await;
+    let settle = settle().await;
+    let path = page.path(backend, &settings.extra_query);
+    let loaded = Instant::now();
+    browser.goto(&server.url(&path)).await;
+    match page {
+        Page::Ours => {
+            browser.wait_ready("#pool", READY_TIMEOUT).await;
+        }
+        Page::Classic => {
+            let running = "document.querySelector('canvas') && document.getElementById('loading').innerHTML === ''";
+            assert!(
+                browser.wait_for(running, READY_TIMEOUT).await,
+                "the classic did not start (is WebGL with float textures there?)"
+            );
+            tokio::time::sleep(CLASSIC_SETTLE).await;
+        }
+    }
+    let ready_s = loaded.elapsed().as_secs_f64();
+    let viewport = browser.viewport().await;
+    tokio::time::sleep(settings.warm_up).await;
+
+    browser.js("window.__frameCounter.reset();").await;
+    let cpu_start = CpuSample::take(browser.driver_pid());
+    tokio::time::sleep(settings.window).await;
+    let counter = browser.js("return window.__frameCounter.read();").await;
+    let cpu = CpuSample::take(browser.driver_pid()).since(&cpu_start);
+
+    let canvas = browser
+        .js(&format!(
+            "const c = {}; const r = c.getBoundingClientRect();
+             return {{ size: [c.width, c.height], css: [r.width, r.height] }};",
+            page.canvas_js()
+        ))
+        .await;
+    // Our page's own figures, when its handle is on `window` (index.html puts it there).
+    let stats = match page {
+        Page::Ours => {
+            browser
+                .js("const d = window.demo; if (!d || typeof d.stats !== 'function') return null;
+                     const s = d.stats();
+                     return { fps: s.fps, backend: s.backend, adapter: s.adapter, simEngine: s.simEngine };")
+                .await
+        }
+        Page::Classic => Value::Null,
+    };
+    let main = counter["canvases"].get(0).cloned().unwrap_or(Value::Null);
+    let pixels = canvas["size"][0].as_f64().unwrap_or(0.0) * canvas["size"][1].as_f64().unwrap_or(0.0);
+    let seconds = counter["seconds"].as_f64().unwrap_or(f64::NAN);
+    // WebGPU: frames the page began per second (getCurrentTexture), finished or not.
+    let started_fps =
+        (main["api"] == "webgpu").then(|| main["started"].as_f64().map(|n| round2(n / seconds))).flatten();
+    let line = json!({
+        "page": page.name(),
+        "backend": backend,
+        "round": round,
+        "url": path,
+        "viewport": [viewport.0, viewport.1],
+        "canvas": canvas["size"],
+        "canvas_css": canvas["css"],
+        "api": counter["api"],
+        "drawn_fps": counter["fps"],
+        "frames": counter["frames"],
+        "seconds": counter["seconds"],
+        "median_ms": counter["medianMs"],
+        "p95_ms": counter["p95Ms"],
+        "longest_ms": counter["longestMs"],
+        "pending": counter["pending"],
+        "started_fps": started_fps,
+        "callbacks_fps": counter["callbacksFps"],
+        "canvases_drawing": counter["canvases"].as_array().map_or(0, |c| c.len()),
+        "page_stats": stats,
+        "ready_s": round2(ready_s),
+        "settle": settle,
+        "cpu": cpu,
+    });
+    println!("{line}");
+    if counter["frames"] == 0 {
+        eprintln!("warning: {} ({backend}) drew no frame in the window", page.name());
+    }
+    Measurement {
+        page,
+        backend,
+        fps: counter["fps"].as_f64().unwrap_or(0.0),
+        callbacks_fps: counter["callbacksFps"].as_f64().unwrap_or(0.0),
+        pixels,
+    }
+}
+
+/// The summary of one backend: mean drawn fps of each page, ours / classic, and the same per
+/// canvas pixel (fps x backing pixels, so a bigger canvas is not a handicap).
+fn summary(results: &[Measurement], backend: &str) -> Value {
+    let mean = |page: Page, f: &dyn Fn(&Measurement) -> f64| -> f64 {
+        let values: Vec<f64> = results.iter().filter(|m| m.page == page && m.backend == backend).map(f).collect();
+        values.iter().sum::<f64>() / values.len().max(1) as f64
+    };
+    let (ours, classic) = (mean(Page::Ours, &|m| m.fps), mean(Page::Classic, &|m| m.fps));
+    let ours_pixel_rate = mean(Page::Ours, &|m| m.fps * m.pixels);
+    let classic_pixel_rate = mean(Page::Classic, &|m| m.fps * m.pixels);
+    let ratio = |a: f64, b: f64| if b > 0.0 { round3(a / b) } else { f64::NAN };
+    json!({
+        "summary": backend,
+        "rounds": results.iter().filter(|m| m.page == Page::Ours && m.backend == backend).count(),
+        "ours_drawn_fps": round3(ours),
+        "classic_drawn_fps": round3(classic),
+        "ratio": ratio(ours, classic),
+        "ours_megapixels_per_s": round3(ours_pixel_rate / 1e6),
+        "classic_megapixels_per_s": round3(classic_pixel_rate / 1e6),
+        "ratio_per_pixel": ratio(ours_pixel_rate, classic_pixel_rate),
+        "ours_callbacks_fps": round3(mean(Page::Ours, &|m| m.callbacks_fps)),
+        "classic_callbacks_fps": round3(mean(Page::Classic, &|m| m.callbacks_fps)),
+    })
+}
+
+/// Waits until the machine is mostly idle (see `SETTLE_BUSY`); returns how long that took and
+/// how busy the last second was.
+async fn settle() -> Value {
+    let start = Instant::now();
+    loop {
+        let before = CpuSample::take(0);
+        tokio::time::sleep(Duration::from_secs(1)).await;
+        let busy = CpuSample::take(0).since(&before)["busy"].as_f64().unwrap_or(1.0);
+        if busy < SETTLE_BUSY || start.elapsed() >= SETTLE_MAX {
+            return json!({ "s": round2(start.elapsed().as_secs_f64()), "busy": busy });
+        }
+    }
+}
+
+/// CPU time counters (clock ticks) of the whole machine and of one process tree.
+struct CpuSample {
+    /// All CPUs: total and idle (idle + iowait) ticks since boot.
+    total: u64,
+    idle: u64,
+    /// User + system ticks of the live processes of the tree (0: none).
+    tree: u64,
+}
+
+impl CpuSample {
+    /// Now; `root` = the tree to follow (the browser: chromedriver and its descendants).
+    fn take(root: u32) -> Self {
+        let stat = std::fs::read_to_string("/proc/stat").unwrap_or_default();
+        let fields: Vec<u64> = stat
+            .lines()
+            .next()
+            .unwrap_or("")
+            .split_whitespace()
+            .skip(1)
+            .take(8)
+            .filter_map(|f| f.parse().ok())
+            .collect();
+        let total = fields.iter().sum();
+        let idle = fields.get(3).copied().unwrap_or(0) + fields.get(4).copied().unwrap_or(0);
+        let tree = if root == 0 {
+            0
+        } else {
+            process_tree(&processes(), root)
+                .iter()
+                .filter_map(|pid| {
+                    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+                    let rest: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+                    // After "pid (comm)": state is field 0, utime field 11, stime field 12.
+                    Some(rest.get(11)?.parse::<u64>().ok()? + rest.get(12)?.parse::<u64>().ok()?)
+                })
+                .sum()
+        };
+        Self { total, idle, tree }
+    }
+
+    /// Shares of all CPUs' time since `earlier` (1 = every core busy the whole time): busy, by
+    /// the followed tree (the browser), and by everything else. Processes of the tree that ended
+    /// meanwhile are not counted, so `browser` can be a little low.
+    fn since(&self, earlier: &CpuSample) -> Value {
+        let total = self.total.saturating_sub(earlier.total).max(1) as f64;
+        let busy = 1.0 - self.idle.saturating_sub(earlier.idle) as f64 / total;
+        let browser = self.tree.saturating_sub(earlier.tree) as f64 / total;
+        json!({ "busy": round3(busy), "browser": round3(browser), "others": round3((busy - browser).max(0.0)) })
+    }
+}
+
+fn round2(x: f64) -> f64 {
+    (x * 100.0).round() / 100.0
+}
+
+fn round3(x: f64) -> f64 {
+    (x * 1000.0).round() / 1000.0
 }

@@ -15,7 +15,8 @@ fn signed_colour(t: f32) -> vec3<f32> {
 
 @fragment
 fn fs_debug(in: FullscreenOut) -> @location(0) vec4<f32> {
-    let mode = i32(scene.output.y + 0.5);
+    // DEBUG_TEXTURE (1-4, above) is a constant written ahead of this file: one pass per view.
+    let mode = DEBUG_TEXTURE;
     // Nearest cell of the state texture, so single cells stay visible.
     let n = i32(scene.water.x);
     let cell = clamp(vec2<i32>(in.uv * scene.water.x), vec2<i32>(0), vec2<i32>(n - 1));

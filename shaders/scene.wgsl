@@ -1,5 +1,7 @@
 // Scene bindings and the shading every scene pass shares: water sampling, pool tiles,
 // caustic light, the sphere and the duck, the sky, and tracing a ray through air or water to what it hits.
+// Compiled per feature set: HAS_SPHERE, HAS_DUCK and HAS_CAUSTICS are constants written ahead of
+// this file (render/variants.rs), so the code of what is not in the pool compiles away.
 
 struct Scene {
     view_proj: mat4x4<f32>,
@@ -97,7 +99,7 @@ fn duck_rotation() -> mat3x3<f32> {
 
 // Whether the segment origin + t dir, t in [0, t_max], comes near the duck at all.
 fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
-    if (scene.duck_bound.w <= 0.0) {
+    if (!HAS_DUCK || scene.duck_bound.w <= 0.0) {
         return false;
     }
     let t = clamp(dot(scene.duck_bound.xyz - origin, dir), 0.0, t_max);
@@ -109,6 +111,9 @@ fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
 // test with the same t, and the normal is the unit-ball point divided by the semi-axes.
 fn intersect_duck(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
+    if (!HAS_DUCK) {
+        return hit;
+    }
     if (!near_duck(origin, dir, NO_HIT)) {
         return hit;
     }
@@ -137,6 +142,9 @@ fn intersect_duck(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
 // Light the duck lets through along a segment, like sphere_visibility: per part, how close
 // the segment passes to its centre in the part's unit-ball space.
 fn duck_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    if (!HAS_DUCK) {
+        return 1.0;
+    }
     if (!near_duck(origin, dir, t_max)) {
         return 1.0;
     }
@@ -156,7 +164,22 @@ fn duck_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
 
 // Light both objects let through towards the sun from p (above the water).
 fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
-    return sphere_visibility(p, dir, t_max, scene.sphere.xyz, scene.sphere.w) * duck_visibility(p, dir, t_max);
+    var light = 1.0;
+    if (HAS_SPHERE) {
+        light = sphere_visibility(p, dir, t_max, scene.sphere.xyz, scene.sphere.w);
+    }
+    if (HAS_DUCK) {
+        light *= duck_visibility(p, dir, t_max);
+    }
+    return light;
+}
+
+// Nearest distance along a ray to the sphere, or NO_HIT (always, when there is no sphere).
+fn hit_sphere(origin: vec3<f32>, dir: vec3<f32>) -> f32 {
+    if (!HAS_SPHERE) {
+        return NO_HIT;
+    }
+    return intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
 }
 
 // Sunlight reaching an underwater point p, relative to a flat calm surface (1 = calm).
@@ -167,14 +190,14 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     if (!inside) {
         return 0.0;
     }
-    if (scene.water.z > 0.5) {
+    if (HAS_CAUSTICS) {
         let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0) * scene.water.w;
         return select(c.r, c.g, with_sphere_shadow);
     }
     // Caustics off: a calm surface, with the same rim and sphere shadows.
     let surface = vec3<f32>(entry.x, 0.0, entry.y);
     var light = rim_visibility(surface);
-    if (with_sphere_shadow) {
+    if (with_sphere_shadow && (HAS_SPHERE || HAS_DUCK)) {
         let r = scene.refracted_sun.xyz;
         light *= objects_visibility(surface, r, distance(surface, p));
         light *= objects_visibility(surface, scene.sun.xyz, 10.0);
@@ -186,7 +209,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
 // the sphere's projected solid angle, cos(theta) * (r / d)^2.
 fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
     let r = scene.sphere.w;
-    if (r <= 0.0) {
+    if (!HAS_SPHERE || r <= 0.0) {
         return 0.0;
     }
     let to_centre = scene.sphere.xyz - p;
@@ -304,7 +327,7 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
     let w = half_width();
     var t = t_exit;
     var colour: vec3<f32>;
-    let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
+    let ts = hit_sphere(origin, dir);
     let duck = intersect_duck(origin, dir);
     if (duck.t < t && duck.t < ts) {
         t = duck.t;
@@ -330,7 +353,7 @@ fn upward(dir: vec3<f32>) -> vec3<f32> {
 // sphere, the pool walls above the water line, or the sky. t_exit: pool_exit_distance of
 // the ray; lod: tile mip level (see tile_lod).
 fn trace_air(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
-    let ts = intersect_sphere(origin, dir, scene.sphere.xyz, scene.sphere.w);
+    let ts = hit_sphere(origin, dir);
     let t = t_exit;
     let duck = intersect_duck(origin, dir);
     if (duck.t < t && duck.t < ts) {

@@ -8,6 +8,7 @@ use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
+use crate::quality::ResolutionGovernor;
 use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
 use crate::sim::{
@@ -173,6 +174,10 @@ pub struct WaterDemo {
     drag: Drag,
     /// Steps simulated so far.
     steps_taken: u64,
+    /// Chooses the render scale when the `quality` parameter is auto.
+    governor: ResolutionGovernor,
+    /// The render scale of the last frame drawn.
+    render_scale: f32,
 }
 
 impl WaterDemo {
@@ -208,6 +213,8 @@ impl WaterDemo {
             viewport: Vec2::new(800.0, 600.0),
             drag: Drag::None,
             steps_taken: 0,
+            governor: ResolutionGovernor::default(),
+            render_scale: 1.0,
         };
         demo.place_duck_at_start();
         demo
@@ -224,10 +231,6 @@ impl WaterDemo {
 
     pub fn water(&self) -> &HeightField {
         &self.water
-    }
-
-    pub fn renderer(&self) -> &Renderer {
-        &self.renderer
     }
 
     /// Simulated time so far (s).
@@ -590,6 +593,24 @@ impl WaterDemo {
         self.pushed = [None, None];
     }
 
+    /// Fraction of the target's width and height the scene was last drawn at (see the
+    /// `quality` parameter).
+    pub fn render_scale(&self) -> f32 {
+        self.render_scale
+    }
+
+    /// The render scale for this frame: the `quality` parameter's, or with `quality` auto,
+    /// the governor's after it has seen `frame_time` (s, the time since the last frame).
+    fn choose_render_scale(&mut self, frame_time: f32) {
+        let quality = self.params.get(ParamId::Quality);
+        self.render_scale = if quality > 0.0 {
+            quality
+        } else {
+            self.governor.observe(frame_time, self.params.get(ParamId::FrameBudget) / 1000.0);
+            self.governor.scale()
+        };
+    }
+
     fn view(&self) -> View {
         View {
             view_proj: self.camera.view_projection(self.viewport.x / self.viewport.y),
@@ -600,6 +621,7 @@ impl WaterDemo {
             caustics: self.params.flag(ParamId::Caustics),
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
+            render_scale: self.render_scale,
         }
     }
 
@@ -650,6 +672,7 @@ impl WaterDemo {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
         self.set_viewport(size.0, size.1);
+        self.choose_render_scale(frame_time);
         let steps = if self.params.flag(ParamId::Paused) {
             self.clock.advance(0.0);
             0
@@ -684,7 +707,7 @@ impl WaterDemo {
         self.water.after_submit();
         let view = self.view();
         self.renderer.prepare(queue, encoder, &view, &self.water);
-        self.renderer.encode_caustics(encoder, &view, &self.water);
+        self.renderer.encode_caustics(device, encoder, &view, &self.water);
         mark(encoder, Stage::AfterCaustics);
         self.renderer.encode_scene(device, encoder, target, size, &view, &self.water);
         mark(encoder, Stage::AfterScene);

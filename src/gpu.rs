@@ -23,6 +23,7 @@ pub mod wgsl {
     pub const DEBUG_VIEW: &str = include_str!("../shaders/debug_view.wgsl");
     pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
+    pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
 }
 
 /// Compiles a shader module from WGSL parts, concatenated in order.
@@ -186,6 +187,32 @@ impl FullscreenPass {
         pass.draw(0..3, 0..1);
     }
 
+    /// Draws into the pixels `rect` (x, y, width, height) of `target`, keeping the rest.
+    pub fn run_in_rect(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        bind_groups: &[&wgpu::BindGroup],
+        rect: [u32; 4],
+    ) {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(&self.label),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        let [x, y, w, h] = rect;
+        pass.set_scissor_rect(x, y, w, h);
+        self.draw(&mut pass, bind_groups);
+    }
+
     /// Opens a render pass on `target`, overwriting it, and draws.
     pub fn run(
         &self,
@@ -296,6 +323,35 @@ impl PingPong {
             None => pass.run(encoder, &self.views[next], &[&groups[self.current]]),
         }
         self.current = next;
+    }
+
+    /// Runs `pass` over the texels `rect` (x, y, width, height) only: it reads the current
+    /// texture and writes the other inside `rect`, which is then copied back, so the current
+    /// texture stays current and holds the result. Costs in proportion to the rectangle.
+    pub fn run_in_place(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        pass: &FullscreenPass,
+        groups: &[wgpu::BindGroup; 2],
+        extra: Option<&wgpu::BindGroup>,
+        rect: [u32; 4],
+    ) {
+        let next = 1 - self.current;
+        let mut bind_groups = vec![&groups[self.current]];
+        bind_groups.extend(extra);
+        pass.run_in_rect(encoder, &self.views[next], &bind_groups, rect);
+        let [x, y, width, height] = rect;
+        let at = |texture| wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d { x, y, z: 0 },
+            aspect: wgpu::TextureAspect::All,
+        };
+        encoder.copy_texture_to_texture(
+            at(&self.textures[next]),
+            at(&self.textures[self.current]),
+            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        );
     }
 }
 

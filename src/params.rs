@@ -24,6 +24,8 @@ pub enum ParamId {
     Paused,
     DebugView,
     DebugInset,
+    Quality,
+    FrameBudget,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -272,6 +274,29 @@ pub const PARAMS: &[ParamSpec] = &[
         control: Control::Toggle,
         default: 1.0,
         help: "Show the debug view in a corner of the scene (on) or over all of it (off).",
+    },
+    ParamSpec {
+        id: ParamId::Quality,
+        name: "quality",
+        label: "Resolution",
+        group: "Display",
+        unit: "",
+        control: Control::Choice {
+            values: &[0.0, 0.5, 0.6, 0.7, 0.85, 1.0],
+            names: &["auto", "50%", "60%", "70%", "85%", "100%"],
+        },
+        default: 0.0,
+        help: "Scale of the scene's resolution: fixed, or auto (lowered in steps down to 50% while frames take longer than the frame budget, raised again when there is headroom).",
+    },
+    ParamSpec {
+        id: ParamId::FrameBudget,
+        name: "frame_budget",
+        label: "Frame budget",
+        group: "Display",
+        unit: "ms",
+        control: slider(10.0, 200.0, 1.0),
+        default: 33.0,
+        help: "Time a frame should take at most; with automatic resolution, slower frames lower the resolution.",
     },
 ];
 

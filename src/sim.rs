@@ -35,6 +35,61 @@ pub struct HullSlot {
     pub unit_from_world: Mat3,
 }
 
+impl HullSlot {
+    /// The ellipsoid's reach over the pool (m): its half extents along x and z (it pushes no
+    /// water outside centre ± reach).
+    pub fn reach(&self) -> Vec2 {
+        let to_world = self.unit_from_world.inverse();
+        // Support of the ellipsoid along x and z: the length of that row of the matrix.
+        Vec2::new(to_world.row(0).length(), to_world.row(2).length())
+    }
+}
+
+/// Cells of an `n` x `n` grid: columns `x.0..=x.1`, rows `z.0..=z.1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CellRange {
+    pub x: (u32, u32),
+    pub z: (u32, u32),
+}
+
+impl CellRange {
+    pub fn all(n: u32) -> Self {
+        Self { x: (0, n - 1), z: (0, n - 1) }
+    }
+
+    /// The cells whose centres lie within the ellipsoids' reach (plus the cell around each end).
+    pub fn under(hulls: &[HullSlot], n: u32, half_width: f32) -> Self {
+        let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
+        for hull in hulls {
+            let c = Vec2::new(hull.centre.x, hull.centre.z);
+            lo = lo.min(c - hull.reach());
+            hi = hi.max(c + hull.reach());
+        }
+        if !(lo.is_finite() && hi.is_finite()) {
+            return Self::all(n);
+        }
+        let dx = 2.0 * half_width / n as f32;
+        let last = n as f32 - 1.0;
+        let index = |v: f32| ((v + half_width) / dx - 0.5).clamp(0.0, last);
+        Self {
+            x: (index(lo.x).floor() as u32, index(hi.x).ceil() as u32),
+            z: (index(lo.y).floor() as u32, index(hi.y).ceil() as u32),
+        }
+    }
+
+    /// The smallest range holding both.
+    pub fn union(self, other: Self) -> Self {
+        Self {
+            x: (self.x.0.min(other.x.0), self.x.1.max(other.x.1)),
+            z: (self.z.0.min(other.z.0), self.z.1.max(other.z.1)),
+        }
+    }
+
+    pub fn cells(&self) -> u32 {
+        (self.x.1 + 1 - self.x.0) * (self.z.1 + 1 - self.z.0)
+    }
+}
+
 /// An ellipsoid's move since the water last took the bodies in (see [`displaced_column`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HullMove {
@@ -215,9 +270,24 @@ impl StepPlan {
         }
     }
 
-    /// Whether the drop pass has anything to do before step `step` (0: with the drops).
+    /// Whether the drop pass has anything to do before step `step` (0: with the drops). A
+    /// body that did not move pushes nothing.
     pub fn pushes_water(&self, step: usize) -> bool {
-        (step == 0 && !self.drops.is_empty()) || self.moves.get(step).is_some_and(|m| !m.is_empty())
+        (step == 0 && !self.drops.is_empty()) || self.moves.get(step).is_some_and(|m| m.iter().any(|m| m.from != m.to))
+    }
+
+    /// The cells the drop pass before step `step` changes on an `n` x `n` grid: all of them
+    /// with drops (their correction is subtracted everywhere), else only those under the
+    /// moving ellipsoids, so bodies cost in proportion to their size, not the pool's.
+    pub fn pushed_cells(&self, step: usize, n: u32, half_width: f32) -> CellRange {
+        if step == 0 && !self.drops.is_empty() {
+            return CellRange::all(n);
+        }
+        let moved = self.moves.get(step).into_iter().flatten().filter(|m| m.from != m.to);
+        moved
+            .map(|m| CellRange::under(&[m.from, m.to], n, half_width))
+            .reduce(CellRange::union)
+            .unwrap_or(CellRange { x: (0, 0), z: (0, 0) })
     }
 
     /// Updates (substeps) per step.
@@ -703,7 +773,14 @@ impl HeightField {
         for step in 0..(steps as usize).max(1) {
             if plan.pushes_water(step) {
                 let slot = step.min(MAX_PUSH_STEPS - 1);
-                self.state.run_with(encoder, &sim.drop_pass, &sim.bind_groups, Some(&sim.step_groups[slot]));
+                let cells = plan.pushed_cells(step, self.size, self.half_width);
+                let group = Some(&sim.step_groups[slot]);
+                if cells == CellRange::all(self.size) {
+                    self.state.run_with(encoder, &sim.drop_pass, &sim.bind_groups, group);
+                } else {
+                    let rect = [cells.x.0, cells.z.0, cells.x.1 + 1 - cells.x.0, cells.z.1 + 1 - cells.z.0];
+                    self.state.run_in_place(encoder, &sim.drop_pass, &sim.bind_groups, group, rect);
+                }
             }
             for _ in 0..per_step {
                 self.state.run(encoder, &sim.update_pass, &sim.bind_groups);

@@ -2,6 +2,7 @@
 //! a [`WebDemo`] around the platform-free core, drawing into a canvas through WebGPU or
 //! WebGL2. Everything about the page (DOM, events, sizing, the frame loop) lives in the JS.
 
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::{Arc, Mutex};
 
 use wasm_bindgen::prelude::*;
@@ -104,6 +105,11 @@ fn to_js_number(v: f32) -> f64 {
     v.to_string().parse().unwrap_or(v as f64)
 }
 
+/// Most frames submitted to the GPU and not yet finished. The page draws the next frame only
+/// when fewer are in flight ([`WebDemo::can_draw`]): a slow GPU (software rendering) then gets
+/// fewer frames instead of a growing queue of them, and a click shows in the next frame drawn.
+pub const MAX_FRAMES_IN_FLIGHT: u32 = 1;
+
 fn warn(message: &str) {
     web_sys::console::warn_1(&JsValue::from_str(message));
 }
@@ -122,6 +128,8 @@ pub struct WebDemo {
     /// The sRGB view format drawn through, when the canvas format itself is not sRGB.
     srgb_view: Option<wgpu::TextureFormat>,
     lost: Arc<Mutex<Option<String>>>,
+    /// Frames submitted whose work the GPU has not finished yet.
+    in_flight: Arc<AtomicU32>,
 }
 
 #[wasm_bindgen]
@@ -218,6 +226,7 @@ impl WebDemo {
             adapter: adapter.get_info().name,
             max_side,
             lost,
+            in_flight: Arc::new(AtomicU32::new(0)),
         })
     }
 
@@ -252,8 +261,22 @@ impl WebDemo {
             frame.texture.create_view(&wgpu::TextureViewDescriptor { format: self.srgb_view, ..Default::default() });
         self.demo.frame(&self.device, &self.queue, &view, (width, height), dt.clamp(0.0, 1.0));
         self.queue.present(frame);
+        self.in_flight.fetch_add(1, Ordering::AcqRel);
+        let in_flight = self.in_flight.clone();
+        self.queue.on_submitted_work_done(move || {
+            in_flight.fetch_sub(1, Ordering::AcqRel);
+        });
         let _ = self.device.poll(wgpu::PollType::Poll);
         Ok(())
+    }
+
+    /// Whether the GPU has finished enough of the submitted frames to take another (fewer
+    /// than [`MAX_FRAMES_IN_FLIGHT`] in flight). Never waits. True once the device is lost,
+    /// so that the next `frame` reports it.
+    #[wasm_bindgen(js_name = canDraw)]
+    pub fn can_draw(&self) -> bool {
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        self.in_flight.load(Ordering::Acquire) < MAX_FRAMES_IN_FLIGHT || self.lost.lock().map_or(true, |m| m.is_some())
     }
 
     /// Sets a parameter by name; an out-of-range value is clamped with a console warning.

@@ -251,7 +251,7 @@ fn the_bodies_float_on_current_heights_without_waiting_on_the_gpu() {
         ("demo.rs", include_str!("../src/demo.rs")),
         ("sim.rs", include_str!("../src/sim.rs")),
         ("physics.rs", include_str!("../src/physics.rs")),
-        ("render.rs", include_str!("../src/render.rs")),
+        ("render/mod.rs", include_str!("../src/render/mod.rs")),
         ("web.rs", include_str!("../src/web.rs")),
         ("viewer.rs", include_str!("../src/viewer.rs")),
     ] {

@@ -169,6 +169,31 @@ export async function mount(element, options = {}) {
   }
 }
 
+/** Frame statistics are over this window up to now (ms). */
+const STATS_WINDOW_MS = 2000;
+
+/**
+ * Drawn frames over the last STATS_WINDOW_MS up to `now` (ms): `fps` (frames drawn in the
+ * window / its length; the window starts no earlier than the loop did), `frameMs` (median
+ * interval between them) and `longestFrameMs` (longest interval, counting the wait since
+ * the last frame, so a freeze shows while it lasts). `times`: drawn frames' times, oldest first.
+ */
+function frameStats(times, since, now) {
+  const start = Math.max(now - STATS_WINDOW_MS, since ?? now);
+  const inWindow = times.filter((t) => t > start && t <= now);
+  const span = now - start;
+  const intervals = [];
+  for (let i = 1; i < times.length; i++) if (times[i] > start) intervals.push(times[i] - times[i - 1]);
+  const sorted = [...intervals].sort((a, b) => a - b);
+  const median = sorted.length ? sorted[Math.floor((sorted.length - 1) / 2)] : 0;
+  const waiting = times.length ? now - times[times.length - 1] : 0;
+  return {
+    fps: span > 0 ? (inWindow.length * 1000) / span : 0,
+    frameMs: median,
+    longestFrameMs: Math.max(waiting, ...intervals, 0),
+  };
+}
+
 class Demo {
   constructor(element, shadow, root, stage, message, id, started) {
     this._element = element;
@@ -182,7 +207,8 @@ class Demo {
     this._canvas = null;
     this._frame = 0; // requestAnimationFrame id
     this._last = 0; // time of the last frame (ms)
-    this._frames = []; // times of recent frames, for fps
+    this._frames = []; // times of the frames drawn in the last 2 s (ms), for stats()
+    this._runningSince = null; // when the frame loop last started drawing (ms)
     this._userPaused = false;
     this._visible = true;
     this._onScreen = true;
@@ -451,6 +477,12 @@ class Demo {
   _tick(time) {
     this._frame = 0;
     if (this._dead || !this._core) return;
+    // Paced: while the GPU is still on the last frame, this animation frame draws nothing
+    // (a slow GPU gets fewer frames rather than a growing queue of them).
+    if (!this._core.canDraw()) {
+      this._run();
+      return;
+    }
     const dt = this._last ? Math.min(0.25, (time - this._last) / 1000) : 1 / 60;
     this._last = time;
     try {
@@ -459,8 +491,10 @@ class Demo {
       this._recover(error);
       return;
     }
+    if (this._frames.length === 0) this._runningSince = time;
     this._frames.push(time);
-    while (this._frames.length > 2 && time - this._frames[0] > 2000) this._frames.shift();
+    // Drawn frames of the last 2 s, and the one before them (for the first interval).
+    while (this._frames.length > 2 && time - this._frames[1] > STATS_WINDOW_MS) this._frames.shift();
     if (this._firstFrameMs === null) {
       this._firstFrameMs = performance.now() - this._started;
       // Ready once the browser has composited the first frame (the next animation frame).
@@ -581,13 +615,10 @@ class Demo {
     this._run();
   }
 
-  /** { fps, frameMs, firstFrameMs, restarts, backend, adapter, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height } */
+  /** { fps, frameMs, longestFrameMs, firstFrameMs, restarts, backend, adapter, simSize, ... } (see the README) */
   stats() {
     const s = this._alive().stats();
-    const f = this._frames;
-    const span = f.length > 1 ? f[f.length - 1] - f[0] : 0;
-    s.fps = span > 0 ? ((f.length - 1) * 1000) / span : 0;
-    s.frameMs = s.fps > 0 ? 1000 / s.fps : 0;
+    Object.assign(s, frameStats(this._frames, this._runningSince, performance.now()));
     s.firstFrameMs = this._firstFrameMs;
     s.restarts = this._restarts;
     return s;

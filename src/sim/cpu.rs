@@ -4,7 +4,8 @@
 //! to float textures.
 
 use super::{
-    displaced_column, drop_shape, sponge_profile, Drop, HullMove, StepPlan, WaveSettings, MAX_HEIGHT, MAX_VELOCITY,
+    displaced_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings, MAX_HEIGHT,
+    MAX_VELOCITY,
 };
 
 /// Mirrors the shaders' `bounded`: finite values clamped, NaN and infinity to rest.
@@ -213,7 +214,8 @@ impl CpuHeightField {
     }
 
     /// Drops over the whole grid, body moves over the cells their ellipsoids can reach, then the
-    /// correction and bounds everywhere: the sums of `shaders/sim_drop.wgsl` in its order.
+    /// correction and bounds over the cells the pass covers ([`StepPlan::pushed_cells`]): the
+    /// sums of `shaders/sim_drop.wgsl` in its order, over the same cells.
     fn apply_drops(&mut self, plan: &StepPlan, step: usize) {
         let n = self.size as usize;
         let first = step == 0;
@@ -231,45 +233,25 @@ impl CpuHeightField {
             }
         }
         for m in plan.moves.get(step).into_iter().flatten() {
-            let (i0, i1, j0, j1) = self.cells_under(&[m.from, m.to]);
-            for j in j0..=j1 {
-                let z = self.centre(j as u32);
-                for i in i0..=i1 {
-                    let x = self.centre(i as u32);
-                    self.height[j * n + i] += displaced_column(x, z, &m.to) - displaced_column(x, z, &m.from);
+            let cells = CellRange::under(&[m.from, m.to], self.size, self.half_width);
+            for j in cells.z.0..=cells.z.1 {
+                let z = self.centre(j);
+                for i in cells.x.0..=cells.x.1 {
+                    let x = self.centre(i);
+                    self.height[j as usize * n + i as usize] +=
+                        displaced_column(x, z, &m.to) - displaced_column(x, z, &m.from);
                 }
             }
         }
         let level = plan.rest_level;
         let correction = if first { plan.correction } else { 0.0 };
-        for h in &mut self.height {
-            *h = bounded(*h - correction - level, MAX_HEIGHT) + level;
+        let cells = plan.pushed_cells(step, self.size, self.half_width);
+        for j in cells.z.0..=cells.z.1 {
+            for i in cells.x.0..=cells.x.1 {
+                let h = &mut self.height[j as usize * n + i as usize];
+                *h = bounded(*h - correction - level, MAX_HEIGHT) + level;
+            }
         }
-    }
-
-    /// Index ranges (x from, x to, z from, z to) of the cells over which the ellipsoids reach.
-    fn cells_under(&self, hulls: &[super::HullSlot]) -> (usize, usize, usize, usize) {
-        let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
-        for hull in hulls {
-            let to_world = hull.unit_from_world.inverse();
-            // Support of the ellipsoid along x and z: the length of that row of the matrix.
-            let reach = glam::Vec2::new(to_world.row(0).length(), to_world.row(2).length());
-            let c = glam::Vec2::new(hull.centre.x, hull.centre.z);
-            lo = lo.min(c - reach);
-            hi = hi.max(c + reach);
-        }
-        let dx = 2.0 * self.half_width / self.size as f32;
-        let last = self.size as f32 - 1.0;
-        let index = |v: f32| ((v + self.half_width) / dx - 0.5).clamp(0.0, last);
-        if !(lo.is_finite() && hi.is_finite()) {
-            return (0, self.size as usize - 1, 0, self.size as usize - 1);
-        }
-        (
-            index(lo.x).floor() as usize,
-            index(hi.x).ceil() as usize,
-            index(lo.y).floor() as usize,
-            index(hi.y).ceil() as usize,
-        )
     }
 
     /// Fills the absorbing walls' per-cell factors for this plan's rate and time step.

@@ -33,6 +33,24 @@ pub fn dist_dir() -> PathBuf {
     dir
 }
 
+/// Evan Wallace's WebGL Water, the measuring stick of the browser benchmark: the team's
+/// read-only copy next to the crate (`../shared/anchors/webgl-water`). Served as it is, never
+/// copied into the project.
+pub fn classic_dir() -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/webgl-water");
+    assert!(
+        dir.join("index.html").is_file(),
+        "{} is missing: the benchmark measures our page against the classic WebGL Water, \
+         which it expects (unchanged, read-only) in ../shared/anchors/webgl-water beside the crate",
+        dir.display()
+    );
+    dir
+}
+
+/// The frame counter (`tests/pages/frame_counter.js`): add it with `Browser::add_init_script`
+/// before loading a page, then `window.__frameCounter.reset()` / `.read()` in the page.
+pub const FRAME_COUNTER_JS: &str = include_str!("../pages/frame_counter.js");
+
 fn content_type(path: &Path) -> &'static str {
     match path.extension().and_then(|e| e.to_str()) {
         Some("html") => "text/html; charset=utf-8",
@@ -40,25 +58,37 @@ fn content_type(path: &Path) -> &'static str {
         Some("css") => "text/css",
         Some("wasm") => "application/wasm",
         Some("png") => "image/png",
+        Some("jpg" | "jpeg") => "image/jpeg",
         _ => "application/octet-stream",
     }
 }
 
-/// A static file server for `dist/` at `/` and `tests/pages/` at `/test/`.
+/// A static file server for `dist/` at `/` and `tests/pages/` at `/test/` (and, when started
+/// with `start_with_classic`, the classic WebGL Water at `/classic/`).
 pub struct StaticServer {
     pub port: u16,
 }
 
 impl StaticServer {
     pub fn start() -> Self {
+        Self::start_serving(None)
+    }
+
+    /// Also serves the classic WebGL Water (`classic_dir()`, read-only) at `/classic/`;
+    /// panics with a clear message when it is missing.
+    pub fn start_with_classic() -> Self {
+        Self::start_serving(Some(classic_dir()))
+    }
+
+    fn start_serving(classic: Option<PathBuf>) -> Self {
         let dist = dist_dir();
         let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
         let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
         let port = listener.local_addr().expect("address").port();
         std::thread::spawn(move || {
             for stream in listener.incoming().flatten() {
-                let (dist, pages) = (dist.clone(), pages.clone());
-                std::thread::spawn(move || serve(stream, &dist, &pages));
+                let (dist, pages, classic) = (dist.clone(), pages.clone(), classic.clone());
+                std::thread::spawn(move || serve(stream, &dist, &pages, classic.as_deref()));
             }
         });
         Self { port }
@@ -69,7 +99,7 @@ impl StaticServer {
     }
 }
 
-fn serve(mut stream: TcpStream, dist: &Path, pages: &Path) {
+fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path>) {
     let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
     let mut request = String::new();
     if reader.read_line(&mut request).is_err() {
@@ -83,10 +113,16 @@ fn serve(mut stream: TcpStream, dist: &Path, pages: &Path) {
     }
     let target = request.split_whitespace().nth(1).unwrap_or("/");
     let path = target.split('?').next().unwrap_or("/");
-    let file = match path.strip_prefix("/test/") {
-        Some(rest) => pages.join(rest),
-        None if path == "/" => dist.join("index.html"),
-        None => dist.join(path.trim_start_matches('/')),
+    let classic_file = match (classic, path.strip_prefix("/classic/")) {
+        (Some(dir), Some("")) => Some(dir.join("index.html")),
+        (Some(dir), Some(rest)) => Some(dir.join(rest)),
+        _ => None,
+    };
+    let file = match (classic_file, path.strip_prefix("/test/")) {
+        (Some(file), _) => file,
+        (None, Some(rest)) => pages.join(rest),
+        (None, None) if path == "/" => dist.join("index.html"),
+        (None, None) => dist.join(path.trim_start_matches('/')),
     };
     let safe = !path.contains("..");
     let response = match std::fs::read(&file) {
@@ -144,6 +180,8 @@ pub struct Browser {
     pub client: Client,
     driver: Child,
     profile: PathBuf,
+    /// chromedriver's port on 127.0.0.1 (for DevTools commands, see `cdp`).
+    driver_port: u16,
 }
 
 fn free_port() -> u16 {
@@ -189,7 +227,7 @@ impl Browser {
             .connect(&format!("http://127.0.0.1:{port}"))
             .await
             .expect("open a Chromium session through chromedriver");
-        Self { client, driver, profile }
+        Self { client, driver, profile, driver_port: port }
     }
 
     pub async fn close(self) {
@@ -268,6 +306,229 @@ impl Browser {
             .then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
         self.client.perform_actions(mouse).await.expect("click");
     }
+}
+
+/// DevTools commands, init scripts and the viewport: what the browser benchmark needs on top of
+/// plain WebDriver.
+impl Browser {
+    /// chromedriver's process id (Chromium and its helpers are its descendants).
+    pub fn driver_pid(&self) -> u32 {
+        self.driver.id()
+    }
+
+    /// Sends a DevTools command to the current tab through chromedriver's passthrough
+    /// (`POST /session/{id}/goog/cdp/execute`) and returns its result.
+    pub async fn cdp(&self, method: &str, params: Value) -> Value {
+        let session = self.client.session_id().await.expect("session id").expect("an open WebDriver session");
+        let path = format!("/session/{session}/goog/cdp/execute");
+        let body = json!({ "cmd": method, "params": params }).to_string();
+        let port = self.driver_port;
+        let reply = tokio::task::spawn_blocking(move || http_post_json(port, &path, &body))
+            .await
+            .expect("DevTools request thread");
+        match reply {
+            Ok(reply) => reply["value"].clone(),
+            Err(e) => panic!("DevTools command {method} failed: {e}"),
+        }
+    }
+
+    /// Adds `source` to every document this tab loads from now on (iframes included), run
+    /// before the page's own scripts (`Page.addScriptToEvaluateOnNewDocument`). Takes effect
+    /// from the next navigation.
+    pub async fn add_init_script(&self, source: &str) {
+        let reply = self.cdp("Page.addScriptToEvaluateOnNewDocument", json!({ "source": source })).await;
+        assert!(reply["identifier"].is_string(), "init script not added: {reply}");
+    }
+
+    /// Sizes the window so that the viewport (`innerWidth` x `innerHeight`, CSS px) is
+    /// `width` x `height`, and returns the viewport it got. The window is resized through
+    /// WebDriver and corrected by what the page reports; only if that cannot reach the size
+    /// (a headless screen smaller than the window needs) is the viewport emulated through
+    /// DevTools (`Emulation.setDeviceMetricsOverride`, scale factor 1).
+    pub async fn set_viewport(&self, width: u32, height: u32) -> (u32, u32) {
+        let (mut window_w, mut window_h) = (width, height);
+        for _ in 0..4 {
+            self.client.set_window_size(window_w, window_h).await.expect("set the window size");
+            let (w, h) = self.viewport().await;
+            if (w, h) == (width, height) {
+                return (w, h);
+            }
+            window_w = (window_w as i64 + width as i64 - w as i64).max(200) as u32;
+            window_h = (window_h as i64 + height as i64 - h as i64).max(200) as u32;
+        }
+        let metrics = json!({ "width": width, "height": height, "deviceScaleFactor": 1, "mobile": false });
+        self.cdp("Emulation.setDeviceMetricsOverride", metrics).await;
+        self.viewport().await
+    }
+
+    /// The viewport of the current page: (`innerWidth`, `innerHeight`) in CSS px.
+    pub async fn viewport(&self) -> (u32, u32) {
+        let v = self.js("return [innerWidth, innerHeight];").await;
+        let side = |i: usize| v[i].as_u64().unwrap_or_else(|| panic!("viewport size in {v}")) as u32;
+        (side(0), side(1))
+    }
+}
+
+/// POSTs a JSON body to chromedriver on 127.0.0.1:`port` (plain HTTP/1.1, one connection per
+/// request) and returns the JSON reply; an error for a status other than 200.
+fn http_post_json(port: u16, path: &str, body: &str) -> Result<Value, String> {
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).map_err(|e| format!("connect to chromedriver: {e}"))?;
+    stream.set_read_timeout(Some(Duration::from_secs(120))).map_err(|e| e.to_string())?;
+    let request = format!(
+        "POST {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Type: application/json; charset=utf-8\r\n\
+         Content-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    );
+    stream.write_all(request.as_bytes()).map_err(|e| format!("send: {e}"))?;
+    let mut reply = Vec::new();
+    stream.read_to_end(&mut reply).map_err(|e| format!("receive: {e}"))?;
+    let split = reply.windows(4).position(|w| w == b"\r\n\r\n").ok_or("no HTTP header in the reply")?;
+    let head = String::from_utf8_lossy(&reply[..split]).to_ascii_lowercase();
+    let mut content = reply[split + 4..].to_vec();
+    if head.contains("transfer-encoding: chunked") {
+        content = dechunk(&content);
+    }
+    let status = head.split_whitespace().nth(1).unwrap_or("");
+    let value: Value = serde_json::from_slice(&content)
+        .map_err(|e| format!("HTTP {status}, reply not JSON ({e}): {}", String::from_utf8_lossy(&content)))?;
+    if status == "200" {
+        Ok(value)
+    } else {
+        Err(format!("HTTP {status}: {value}"))
+    }
+}
+
+/// The body of a chunked HTTP/1.1 reply.
+fn dechunk(mut data: &[u8]) -> Vec<u8> {
+    let mut out = Vec::new();
+    while let Some(line_end) = data.windows(2).position(|w| w == b"\r\n") {
+        let size = std::str::from_utf8(&data[..line_end])
+            .ok()
+            .and_then(|s| usize::from_str_radix(s.split(';').next().unwrap_or("").trim(), 16).ok())
+            .unwrap_or(0);
+        let start = line_end + 2;
+        if size == 0 || start + size > data.len() {
+            break;
+        }
+        out.extend_from_slice(&data[start..start + size]);
+        data = &data[(start + size + 2).min(data.len())..];
+    }
+    out
+}
+
+/// A process from /proc: its id, its parent's and its command line.
+#[derive(Clone, Debug)]
+pub struct ProcessInfo {
+    pub pid: u32,
+    pub ppid: u32,
+    pub args: Vec<String>,
+}
+
+impl ProcessInfo {
+    /// The executable's file name (`chromium`, `chromedriver`, ...).
+    pub fn program(&self) -> &str {
+        self.args.first().map_or("", |a| a.rsplit('/').next().unwrap_or(a))
+    }
+
+    /// Chromium's browser process (not one of its helpers, which have a `--type=`).
+    fn is_chromium_browser(&self) -> bool {
+        self.program() == "chromium" && !self.args.iter().any(|a| a.starts_with("--type="))
+    }
+
+    /// For a Chromium started by this support code (profile `wavepool-chromium-<pid>-<port>`),
+    /// the id of the test or benchmark process that started it.
+    fn wavepool_owner(&self) -> Option<u32> {
+        let profile = self.args.iter().find_map(|a| a.strip_prefix("--user-data-dir="))?;
+        let name = Path::new(profile).file_name()?.to_str()?;
+        name.strip_prefix("wavepool-chromium-")?.split('-').next()?.parse().ok()
+    }
+
+    /// `pid command args...`, shortened, for messages.
+    pub fn describe(&self) -> String {
+        let line = self.args.join(" ");
+        let short: String = line.chars().take(160).collect();
+        format!("{} {short}{}", self.pid, if short.len() < line.len() { " ..." } else { "" })
+    }
+}
+
+/// Every process visible in /proc.
+pub fn processes() -> Vec<ProcessInfo> {
+    let mut list = Vec::new();
+    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
+        let Some(pid) = entry.file_name().to_str().and_then(|n| n.parse::<u32>().ok()) else { continue };
+        let (Ok(cmdline), Ok(stat)) =
+            (std::fs::read(entry.path().join("cmdline")), std::fs::read_to_string(entry.path().join("stat")))
+        else {
+            continue;
+        };
+        // stat: "pid (comm) state ppid ..."; comm may hold spaces and parentheses.
+        let ppid = stat.rsplit_once(')').and_then(|(_, rest)| rest.split_whitespace().nth(1)?.parse().ok());
+        let args =
+            cmdline.split(|&b| b == 0).filter(|a| !a.is_empty()).map(|a| String::from_utf8_lossy(a).into_owned());
+        list.push(ProcessInfo { pid, ppid: ppid.unwrap_or(0), args: args.collect() });
+    }
+    list
+}
+
+/// `root` and all its descendants, from a process list.
+pub fn process_tree(list: &[ProcessInfo], root: u32) -> Vec<u32> {
+    let mut tree = vec![root];
+    let mut i = 0;
+    while i < tree.len() {
+        let parent = tree[i];
+        tree.extend(list.iter().filter(|p| p.ppid == parent && p.pid != parent).map(|p| p.pid));
+        i += 1;
+    }
+    tree
+}
+
+/// What `end_stray_browsers` found.
+pub struct StrayBrowsers {
+    /// Leftovers it ended (described).
+    pub ended: Vec<String>,
+    /// Chromium or chromedriver processes it left running because they are not leftovers:
+    /// someone's test or browser that is still running (described).
+    pub others: Vec<String>,
+}
+
+/// Ends the Chromium processes left over by earlier tests or benchmarks, by process id: a
+/// Chromium whose profile (`wavepool-chromium-<pid>-<port>`) names a process that has ended,
+/// with all its helpers, and its chromedriver when that was orphaned too. One such leftover
+/// (its GPU process still working through queued frames) makes every figure of a benchmark
+/// several times worse. Other Chromium or chromedriver processes are not touched, only listed
+/// in `others`: they belong to something still running (a test, another session).
+pub fn end_stray_browsers() -> StrayBrowsers {
+    let list = processes();
+    let alive = |pid: u32| Path::new(&format!("/proc/{pid}")).exists();
+    let mut doomed: Vec<u32> = Vec::new();
+    let mut ended = Vec::new();
+    for p in list.iter().filter(|p| p.is_chromium_browser()) {
+        let Some(owner) = p.wavepool_owner() else { continue };
+        if alive(owner) {
+            continue;
+        }
+        ended.push(p.describe());
+        doomed.extend(process_tree(&list, p.pid));
+        if let Some(driver) = list.iter().find(|d| d.pid == p.ppid && d.program() == "chromedriver" && d.ppid == 1) {
+            ended.push(driver.describe());
+            doomed.extend(process_tree(&list, driver.pid));
+        }
+    }
+    doomed.sort_unstable();
+    doomed.dedup();
+    for pid in &doomed {
+        let _ = Command::new("kill").args(["-KILL", &pid.to_string()]).stderr(Stdio::null()).status();
+    }
+    let start = Instant::now();
+    while doomed.iter().any(|&pid| alive(pid)) && start.elapsed() < Duration::from_secs(5) {
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let others = processes()
+        .iter()
+        .filter(|p| !doomed.contains(&p.pid) && (p.is_chromium_browser() || p.program() == "chromedriver"))
+        .map(ProcessInfo::describe)
+        .collect();
+    StrayBrowsers { ended, others }
 }
 
 impl Drop for Browser {

@@ -1,14 +1,21 @@
 //! The renderer: caustics map, then one scene pass of sky, pool, sphere and the water
 //! surface (from above and from below) into any colour target.
 
+mod meshes;
+mod variants;
+
+use std::collections::HashMap;
+
 use glam::{Mat4, Vec3};
-use wgpu::util::DeviceExt;
 
 use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::scene::{self, Sphere};
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
+use meshes::{pool_box, unit_sphere, water_grid, Mesh};
+pub use variants::Features;
+use variants::{PipelineTargets, ScenePipelines};
 
 /// Sun irradiance scale on a surface facing it (linear units; ambient sky light is ~0.35).
 pub const SUN_STRENGTH: f32 = 0.8;
@@ -36,6 +43,9 @@ pub struct View {
     pub caustics: bool,
     /// A view of the simulation's textures drawn over the scene, if any.
     pub debug: Option<DebugView>,
+    /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
+    /// is scaled up to the target).
+    pub render_scale: f32,
 }
 
 /// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
@@ -46,7 +56,7 @@ pub struct DebugView {
     pub inset: bool,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum DebugTexture {
     Height = 1,
     Normals = 2,
@@ -132,119 +142,6 @@ pub fn caustics_grid(sim_size: u32) -> u32 {
     (sim_size / 2).clamp(64, 256)
 }
 
-/// A triangle mesh in GPU buffers.
-struct Mesh {
-    vertices: wgpu::Buffer,
-    indices: wgpu::Buffer,
-    index_count: u32,
-}
-
-impl Mesh {
-    fn new<V: bytemuck::Pod>(device: &wgpu::Device, label: &str, vertices: &[V], indices: &[u32]) -> Self {
-        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some(label),
-            contents: bytemuck::cast_slice(vertices),
-            usage: wgpu::BufferUsages::VERTEX,
-        });
-        let index_count = indices.len() as u32;
-        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some(label),
-            contents: bytemuck::cast_slice(indices),
-            usage: wgpu::BufferUsages::INDEX,
-        });
-        Self { vertices, indices, index_count }
-    }
-
-    fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
-        pass.set_vertex_buffer(0, self.vertices.slice(..));
-        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..self.index_count, 0, 0..1);
-    }
-}
-
-/// Appends triangle (a, b, c), wound counter-clockwise when seen from the side `outward` points to.
-fn push_triangle(indices: &mut Vec<u32>, positions: &[Vec3], tri: [u32; 3], outward: Vec3) {
-    let [a, b, c] = tri.map(|i| positions[i as usize]);
-    if (b - a).cross(c - a).dot(outward) >= 0.0 {
-        indices.extend_from_slice(&tri);
-    } else {
-        indices.extend_from_slice(&[tri[0], tri[2], tri[1]]);
-    }
-}
-
-/// The water grid: (n + 1)^2 points spanning [-1, 1]^2 in pool units, facing up.
-fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
-    let side = n + 1;
-    let vertices: Vec<[f32; 2]> = (0..side * side)
-        .map(|i| [(i % side) as f32 / n as f32 * 2.0 - 1.0, (i / side) as f32 / n as f32 * 2.0 - 1.0])
-        .collect();
-    let positions: Vec<Vec3> = vertices.iter().map(|v| Vec3::new(v[0], 0.0, v[1])).collect();
-    let mut indices = Vec::with_capacity((n * n * 6) as usize);
-    for j in 0..n {
-        for i in 0..n {
-            let v00 = j * side + i;
-            let (v10, v01, v11) = (v00 + 1, v00 + side, v00 + side + 1);
-            push_triangle(&mut indices, &positions, [v00, v01, v10], Vec3::Y);
-            push_triangle(&mut indices, &positions, [v10, v01, v11], Vec3::Y);
-        }
-    }
-    (vertices, indices)
-}
-
-/// The pool's floor and four walls up to the rim, as (position, inward normal), wound to
-/// face inwards so that walls between the eye and the pool are culled.
-fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, d, r) = (scene::HALF_WIDTH, scene::DEPTH, scene::RIM);
-    let faces: [(Vec3, [Vec3; 4]); 5] = [
-        (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
-        (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),
-        (Vec3::NEG_X, [Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(w, r, w), Vec3::new(w, -d, w)]),
-        (Vec3::Z, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(-w, r, -w)]),
-        (Vec3::NEG_Z, [Vec3::new(-w, -d, w), Vec3::new(w, -d, w), Vec3::new(w, r, w), Vec3::new(-w, r, w)]),
-    ];
-    let mut positions = Vec::new();
-    let mut vertices = Vec::new();
-    let mut indices = Vec::new();
-    for (normal, corners) in faces {
-        let base = positions.len() as u32;
-        for c in corners {
-            positions.push(c);
-            vertices.push([c.x, c.y, c.z, normal.x, normal.y, normal.z]);
-        }
-        push_triangle(&mut indices, &positions, [base, base + 1, base + 2], normal);
-        push_triangle(&mut indices, &positions, [base, base + 2, base + 3], normal);
-    }
-    (vertices, indices)
-}
-
-/// A unit sphere (latitude-longitude), wound to face outwards.
-fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
-    let mut positions = Vec::new();
-    for i in 0..=stacks {
-        let theta = std::f32::consts::PI * i as f32 / stacks as f32;
-        for j in 0..=slices {
-            let phi = std::f32::consts::TAU * j as f32 / slices as f32;
-            positions.push(Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin()));
-        }
-    }
-    let row = slices + 1;
-    let mut indices = Vec::new();
-    for i in 0..stacks {
-        for j in 0..slices {
-            let a = i * row + j;
-            let (b, c, e) = (a + 1, a + row, a + row + 1);
-            for tri in [[a, c, b], [b, c, e]] {
-                let centre = tri.iter().map(|&k| positions[k as usize]).sum::<Vec3>();
-                let [p, q, s] = tri.map(|k| positions[k as usize]);
-                if (q - p).cross(s - p).length_squared() > 1e-12 {
-                    push_triangle(&mut indices, &positions, tri, centre);
-                }
-            }
-        }
-    }
-    (positions.iter().map(|p| p.to_array()).collect(), indices)
-}
-
 /// The duck's traced parts as the scene shader takes them: per part its centre and semi-axes
 /// in the duck's frame (m), and its colour.
 fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
@@ -257,24 +154,17 @@ fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
     out
 }
 
-/// The caustics map and the pipeline that draws a water grid (see [`caustics_grid`]) into it.
-pub struct CausticsPass {
-    texture: wgpu::Texture,
+/// The caustics map and the water grid (see [`caustics_grid`]) drawn into it (its pipeline
+/// is one of the [`ScenePipelines`]).
+struct CausticsMap {
     view: wgpu::TextureView,
-    pipeline: wgpu::RenderPipeline,
     grid: Mesh,
     /// Quads per side of `grid`.
     grid_size: u32,
 }
 
-impl CausticsPass {
-    fn new(
-        device: &wgpu::Device,
-        size: u32,
-        format: wgpu::TextureFormat,
-        sim_size: u32,
-        water_layout: &wgpu::BindGroupLayout,
-    ) -> Self {
+impl CausticsMap {
+    fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat, sim_size: u32) -> Self {
         let texture = gpu::texture_2d(
             device,
             "caustics map",
@@ -283,97 +173,14 @@ impl CausticsPass {
             1,
             1,
             format,
-            wgpu::TextureUsages::RENDER_ATTACHMENT
-                | wgpu::TextureUsages::TEXTURE_BINDING
-                | wgpu::TextureUsages::COPY_SRC,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
         );
         let view = texture.create_view(&Default::default());
-        let module = gpu::shader(device, "caustics", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS]);
-        let additive = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
-        let pipeline = mesh_pipeline(
-            device,
-            MeshPipeline {
-                label: "caustics",
-                module: &module,
-                vertex_entry: "vs_caustics",
-                fragment_entry: "fs_caustics",
-                layouts: &[water_layout],
-                attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-                stride: 8,
-                cull: None,
-                format,
-                blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
-                depth: false,
-            },
-        );
         let grid_size = caustics_grid(sim_size);
         let (grid_vertices, grid_indices) = water_grid(grid_size);
         let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
-        Self { texture, view, pipeline, grid, grid_size }
+        Self { view, grid, grid_size }
     }
-
-    /// The caustics map texture (for tests and debug views).
-    pub fn texture(&self) -> &wgpu::Texture {
-        &self.texture
-    }
-}
-
-struct MeshPipeline<'a> {
-    label: &'a str,
-    module: &'a wgpu::ShaderModule,
-    vertex_entry: &'a str,
-    fragment_entry: &'a str,
-    layouts: &'a [&'a wgpu::BindGroupLayout],
-    attributes: &'a [wgpu::VertexAttribute],
-    stride: u64,
-    cull: Option<wgpu::Face>,
-    format: wgpu::TextureFormat,
-    blend: Option<wgpu::BlendState>,
-    /// Depth-tested and written against [`DEPTH_FORMAT`].
-    depth: bool,
-}
-
-fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipeline {
-    let layout = gpu::pipeline_layout(device, p.label, p.layouts);
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(p.label),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState {
-            module: p.module,
-            entry_point: Some(p.vertex_entry),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: p.stride,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: p.attributes,
-            })],
-        },
-        primitive: wgpu::PrimitiveState { cull_mode: p.cull, ..Default::default() },
-        depth_stencil: p.depth.then(|| wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: wgpu::MultisampleState::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: p.module,
-            entry_point: Some(p.fragment_entry),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: p.format,
-                blend: p.blend,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
 }
 
 struct DepthBuffer {
@@ -386,23 +193,99 @@ pub struct Renderer {
     settings: RenderSettings,
     uniforms: wgpu::Buffer,
     water_layout: wgpu::BindGroupLayout,
+    textures_layout: wgpu::BindGroupLayout,
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
     textures_group: wgpu::BindGroup,
-    caustics: CausticsPass,
+    caustics: CausticsMap,
     sky_cube: SkyCube,
     sky: FullscreenPass,
-    pool: wgpu::RenderPipeline,
-    sphere: wgpu::RenderPipeline,
+    /// The scene's pipelines per feature set drawn so far (see [`Features`]).
+    variants: HashMap<Features, ScenePipelines>,
+    /// The debug view's pass per texture shown so far.
+    debug_passes: HashMap<DebugTexture, FullscreenPass>,
     /// The water surface, both sides in one draw.
-    surface: wgpu::RenderPipeline,
-    debug: FullscreenPass,
     grid: Mesh,
     pool_mesh: Mesh,
     sphere_mesh: Mesh,
-    duck: wgpu::RenderPipeline,
     duck_mesh: Mesh,
     depth: Option<DepthBuffer>,
+    upscale: Upscale,
+}
+
+/// The scene drawn at a reduced resolution and the pass that scales it up to the target.
+struct Upscale {
+    pass: FullscreenPass,
+    layout: wgpu::BindGroupLayout,
+    sampler: wgpu::Sampler,
+    /// The reduced-resolution image, its size (pixels) and its bind group, once needed.
+    image: Option<(wgpu::TextureView, (u32, u32), wgpu::BindGroup)>,
+}
+
+impl Upscale {
+    fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
+        let vis = wgpu::ShaderStages::FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("upscale layout"),
+            entries: &[
+                gpu::texture_entry(
+                    0,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: true },
+                    wgpu::TextureViewDimension::D2,
+                ),
+                gpu::sampler_entry(1, vis),
+            ],
+        });
+        let pass = FullscreenPass::new(
+            device,
+            "upscale",
+            &[gpu::wgsl::UPSCALE],
+            "fs_upscale",
+            &[&layout],
+            FullscreenTarget { format, blend: None, depth: None },
+        );
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        Self { pass, layout, sampler, image: None }
+    }
+
+    /// The image to draw the scene into at `size` pixels (made again when the size changes).
+    fn image(&mut self, device: &wgpu::Device, format: wgpu::TextureFormat, size: (u32, u32)) -> wgpu::TextureView {
+        if self.image.as_ref().map(|i| i.1) != Some(size) {
+            let texture = gpu::texture_2d(
+                device,
+                "scene at reduced resolution",
+                size.0,
+                size.1,
+                1,
+                1,
+                format,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            );
+            let view = texture.create_view(&Default::default());
+            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("upscale"),
+                layout: &self.layout,
+                entries: &[
+                    wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&self.sampler) },
+                ],
+            });
+            self.image = Some((view, size, group));
+        }
+        self.image.as_ref().expect("just made").0.clone()
+    }
+
+    /// Scales the image up over the whole of `target`.
+    fn run(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView) {
+        if let Some((_, _, group)) = &self.image {
+            self.pass.run(encoder, target, &[group]);
+        }
+    }
 }
 
 /// The scene uniforms with each of the water's two state textures (group 0 of every scene pass).
@@ -466,13 +349,8 @@ impl Renderer {
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
         let water_groups = water_bind_groups(device, &water_layout, &uniforms, water);
-        let caustics = CausticsPass::new(
-            device,
-            settings.caustics_size,
-            settings.caustics_format().0,
-            water.size(),
-            &water_layout,
-        );
+        let (caustics_format, _) = settings.caustics_format();
+        let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
         let tiles = textures::create_tile_texture(device, queue);
         let sampler = |address: wgpu::AddressMode| {
@@ -514,73 +392,11 @@ impl Renderer {
         let sky = FullscreenPass::new(
             device,
             "sky",
-            &[gpu::wgsl::SCENE, gpu::wgsl::SKY],
+            &[&Features::default().wgsl(), gpu::wgsl::SCENE, gpu::wgsl::SKY],
             "fs_sky",
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
-        let debug = FullscreenPass::new(
-            device,
-            "debug view",
-            &[gpu::wgsl::SCENE, gpu::wgsl::DEBUG_VIEW],
-            "fs_debug",
-            &layouts,
-            FullscreenTarget { format, blend: None, depth: None },
-        );
-        let pool_module = gpu::shader(device, "pool", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::POOL]);
-        let sphere_module = gpu::shader(device, "sphere", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::SPHERE]);
-        let water_module =
-            gpu::shader(device, "water surface", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::WATER]);
-        let scene_pipeline = |label, module, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
-            mesh_pipeline(
-                device,
-                MeshPipeline {
-                    label,
-                    module,
-                    vertex_entry: vs,
-                    fragment_entry: fs,
-                    layouts: &layouts,
-                    attributes,
-                    stride,
-                    cull,
-                    format,
-                    blend: None,
-                    depth: true,
-                },
-            )
-        };
-        let pool = scene_pipeline(
-            "pool",
-            &pool_module,
-            "vs_pool",
-            "fs_pool",
-            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-            24,
-            Some(wgpu::Face::Back),
-        );
-        let sphere = scene_pipeline(
-            "sphere",
-            &sphere_module,
-            "vs_sphere",
-            "fs_sphere",
-            &wgpu::vertex_attr_array![0 => Float32x3],
-            12,
-            Some(wgpu::Face::Back),
-        );
-        let duck_module = gpu::shader(device, "duck", &[gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::DUCK]);
-        let duck = scene_pipeline(
-            "duck",
-            &duck_module,
-            "vs_duck",
-            "fs_duck",
-            &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
-            36,
-            Some(wgpu::Face::Back),
-        );
-        let grid_attrs = wgpu::vertex_attr_array![0 => Float32x2];
-        // Culling off: front faces are the surface seen from above, back faces from below.
-        let surface = scene_pipeline("water surface", &water_module, "vs_surface", "fs_surface", &grid_attrs, 8, None);
-
         let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
         let (sphere_vertices, sphere_indices) = unit_sphere(24, 48);
@@ -589,30 +405,60 @@ impl Renderer {
             settings,
             uniforms,
             water_layout,
+            textures_layout,
             water_groups,
             textures_group,
             caustics,
             sky_cube,
             sky,
-            pool,
-            sphere,
-            surface,
-            debug,
+            variants: HashMap::new(),
+            debug_passes: HashMap::new(),
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
-            duck,
             duck_mesh: Mesh::new(device, "duck", &duck_vertices, &duck_indices),
             depth: None,
+            upscale: Upscale::new(device, settings.target_format),
         }
     }
 
-    pub fn settings(&self) -> RenderSettings {
-        self.settings
+    /// The pipelines for `features`, built the first time they are asked for. Building
+    /// compiles five shaders; do it ahead (see [`Renderer::prepare_variant`]) to keep it out
+    /// of a frame that must be quick.
+    fn variant(&mut self, device: &wgpu::Device, features: Features) -> &ScenePipelines {
+        let targets = PipelineTargets {
+            format: self.settings.target_format,
+            caustics_format: self.settings.caustics_format().0,
+            water_layout: &self.water_layout,
+            textures_layout: &self.textures_layout,
+        };
+        self.variants.entry(features).or_insert_with(|| ScenePipelines::new(device, features, &targets))
     }
 
-    pub fn caustics(&self) -> &CausticsPass {
-        &self.caustics
+    /// Builds the pipelines of a feature set now, if they are not built yet.
+    pub fn prepare_variant(&mut self, device: &wgpu::Device, features: Features) {
+        self.variant(device, features);
+    }
+
+    /// Feature sets whose pipelines are built.
+    pub fn variants_built(&self) -> usize {
+        self.variants.len()
+    }
+
+    fn debug_pass(&mut self, device: &wgpu::Device, texture: DebugTexture) -> &FullscreenPass {
+        let layouts = [&self.water_layout, &self.textures_layout];
+        let format = self.settings.target_format;
+        self.debug_passes.entry(texture).or_insert_with(|| {
+            let constants = format!("{}const DEBUG_TEXTURE: i32 = {};\n", Features::default().wgsl(), texture as i32);
+            FullscreenPass::new(
+                device,
+                "debug view",
+                &[&constants, gpu::wgsl::SCENE, gpu::wgsl::DEBUG_VIEW],
+                "fs_debug",
+                &layouts,
+                FullscreenTarget { format, blend: None, depth: None },
+            )
+        })
     }
 
     /// Rebinds the water state textures (after the heightfield was replaced).
@@ -667,10 +513,19 @@ impl Renderer {
     }
 
     /// Projects the water grid along the refracted sunlight into the caustics map.
-    pub fn encode_caustics(&self, encoder: &mut wgpu::CommandEncoder, view: &View, water: &HeightField) {
+    pub fn encode_caustics(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        view: &View,
+        water: &HeightField,
+    ) {
         if !view.caustics {
             return;
         }
+        let features = Features::of(view);
+        self.variant(device, features);
+        let pipeline = &self.variants[&features].caustics;
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("caustics"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -687,7 +542,7 @@ impl Renderer {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        pass.set_pipeline(&self.caustics.pipeline);
+        pass.set_pipeline(pipeline);
         pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
         self.caustics.grid.draw(&mut pass);
     }
@@ -709,7 +564,8 @@ impl Renderer {
         &self.depth.as_ref().expect("depth buffer just made").view
     }
 
-    /// Draws sky, pool, sphere and water into `target` (of `size` pixels).
+    /// Draws sky, pool, sphere and water into `target` (of `size` pixels) at the view's
+    /// render scale, and the debug view over them.
     pub fn encode_scene(
         &mut self,
         device: &wgpu::Device,
@@ -719,7 +575,52 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
+        let scale = view.render_scale.clamp(0.25, 1.0);
+        if scale < 1.0 {
+            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
+            let scaled = (scaled(size.0), scaled(size.1));
+            let image = self.upscale.image(device, self.settings.target_format, scaled);
+            self.draw_scene(device, encoder, &image, scaled, view, water);
+            self.upscale.run(encoder, target);
+        } else {
+            self.draw_scene(device, encoder, target, size, view, water);
+        }
+        if let Some(debug) = view.debug {
+            self.debug_pass(device, debug.texture);
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("debug view"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view: target,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
+                })],
+                depth_stencil_attachment: None,
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            let [x, y, w, h] = debug.viewport(size);
+            pass.set_viewport(x, y, w, h, 0.0, 1.0);
+            let water_group = &self.water_groups[water.state().current()];
+            self.debug_passes[&debug.texture].draw(&mut pass, &[water_group, &self.textures_group]);
+        }
+    }
+
+    /// The scene pass: water surface, objects and pool front to back (early depth testing
+    /// skips what the water and objects hide), then the sky where nothing else was drawn.
+    fn draw_scene(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &View,
+        water: &HeightField,
+    ) {
         let depth = self.depth_view(device, size).clone();
+        let features = Features::of(view);
+        self.variant(device, features);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("scene"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -737,42 +638,22 @@ impl Renderer {
             occlusion_query_set: None,
             multiview_mask: None,
         });
-        // Front to back, so early depth testing skips what the water and sphere hide;
-        // the sky last, only where nothing else was drawn.
+        let pipelines = &self.variants[&features];
         let water_group = &self.water_groups[water.state().current()];
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        pass.set_pipeline(&self.surface);
+        pass.set_pipeline(&pipelines.surface);
         self.grid.draw(&mut pass);
         if view.sphere.is_some() {
-            pass.set_pipeline(&self.sphere);
+            pass.set_pipeline(&pipelines.sphere);
             self.sphere_mesh.draw(&mut pass);
         }
         if view.duck.is_some() {
-            pass.set_pipeline(&self.duck);
+            pass.set_pipeline(&pipelines.duck);
             self.duck_mesh.draw(&mut pass);
         }
-        pass.set_pipeline(&self.pool);
+        pass.set_pipeline(&pipelines.pool);
         self.pool_mesh.draw(&mut pass);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
-        drop(pass);
-        if let Some(debug) = view.debug {
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("debug view"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: target,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-                })],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            let [x, y, w, h] = debug.viewport(size);
-            pass.set_viewport(x, y, w, h, 0.0, 1.0);
-            self.debug.draw(&mut pass, &[water_group, &self.textures_group]);
-        }
     }
 }

@@ -1,0 +1,120 @@
+//! Triangle meshes of the scene, built on the CPU once: the water grid, the pool box and the
+//! unit sphere, and the GPU buffers that hold them.
+
+use glam::Vec3;
+use wgpu::util::DeviceExt;
+
+use crate::scene;
+
+/// A triangle mesh in GPU buffers.
+pub struct Mesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+}
+
+impl Mesh {
+    pub fn new<V: bytemuck::Pod>(device: &wgpu::Device, label: &str, vertices: &[V], indices: &[u32]) -> Self {
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: bytemuck::cast_slice(vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let index_count = indices.len() as u32;
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some(label),
+            contents: bytemuck::cast_slice(indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        Self { vertices, indices, index_count }
+    }
+
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.index_count, 0, 0..1);
+    }
+}
+
+/// Appends triangle (a, b, c), wound counter-clockwise when seen from the side `outward` points to.
+pub fn push_triangle(indices: &mut Vec<u32>, positions: &[Vec3], tri: [u32; 3], outward: Vec3) {
+    let [a, b, c] = tri.map(|i| positions[i as usize]);
+    if (b - a).cross(c - a).dot(outward) >= 0.0 {
+        indices.extend_from_slice(&tri);
+    } else {
+        indices.extend_from_slice(&[tri[0], tri[2], tri[1]]);
+    }
+}
+
+/// The water grid: (n + 1)^2 points spanning [-1, 1]^2 in pool units, facing up.
+pub fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
+    let side = n + 1;
+    let vertices: Vec<[f32; 2]> = (0..side * side)
+        .map(|i| [(i % side) as f32 / n as f32 * 2.0 - 1.0, (i / side) as f32 / n as f32 * 2.0 - 1.0])
+        .collect();
+    let positions: Vec<Vec3> = vertices.iter().map(|v| Vec3::new(v[0], 0.0, v[1])).collect();
+    let mut indices = Vec::with_capacity((n * n * 6) as usize);
+    for j in 0..n {
+        for i in 0..n {
+            let v00 = j * side + i;
+            let (v10, v01, v11) = (v00 + 1, v00 + side, v00 + side + 1);
+            push_triangle(&mut indices, &positions, [v00, v01, v10], Vec3::Y);
+            push_triangle(&mut indices, &positions, [v10, v01, v11], Vec3::Y);
+        }
+    }
+    (vertices, indices)
+}
+
+/// The pool's floor and four walls up to the rim, as (position, inward normal), wound to
+/// face inwards so that walls between the eye and the pool are culled.
+pub fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
+    let (w, d, r) = (scene::HALF_WIDTH, scene::DEPTH, scene::RIM);
+    let faces: [(Vec3, [Vec3; 4]); 5] = [
+        (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
+        (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),
+        (Vec3::NEG_X, [Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(w, r, w), Vec3::new(w, -d, w)]),
+        (Vec3::Z, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, r, -w), Vec3::new(-w, r, -w)]),
+        (Vec3::NEG_Z, [Vec3::new(-w, -d, w), Vec3::new(w, -d, w), Vec3::new(w, r, w), Vec3::new(-w, r, w)]),
+    ];
+    let mut positions = Vec::new();
+    let mut vertices = Vec::new();
+    let mut indices = Vec::new();
+    for (normal, corners) in faces {
+        let base = positions.len() as u32;
+        for c in corners {
+            positions.push(c);
+            vertices.push([c.x, c.y, c.z, normal.x, normal.y, normal.z]);
+        }
+        push_triangle(&mut indices, &positions, [base, base + 1, base + 2], normal);
+        push_triangle(&mut indices, &positions, [base, base + 2, base + 3], normal);
+    }
+    (vertices, indices)
+}
+
+/// A unit sphere (latitude-longitude), wound to face outwards.
+pub fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
+    let mut positions = Vec::new();
+    for i in 0..=stacks {
+        let theta = std::f32::consts::PI * i as f32 / stacks as f32;
+        for j in 0..=slices {
+            let phi = std::f32::consts::TAU * j as f32 / slices as f32;
+            positions.push(Vec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin()));
+        }
+    }
+    let row = slices + 1;
+    let mut indices = Vec::new();
+    for i in 0..stacks {
+        for j in 0..slices {
+            let a = i * row + j;
+            let (b, c, e) = (a + 1, a + row, a + row + 1);
+            for tri in [[a, c, b], [b, c, e]] {
+                let centre = tri.iter().map(|&k| positions[k as usize]).sum::<Vec3>();
+                let [p, q, s] = tri.map(|k| positions[k as usize]);
+                if (q - p).cross(s - p).length_squared() > 1e-12 {
+                    push_triangle(&mut indices, &positions, tri, centre);
+                }
+            }
+        }
+    }
+    (positions.iter().map(|p| p.to_array()).collect(), indices)
+}
