@@ -389,6 +389,7 @@ impl WebDemo {
         set(&o, "maxAbsHeight", level.max_abs as f64);
         set(&o, "width", self.config.width);
         set(&o, "height", self.config.height);
+        set(&o, "renderScale", self.demo.render_scale() as f64);
         let position = |p: Option<glam::Vec3>| match p {
             Some(p) => {
                 JsValue::from(p.to_array().iter().map(|&v| JsValue::from_f64(v as f64)).collect::<js_sys::Array>())

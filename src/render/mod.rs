@@ -620,7 +620,12 @@ impl Renderer {
     ) {
         let depth = self.depth_view(device, size).clone();
         let features = Features::of(view);
+        let plain = features.without_objects();
+        let regions = variants::surface_regions(view, size);
         self.variant(device, features);
+        if regions.is_some() {
+            self.variant(device, plain);
+        }
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("scene"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -642,8 +647,22 @@ impl Renderer {
         let water_group = &self.water_groups[water.state().current()];
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        pass.set_pipeline(&pipelines.surface);
-        self.grid.draw(&mut pass);
+        match regions {
+            // The objects are traced only where the water can show them (see surface_regions).
+            Some(regions) => {
+                for ([x, y, w, h], with_objects) in regions {
+                    let variant = if with_objects { features } else { plain };
+                    pass.set_pipeline(&self.variants[&variant].surface);
+                    pass.set_scissor_rect(x, y, w, h);
+                    self.grid.draw(&mut pass);
+                }
+                pass.set_scissor_rect(0, 0, size.0, size.1);
+            }
+            None => {
+                pass.set_pipeline(&pipelines.surface);
+                self.grid.draw(&mut pass);
+            }
+        }
         if view.sphere.is_some() {
             pass.set_pipeline(&pipelines.sphere);
             self.sphere_mesh.draw(&mut pass);

@@ -5,8 +5,10 @@
 //! compiler drop them. The constants come from [`Features::wgsl`]; pipelines are built the
 //! first time a feature set is drawn and kept ([`Renderer`](super::Renderer) caches them).
 
+use glam::{Vec3, Vec4Swizzles};
+
 use super::{View, DEPTH_FORMAT};
-use crate::gpu;
+use crate::{duck, gpu};
 
 /// What a frame shows that costs shader work: the shader constants of a variant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -31,6 +33,102 @@ impl Features {
             self.sphere, self.duck, self.caustics
         )
     }
+}
+
+/// Margin around an object's region of the water surface, as a fraction of the region's
+/// larger side, plus [`REGION_MARGIN_PX`]: waves tilt the surface and bend what it shows by
+/// a distance that grows with the distance between the object and the surface it is seen
+/// in, which is about the object's size.
+const REGION_MARGIN: f32 = 0.25;
+const REGION_MARGIN_PX: f32 = 4.0;
+/// Above this share of the target the region is not worth a second set of draws.
+const REGION_MAX_SHARE: f32 = 0.5;
+
+impl Features {
+    /// The same without the objects.
+    pub fn without_objects(self) -> Self {
+        Self { sphere: false, duck: false, ..self }
+    }
+}
+
+/// Which parts of a `size` target show the water surface with or without the objects, as
+/// (rectangle x, y, width, height in pixels, with objects). With the camera above the water an
+/// object can be seen, reflected or refracted, only near the screen bound of the column from
+/// the surface down to the bottom of the object or of its mirror image, grown by
+/// [`REGION_MARGIN`]; elsewhere the
+/// surface is drawn by the variant without objects. `None`: draw the whole surface with them
+/// (no objects, the camera under water, or regions too large to gain from).
+pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], bool)>> {
+    let mut bounds: Vec<(Vec3, f32)> = Vec::new();
+    bounds.extend(view.sphere.map(|s| (s.centre, s.radius)));
+    bounds.extend(view.duck.map(|p| (p.position, duck::bounding_radius())));
+    if bounds.is_empty() || view.eye.y < 0.0 {
+        return None;
+    }
+    let (w, h) = (size.0 as f32, size.1 as f32);
+    let mut rects = Vec::new();
+    for (centre, radius) in bounds {
+        let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
+        // From above, the surface shows what is under water refracted (raised towards the
+        // surface, straight above itself) and what is above it mirrored: both within the
+        // column over the object, from the surface down to its own or its mirror image's bottom.
+        let bottom = -(centre.y.abs() + radius);
+        for corner in 0..8 {
+            let pick = |bit: u32, a: f32, b: f32| if corner & bit == 0 { a } else { b };
+            let p = Vec3::new(
+                pick(1, centre.x - radius, centre.x + radius),
+                pick(2, bottom, 0.0),
+                pick(4, centre.z - radius, centre.z + radius),
+            );
+            let clip = view.view_proj * p.extend(1.0);
+            if clip.w <= 1e-3 {
+                return None;
+            }
+            lo = lo.min(clip.xy() / clip.w);
+            hi = hi.max(clip.xy() / clip.w);
+        }
+        // NDC (y up) to pixels (y down), with the margin.
+        let (x0, x1) = ((lo.x * 0.5 + 0.5) * w, (hi.x * 0.5 + 0.5) * w);
+        let (y0, y1) = ((0.5 - hi.y * 0.5) * h, (0.5 - lo.y * 0.5) * h);
+        let margin = REGION_MARGIN * (x1 - x0).max(y1 - y0) + REGION_MARGIN_PX;
+        let pixel = |v: f32, end: f32| v.round().clamp(0.0, end) as u32;
+        rects.push([pixel(x0 - margin, w), pixel(y0 - margin, h), pixel(x1 + margin, w), pixel(y1 + margin, h)]);
+    }
+    let parts = partition(&rects, size);
+    let covered: u32 = parts.iter().filter(|p| p.1).map(|p| p.0[2] * p.0[3]).sum();
+    (covered as f32 <= REGION_MAX_SHARE * w * h).then_some(parts)
+}
+
+/// Cuts a `size` target along the edges of `rects` (x0, y0, x1, y1) into rectangles (x, y,
+/// width, height) that lie inside some rect or outside all, merging neighbours in a row.
+fn partition(rects: &[[u32; 4]], size: (u32, u32)) -> Vec<([u32; 4], bool)> {
+    let edges = |a: usize, b: usize, end: u32| {
+        let mut v: Vec<u32> = rects.iter().flat_map(|r| [r[a], r[b]]).chain([0, end]).collect();
+        v.sort_unstable();
+        v.dedup();
+        v
+    };
+    let (xs, ys) = (edges(0, 2, size.0), edges(1, 3, size.1));
+    let mut parts = Vec::new();
+    for band in ys.windows(2) {
+        let mut run: Option<(u32, u32, bool)> = None;
+        for cell in xs.windows(2) {
+            let inside = rects.iter().any(|r| cell[0] >= r[0] && cell[1] <= r[2] && band[0] >= r[1] && band[1] <= r[3]);
+            run = match run {
+                Some((x0, _, kind)) if kind == inside => Some((x0, cell[1], kind)),
+                Some((x0, x1, kind)) => {
+                    parts.push(([x0, band[0], x1 - x0, band[1] - band[0]], kind));
+                    Some((cell[0], cell[1], inside))
+                }
+                None => Some((cell[0], cell[1], inside)),
+            };
+        }
+        if let Some((x0, x1, kind)) = run {
+            parts.push(([x0, band[0], x1 - x0, band[1] - band[0]], kind));
+        }
+    }
+    parts.retain(|p| p.0[2] > 0 && p.0[3] > 0);
+    parts
 }
 
 /// The pipelines of the passes that read the scene's features: the caustics map and the
@@ -196,4 +294,27 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
         multiview_mask: None,
         cache: None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_partition_covers_the_target_once_and_marks_the_rects() {
+        let size = (800, 600);
+        let rects = [[100, 100, 300, 250], [250, 200, 500, 400]];
+        let parts = partition(&rects, size);
+        let area: u32 = parts.iter().map(|p| p.0[2] * p.0[3]).sum();
+        let inside: u32 = parts.iter().filter(|p| p.1).map(|p| p.0[2] * p.0[3]).sum();
+        println!("{} rectangles, {inside} px with objects of {area}", parts.len());
+        assert_eq!(area, 800 * 600);
+        // Union of the two: 200x150 + 250x200 - overlap 50x50.
+        assert_eq!(inside, 200 * 150 + 250 * 200 - 50 * 50);
+        for (x, y) in [(150, 150), (400, 300), (280, 220)] {
+            let part = parts.iter().find(|p| x >= p.0[0] && x < p.0[0] + p.0[2] && y >= p.0[1] && y < p.0[1] + p.0[3]);
+            assert!(part.is_some_and(|p| p.1), "({x}, {y}) not marked");
+        }
+        assert!(parts.len() <= 12, "{} rectangles", parts.len());
+    }
 }
