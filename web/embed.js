@@ -209,6 +209,7 @@ class Demo {
     this._last = 0; // time of the last frame (ms)
     this._frames = []; // times of the frames drawn in the last 2 s (ms), for stats()
     this._runningSince = null; // when the frame loop last started drawing (ms)
+    this._looping = false; // whether the frame loop runs (false once stopped, until started again)
     this._userPaused = false;
     this._visible = true;
     this._onScreen = true;
@@ -462,14 +463,18 @@ class Demo {
 
   // ---- frame loop ---------------------------------------------------------------------
 
+  // Starts or stops the frame loop as the demo's state asks. A loop that starts again
+  // begins with a nominal frame time, not the time it was stopped for.
   _run() {
     const wanted = !this._dead && this._core && !this._userPaused && this._visible && this._onScreen;
     if (wanted && !this._frame) {
-      this._last = 0;
+      if (!this._looping) this._last = 0;
+      this._looping = true;
       this._frame = requestAnimationFrame((t) => this._tick(t));
-    } else if (!wanted && this._frame) {
-      cancelAnimationFrame(this._frame);
+    } else if (!wanted) {
+      if (this._frame) cancelAnimationFrame(this._frame);
       this._frame = 0;
+      this._looping = false;
       this._frames.length = 0;
     }
   }
