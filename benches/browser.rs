@@ -20,7 +20,9 @@
 //! - `WAVEPOOL_BENCH_QUERY`: extra options for our page, e.g. `&objects=none&quality=1`.
 //!
 //! Prints one JSON line per measurement, then one summary line per backend: mean drawn fps of
-//! ours and of the classic, their ratio, and the ratio per canvas pixel (fps x backing pixels).
+//! ours and of the classic, their ratio, and the ratio per canvas pixel (fps x backing pixels;
+//! and per pixel actually drawn when our page reports its automatic render scale: use
+//! `WAVEPOOL_BENCH_QUERY='&quality=1'` to compare at full resolution).
 
 #[path = "../tests/support/browser.rs"]
 mod support;
@@ -108,6 +110,9 @@ struct Measurement {
     callbacks_fps: f64,
     /// Backing pixels of the canvas.
     pixels: f64,
+    /// Our page: the scale its scene is drawn at (`stats().renderScale`, automatic resolution
+    /// draws at a fraction of the canvas and scales up); `None` when the build does not say.
+    render_scale: Option<f64>,
 }
 
 #[tokio::main(flavor = "current_thread")]
@@ -160,6 +165,13 @@ async fn measure(
 ) -> Measurement {
     browser.goto("about:blank").await;
     let settle = settle().await;
+    // Other browsers running now (someone's tests): their work lands in our window.
+    let list = processes();
+    let ours = process_tree(&list, browser.driver_pid());
+    let other_browsers = list.iter().filter(|p| p.is_chromium_browser() && !ours.contains(&p.pid)).count();
+    if other_browsers > 0 {
+        eprintln!("warning: {other_browsers} other Chromium running while measuring {}", page.name());
+    }
     let path = page.path(backend, &settings.extra_query);
     let loaded = Instant::now();
     browser.goto(&server.url(&path)).await;
@@ -199,7 +211,8 @@ async fn measure(
             browser
                 .js("const d = window.demo; if (!d || typeof d.stats !== 'function') return null;
                      const s = d.stats();
-                     return { fps: s.fps, backend: s.backend, adapter: s.adapter, simEngine: s.simEngine };")
+                     return { fps: s.fps, backend: s.backend, adapter: s.adapter, simEngine: s.simEngine,
+                              renderScale: s.renderScale === undefined ? null : s.renderScale };")
                 .await
         }
         Page::Classic => Value::Null,
@@ -232,6 +245,7 @@ async fn measure(
         "page_stats": stats,
         "ready_s": round2(ready_s),
         "settle": settle,
+        "other_browsers": other_browsers,
         "cpu": cpu,
     });
     println!("{line}");
@@ -244,6 +258,7 @@ async fn measure(
         fps: counter["fps"].as_f64().unwrap_or(0.0),
         callbacks_fps: counter["callbacksFps"].as_f64().unwrap_or(0.0),
         pixels,
+        render_scale: stats["renderScale"].as_f64(),
     }
 }
 
@@ -258,6 +273,22 @@ fn summary(results: &[Measurement], backend: &str) -> Value {
     let ours_pixel_rate = mean(Page::Ours, &|m| m.fps * m.pixels);
     let classic_pixel_rate = mean(Page::Classic, &|m| m.fps * m.pixels);
     let ratio = |a: f64, b: f64| if b > 0.0 { round3(a / b) } else { f64::NAN };
+    // Pixels our scene is actually drawn at (canvas x render scale squared), when every
+    // measurement of ours reported its scale.
+    let ours_scales: Vec<f64> = results
+        .iter()
+        .filter(|m| m.page == Page::Ours && m.backend == backend)
+        .filter_map(|m| m.render_scale)
+        .collect();
+    let scale_known =
+        ours_scales.len() == results.iter().filter(|m| m.page == Page::Ours && m.backend == backend).count();
+    let (ours_scale, ratio_per_rendered_pixel) = if scale_known && !ours_scales.is_empty() {
+        let rendered_rate = mean(Page::Ours, &|m| m.fps * m.pixels * m.render_scale.unwrap_or(1.0).powi(2));
+        let scale = ours_scales.iter().sum::<f64>() / ours_scales.len() as f64;
+        (Some(round3(scale)), Some(ratio(rendered_rate, classic_pixel_rate)))
+    } else {
+        (None, None)
+    };
     json!({
         "summary": backend,
         "rounds": results.iter().filter(|m| m.page == Page::Ours && m.backend == backend).count(),
@@ -267,6 +298,8 @@ fn summary(results: &[Measurement], backend: &str) -> Value {
         "ours_megapixels_per_s": round3(ours_pixel_rate / 1e6),
         "classic_megapixels_per_s": round3(classic_pixel_rate / 1e6),
         "ratio_per_pixel": ratio(ours_pixel_rate, classic_pixel_rate),
+        "ours_render_scale": ours_scale,
+        "ratio_per_rendered_pixel": ratio_per_rendered_pixel,
         "ours_callbacks_fps": round3(mean(Page::Ours, &|m| m.callbacks_fps)),
         "classic_callbacks_fps": round3(mean(Page::Classic, &|m| m.callbacks_fps)),
     })

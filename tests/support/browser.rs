@@ -380,14 +380,42 @@ fn http_post_json(port: u16, path: &str, body: &str) -> Result<Value, String> {
         body.len()
     );
     stream.write_all(request.as_bytes()).map_err(|e| format!("send: {e}"))?;
+    // chromedriver keeps the connection open whatever the request says: read the header, then
+    // exactly the body it announces (Content-Length, or chunks up to the last one).
     let mut reply = Vec::new();
-    stream.read_to_end(&mut reply).map_err(|e| format!("receive: {e}"))?;
-    let split = reply.windows(4).position(|w| w == b"\r\n\r\n").ok_or("no HTTP header in the reply")?;
+    let mut buf = [0u8; 16384];
+    let mut receive = |reply: &mut Vec<u8>| -> Result<(), String> {
+        let n = stream.read(&mut buf).map_err(|e| format!("receive: {e}"))?;
+        if n == 0 {
+            return Err("chromedriver closed the connection early".into());
+        }
+        reply.extend_from_slice(&buf[..n]);
+        Ok(())
+    };
+    let split = loop {
+        if let Some(split) = reply.windows(4).position(|w| w == b"\r\n\r\n") {
+            break split;
+        }
+        receive(&mut reply)?;
+    };
     let head = String::from_utf8_lossy(&reply[..split]).to_ascii_lowercase();
-    let mut content = reply[split + 4..].to_vec();
-    if head.contains("transfer-encoding: chunked") {
-        content = dechunk(&content);
-    }
+    let length =
+        head.lines().find_map(|l| l.strip_prefix("content-length:")).and_then(|v| v.trim().parse::<usize>().ok());
+    let content = match length {
+        Some(length) => {
+            while reply.len() < split + 4 + length {
+                receive(&mut reply)?;
+            }
+            reply[split + 4..split + 4 + length].to_vec()
+        }
+        None if head.contains("transfer-encoding: chunked") => {
+            while !reply[split + 4..].ends_with(b"0\r\n\r\n") {
+                receive(&mut reply)?;
+            }
+            dechunk(&reply[split + 4..])
+        }
+        None => return Err(format!("reply of unknown length: {head}")),
+    };
     let status = head.split_whitespace().nth(1).unwrap_or("");
     let value: Value = serde_json::from_slice(&content)
         .map_err(|e| format!("HTTP {status}, reply not JSON ({e}): {}", String::from_utf8_lossy(&content)))?;
@@ -431,7 +459,7 @@ impl ProcessInfo {
     }
 
     /// Chromium's browser process (not one of its helpers, which have a `--type=`).
-    fn is_chromium_browser(&self) -> bool {
+    pub fn is_chromium_browser(&self) -> bool {
         self.program() == "chromium" && !self.args.iter().any(|a| a.starts_with("--type="))
     }
 
