@@ -620,11 +620,10 @@ impl Renderer {
     ) {
         let depth = self.depth_view(device, size).clone();
         let features = Features::of(view);
-        let plain = features.without_objects();
         let regions = variants::surface_regions(view, size);
         self.variant(device, features);
-        if regions.is_some() {
-            self.variant(device, plain);
+        for (_, needs) in regions.iter().flatten() {
+            self.variant(device, *needs);
         }
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("scene"),
@@ -650,9 +649,8 @@ impl Renderer {
         match regions {
             // The objects are traced only where the water can show them (see surface_regions).
             Some(regions) => {
-                for ([x, y, w, h], with_objects) in regions {
-                    let variant = if with_objects { features } else { plain };
-                    pass.set_pipeline(&self.variants[&variant].surface);
+                for ([x, y, w, h], needs) in regions {
+                    pass.set_pipeline(&self.variants[&needs].surface);
                     pass.set_scissor_rect(x, y, w, h);
                     self.grid.draw(&mut pass);
                 }

@@ -51,23 +51,25 @@ impl Features {
     }
 }
 
-/// Which parts of a `size` target show the water surface with or without the objects, as
-/// (rectangle x, y, width, height in pixels, with objects). With the camera above the water an
-/// object can be seen, reflected or refracted, only near the screen bound of the column from
-/// the surface down to the bottom of the object or of its mirror image, grown by
-/// [`REGION_MARGIN`]; elsewhere the
-/// surface is drawn by the variant without objects. `None`: draw the whole surface with them
-/// (no objects, the camera under water, or regions too large to gain from).
-pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], bool)>> {
-    let mut bounds: Vec<(Vec3, f32)> = Vec::new();
-    bounds.extend(view.sphere.map(|s| (s.centre, s.radius)));
-    bounds.extend(view.duck.map(|p| (p.position, duck::bounding_radius())));
+/// Which variant draws which part of the water surface on a `size` target, as (rectangle x,
+/// y, width, height in pixels, features). With the camera above the water an object can be
+/// seen, reflected or refracted, only near the screen bound of the column from the surface
+/// down to the bottom of the object or of its mirror image, grown by [`REGION_MARGIN`]: there
+/// the surface is drawn by a variant with that object, elsewhere by one without. `None`: draw
+/// the whole surface with `features` (no objects, the camera under water, or regions too large
+/// to gain from).
+pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], Features)>> {
+    let features = Features::of(view);
+    let plain = features.without_objects();
+    let mut bounds: Vec<(Vec3, f32, Features)> = Vec::new();
+    bounds.extend(view.sphere.map(|s| (s.centre, s.radius, Features { sphere: true, ..plain })));
+    bounds.extend(view.duck.map(|p| (p.position, duck::bounding_radius(), Features { duck: true, ..plain })));
     if bounds.is_empty() || view.eye.y < 0.0 {
         return None;
     }
     let (w, h) = (size.0 as f32, size.1 as f32);
     let mut rects = Vec::new();
-    for (centre, radius) in bounds {
+    for (centre, radius, with) in bounds {
         let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
         // From above, the surface shows what is under water refracted (raised towards the
         // surface, straight above itself) and what is above it mirrored: both within the
@@ -92,18 +94,20 @@ pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], b
         let (y0, y1) = ((0.5 - hi.y * 0.5) * h, (0.5 - lo.y * 0.5) * h);
         let margin = REGION_MARGIN * (x1 - x0).max(y1 - y0) + REGION_MARGIN_PX;
         let pixel = |v: f32, end: f32| v.round().clamp(0.0, end) as u32;
-        rects.push([pixel(x0 - margin, w), pixel(y0 - margin, h), pixel(x1 + margin, w), pixel(y1 + margin, h)]);
+        let rect = [pixel(x0 - margin, w), pixel(y0 - margin, h), pixel(x1 + margin, w), pixel(y1 + margin, h)];
+        rects.push((rect, with));
     }
-    let parts = partition(&rects, size);
-    let covered: u32 = parts.iter().filter(|p| p.1).map(|p| p.0[2] * p.0[3]).sum();
+    let parts = partition(&rects, plain, size);
+    let covered: u32 = parts.iter().filter(|p| p.1 != plain).map(|p| p.0[2] * p.0[3]).sum();
     (covered as f32 <= REGION_MAX_SHARE * w * h).then_some(parts)
 }
 
-/// Cuts a `size` target along the edges of `rects` (x0, y0, x1, y1) into rectangles (x, y,
-/// width, height) that lie inside some rect or outside all, merging neighbours in a row.
-fn partition(rects: &[[u32; 4]], size: (u32, u32)) -> Vec<([u32; 4], bool)> {
+/// Cuts a `size` target along the edges of `rects` (x0, y0, x1, y1, each with the features it
+/// needs) into rectangles (x, y, width, height) with the features of every rect they lie in
+/// (`base` outside all), merging neighbours in a row that need the same.
+fn partition(rects: &[([u32; 4], Features)], base: Features, size: (u32, u32)) -> Vec<([u32; 4], Features)> {
     let edges = |a: usize, b: usize, end: u32| {
-        let mut v: Vec<u32> = rects.iter().flat_map(|r| [r[a], r[b]]).chain([0, end]).collect();
+        let mut v: Vec<u32> = rects.iter().flat_map(|r| [r.0[a], r.0[b]]).chain([0, end]).collect();
         v.sort_unstable();
         v.dedup();
         v
@@ -111,16 +115,23 @@ fn partition(rects: &[[u32; 4]], size: (u32, u32)) -> Vec<([u32; 4], bool)> {
     let (xs, ys) = (edges(0, 2, size.0), edges(1, 3, size.1));
     let mut parts = Vec::new();
     for band in ys.windows(2) {
-        let mut run: Option<(u32, u32, bool)> = None;
+        let mut run: Option<(u32, u32, Features)> = None;
         for cell in xs.windows(2) {
-            let inside = rects.iter().any(|r| cell[0] >= r[0] && cell[1] <= r[2] && band[0] >= r[1] && band[1] <= r[3]);
+            let needs = rects
+                .iter()
+                .filter(|(r, _)| cell[0] >= r[0] && cell[1] <= r[2] && band[0] >= r[1] && band[1] <= r[3])
+                .fold(base, |f, (_, with)| Features {
+                    sphere: f.sphere || with.sphere,
+                    duck: f.duck || with.duck,
+                    ..f
+                });
             run = match run {
-                Some((x0, _, kind)) if kind == inside => Some((x0, cell[1], kind)),
+                Some((x0, _, kind)) if kind == needs => Some((x0, cell[1], kind)),
                 Some((x0, x1, kind)) => {
                     parts.push(([x0, band[0], x1 - x0, band[1] - band[0]], kind));
-                    Some((cell[0], cell[1], inside))
+                    Some((cell[0], cell[1], needs))
                 }
-                None => Some((cell[0], cell[1], inside)),
+                None => Some((cell[0], cell[1], needs)),
             };
         }
         if let Some((x0, x1, kind)) = run {
@@ -301,20 +312,26 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_partition_covers_the_target_once_and_marks_the_rects() {
+    fn the_partition_covers_the_target_once_and_gives_each_part_the_objects_it_can_show() {
         let size = (800, 600);
-        let rects = [[100, 100, 300, 250], [250, 200, 500, 400]];
-        let parts = partition(&rects, size);
-        let area: u32 = parts.iter().map(|p| p.0[2] * p.0[3]).sum();
-        let inside: u32 = parts.iter().filter(|p| p.1).map(|p| p.0[2] * p.0[3]).sum();
-        println!("{} rectangles, {inside} px with objects of {area}", parts.len());
-        assert_eq!(area, 800 * 600);
-        // Union of the two: 200x150 + 250x200 - overlap 50x50.
-        assert_eq!(inside, 200 * 150 + 250 * 200 - 50 * 50);
-        for (x, y) in [(150, 150), (400, 300), (280, 220)] {
-            let part = parts.iter().find(|p| x >= p.0[0] && x < p.0[0] + p.0[2] && y >= p.0[1] && y < p.0[1] + p.0[3]);
-            assert!(part.is_some_and(|p| p.1), "({x}, {y}) not marked");
-        }
-        assert!(parts.len() <= 12, "{} rectangles", parts.len());
+        let base = Features { caustics: true, ..Features::default() };
+        let (sphere, duck) = (Features { sphere: true, ..base }, Features { duck: true, ..base });
+        let rects = [([100, 100, 300, 250], sphere), ([250, 200, 500, 400], duck)];
+        let parts = partition(&rects, base, size);
+        let area = |f: Features| parts.iter().filter(|p| p.1 == f).map(|p| p.0[2] * p.0[3]).sum::<u32>();
+        let both = Features { sphere: true, duck: true, ..base };
+        println!(
+            "{} rectangles: {} px plain, {} sphere, {} duck, {} both",
+            parts.len(),
+            area(base),
+            area(sphere),
+            area(duck),
+            area(both)
+        );
+        assert_eq!(area(base) + area(sphere) + area(duck) + area(both), 800 * 600);
+        assert_eq!(area(both), 50 * 50);
+        assert_eq!(area(sphere), 200 * 150 - 50 * 50);
+        assert_eq!(area(duck), 250 * 200 - 50 * 50);
+        assert!(parts.len() <= 16, "{} rectangles", parts.len());
     }
 }
