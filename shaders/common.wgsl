@@ -1,9 +1,10 @@
 // Shared constants and pure helpers (no bindings): ray intersections, optics, colour.
 // Units: metres. The pool spans x, z in [-W, W], y in [-D, R]; water rests at y = 0.
+// IOR_WATER, DUCK_PARTS, MAX_DROPS and HULL_SLOTS are written ahead of every shader from the
+// Rust constants (gpu::shared_constants).
 
 const PI: f32 = 3.14159265;
 const IOR_AIR: f32 = 1.0;
-const IOR_WATER: f32 = 1.333;
 // Beer–Lambert absorption of pool water per metre, per channel: red dies first,
 // so deep water and long paths turn blue-green.
 const WATER_ABSORPTION: vec3<f32> = vec3<f32>(0.42, 0.085, 0.05);

@@ -19,7 +19,7 @@ struct Scene {
     duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
     // and linear colour.
-    duck_parts: array<vec4<f32>, 12>,
+    duck_parts: array<vec4<f32>, 3 * DUCK_PARTS>,
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -35,7 +35,6 @@ struct Scene {
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
 
-const DUCK_PARTS: i32 = 4;
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.62, 0.60, 0.56);
 
 fn half_width() -> f32 { return scene.pool.x; }

@@ -8,13 +8,13 @@ struct Sim {
                             // w sponge damping rate at the walls (1/s; 0: reflecting walls)
     bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s), z sponge width (m)
     drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
-    drops: array<vec4<f32>, 32>, // per drop: centre x, z (m), radius (m), strength (m)
+    drops: array<vec4<f32>, MAX_DROPS>, // per drop: centre x, z (m), radius (m), strength (m)
     bodies: vec4<f32>,      // x number of hull moves, y rest level the mean is held at (m),
                             // z depth over which a body's push fades (m)
     // Per step of the frame (4), per hull move (3), 8 entries: before, then after the move,
     // each the ellipsoid's centre (m) and the three columns of the matrix taking offsets from
     // it into the unit ball.
-    hulls: array<vec4<f32>, 96>,
+    hulls: array<vec4<f32>, HULL_SLOTS>,
 };
 
 @group(0) @binding(0) var<uniform> sim: Sim;

@@ -2,7 +2,7 @@
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
-use crate::scene::{Sphere, HALF_WIDTH};
+use crate::scene::HALF_WIDTH;
 
 /// A camera circling a target point at a distance, looking at it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,10 +42,6 @@ pub enum Pick {
     Water {
         x: f32,
         z: f32,
-    },
-    /// The sphere, hit at this point (m).
-    Sphere {
-        hit: Vec3,
     },
     Nothing,
 }
@@ -119,17 +115,11 @@ impl OrbitCamera {
         Ray { origin: self.eye(), dir: (far - near).normalize() }
     }
 
-    /// What is under pixel (x, y): the sphere if present and hit, else the water
-    /// surface inside the pool, else nothing.
-    pub fn pick(&self, pixel: Vec2, size: Vec2, sphere: Option<&Sphere>) -> Pick {
+    /// What is under pixel (x, y): the water surface inside the pool, or nothing (the
+    /// bodies are picked first, by `WaterDemo::pick_body`).
+    pub fn pick(&self, pixel: Vec2, size: Vec2) -> Pick {
         let ray = self.ray(pixel, size);
         let water_t = if ray.dir.y.abs() > 1e-6 { -ray.origin.y / ray.dir.y } else { f32::INFINITY };
-        if let Some(s) = sphere {
-            // The sphere wins wherever it is seen, even through the water.
-            if let Some(t) = ray_sphere(&ray, s.centre, s.radius) {
-                return Pick::Sphere { hit: ray.origin + ray.dir * t };
-            }
-        }
         if water_t > 0.0 && water_t.is_finite() {
             let p = ray.origin + ray.dir * water_t;
             if p.x.abs() <= HALF_WIDTH && p.z.abs() <= HALF_WIDTH {
@@ -176,17 +166,15 @@ mod tests {
     }
 
     #[test]
-    fn pick_finds_water_sphere_and_nothing() {
+    fn pick_finds_the_water_and_nothing() {
         let cam = OrbitCamera { yaw: 0.0, pitch: 60.0, distance: 4.0, target: Vec3::ZERO, fov_y: 45.0 };
         let size = Vec2::new(800.0, 600.0);
-        let sphere = Sphere { centre: Vec3::new(0.0, 0.0, 0.0), radius: 0.25 };
-        assert!(matches!(cam.pick(Vec2::new(400.0, 300.0), size, Some(&sphere)), Pick::Sphere { .. }));
-        match cam.pick(Vec2::new(400.0, 300.0), size, None) {
+        match cam.pick(Vec2::new(400.0, 300.0), size) {
             Pick::Water { x, z } => assert!(x.abs() < 1e-3 && z.abs() < 1e-3),
             other => panic!("expected water, got {other:?}"),
         }
         // The top-left corner looks past the pool into the sky.
-        assert_eq!(cam.pick(Vec2::new(0.0, 0.0), size, None), Pick::Nothing);
+        assert_eq!(cam.pick(Vec2::new(0.0, 0.0), size), Pick::Nothing);
     }
 
     #[test]

@@ -360,10 +360,6 @@ impl WaterDemo {
         self.add_drop(x, z, self.params.get(ParamId::DropRadius), self.params.get(ParamId::DropStrength));
     }
 
-    pub fn pick(&self, pixel: Vec2) -> Pick {
-        self.camera.pick(pixel, self.viewport, self.sphere().as_ref())
-    }
-
     /// The nearest body under pixel (x, y) and the point hit (m), if any.
     pub fn pick_body(&self, pixel: Vec2) -> Option<(BodyId, Vec3)> {
         let ray = self.camera.ray(pixel, self.viewport);
@@ -393,8 +389,7 @@ impl WaterDemo {
             self.drag = Drag::Body { id, offset: centre - hit, plane_normal, plane_point: hit };
             return;
         }
-        self.drag = match self.camera.pick(p, self.viewport, None) {
-            Pick::Sphere { .. } => Drag::None,
+        self.drag = match self.camera.pick(p, self.viewport) {
             Pick::Water { x, z } => {
                 self.click_drop(x, z);
                 Drag::Water { last: p }
@@ -414,8 +409,8 @@ impl WaterDemo {
             }
             Drag::Water { last } => {
                 // Drops along the stroke, about one per drop radius, so fast drags draw lines.
-                let from = self.camera.pick(last, self.viewport, None);
-                let to = self.camera.pick(p, self.viewport, None);
+                let from = self.camera.pick(last, self.viewport);
+                let to = self.camera.pick(p, self.viewport);
                 if let (Pick::Water { x: x0, z: z0 }, Pick::Water { x: x1, z: z1 }) = (from, to) {
                     let r = self.params.get(ParamId::DropRadius);
                     let length = Vec2::new(x1 - x0, z1 - z0).length();
@@ -551,6 +546,9 @@ impl WaterDemo {
             let pose = self.bodies[k].pose;
             let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
             if let Some(previous) = &self.pushed[k] {
+                if !previous.iter().zip(&current).any(|(before, now)| now.moved_from(before)) {
+                    continue;
+                }
                 moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
             }
             self.pushed[k] = Some(current);
@@ -584,12 +582,6 @@ impl WaterDemo {
         self.water.reset(queue);
         self.bodies[BodyId::Sphere as usize] = FloatingBody::at(Pose::at(START_SPHERE_CENTRE));
         self.place_duck_at_start();
-        self.pushed = [None, None];
-    }
-
-    /// Flattens the water.
-    pub fn reset_water(&mut self, queue: &wgpu::Queue) {
-        self.water.reset(queue);
         self.pushed = [None, None];
     }
 

@@ -26,9 +26,24 @@ pub mod wgsl {
     pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
 }
 
-/// Compiles a shader module from WGSL parts, concatenated in order.
+/// Constants the shaders share with the Rust side, written from the Rust values ahead of
+/// every shader, so the two cannot disagree: the refractive index of water, the number of the
+/// duck's traced parts, and the sizes of the uniform arrays the simulation fills.
+pub fn shared_constants() -> String {
+    use crate::{duck, scene, sim};
+    format!(
+        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\nconst MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n",
+        scene::IOR_WATER,
+        duck::TRACED_PARTS.len(),
+        sim::MAX_DROPS_PER_PASS,
+        sim::MAX_PUSH_STEPS * sim::MAX_HULL_MOVES * 8,
+    )
+}
+
+/// Compiles a shader module from WGSL parts, concatenated in order after [`shared_constants`].
 pub fn shader(device: &wgpu::Device, label: &str, parts: &[&str]) -> wgpu::ShaderModule {
-    let source = parts.join("\n");
+    let constants = shared_constants();
+    let source = std::iter::once(constants.as_str()).chain(parts.iter().copied()).collect::<Vec<_>>().join("\n");
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
         source: wgpu::ShaderSource::Wgsl(source.into()),

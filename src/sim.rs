@@ -35,7 +35,19 @@ pub struct HullSlot {
     pub unit_from_world: Mat3,
 }
 
+/// How far (m) an ellipsoid's centre must move before it pushes the water. A body floating at
+/// rest jitters by less; its small moves wait and join a later push (from where it last
+/// pushed to where it is), so nothing is lost and a still body runs no pass.
+pub const PUSH_MIN_MOVE: f32 = 2.0e-4;
+
 impl HullSlot {
+    /// Whether the ellipsoid has moved far enough from `before` to push the water: its centre
+    /// by more than [`PUSH_MIN_MOVE`], or its orientation or shape by about as much at its surface.
+    pub fn moved_from(&self, before: &HullSlot) -> bool {
+        let turned = (self.unit_from_world - before.unit_from_world).to_cols_array();
+        self.centre.distance(before.centre) > PUSH_MIN_MOVE || turned.iter().any(|d| d.abs() > 50.0 * PUSH_MIN_MOVE)
+    }
+
     /// The ellipsoid's reach over the pool (m): its half extents along x and z (it pushes no
     /// water outside centre ± reach).
     pub fn reach(&self) -> Vec2 {
@@ -701,11 +713,6 @@ impl HeightField {
         self.size
     }
 
-    /// Cell size (m).
-    pub fn cell_size(&self) -> f32 {
-        2.0 * self.half_width / self.size as f32
-    }
-
     /// Queues a drop for the next [`HeightField::encode`]. Degenerate drops are ignored.
     pub fn add_drop(&mut self, drop: Drop) {
         let ok = [drop.x, drop.z, drop.radius, drop.strength].iter().all(|v| v.is_finite());
@@ -718,12 +725,6 @@ impl HeightField {
                 Engine::Cpu { water, .. } => water.add_drop(drop),
             }
         }
-    }
-
-    /// Substeps per step of `dt` seconds that keep the Courant number c dt / dx at or
-    /// below [`MAX_COURANT`].
-    pub fn substeps(&self, dt: f32, wave_speed: f32) -> u32 {
-        substeps(dt, wave_speed, self.cell_size())
     }
 
     /// Records the queued drops, `steps` steps of `dt` seconds each, the mean level and the
@@ -926,8 +927,8 @@ impl HeightField {
 }
 
 /// At most [`MAX_PUSH_STEPS`] steps of at most [`MAX_HULL_MOVES`] moves: the moves of later
-/// steps join the last step's (the same ellipsoid's moves chain: from of the first, to of
-/// the last).
+/// steps join the last step's (an ellipsoid's moves chain: where one ends the next starts, so
+/// the chain goes from the first's start to the last's end).
 fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMove>> {
     for step in &mut moves {
         step.truncate(MAX_HULL_MOVES);
@@ -935,8 +936,12 @@ fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMove>> {
     while moves.len() > MAX_PUSH_STEPS {
         let later = moves.pop().expect("more than one step");
         if let Some(last) = moves.last_mut() {
-            for (m, l) in last.iter_mut().zip(later) {
-                m.to = l.to;
+            for l in later {
+                if let Some(m) = last.iter_mut().find(|m| m.to == l.from) {
+                    m.to = l.to;
+                } else if last.len() < MAX_HULL_MOVES {
+                    last.push(l);
+                }
             }
         }
     }

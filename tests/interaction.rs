@@ -5,7 +5,7 @@ mod common;
 
 use glam::{Vec2, Vec3};
 use wavepool::camera::Pick;
-use wavepool::demo::{DemoOptions, Key};
+use wavepool::demo::{BodyId, DemoOptions, Key};
 use wavepool::params::ParamId;
 
 const SIZE: (u32, u32) = (320, 240);
@@ -24,7 +24,7 @@ fn dragging_on_the_water_makes_ripples_along_the_stroke() {
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
     let a = demo.camera.project(Vec3::new(-0.5, 0.0, 0.0), size).unwrap();
     let b = demo.camera.project(Vec3::new(0.5, 0.0, 0.0), size).unwrap();
-    assert!(matches!(demo.pick(a), Pick::Water { .. }));
+    assert!(demo.pick_body(a).is_none() && matches!(demo.camera.pick(a, size), Pick::Water { .. }));
     let yaw = demo.camera.yaw;
     demo.pointer_down(a.x, a.y);
     demo.pointer_move(b.x, b.y);
@@ -64,14 +64,14 @@ fn dragging_the_sky_orbits_and_dragging_the_sphere_moves_it() {
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
     let sphere = demo.sphere().unwrap();
     let p = demo.camera.project(sphere.centre, size).unwrap();
-    assert!(matches!(demo.pick(p), Pick::Sphere { .. }));
+    assert!(matches!(demo.pick_body(p), Some((BodyId::Sphere, _))), "the sphere is not under its own centre");
     demo.pointer_down(p.x, p.y);
     demo.pointer_move(p.x + 40.0, p.y);
     demo.pointer_up();
     let moved = demo.sphere().unwrap().centre;
     assert!((moved - sphere.centre).length() > 0.1, "sphere did not follow the pointer: {moved:?}");
     assert!(
-        matches!(demo.pick(Vec2::new(p.x + 40.0, p.y)), Pick::Sphere { .. }),
+        matches!(demo.pick_body(Vec2::new(p.x + 40.0, p.y)), Some((BodyId::Sphere, _))),
         "the sphere should still be under the pointer after the drag"
     );
 }

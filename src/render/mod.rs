@@ -158,6 +158,8 @@ fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
 /// is one of the [`ScenePipelines`]).
 struct CausticsMap {
     view: wgpu::TextureView,
+    /// Texels per side.
+    size: u32,
     grid: Mesh,
     /// Quads per side of `grid`.
     grid_size: u32,
@@ -165,21 +167,16 @@ struct CausticsMap {
 
 impl CausticsMap {
     fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat, sim_size: u32) -> Self {
-        let texture = gpu::texture_2d(
-            device,
-            "caustics map",
-            size,
-            size,
-            1,
-            1,
-            format,
-            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-        );
-        let view = texture.create_view(&Default::default());
         let grid_size = caustics_grid(sim_size);
         let (grid_vertices, grid_indices) = water_grid(grid_size);
         let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
-        Self { view, grid, grid_size }
+        Self { view: Self::map(device, size, format), size, grid, grid_size }
+    }
+
+    /// A map of `size` texels per side.
+    fn map(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat) -> wgpu::TextureView {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        gpu::texture_2d(device, "caustics map", size, size, 1, 1, format, usage).create_view(&Default::default())
     }
 }
 
@@ -197,6 +194,8 @@ pub struct Renderer {
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
     textures_group: wgpu::BindGroup,
+    /// What `textures_group` binds besides the caustics map (kept to bind a resized map).
+    scene_textures: SceneTextures,
     caustics: CausticsMap,
     sky_cube: SkyCube,
     sky: FullscreenPass,
@@ -288,6 +287,35 @@ impl Upscale {
     }
 }
 
+/// The textures and samplers of the scene passes' group 1, besides the caustics map.
+struct SceneTextures {
+    tiles: wgpu::TextureView,
+    sky: wgpu::TextureView,
+    clamp: wgpu::Sampler,
+    repeat: wgpu::Sampler,
+}
+
+impl SceneTextures {
+    fn bind_group(
+        &self,
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        caustics: &wgpu::TextureView,
+    ) -> wgpu::BindGroup {
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("scene textures"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(caustics) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&self.tiles) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&self.sky) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.clamp) },
+                wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::Sampler(&self.repeat) },
+            ],
+        })
+    }
+}
+
 /// The scene uniforms with each of the water's two state textures (group 0 of every scene pass).
 fn water_bind_groups(
     device: &wgpu::Device,
@@ -366,26 +394,13 @@ impl Renderer {
                 ..Default::default()
             })
         };
-        let textures_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("scene textures"),
-            layout: &textures_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&caustics.view) },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::TextureView(&tiles.create_view(&Default::default())),
-                },
-                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&sky_cube.view()) },
-                wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: wgpu::BindingResource::Sampler(&sampler(wgpu::AddressMode::ClampToEdge)),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 4,
-                    resource: wgpu::BindingResource::Sampler(&sampler(wgpu::AddressMode::Repeat)),
-                },
-            ],
-        });
+        let scene_textures = SceneTextures {
+            tiles: tiles.create_view(&Default::default()),
+            sky: sky_cube.view(),
+            clamp: sampler(wgpu::AddressMode::ClampToEdge),
+            repeat: sampler(wgpu::AddressMode::Repeat),
+        };
+        let textures_group = scene_textures.bind_group(device, &textures_layout, &caustics.view);
 
         let layouts = [&water_layout, &textures_layout];
         let format = settings.target_format;
@@ -408,6 +423,7 @@ impl Renderer {
             textures_layout,
             water_groups,
             textures_group,
+            scene_textures,
             caustics,
             sky_cube,
             sky,
@@ -474,6 +490,23 @@ impl Renderer {
         self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water);
     }
 
+    /// Side (texels) of the caustics map for a frame drawn at `render_scale`: the map's texels
+    /// follow the screen's pixels, so a frame at half resolution also lights the pool from a
+    /// map of half the side (at least 128), a quarter of the work.
+    pub fn caustics_size(&self, render_scale: f32) -> u32 {
+        let side = (self.settings.caustics_size as f32 * render_scale.clamp(0.25, 1.0)).round() as u32;
+        side.clamp(128.min(self.settings.caustics_size), self.settings.caustics_size)
+    }
+
+    /// Makes the caustics map `size` texels per side (rebinding it), if it is not already.
+    fn resize_caustics(&mut self, device: &wgpu::Device, size: u32) {
+        if size != self.caustics.size {
+            self.caustics.view = CausticsMap::map(device, size, self.settings.caustics_format().0);
+            self.caustics.size = size;
+            self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
+        }
+    }
+
     /// Writes this frame's uniforms and repaints the sky if the sun moved.
     /// Call once per submission, before [`Renderer::encode_caustics`] and [`Renderer::encode_scene`].
     pub fn prepare(
@@ -493,7 +526,7 @@ impl Renderer {
             sun: [view.sun.x, view.sun.y, view.sun.z, SUN_STRENGTH],
             refracted_sun: refracted.extend(0.0).to_array(),
             sphere,
-            pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, scene::IOR_WATER],
+            pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, 0.0],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
             output: [
                 if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 },
@@ -520,6 +553,7 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
+        self.resize_caustics(device, self.caustics_size(view.render_scale));
         if !view.caustics {
             return;
         }
