@@ -460,7 +460,8 @@ async fn frames_are_paced(backend: &str) {
     tokio::time::sleep(Duration::from_secs(20)).await;
     let c = browser.js("return window.__frameCounter.read();").await;
     let stats = browser.js("return window.demo.stats();").await;
-    let (fps, median, longest) = (c["fps"].as_f64().unwrap(), c["medianMs"].as_f64().unwrap(), c["longestMs"].as_f64().unwrap());
+    let (fps, median, longest) =
+        (c["fps"].as_f64().unwrap(), c["medianMs"].as_f64().unwrap(), c["longestMs"].as_f64().unwrap());
     let pending = c["pending"].as_f64().unwrap_or(0.0);
     println!(
         "{backend}: {fps:.2} drawn frames/s over 20 s, interval median {median:.0} ms, longest {longest:.0} ms, \
@@ -506,7 +507,10 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
     tokio::time::sleep(Duration::from_secs(4)).await;
     let c = browser.js("return window.__frameCounter.read();").await;
     let s = browser.js("return window.demo.stats();").await;
-    println!("budget 10 ms: scale {}, {} frames in 4 s at {}x{}", s["renderScale"], c["frames"], s["width"], s["height"]);
+    println!(
+        "budget 10 ms: scale {}, {} frames in 4 s at {}x{}",
+        s["renderScale"], c["frames"], s["width"], s["height"]
+    );
     assert!(c["frames"].as_f64().unwrap() >= 2.0, "the page stopped drawing: {c}");
     assert_eq!((s["width"].as_u64(), s["height"].as_u64()), (Some(800), Some(600)), "canvas size changed");
     browser.goto(&server.url("/test/sized.html?width=800&height=600&backend=webgpu&quality=1&frame_budget=10")).await;
