@@ -36,6 +36,21 @@ ensure_cargo() {
     fi
 }
 
+# Adds clippy to the Rust toolchain when it is missing.
+ensure_clippy() {
+    if ! cargo clippy --version >/dev/null 2>&1; then
+        echo "==> adding clippy to the Rust toolchain"
+        rustup component add clippy
+    fi
+}
+
+# Lints the native build (every target) and the browser build (wasm32 library); warnings fail.
+run_clippy() {
+    echo "==> cargo clippy (native, all targets; wasm32 library)"
+    cargo clippy --locked --all-targets -- -D warnings
+    cargo clippy --locked --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
+}
+
 # Adds the wasm32 target to the Rust toolchain when it is missing.
 ensure_wasm_target() {
     if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then

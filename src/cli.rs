@@ -39,9 +39,9 @@ Parameters:";
 /// A usage error: message for stderr, exit code 2.
 struct UsageError(String);
 
-fn parse_number<T: std::str::FromStr>(flag: &str, value: &str, lo: T, hi: T) -> Result<T, UsageError>
+fn parse_number<T>(flag: &str, value: &str, lo: T, hi: T) -> Result<T, UsageError>
 where
-    T: PartialOrd + std::fmt::Display + Copy,
+    T: std::str::FromStr + PartialOrd + std::fmt::Display + Copy,
 {
     let v: T = value.parse().map_err(|_| UsageError(format!("{flag}: '{value}' is not a number")))?;
     if v < lo || v > hi {

@@ -271,8 +271,8 @@ impl FloatingBody {
         self.pose.rotation = (turn * self.pose.rotation).normalize();
         self.pose.position += offset - self.pose.rotation * shape.centre_of_mass + self.velocity * dt;
         let bounced = keep_in_pool(&mut self.pose, shape.hull);
-        for axis in 0..3 {
-            if bounced[axis] {
+        for (axis, bounced) in bounced.into_iter().enumerate() {
+            if bounced {
                 self.velocity[axis] *= -RESTITUTION;
             }
         }
@@ -288,8 +288,7 @@ pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
     if !pose.position.is_finite() {
         pose.position = Vec3::ZERO;
     }
-    for axis in 0..3 {
-        let dir = Vec3::AXES[axis];
+    for (axis, (dir, moved)) in Vec3::AXES.into_iter().zip(&mut moved).enumerate() {
         let reach_plus = hull.iter().map(|p| p.support(pose, dir)).fold(f32::NEG_INFINITY, f32::max);
         let reach_minus = hull.iter().map(|p| -p.support(pose, -dir)).fold(f32::INFINITY, f32::min);
         let (lo, hi) = if axis == 1 { (-scene::DEPTH, scene::RIM + 0.5) } else { (-w, w) };
@@ -302,7 +301,7 @@ pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
         };
         if shift != 0.0 {
             pose.position[axis] += shift;
-            moved[axis] = true;
+            *moved = true;
         }
     }
     moved

@@ -304,11 +304,7 @@ impl StepPlan {
 
     /// Updates (substeps) per step.
     pub fn updates_per_step(&self, steps: u32) -> u32 {
-        if steps == 0 {
-            0
-        } else {
-            self.updates / steps
-        }
+        self.updates.checked_div(steps).unwrap_or(0)
     }
 
     /// Whether the normals need recomputing after this batch.

@@ -87,18 +87,17 @@ struct Viewer {
     pressing: bool,
     last_pointer: Option<egui::Pos2>,
     /// Set when the screenshot was requested; filled by the callback with the outcome.
-    screenshot: Option<Arc<Mutex<Option<Result<(), String>>>>>,
-    outcome: Arc<Mutex<Option<Result<(), String>>>>,
+    screenshot: Option<Outcome>,
+    outcome: Outcome,
 }
+
+/// Where the screenshot callback leaves its outcome (`None` until it has run).
+type Outcome = Arc<Mutex<Option<Result<(), String>>>>;
 
 use eframe::egui_wgpu;
 
 impl Viewer {
-    fn new(
-        state: &egui_wgpu::RenderState,
-        options: ViewerOptions,
-        outcome: Arc<Mutex<Option<Result<(), String>>>>,
-    ) -> Self {
+    fn new(state: &egui_wgpu::RenderState, options: ViewerOptions, outcome: Outcome) -> Self {
         let mut demo = WaterDemo::new(&state.device, &state.queue, SCENE_FORMAT, options.demo);
         for (name, value) in &options.sets {
             let _ = demo.params.set_by_name(name, *value);

@@ -2,6 +2,10 @@
 //! clicks make ripples, controls change parameters, two demos on one page, and a readable
 //! message when the browser has no GPU backend at all. Needs `dist/` (scripts/test builds it).
 
+// Each test holds the one-browser-at-a-time lock for its whole run, awaits included: the
+// tests run on separate threads, each with its own runtime, so nothing else waits on it there.
+#![allow(clippy::await_holding_lock)]
+
 #[path = "support/browser.rs"]
 mod support;
 
@@ -72,9 +76,8 @@ async fn both_backends_show_the_same_scene() {
         means.push(browser.screenshot().await.mean(rect));
         browser.close().await;
     }
-    for c in 0..3 {
-        let d = (means[0][c] - means[1][c]).abs();
-        assert!(d < 6.0, "channel {c}: WebGPU mean {:.1} vs WebGL2 {:.1}", means[0][c], means[1][c]);
+    for (c, (webgpu, webgl2)) in means[0].iter().zip(&means[1]).enumerate() {
+        assert!((webgpu - webgl2).abs() < 6.0, "channel {c}: WebGPU mean {webgpu:.1} vs WebGL2 {webgl2:.1}");
     }
 }
 
