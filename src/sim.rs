@@ -3,7 +3,7 @@
 //! State per cell: height above rest (m), vertical velocity (m/s), normal x and z.
 //!
 //! By concern: `plan` holds the step arithmetic the GPU and the CPU engine share, `coupling`
-//! how the floating bodies and the water meet, `gpu` the GPU engine's passes, [`cpu`] the CPU
+//! how the floating bodies and the water meet, `gpu_engine` the GPU engine's passes, [`cpu`] the CPU
 //! reference engine, `random` seeded drops; this module the [`HeightField`] that drives them.
 //! Everything public is re-exported here.
 
