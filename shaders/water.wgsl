@@ -4,9 +4,7 @@
 // Fresnel reflectance for unpolarised light.
 
 struct SurfaceOut {
-    // Invariant: the surface is drawn again over itself in the objects' rectangles, and
-    // each draw must land on exactly the same depth.
-    @invariant @builtin(position) clip: vec4<f32>,
+    @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
 };
 

@@ -654,12 +654,9 @@ impl Renderer {
     ) {
         let depth = self.depth_view(device, size).clone();
         let features = Features::of(view);
-        let overlays = variants::surface_overlays(view, size);
+        let regions = variants::surface_regions(view, size);
         self.variant(device, features);
-        if overlays.is_some() {
-            self.variant(device, features.without_objects());
-        }
-        for (_, needs) in overlays.iter().flatten() {
+        for (_, needs) in regions.iter().flatten() {
             self.variant(device, *needs);
         }
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -683,14 +680,10 @@ impl Renderer {
         let water_group = &self.water_groups[water.state().current()];
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        match overlays {
-            // The objects are traced only where the water can show them (see surface_overlays):
-            // the whole surface without them, then their rectangles again with them (the surface
-            // pipeline's depth test passes equal depths, and its position is invariant).
-            Some(overlays) => {
-                pass.set_pipeline(&self.variants[&features.without_objects()].surface);
-                self.grid.draw(&mut pass);
-                for ([x, y, w, h], needs) in overlays {
+        match regions {
+            // The objects are traced only where the water can show them (see surface_regions).
+            Some(regions) => {
+                for ([x, y, w, h], needs) in regions {
                     pass.set_pipeline(&self.variants[&needs].surface);
                     pass.set_scissor_rect(x, y, w, h);
                     self.grid.draw(&mut pass);

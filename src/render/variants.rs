@@ -51,26 +51,24 @@ impl Features {
     }
 }
 
-/// Where the water surface must show the objects, for a `size` target: after the surface is
-/// drawn whole by the variant without objects, each rectangle (x, y, width, height in pixels)
-/// is drawn over again, in order, by the variant with the objects it can show. With the camera
-/// above the water an object can be seen, reflected or refracted, only near the screen bound
-/// of the column from the surface down to the bottom of the object or of its mirror image,
-/// grown by [`REGION_MARGIN`]; where two such rectangles overlap, a last one shows both.
-/// `None`: draw the whole surface with every object (the camera under water, or rectangles too
-/// large to gain from). Software rasterisers pay per triangle as well as per pixel, hence a
-/// few overdrawn rectangles rather than a tiling of the screen.
-pub fn surface_overlays(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], Features)>> {
-    let plain = Features::of(view).without_objects();
+/// Which variant draws which part of the water surface on a `size` target, as (rectangle x,
+/// y, width, height in pixels, features). With the camera above the water an object can be
+/// seen, reflected or refracted, only near the screen bound of the column from the surface
+/// down to the bottom of the object or of its mirror image, grown by [`REGION_MARGIN`]: there
+/// the surface is drawn by a variant with that object, elsewhere by one without. `None`: draw
+/// the whole surface with `features` (no objects, the camera under water, or regions too large
+/// to gain from).
+pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], Features)>> {
+    let features = Features::of(view);
+    let plain = features.without_objects();
     let mut bounds: Vec<(Vec3, f32, Features)> = Vec::new();
     bounds.extend(view.sphere.map(|s| (s.centre, s.radius, Features { sphere: true, ..plain })));
     bounds.extend(view.duck.map(|p| (p.position, duck::bounding_radius(), Features { duck: true, ..plain })));
-    if view.eye.y < 0.0 {
+    if bounds.is_empty() || view.eye.y < 0.0 {
         return None;
     }
     let (w, h) = (size.0 as f32, size.1 as f32);
-    // Rectangles as (x0, y0, x1, y1).
-    let mut rects: Vec<([u32; 4], Features)> = Vec::new();
+    let mut rects = Vec::new();
     for (centre, radius, with) in bounds {
         let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
         // From above, the surface shows what is under water refracted (raised towards the
@@ -97,34 +95,51 @@ pub fn surface_overlays(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], 
         let margin = REGION_MARGIN * (x1 - x0).max(y1 - y0) + REGION_MARGIN_PX;
         let pixel = |v: f32, end: f32| v.round().clamp(0.0, end) as u32;
         let rect = [pixel(x0 - margin, w), pixel(y0 - margin, h), pixel(x1 + margin, w), pixel(y1 + margin, h)];
-        if rect[2] > rect[0] && rect[3] > rect[1] {
-            rects.push((rect, with));
-        }
+        rects.push((rect, with));
     }
-    let overlays = with_overlaps(rects);
-    let area = |r: &[u32; 4]| r[2] * r[3];
-    let covered: i64 =
-        overlays.iter().map(|(r, f)| if f.sphere && f.duck { -(area(r) as i64) } else { area(r) as i64 }).sum();
-    (covered as f32 <= REGION_MAX_SHARE * w * h).then_some(overlays)
+    let parts = partition(&rects, plain, size);
+    let covered: u32 = parts.iter().filter(|p| p.1 != plain).map(|p| p.0[2] * p.0[3]).sum();
+    (covered as f32 <= REGION_MAX_SHARE * w * h).then_some(parts)
 }
 
-/// The rectangles (x0, y0, x1, y1, each with its features) as (x, y, width, height), followed
-/// by the overlap of each pair with the features of both.
-fn with_overlaps(rects: Vec<([u32; 4], Features)>) -> Vec<([u32; 4], Features)> {
-    let mut out: Vec<([u32; 4], Features)> = Vec::new();
-    for (i, (a, fa)) in rects.iter().enumerate() {
-        out.push(([a[0], a[1], a[2] - a[0], a[3] - a[1]], *fa));
-        for (b, fb) in &rects[..i] {
-            let (x0, y0, x1, y1) = (a[0].max(b[0]), a[1].max(b[1]), a[2].min(b[2]), a[3].min(b[3]));
-            if x1 > x0 && y1 > y0 {
-                let both = Features { sphere: fa.sphere || fb.sphere, duck: fa.duck || fb.duck, ..*fa };
-                out.push(([x0, y0, x1 - x0, y1 - y0], both));
-            }
+/// Cuts a `size` target along the edges of `rects` (x0, y0, x1, y1, each with the features it
+/// needs) into rectangles (x, y, width, height) with the features of every rect they lie in
+/// (`base` outside all), merging neighbours in a row that need the same.
+fn partition(rects: &[([u32; 4], Features)], base: Features, size: (u32, u32)) -> Vec<([u32; 4], Features)> {
+    let edges = |a: usize, b: usize, end: u32| {
+        let mut v: Vec<u32> = rects.iter().flat_map(|r| [r.0[a], r.0[b]]).chain([0, end]).collect();
+        v.sort_unstable();
+        v.dedup();
+        v
+    };
+    let (xs, ys) = (edges(0, 2, size.0), edges(1, 3, size.1));
+    let mut parts = Vec::new();
+    for band in ys.windows(2) {
+        let mut run: Option<(u32, u32, Features)> = None;
+        for cell in xs.windows(2) {
+            let needs = rects
+                .iter()
+                .filter(|(r, _)| cell[0] >= r[0] && cell[1] <= r[2] && band[0] >= r[1] && band[1] <= r[3])
+                .fold(base, |f, (_, with)| Features {
+                    sphere: f.sphere || with.sphere,
+                    duck: f.duck || with.duck,
+                    ..f
+                });
+            run = match run {
+                Some((x0, _, kind)) if kind == needs => Some((x0, cell[1], kind)),
+                Some((x0, x1, kind)) => {
+                    parts.push(([x0, band[0], x1 - x0, band[1] - band[0]], kind));
+                    Some((cell[0], cell[1], needs))
+                }
+                None => Some((cell[0], cell[1], needs)),
+            };
+        }
+        if let Some((x0, x1, kind)) = run {
+            parts.push(([x0, band[0], x1 - x0, band[1] - band[0]], kind));
         }
     }
-    // Overlaps last, over both of their rectangles.
-    out.sort_by_key(|(_, f)| f.sphere && f.duck);
-    out
+    parts.retain(|p| p.0[2] > 0 && p.0[3] > 0);
+    parts
 }
 
 /// The pipelines of the passes that read the scene's features: the caustics map and the
@@ -171,12 +186,12 @@ impl ScenePipelines {
                 cull: None,
                 format: targets.caustics_format,
                 blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
-                depth: None,
+                depth: false,
             },
         );
         let layouts = [targets.water_layout, targets.textures_layout];
         let scene_pipeline =
-            |label, module: &wgpu::ShaderModule, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull, depth| {
+            |label, module: &wgpu::ShaderModule, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
                 mesh_pipeline(
                     device,
                     MeshPipeline {
@@ -190,7 +205,7 @@ impl ScenePipelines {
                         cull,
                         format: targets.format,
                         blend: None,
-                        depth: Some(depth),
+                        depth: true,
                     },
                 )
             };
@@ -206,8 +221,6 @@ impl ScenePipelines {
                 &wgpu::vertex_attr_array![0 => Float32x2],
                 8,
                 None,
-                // Equal passes: the objects' rectangles are drawn again over the whole surface.
-                wgpu::CompareFunction::LessEqual,
             ),
             pool: scene_pipeline(
                 "pool",
@@ -217,7 +230,6 @@ impl ScenePipelines {
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
                 24,
                 back,
-                wgpu::CompareFunction::Less,
             ),
             sphere: scene_pipeline(
                 "sphere",
@@ -227,7 +239,6 @@ impl ScenePipelines {
                 &wgpu::vertex_attr_array![0 => Float32x3],
                 12,
                 back,
-                wgpu::CompareFunction::Less,
             ),
             duck: scene_pipeline(
                 "duck",
@@ -237,7 +248,6 @@ impl ScenePipelines {
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
                 36,
                 back,
-                wgpu::CompareFunction::Less,
             ),
         }
     }
@@ -254,8 +264,8 @@ pub struct MeshPipeline<'a> {
     pub cull: Option<wgpu::Face>,
     pub format: wgpu::TextureFormat,
     pub blend: Option<wgpu::BlendState>,
-    /// Depth test against [`DEPTH_FORMAT`] (depth written), if any.
-    pub depth: Option<wgpu::CompareFunction>,
+    /// Depth-tested and written against [`DEPTH_FORMAT`].
+    pub depth: bool,
 }
 
 pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipeline {
@@ -274,10 +284,10 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
             })],
         },
         primitive: wgpu::PrimitiveState { cull_mode: p.cull, ..Default::default() },
-        depth_stencil: p.depth.map(|compare| wgpu::DepthStencilState {
+        depth_stencil: p.depth.then(|| wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(true),
-            depth_compare: Some(compare),
+            depth_compare: Some(wgpu::CompareFunction::Less),
             stencil: Default::default(),
             bias: Default::default(),
         }),
@@ -302,17 +312,26 @@ mod tests {
     use super::*;
 
     #[test]
-    fn overlapping_regions_are_drawn_last_with_both_objects() {
+    fn the_partition_covers_the_target_once_and_gives_each_part_the_objects_it_can_show() {
+        let size = (800, 600);
         let base = Features { caustics: true, ..Features::default() };
         let (sphere, duck) = (Features { sphere: true, ..base }, Features { duck: true, ..base });
+        let rects = [([100, 100, 300, 250], sphere), ([250, 200, 500, 400], duck)];
+        let parts = partition(&rects, base, size);
+        let area = |f: Features| parts.iter().filter(|p| p.1 == f).map(|p| p.0[2] * p.0[3]).sum::<u32>();
         let both = Features { sphere: true, duck: true, ..base };
-        let draws = with_overlaps(vec![([100, 100, 300, 250], sphere), ([250, 200, 500, 400], duck)]);
-        println!("{draws:?}");
-        assert_eq!(
-            draws,
-            vec![([100, 100, 200, 150], sphere), ([250, 200, 250, 200], duck), ([250, 200, 50, 50], both)]
+        println!(
+            "{} rectangles: {} px plain, {} sphere, {} duck, {} both",
+            parts.len(),
+            area(base),
+            area(sphere),
+            area(duck),
+            area(both)
         );
-        let apart = with_overlaps(vec![([0, 0, 10, 10], sphere), ([20, 20, 30, 30], duck)]);
-        assert_eq!(apart.len(), 2, "no overlap, no third draw");
+        assert_eq!(area(base) + area(sphere) + area(duck) + area(both), 800 * 600);
+        assert_eq!(area(both), 50 * 50);
+        assert_eq!(area(sphere), 200 * 150 - 50 * 50);
+        assert_eq!(area(duck), 250 * 200 - 50 * 50);
+        assert!(parts.len() <= 16, "{} rectangles", parts.len());
     }
 }
