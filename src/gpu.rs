@@ -127,6 +127,28 @@ pub fn texture_2d(
     })
 }
 
+/// A render pass on one colour target and no depth, stored; `load` keeps or clears it first.
+pub fn colour_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    target: &wgpu::TextureView,
+    load: wgpu::LoadOp<wgpu::Color>,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: target,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: None,
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
+}
+
 /// A pass that shades every pixel of its target with one fragment shader: the simulation
 /// steps, the sky background and the sky cubemap faces are all of this kind.
 pub struct FullscreenPass {
@@ -210,19 +232,7 @@ impl FullscreenPass {
         bind_groups: &[&wgpu::BindGroup],
         rect: [u32; 4],
     ) {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(&self.label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = colour_pass(encoder, &self.label, target, wgpu::LoadOp::Load);
         let [x, y, w, h] = rect;
         pass.set_scissor_rect(x, y, w, h);
         self.draw(&mut pass, bind_groups);
@@ -235,22 +245,7 @@ impl FullscreenPass {
         target: &wgpu::TextureView,
         bind_groups: &[&wgpu::BindGroup],
     ) {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some(&self.label),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass = colour_pass(encoder, &self.label, target, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
         self.draw(&mut pass, bind_groups);
     }
 }

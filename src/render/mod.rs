@@ -560,22 +560,8 @@ impl Renderer {
         let features = Features::of(view);
         self.variant(device, features);
         let pipeline = &self.variants[&features].caustics;
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("caustics"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &self.caustics.view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: None,
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let mut pass =
+            gpu::colour_pass(encoder, "caustics", &self.caustics.view, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
         self.caustics.grid.draw(&mut pass);
@@ -621,19 +607,7 @@ impl Renderer {
         }
         if let Some(debug) = view.debug {
             self.debug_pass(device, debug.texture);
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("debug view"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: target,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations { load: wgpu::LoadOp::Load, store: wgpu::StoreOp::Store },
-                })],
-                depth_stencil_attachment: None,
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
+            let mut pass = gpu::colour_pass(encoder, "debug view", target, wgpu::LoadOp::Load);
             let [x, y, w, h] = debug.viewport(size);
             pass.set_viewport(x, y, w, h, 0.0, 1.0);
             let water_group = &self.water_groups[water.state().current()];
