@@ -8,7 +8,7 @@ use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
-use crate::quality::ResolutionGovernor;
+use crate::quality::{ResolutionGovernor, StepGovernor};
 use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
 use crate::scene::{self, Sphere};
 use crate::sim::{
@@ -19,9 +19,15 @@ use crate::sim::{
 pub const STEPS_PER_SECOND: u32 = 120;
 /// Simulated seconds per step.
 pub const STEP_DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
-/// Most steps one frame may take (a frame longer than this many steps drops the rest, so
-/// below 30 frames/s the water runs in slow motion instead of making slow frames slower).
-pub const MAX_STEPS_PER_FRAME: u32 = 4;
+/// Slowest frame rate (frames/s) at which the water still keeps up with wall time.
+pub const REAL_TIME_DOWN_TO_FPS: u32 = 10;
+/// Most steps one frame may take: enough for a frame of 1/[`REAL_TIME_DOWN_TO_FPS`] s. A longer
+/// frame drops the rest, so below 10 frames/s the water runs in slow motion (simulated time
+/// per frame stays at 0.1 s) instead of each slow frame taking more steps and so getting
+/// slower still; the frame's cost is bounded by the scene plus this many steps. Where the
+/// steps themselves would push frames under 10 frames/s, fewer are allowed
+/// ([`StepGovernor`]).
+pub const MAX_STEPS_PER_FRAME: u32 = STEPS_PER_SECOND / REAL_TIME_DOWN_TO_FPS;
 
 /// Where the sphere starts (m).
 const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
@@ -176,6 +182,8 @@ pub struct WaterDemo {
     steps_taken: u64,
     /// Chooses the render scale when the `quality` parameter is auto.
     governor: ResolutionGovernor,
+    /// How many steps a frame may take (at most [`MAX_STEPS_PER_FRAME`]).
+    step_governor: StepGovernor,
     /// The render scale of the last frame drawn.
     render_scale: f32,
 }
@@ -214,6 +222,7 @@ impl WaterDemo {
             drag: Drag::None,
             steps_taken: 0,
             governor: ResolutionGovernor::default(),
+            step_governor: StepGovernor::new(MAX_STEPS_PER_FRAME, 1.0 / REAL_TIME_DOWN_TO_FPS as f32),
             render_scale: 1.0,
         };
         demo.place_duck_at_start();
@@ -665,12 +674,15 @@ impl WaterDemo {
     ) {
         self.set_viewport(size.0, size.1);
         self.choose_render_scale(frame_time);
+        self.step_governor.observe(frame_time);
+        self.clock.max_steps = self.step_governor.cap();
         let steps = if self.params.flag(ParamId::Paused) {
             self.clock.advance(0.0);
             0
         } else {
             self.clock.advance(frame_time)
         };
+        self.step_governor.took(steps);
         self.steps_taken += steps as u64;
         let pushes = self.step_bodies(steps);
         // The simulation goes in a submission of its own, ahead of the drawing: the objects'

@@ -105,6 +105,35 @@ fn to_js_number(v: f32) -> f64 {
     v.to_string().parse().unwrap_or(v as f64)
 }
 
+/// The canvas's colour format. WebGPU: the browser's preferred one (`getPreferredCanvasFormat`,
+/// which wgpu lists first), since a browser may composite only that one: Firefox's software
+/// compositor aborts the whole browser on an `rgba8unorm` canvas where it prefers `bgra8unorm`.
+/// WebGL2: an 8-bit sRGB format if offered. The renderer encodes sRGB itself when the
+/// format is not sRGB.
+fn canvas_format(backend: &str, offered: &[wgpu::TextureFormat]) -> Option<wgpu::TextureFormat> {
+    use wgpu::TextureFormat as F;
+    if backend == "webgpu" {
+        return offered.first().copied();
+    }
+    [F::Rgba8UnormSrgb, F::Bgra8UnormSrgb, F::Rgba8Unorm, F::Bgra8Unorm]
+        .into_iter()
+        .find(|f| offered.contains(f))
+        .or_else(|| offered.first().copied())
+}
+
+/// A canvas format by its WebGPU name ("bgra8unorm", ...), as `getPreferredCanvasFormat` says it.
+fn web_format_name(format: wgpu::TextureFormat) -> String {
+    use wgpu::TextureFormat as F;
+    match format {
+        F::Rgba8Unorm => "rgba8unorm".into(),
+        F::Rgba8UnormSrgb => "rgba8unorm-srgb".into(),
+        F::Bgra8Unorm => "bgra8unorm".into(),
+        F::Bgra8UnormSrgb => "bgra8unorm-srgb".into(),
+        F::Rgba16Float => "rgba16float".into(),
+        other => format!("{other:?}").to_lowercase(),
+    }
+}
+
 /// Most frames submitted to the GPU and not yet finished. The page draws the next frame only
 /// when fewer are in flight ([`WebDemo::can_draw`]): a slow GPU (software rendering) then gets
 /// fewer frames instead of a growing queue of them, and a click shows in the next frame drawn.
@@ -158,7 +187,7 @@ impl WebDemo {
         let instance = wgpu::Instance::new(desc);
         let surface = instance
             .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
-            .map_err(|e| JsError::new(&format!("{backend}: the canvas refused a context ({e})")))?;
+            .map_err(|e| JsError::new(&format!("the canvas refused a {backend} context ({e})")))?;
         let adapter = instance
             .request_adapter(&wgpu::RequestAdapterOptions {
                 power_preference: wgpu::PowerPreference::HighPerformance,
@@ -166,7 +195,15 @@ impl WebDemo {
                 ..Default::default()
             })
             .await
-            .map_err(|e| JsError::new(&format!("{backend}: no adapter ({e})")))?;
+            .map_err(|e| {
+                warn(&format!("wavepool: {backend} adapter request failed: {e}"));
+                JsError::new(match backend {
+                    "webgpu" => {
+                        "the browser gave no WebGPU adapter (WebGPU may be turned off, or not offered for this GPU)"
+                    }
+                    _ => "the browser gave no WebGL2 context (graphics acceleration may be turned off)",
+                })
+            })?;
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("wavepool"),
@@ -174,7 +211,7 @@ impl WebDemo {
                 ..Default::default()
             })
             .await
-            .map_err(|e| JsError::new(&format!("{backend}: could not open the device ({e})")))?;
+            .map_err(|e| JsError::new(&format!("could not open the {backend} device ({e})")))?;
         let lost = Arc::new(Mutex::new(None));
         let flag = lost.clone();
         device.set_device_lost_callback(move |reason, message| {
@@ -183,13 +220,8 @@ impl WebDemo {
             }
         });
         let caps = surface.get_capabilities(&adapter);
-        use wgpu::TextureFormat as F;
-        // 8-bit formats only; the renderer encodes sRGB itself when the format is not sRGB.
-        let format = [F::Rgba8UnormSrgb, F::Bgra8UnormSrgb, F::Rgba8Unorm, F::Bgra8Unorm]
-            .into_iter()
-            .find(|f| caps.formats.contains(f))
-            .or_else(|| caps.formats.first().copied())
-            .ok_or_else(|| JsError::new(&format!("{backend}: the canvas offers no colour format")))?;
+        let format =
+            canvas_format(backend, &caps.formats).ok_or_else(|| JsError::new("the canvas offers no colour format"))?;
         let alpha_mode = if caps.alpha_modes.contains(&wgpu::CompositeAlphaMode::Opaque) {
             wgpu::CompositeAlphaMode::Opaque
         } else {
@@ -228,6 +260,12 @@ impl WebDemo {
             lost,
             in_flight: Arc::new(AtomicU32::new(0)),
         })
+    }
+
+    /// Simulated time since the start (s): fixed steps taken times their length.
+    #[wasm_bindgen(getter, js_name = simTime)]
+    pub fn sim_time(&self) -> f64 {
+        self.demo.sim_time()
     }
 
     /// "webgpu" or "webgl2".
@@ -372,7 +410,7 @@ impl WebDemo {
         self.device.destroy();
     }
 
-    /// `{ backend, adapter, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
+    /// `{ backend, adapter, canvasFormat, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
     /// spherePosition, duckPosition, submergedVolume, probeLatency }`; the water statistics
     /// are read back asynchronously and are a frame or two old; positions are [x, y, z] in m
     /// or null when the object is not in the pool; probeLatency is how many frames old the
@@ -390,6 +428,7 @@ impl WebDemo {
         set(&o, "width", self.config.width);
         set(&o, "height", self.config.height);
         set(&o, "renderScale", self.demo.render_scale() as f64);
+        set(&o, "canvasFormat", web_format_name(self.config.format));
         let position = |p: Option<glam::Vec3>| match p {
             Some(p) => {
                 JsValue::from(p.to_array().iter().map(|&v| JsValue::from_f64(v as f64)).collect::<js_sys::Array>())

@@ -12,6 +12,7 @@ mod support;
 use std::sync::Mutex;
 use std::time::Duration;
 
+use serde_json::Value;
 use support::{canvas_rect_js, Browser, Graphics, Rect, StaticServer};
 
 /// One browser at a time: two software-rendered Chromiums on two cores only slow each other.
@@ -48,6 +49,17 @@ async fn webgpu_runs_when_the_browser_has_it() {
     let stats = browser.js("return window.demo.stats();").await;
     assert_eq!(stats["backend"], "webgpu");
     assert_eq!(stats["simSize"], 256);
+    // The canvas is in the browser's preferred format; the status line names the adapter or
+    // says that the browser does not tell it.
+    let preferred = browser.js("return navigator.gpu.getPreferredCanvasFormat();").await;
+    assert_eq!(stats["canvasFormat"], preferred, "canvas format");
+    let status = browser.js("return document.getElementById('status').textContent;").await;
+    let status = status.as_str().unwrap_or("");
+    let adapter = stats["adapter"].as_str().unwrap_or("");
+    let expected =
+        if adapter.is_empty() { "the browser does not tell which GPU".to_owned() } else { adapter.to_owned() };
+    assert!(status.starts_with("Running on WebGPU") && status.contains(&expected), "status line: {status}");
+    println!("canvas {preferred}; {status}");
     browser.close().await;
 }
 
@@ -296,6 +308,63 @@ async fn no_gpu_shows_a_message_in_the_page() {
         .await;
     assert!(failed, "no error state; message: {message}");
     assert!(message.as_str().unwrap().contains("neither WebGPU nor WebGL2"), "message: {message}");
+    browser.close().await;
+}
+
+/// A backend forced from the URL that the browser lacks: the message says it was forced, why
+/// it failed, and how to let the page choose (here WebGL2 would have worked).
+#[tokio::test]
+async fn a_forced_backend_the_browser_lacks_says_so_and_how_to_let_the_page_choose() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGl2Only).await;
+    browser.goto(&server.url("/?backend=webgpu")).await;
+    let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
+    let message = browser
+        .js("const m = document.querySelector('#pool').shadowRoot.querySelector('.message'); return m.hidden ? '' : m.textContent;")
+        .await;
+    let message = message.as_str().unwrap_or("").to_owned();
+    println!("{message}");
+    assert!(failed, "no error state; message: {message}");
+    for words in ["asked for WebGPU only (backend=webgpu)", "WebGPU: ", "backend=auto"] {
+        assert!(message.contains(words), "the message lacks '{words}': {message}");
+    }
+    browser.close().await;
+}
+
+/// The water keeps up with wall time down to 10 drawn frames/s, and below that runs in slow
+/// motion at 0.1 s of water a frame (frames do not take ever more steps): with the frame rate
+/// forced by `maxFps`, simulated time over 10 s against the page's clock, and `stats().simSpeed`.
+/// (Where steps cost so much that keeping up would push frames under 10 frames/s, fewer are
+/// taken: `quality::StepGovernor`, tested on its own.)
+#[tokio::test]
+async fn simulated_time_keeps_up_down_to_10_frames_per_second_and_slows_gracefully_below() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    for (max_fps, expected) in [(10.0, 1.0), (4.0, 0.4)] {
+        // A grid whose steps this machine affords at 10 frames/s (12 steps a frame).
+        let page = "test/sized.html?width=200&height=150&objects=none&quality=1&sim_size=128";
+        browser.goto(&server.url(&format!("/{page}&maxFps={max_fps}"))).await;
+        browser.wait_ready("#pool", READY).await;
+        tokio::time::sleep(Duration::from_secs(2)).await;
+        let clock = "return [performance.now(), window.demo.stats().simTime];";
+        let a = browser.js(clock).await;
+        tokio::time::sleep(Duration::from_secs(10)).await;
+        let b = browser.js(clock).await;
+        let stats = browser.js("return window.demo.stats();").await;
+        let t = |v: &Value, i: usize| v[i].as_f64().unwrap();
+        let speed = (t(&b, 1) - t(&a, 1)) / ((t(&b, 0) - t(&a, 0)) / 1000.0);
+        let (fps, reported) = (stats["fps"].as_f64().unwrap(), stats["simSpeed"].as_f64().unwrap());
+        println!(
+            "maxFps {max_fps}: {fps:.1} frames/s drawn, {speed:.3} simulated s per wall s over 10 s \
+             (stats().simSpeed {reported:.3}, frameMs {})",
+            stats["frameMs"]
+        );
+        assert!(fps >= 0.9 * max_fps && fps <= 1.05 * max_fps, "the page drew {fps:.1} frames/s, not {max_fps}");
+        assert!((speed - expected).abs() <= 0.05 * expected, "{speed:.3} simulated s per s at {max_fps} frames/s");
+        assert!((reported - expected).abs() <= 0.1 * expected, "stats().simSpeed {reported:.3} at {max_fps} frames/s");
+    }
     browser.close().await;
 }
 

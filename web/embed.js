@@ -28,6 +28,7 @@ export const DEFAULT_OPTIONS = Object.freeze({
   maxPixelRatio: 2, // cap on devicePixelRatio for the canvas's backing store
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
   aspect: 4 / 3, // width / height when the element has no height of its own
+  maxFps: 0, // cap on drawn frames per second (1-240; 0: as many as the browser and GPU give)
 });
 
 /** The parameter table: name, label, group, unit, kind, min, max, step, default, help. */
@@ -85,6 +86,8 @@ function readOptions(options, table) {
       out.maxPixelRatio = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.maxPixelRatio);
     } else if (key === "maxPixels") {
       out.maxPixels = clampNumber(key, value, 64 * 64, 8192 * 8192, DEFAULT_OPTIONS.maxPixels);
+    } else if (key === "maxFps") {
+      out.maxFps = Number(value) === 0 ? 0 : clampNumber(key, value, 1, 240, DEFAULT_OPTIONS.maxFps);
     } else if (key === "aspect") {
       out.aspect = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.aspect);
     } else {
@@ -153,9 +156,12 @@ export async function mount(element, options = {}) {
     await loadCore();
     const table = paramTable();
     const opts = readOptions(options, table);
-    if (!fillsElement) stage.style.aspectRatio = String(opts.aspect);
     handle._table = table;
     handle._opts = opts;
+    if (!fillsElement) {
+      stage.style.aspectRatio = String(opts.aspect);
+      handle._fitStage();
+    }
     await handle._start();
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.controls) handle._buildControls();
@@ -168,6 +174,11 @@ export async function mount(element, options = {}) {
     throw error;
   }
 }
+
+/** Below this width (CSS px) the controls start folded, so the pool comes first on a phone. */
+const NARROW_PX = 600;
+/** Least height (CSS px) the pool keeps when fitted into the first screen. */
+const MIN_FIT_PX = 180;
 
 /** Frame statistics are over this window up to now (ms). */
 const STATS_WINDOW_MS = 2000;
@@ -194,6 +205,23 @@ function frameStats(times, since, now) {
   };
 }
 
+/** The message shown when no backend started: what was tried, each one's reason, what to do. */
+function backendFailure(backend, failures) {
+  const name = { webgpu: "WebGPU", webgl2: "WebGL2" }[backend];
+  const reasons = failures.map((f) => `• ${f}`).join("\n");
+  if (name) {
+    return (
+      `This page asked for ${name} only (backend=${backend}), and this browser could not start it:\n` +
+      `${reasons}\nRemove backend=${backend} from the address or the options (or set backend=auto) ` +
+      "to let the demo choose a backend this browser has."
+    );
+  }
+  return (
+    "This browser could not start the water demo: neither WebGPU nor WebGL2 worked " +
+    `(graphics acceleration may be turned off in its settings).\n${reasons}`
+  );
+}
+
 class Demo {
   constructor(element, shadow, root, stage, message, id, started) {
     this._element = element;
@@ -208,6 +236,7 @@ class Demo {
     this._frame = 0; // requestAnimationFrame id
     this._last = 0; // time of the last frame (ms)
     this._frames = []; // times of the frames drawn in the last 2 s (ms), for stats()
+    this._simTimes = []; // the simulated time (s) after each of those frames
     this._runningSince = null; // when the frame loop last started drawing (ms)
     this._looping = false; // whether the frame loop runs (false once stopped, until started again)
     this._userPaused = false;
@@ -231,11 +260,12 @@ class Demo {
   // ---- set-up -------------------------------------------------------------------------
 
   async _start() {
-    const order = this._opts.backend === "auto" ? ["webgpu", "webgl2"] : [this._opts.backend];
+    const forced = this._opts.backend !== "auto";
+    const order = forced ? [this._opts.backend] : ["webgpu", "webgl2"];
     const failures = [];
     for (const backend of order) {
       if (backend === "webgpu" && !navigator.gpu) {
-        failures.push("WebGPU: not offered by this browser");
+        failures.push("WebGPU: this browser does not offer it (navigator.gpu is missing)");
         continue;
       }
       const canvas = this._makeCanvas();
@@ -253,10 +283,21 @@ class Demo {
         failures.push(`${backend === "webgpu" ? "WebGPU" : "WebGL2"}: ${error.message || error}`);
       }
     }
-    throw new Error(
-      "This browser could not start the water demo: it offers neither WebGPU nor WebGL2 " +
-        "(graphics acceleration may be turned off). Details: " + failures.join("; "),
-    );
+    throw new Error(backendFailure(this._opts.backend, failures));
+  }
+
+  // Without a height of its own the pool takes the element's width at its aspect ratio, but
+  // no more height than the first screen has below the element's top (the whole viewport when
+  // it starts further down), so a visitor sees all of it; narrower then, centred.
+  _fitStage() {
+    const fit = () => {
+      const top = this._element.getBoundingClientRect().top + window.scrollY;
+      const below = top < window.innerHeight ? window.innerHeight - top - 8 : window.innerHeight;
+      const height = Math.max(MIN_FIT_PX, Math.min(window.innerHeight, below));
+      this._stage.style.maxWidth = `${Math.floor(height * this._opts.aspect)}px`;
+    };
+    fit();
+    this._on(window, "resize", fit);
   }
 
   _makeCanvas() {
@@ -376,12 +417,15 @@ class Demo {
   // ---- controls -----------------------------------------------------------------------
 
   _buildControls() {
-    const panel = document.createElement("details");
-    panel.className = "controls";
-    panel.open = true;
+    // A drawer under the pool: open where there is room beside the groups, folded on a phone.
+    const drawer = document.createElement("details");
+    drawer.className = "controls";
+    drawer.open = this._element.clientWidth >= NARROW_PX;
     const summary = document.createElement("summary");
     summary.textContent = "Controls";
-    panel.append(summary);
+    const panel = document.createElement("div");
+    panel.className = "panel";
+    drawer.append(summary, panel);
     const groups = new Map();
     for (const p of this._table) {
       if (!groups.has(p.group)) {
@@ -409,7 +453,7 @@ class Demo {
       for (const p of this._table) this.set(p.name, p.default);
     });
     panel.append(buttons);
-    this._root.append(panel);
+    this._root.append(drawer);
   }
 
   _control(p) {
@@ -476,6 +520,7 @@ class Demo {
       this._frame = 0;
       this._looping = false;
       this._frames.length = 0;
+      this._simTimes.length = 0;
     }
   }
 
@@ -484,7 +529,7 @@ class Demo {
     if (this._dead || !this._core) return;
     // Paced: while the GPU is still on the last frame, this animation frame draws nothing
     // (a slow GPU gets fewer frames rather than a growing queue of them).
-    if (!this._core.canDraw()) {
+    if (!this._core.canDraw() || (this._last && time - this._last < this._minFrameMs())) {
       this._run();
       return;
     }
@@ -498,8 +543,12 @@ class Demo {
     }
     if (this._frames.length === 0) this._runningSince = time;
     this._frames.push(time);
+    this._simTimes.push(this._core.simTime);
     // Drawn frames of the last 2 s, and the one before them (for the first interval).
-    while (this._frames.length > 2 && time - this._frames[1] > STATS_WINDOW_MS) this._frames.shift();
+    while (this._frames.length > 2 && time - this._frames[1] > STATS_WINDOW_MS) {
+      this._frames.shift();
+      this._simTimes.shift();
+    }
     if (this._firstFrameMs === null) {
       this._firstFrameMs = performance.now() - this._started;
       // Ready once the browser has composited the first frame (the next animation frame).
@@ -510,6 +559,12 @@ class Demo {
       });
     }
     this._run();
+  }
+
+  // Shortest interval between drawn frames (ms) under the maxFps option; a few ms short of
+  // 1000 / maxFps, since animation frames come at the display's own ticks.
+  _minFrameMs() {
+    return this._opts.maxFps ? 1000 / this._opts.maxFps - 4 : 0;
   }
 
   // A lost device is recreated on a fresh canvas; a loss within 10 s of the last restart
@@ -624,6 +679,9 @@ class Demo {
   stats() {
     const s = this._alive().stats();
     Object.assign(s, frameStats(this._frames, this._runningSince, performance.now()));
+    // Simulated seconds per wall second over the drawn frames of the window (1: real time).
+    const [t, sim, n] = [this._frames, this._simTimes, this._frames.length];
+    s.simSpeed = n > 1 && t[n - 1] > t[0] ? ((sim[n - 1] - sim[0]) * 1000) / (t[n - 1] - t[0]) : 0;
     s.firstFrameMs = this._firstFrameMs;
     s.restarts = this._restarts;
     return s;

@@ -1,6 +1,8 @@
-//! Drives Debian's headless Chromium through chromedriver against the built page (`dist/`),
-//! served by a small static server on 127.0.0.1. Shared by the browser tests and the browser
-//! benchmark. Nothing is skipped: a missing `dist/`, chromedriver or Chromium is a failure
+//! Drives a browser through WebDriver against the built page (`dist/`), served by a small
+//! static server on 127.0.0.1: Debian's headless Chromium through chromedriver, Firefox ESR
+//! through geckodriver, WebKitGTK's MiniBrowser through WebKitWebDriver (those two under a
+//! virtual X server of their own when they need a display). Shared by the browser tests and
+//! the browser benchmark. Nothing is skipped: a missing `dist/`, driver or browser is a failure
 //! that says how to get it.
 #![allow(dead_code)]
 
@@ -16,6 +18,22 @@ use serde_json::{json, Value};
 
 pub const CHROMIUM: &str = "/usr/bin/chromium";
 pub const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
+pub const FIREFOX: &str = "/usr/bin/firefox-esr";
+pub const WEBKIT_DRIVER: &str = "/usr/bin/WebKitWebDriver";
+pub const WEBKIT_BROWSER: &str = "/usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser";
+
+/// geckodriver, which `./scripts/test` installs with cargo (pinned there).
+pub fn geckodriver() -> PathBuf {
+    let on_path = std::env::var_os("PATH")
+        .into_iter()
+        .flat_map(|p| std::env::split_paths(&p).collect::<Vec<_>>())
+        .map(|dir| dir.join("geckodriver"))
+        .find(|p| p.is_file());
+    let in_cargo = std::env::var_os("HOME").map(|h| Path::new(&h).join(".cargo/bin/geckodriver"));
+    on_path.or(in_cargo.filter(|p| p.is_file())).unwrap_or_else(|| {
+        panic!("geckodriver is missing: the Firefox tests need it (./scripts/test installs it with cargo install)")
+    })
+}
 
 /// The built page: `$WAVEPOOL_DIST` or `dist/` in the crate.
 pub fn dist_dir() -> PathBuf {
@@ -175,59 +193,202 @@ const WEBGPU_FLAGS: &[&str] = &[
 
 const NO_GPU_FLAGS: &[&str] = &["--disable-gpu", "--disable-software-rasterizer"];
 
-/// A Chromium session with its own chromedriver and a fresh profile; `close` ends both.
+/// Which browser engine, and how it is set up.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// Headless Chromium with the given graphics.
+    Chromium(Graphics),
+    /// Firefox ESR with default settings under a virtual X server: WebGL2 on llvmpipe (headless
+    /// Firefox has no WebGL here).
+    Firefox,
+    /// Firefox ESR headless with WebGPU turned on (`dom.webgpu.enabled`,
+    /// `gfx.webgpu.ignore-blocklist`), composited by its software compositor, as it is without
+    /// a usable GPU.
+    FirefoxWebGpu,
+    /// WebKitGTK's MiniBrowser under a virtual X server: WebGL2 (this build has no WebGPU).
+    WebKit,
+}
+
+impl Engine {
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::Chromium(_) => "chromium",
+            Engine::Firefox => "firefox",
+            Engine::FirefoxWebGpu => "firefox-webgpu",
+            Engine::WebKit => "webkit",
+        }
+    }
+}
+
+/// A browser session with its own driver, a fresh profile and, for engines that need a
+/// display, its own virtual X server; `close` (or drop) ends them all.
 pub struct Browser {
     pub client: Client,
+    pub engine: Engine,
     driver: Child,
     profile: PathBuf,
-    /// chromedriver's port on 127.0.0.1 (for DevTools commands, see `cdp`).
+    /// The driver's port on 127.0.0.1 (for DevTools commands, see `cdp`).
     driver_port: u16,
+    xvfb: Option<VirtualDisplay>,
+    /// Where the driver's output goes (Firefox prints the pages' console there).
+    log: PathBuf,
+}
+
+/// An X server in memory (Xvfb) on a display number of its own, ended on drop.
+struct VirtualDisplay {
+    process: Child,
+    display: String,
+}
+
+impl VirtualDisplay {
+    fn start() -> Self {
+        assert!(
+            Path::new("/usr/bin/Xvfb").exists(),
+            "Xvfb is missing: the Firefox and WebKit tests run under it (./scripts/test installs xvfb)"
+        );
+        let number = (100 + std::process::id() % 400..1000)
+            .find(|n| !Path::new(&format!("/tmp/.X{n}-lock")).exists())
+            .expect("a free X display number");
+        let display = format!(":{number}");
+        let process = Command::new("/usr/bin/Xvfb")
+            .args([display.as_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .expect("start Xvfb");
+        let socket = format!("/tmp/.X11-unix/X{number}");
+        let start = Instant::now();
+        while !Path::new(&socket).exists() {
+            assert!(start.elapsed() < Duration::from_secs(20), "Xvfb did not start on {display}");
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        Self { process, display }
+    }
+}
+
+impl Drop for VirtualDisplay {
+    fn drop(&mut self) {
+        let _ = self.process.kill();
+        let _ = self.process.wait();
+    }
 }
 
 fn free_port() -> u16 {
     TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).expect("free port").port()
 }
 
+fn require(tool: &str, what: &str) {
+    assert!(Path::new(tool).exists(), "{tool} is missing: the browser tests need {what} (./scripts/test installs it)");
+}
+
 impl Browser {
+    /// A headless Chromium session.
     pub async fn open(graphics: Graphics) -> Self {
-        for tool in [CHROMIUM, CHROMEDRIVER] {
-            assert!(
-                Path::new(tool).exists(),
-                "{tool} is missing: the browser tests need Debian's chromium and chromium-driver \
-                 (./scripts/test installs them)"
-            );
-        }
+        Self::open_engine(Engine::Chromium(graphics)).await
+    }
+
+    pub async fn open_engine(engine: Engine) -> Self {
         let port = free_port();
-        // Its own process group, so Chromium goes with it when a failed test drops the session.
-        let driver = Command::new(CHROMEDRIVER)
+        let profile = std::env::temp_dir().join(format!("wavepool-{}-{}-{port}", engine.name(), std::process::id()));
+        let _ = std::fs::remove_dir_all(&profile);
+        std::fs::create_dir_all(&profile).expect("profile folder");
+        let log = profile.join("driver.log");
+        let xvfb = matches!(engine, Engine::Firefox | Engine::WebKit).then(VirtualDisplay::start);
+        let mut caps = serde_json::Map::new();
+        let mut driver = match engine {
+            Engine::Chromium(graphics) => {
+                require(CHROMIUM, "Debian's chromium");
+                require(CHROMEDRIVER, "Debian's chromium-driver");
+                let mut args: Vec<String> = BASE_FLAGS.iter().map(|s| s.to_string()).collect();
+                args.push(format!("--user-data-dir={}", profile.join("chromium").display()));
+                match graphics {
+                    Graphics::WebGpu => args.extend(WEBGPU_FLAGS.iter().map(|s| s.to_string())),
+                    Graphics::WebGl2Only => {}
+                    Graphics::Nothing => args.extend(NO_GPU_FLAGS.iter().map(|s| s.to_string())),
+                }
+                caps.insert("goog:chromeOptions".into(), json!({ "binary": CHROMIUM, "args": args }));
+                let mut driver = Command::new(CHROMEDRIVER);
+                driver.arg(format!("--port={port}"));
+                driver
+            }
+            Engine::Firefox | Engine::FirefoxWebGpu => {
+                require(FIREFOX, "Debian's firefox-esr");
+                // Pages' console messages go to Firefox's output, which the driver's log keeps.
+                let mut prefs = json!({ "devtools.console.stdout.content": true });
+                let mut args = vec![];
+                if engine == Engine::FirefoxWebGpu {
+                    prefs["dom.webgpu.enabled"] = json!(true);
+                    prefs["gfx.webgpu.ignore-blocklist"] = json!(true);
+                    args.push("-headless");
+                }
+                caps.insert("browserName".into(), json!("firefox"));
+                caps.insert("moz:firefoxOptions".into(), json!({ "binary": FIREFOX, "args": args, "prefs": prefs }));
+                let mut driver = Command::new(geckodriver());
+                driver.args(["--port", &port.to_string()]);
+                driver
+            }
+            Engine::WebKit => {
+                require(WEBKIT_DRIVER, "Debian's webkit2gtk-driver");
+                require(WEBKIT_BROWSER, "Debian's webkit2gtk-driver (its MiniBrowser)");
+                caps.insert("browserName".into(), json!("MiniBrowser"));
+                caps.insert(
+                    "webkitgtk:browserOptions".into(),
+                    json!({ "binary": WEBKIT_BROWSER, "args": ["--automation"] }),
+                );
+                let mut driver = Command::new(WEBKIT_DRIVER);
+                driver.arg(format!("--port={port}"));
+                driver
+            }
+        };
+        if let Some(x) = &xvfb {
+            driver.env("DISPLAY", &x.display);
+        }
+        // Its own process group, so the browser goes with it when a failed test drops the
+        // session; HOME in the profile, so crash reports and caches stay out of the user's.
+        let output = std::fs::File::create(&log).expect("driver log");
+        let mut driver = driver
             .process_group(0)
-            .arg(format!("--port={port}"))
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
+            .env("HOME", &profile)
+            .stdout(output.try_clone().expect("driver log"))
+            .stderr(output)
             .spawn()
-            .expect("start chromedriver");
+            .unwrap_or_else(|e| panic!("start the {} driver: {e}", engine.name()));
         let start = Instant::now();
         while TcpStream::connect(("127.0.0.1", port)).is_err() {
-            assert!(start.elapsed() < Duration::from_secs(20), "chromedriver did not start");
+            if start.elapsed() > Duration::from_secs(20) {
+                let _ = driver.kill();
+                panic!("the {} driver did not start", engine.name());
+            }
             std::thread::sleep(Duration::from_millis(50));
         }
-        let profile = std::env::temp_dir().join(format!("wavepool-chromium-{}-{port}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&profile);
-        let mut args: Vec<String> = BASE_FLAGS.iter().map(|s| s.to_string()).collect();
-        args.push(format!("--user-data-dir={}", profile.display()));
-        match graphics {
-            Graphics::WebGpu => args.extend(WEBGPU_FLAGS.iter().map(|s| s.to_string())),
-            Graphics::WebGl2Only => {}
-            Graphics::Nothing => args.extend(NO_GPU_FLAGS.iter().map(|s| s.to_string())),
-        }
-        let mut caps = serde_json::Map::new();
-        caps.insert("goog:chromeOptions".into(), json!({ "binary": CHROMIUM, "args": args }));
         let client = ClientBuilder::new(hyper_util::client::legacy::connect::HttpConnector::new())
             .capabilities(caps)
             .connect(&format!("http://127.0.0.1:{port}"))
             .await
-            .expect("open a Chromium session through chromedriver");
-        Self { client, driver, profile, driver_port: port }
+            .unwrap_or_else(|e| panic!("open a {} session: {e}", engine.name()));
+        Self { client, engine, driver, profile, driver_port: port, xvfb, log }
+    }
+
+    /// What the driver and the browser printed so far (Firefox: the pages' console too, as
+    /// `console.error: "..."` lines and `JavaScript error: <url>, line N: ...`).
+    pub fn driver_log(&self) -> String {
+        String::from_utf8_lossy(&std::fs::read(&self.log).unwrap_or_default()).into_owned()
+    }
+
+    /// Errors the page reported to Firefox's console (from scripts served on 127.0.0.1), and
+    /// signs that the browser crashed; empty for other engines, which do not print them.
+    pub fn page_errors(&self) -> Vec<String> {
+        self.driver_log()
+            .lines()
+            .filter(|l| {
+                l.starts_with("console.error: \"")
+                    || l.starts_with("JavaScript error: http://127.0.0.1")
+                    || l.contains("MOZ_RELEASE_ASSERT")
+                    || l.contains("MOZ_CRASH(")
+                    || l.contains("Crash Annotation")
+            })
+            .map(str::to_owned)
+            .collect()
     }
 
     pub async fn close(self) {
@@ -305,6 +466,25 @@ impl Browser {
             .then(PointerAction::Pause { duration: Duration::from_millis(50) })
             .then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
         self.client.perform_actions(mouse).await.expect("click");
+    }
+
+    /// Drags the left mouse button from `from` to `to` (viewport CSS px) in `steps` moves.
+    pub async fn drag(&self, from: (f64, f64), to: (f64, f64), steps: u32) {
+        use fantoccini::actions::{InputSource, MouseActions, PointerAction, MOUSE_BUTTON_LEFT};
+        let mut mouse = MouseActions::new("mouse".into())
+            .then(PointerAction::MoveTo { duration: None, x: from.0.round(), y: from.1.round() })
+            .then(PointerAction::Down { button: MOUSE_BUTTON_LEFT });
+        for i in 1..=steps.max(1) {
+            let t = i as f64 / steps.max(1) as f64;
+            let (x, y) = (from.0 + (to.0 - from.0) * t, from.1 + (to.1 - from.1) * t);
+            mouse = mouse.then(PointerAction::MoveTo {
+                duration: Some(Duration::from_millis(40)),
+                x: x.round(),
+                y: y.round(),
+            });
+        }
+        mouse = mouse.then(PointerAction::Up { button: MOUSE_BUTTON_LEFT });
+        self.client.perform_actions(mouse).await.expect("drag");
     }
 }
 
@@ -463,11 +643,12 @@ impl ProcessInfo {
         self.program() == "chromium" && !self.args.iter().any(|a| a.starts_with("--type="))
     }
 
-    /// For a Chromium started by this support code (profile `wavepool-chromium-<pid>-<port>`),
-    /// the id of the test or benchmark process that started it.
+    /// For a Chromium started by this support code (profile
+    /// `wavepool-chromium-<pid>-<port>/chromium`), the id of the test or benchmark process that
+    /// started it.
     fn wavepool_owner(&self) -> Option<u32> {
         let profile = self.args.iter().find_map(|a| a.strip_prefix("--user-data-dir="))?;
-        let name = Path::new(profile).file_name()?.to_str()?;
+        let name = Path::new(profile).parent()?.file_name()?.to_str()?;
         name.strip_prefix("wavepool-chromium-")?.split('-').next()?.parse().ok()
     }
 
@@ -520,7 +701,7 @@ pub struct StrayBrowsers {
 }
 
 /// Ends the Chromium processes left over by earlier tests or benchmarks, by process id: a
-/// Chromium whose profile (`wavepool-chromium-<pid>-<port>`) names a process that has ended,
+/// Chromium whose profile (`wavepool-chromium-<pid>-<port>/chromium`) names a process that has ended,
 /// with all its helpers, and its chromedriver when that was orphaned too. One such leftover
 /// (its GPU process still working through queued frames) makes every figure of a benchmark
 /// several times worse. Other Chromium or chromedriver processes are not touched, only listed
@@ -564,6 +745,7 @@ impl Drop for Browser {
         let _ = Command::new("kill").args(["-KILL", "--", &format!("-{}", self.driver.id())]).status();
         let _ = self.driver.kill();
         let _ = self.driver.wait();
+        self.xvfb.take();
         let _ = std::fs::remove_dir_all(&self.profile);
     }
 }
