@@ -1,15 +1,18 @@
 //! Browser benchmark: the frames per second our page DRAWS against Evan Wallace's classic WebGL
-//! Water, in the same headless Chromium run, counted the same way for both (the init script
-//! tests/pages/frame_counter.js, as /work/shared/notes/measuring.md describes: default-framebuffer
-//! draws per animation frame on WebGL, finished frames by `onSubmittedWorkDone` on WebGPU), not
-//! `requestAnimationFrame` callbacks, which overstate the rate of a page that queues work.
+//! Water, in the same browser run, counted the same way for both (tests/pages/frame_counter.js,
+//! put first in every page served, as /work/shared/notes/measuring.md describes:
+//! default-framebuffer draws per animation frame on WebGL, finished frames by
+//! `onSubmittedWorkDone` on WebGPU), not `requestAnimationFrame` callbacks, which overstate the
+//! rate of a page that queues work.
 //!
-//! For each backend (WebGPU, WebGL2) one Chromium with the WebGPU flags and an 800x600 viewport
-//! loads, alternately (A B A B), our `/index.html?backend=...` and the classic
-//! `/classic/index.html` (WebGL1 whatever the backend; served read-only from
-//! ../shared/anchors/webgl-water). Each page: load, wait until ready, warm up, reset the counter,
-//! measure, read it. Before each page the machine is left to settle (CPU mostly idle), so work a
-//! previous page queued does not land in the next one's window.
+//! For each engine and backend (Chromium headless with the WebGPU flags on WebGPU and on WebGL2;
+//! Firefox ESR under a virtual display on WebGL2 and with WebGPU turned on; WebKitGTK under a
+//! virtual display on WebGL2) one browser with an 800x600 viewport loads, alternately
+//! (A B A B), our `/index.html?backend=...` and the classic `/classic/index.html` (WebGL1
+//! whatever the backend; served read-only from ../shared/anchors/webgl-water). Each page: load,
+//! wait until ready, warm up, reset the counter, measure, read it. Before each page the machine
+//! is left to settle (CPU mostly idle), so work a previous page queued does not land in the
+//! next one's window. Ratios are only between figures of the same browser run.
 //!
 //! Run: `cargo bench --bench browser` after building dist/ (`./scripts/serve` or
 //! `trunk build --release`; `WAVEPOOL_DIST` points elsewhere). Nothing else should run meanwhile:
@@ -17,9 +20,11 @@
 //! Settings (environment):
 //! - `WAVEPOOL_BENCH_ROUNDS` (2): how many A B pairs per backend;
 //! - `WAVEPOOL_BENCH_WARMUP` (5) and `WAVEPOOL_BENCH_SECONDS` (20): warm-up and window, s;
-//! - `WAVEPOOL_BENCH_QUERY`: extra options for our page, e.g. `&objects=none&quality=1`.
+//! - `WAVEPOOL_BENCH_QUERY`: extra options for our page, e.g. `&objects=none&quality=1`;
+//! - `WAVEPOOL_BENCH_RUNS` (all): which runs, space-separated, of `chromium-webgpu`,
+//!   `chromium-webgl2`, `firefox-webgl2`, `firefox-webgpu`, `webkit-webgl2`.
 //!
-//! Prints one JSON line per measurement, then one summary line per backend: mean drawn fps of
+//! Prints one JSON line per measurement, then one summary line per run: mean drawn fps of
 //! ours and of the classic, their ratio, and the ratio per canvas pixel (fps x backing pixels;
 //! and per pixel actually drawn when our page reports its automatic render scale: use
 //! `WAVEPOOL_BENCH_QUERY='&quality=1'` to compare at full resolution).
@@ -30,12 +35,19 @@ mod support;
 use std::time::{Duration, Instant};
 
 use serde_json::{json, Value};
-use support::{end_stray_browsers, process_tree, processes, Browser, Graphics, StaticServer, FRAME_COUNTER_JS};
+use support::{end_stray_browsers, process_tree, processes, Browser, Engine, Graphics, StaticServer};
 
 /// The viewport both pages are measured in (CSS px), as in measuring.md.
 const VIEWPORT: (u32, u32) = (800, 600);
-/// Our backends; the classic is measured in each browser too (it is WebGL1 in both).
-const BACKENDS: [&str; 2] = ["webgpu", "webgl2"];
+/// The runs: an engine and the backend our page is told to use there; the classic is measured
+/// in each run too (it is WebGL1 in every one).
+const RUNS: [(&str, Engine, &str); 5] = [
+    ("chromium-webgpu", Engine::Chromium(Graphics::WebGpu), "webgpu"),
+    ("chromium-webgl2", Engine::Chromium(Graphics::WebGpu), "webgl2"),
+    ("firefox-webgl2", Engine::Firefox, "webgl2"),
+    ("firefox-webgpu", Engine::FirefoxWebGpu, "webgpu"),
+    ("webkit-webgl2", Engine::WebKit, "webgl2"),
+];
 /// Longest wait for our page to show its first frame (SwiftShader compiles slowly).
 const READY_TIMEOUT: Duration = Duration::from_secs(180);
 /// The classic has no ready signal: it is running once its "Loading..." text is gone; it then
@@ -52,6 +64,8 @@ struct Settings {
     rounds: u32,
     /// Appended to our page's query string.
     extra_query: String,
+    /// Names of the runs to make (of [`RUNS`]).
+    runs: Vec<String>,
 }
 
 impl Settings {
@@ -66,6 +80,9 @@ impl Settings {
             window: Duration::from_secs(number("WAVEPOOL_BENCH_SECONDS", 20)),
             rounds: number("WAVEPOOL_BENCH_ROUNDS", 2) as u32,
             extra_query: std::env::var("WAVEPOOL_BENCH_QUERY").unwrap_or_default(),
+            runs: std::env::var("WAVEPOOL_BENCH_RUNS")
+                .map(|v| v.split_whitespace().map(str::to_owned).collect())
+                .unwrap_or_else(|_| RUNS.iter().map(|r| r.0.to_owned()).collect()),
         }
     }
 }
@@ -103,7 +120,8 @@ impl Page {
 /// One page measured once: what the summary needs.
 struct Measurement {
     page: Page,
-    backend: &'static str,
+    /// The run's name (engine and backend).
+    run: &'static str,
     /// Frames drawn per second (the counter's figure).
     fps: f64,
     /// Animation frames per second in which the page's callbacks ran.
@@ -128,28 +146,29 @@ async fn main() {
             strays.others.join("\n  ")
         );
     }
-    let server = StaticServer::start_with_classic();
+    let server = StaticServer::start_with_classic(true);
     let mut results = Vec::new();
-    for backend in BACKENDS {
-        // The WebGPU flags in both cases: our page is told its backend in the URL.
-        let browser = Browser::open(Graphics::WebGpu).await;
-        browser.add_init_script(FRAME_COUNTER_JS).await;
+    let runs: Vec<_> = RUNS.iter().filter(|r| settings.runs.iter().any(|name| name == r.0)).collect();
+    assert!(!runs.is_empty(), "WAVEPOOL_BENCH_RUNS names none of {:?}", RUNS.map(|r| r.0));
+    for &&(run, engine, backend) in &runs {
+        // Chromium gets the WebGPU flags in both runs: our page is told its backend in the URL.
+        let browser = Browser::open_engine(engine).await;
         let (width, height) = browser.set_viewport(VIEWPORT.0, VIEWPORT.1).await;
-        let version = browser.cdp("Browser.getVersion", json!({})).await;
+        let agent = browser.js("return navigator.userAgent;").await;
         println!(
             "{}",
-            json!({ "backend": backend, "viewport": [width, height], "browser": version["product"],
+            json!({ "run": run, "backend": backend, "viewport": [width, height], "browser": agent,
                     "warm_up_s": settings.warm_up.as_secs(), "window_s": settings.window.as_secs() })
         );
         for round in 1..=settings.rounds {
             for page in [Page::Ours, Page::Classic] {
-                results.push(measure(&browser, &server, page, backend, round, &settings).await);
+                results.push(measure(&browser, &server, page, run, backend, round, &settings).await);
             }
         }
         browser.close().await;
     }
-    for backend in BACKENDS {
-        println!("{}", summary(&results, backend));
+    for &&(run, _, _) in &runs {
+        println!("{}", summary(&results, run));
     }
 }
 
@@ -159,6 +178,7 @@ async fn measure(
     browser: &Browser,
     server: &StaticServer,
     page: Page,
+    run: &'static str,
     backend: &'static str,
     round: u32,
     settings: &Settings,
@@ -225,6 +245,7 @@ async fn measure(
         (main["api"] == "webgpu").then(|| main["started"].as_f64().map(|n| round2(n / seconds))).flatten();
     let line = json!({
         "page": page.name(),
+        "run": run,
         "backend": backend,
         "round": round,
         "url": path,
@@ -254,7 +275,7 @@ async fn measure(
     }
     Measurement {
         page,
-        backend,
+        run,
         fps: counter["fps"].as_f64().unwrap_or(0.0),
         callbacks_fps: counter["callbacksFps"].as_f64().unwrap_or(0.0),
         pixels,
@@ -262,11 +283,11 @@ async fn measure(
     }
 }
 
-/// The summary of one backend: mean drawn fps of each page, ours / classic, and the same per
+/// The summary of one run: mean drawn fps of each page, ours / classic, and the same per
 /// canvas pixel (fps x backing pixels, so a bigger canvas is not a handicap).
-fn summary(results: &[Measurement], backend: &str) -> Value {
+fn summary(results: &[Measurement], run: &str) -> Value {
     let mean = |page: Page, f: &dyn Fn(&Measurement) -> f64| -> f64 {
-        let values: Vec<f64> = results.iter().filter(|m| m.page == page && m.backend == backend).map(f).collect();
+        let values: Vec<f64> = results.iter().filter(|m| m.page == page && m.run == run).map(f).collect();
         values.iter().sum::<f64>() / values.len().max(1) as f64
     };
     let (ours, classic) = (mean(Page::Ours, &|m| m.fps), mean(Page::Classic, &|m| m.fps));
@@ -275,13 +296,9 @@ fn summary(results: &[Measurement], backend: &str) -> Value {
     let ratio = |a: f64, b: f64| if b > 0.0 { round3(a / b) } else { f64::NAN };
     // Pixels our scene is actually drawn at (canvas x render scale squared), when every
     // measurement of ours reported its scale.
-    let ours_scales: Vec<f64> = results
-        .iter()
-        .filter(|m| m.page == Page::Ours && m.backend == backend)
-        .filter_map(|m| m.render_scale)
-        .collect();
-    let scale_known =
-        ours_scales.len() == results.iter().filter(|m| m.page == Page::Ours && m.backend == backend).count();
+    let ours_scales: Vec<f64> =
+        results.iter().filter(|m| m.page == Page::Ours && m.run == run).filter_map(|m| m.render_scale).collect();
+    let scale_known = ours_scales.len() == results.iter().filter(|m| m.page == Page::Ours && m.run == run).count();
     let (ours_scale, ratio_per_rendered_pixel) = if scale_known && !ours_scales.is_empty() {
         let rendered_rate = mean(Page::Ours, &|m| m.fps * m.pixels * m.render_scale.unwrap_or(1.0).powi(2));
         let scale = ours_scales.iter().sum::<f64>() / ours_scales.len() as f64;
@@ -290,8 +307,8 @@ fn summary(results: &[Measurement], backend: &str) -> Value {
         (None, None)
     };
     json!({
-        "summary": backend,
-        "rounds": results.iter().filter(|m| m.page == Page::Ours && m.backend == backend).count(),
+        "summary": run,
+        "rounds": results.iter().filter(|m| m.page == Page::Ours && m.run == run).count(),
         "ours_drawn_fps": round3(ours),
         "classic_drawn_fps": round3(classic),
         "ratio": ratio(ours, classic),

@@ -1,5 +1,5 @@
-//! The demo in every engine a student may have, and on every screen: Firefox ESR (WebGL2 with
-//! its default settings under a virtual display; WebGPU turned on, headless, on its software
+//! The demo in every engine a student may have, and on every screen: Firefox ESR under a
+//! virtual display (WebGL2 with its default settings; WebGPU turned on, on its software
 //! compositor) and WebKitGTK (WebGL2) reach the first frame, show a picture, make ripples under
 //! a drag, report no error and do not crash; the page fits 320, 380, 800 and 1280 px wide
 //! screens in Chromium and Firefox (no horizontal scroll, the pool within the first screen,

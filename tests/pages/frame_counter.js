@@ -18,7 +18,8 @@
 //   bindFramebuffer / deleteFramebuffer). At each animation-frame callback, a canvas drew a frame
 //   if such a draw happened since the previous callback. wgpu's GL backend presents with a
 //   blitFramebuffer into the default framebuffer, the classic draws into it directly.
-// - WebGPU: every GPUCanvasContext.getCurrentTexture() that returns a new texture starts a frame
+// - WebGPU: every GPUCanvasContext.getCurrentTexture() that returns a new texture, or comes after
+//   a queue submission since the last call, starts a frame
 //   of that canvas; at that moment queue.onSubmittedWorkDone() of the canvas's device resolves
 //   when everything submitted so far (the previous frame) is finished: each resolution is one
 //   finished frame, at the time it resolves. `pending` = frames submitted and not finished yet
@@ -184,6 +185,15 @@
   // ---- WebGPU -----------------------------------------------------------------------------------
   const contextDevice = new WeakMap(); // GPUCanvasContext -> device it was configured with
   const currentTexture = new WeakMap(); // GPUCanvasContext -> texture of its current frame
+  const submitsSeen = new WeakMap(); // GPUCanvasContext -> queue submissions at its last getCurrentTexture
+  let submits = 0; // queue submissions of the page so far
+  if (window.GPUQueue) {
+    wrap(GPUQueue.prototype, "submit", (original) =>
+      function submit() {
+        submits++;
+        return original.apply(this, arguments);
+      });
+  }
   if (window.GPUAdapter) {
     wrap(GPUAdapter.prototype, "requestDevice", (original) =>
       function requestDevice() {
@@ -202,9 +212,11 @@
     wrap(GPUCanvasContext.prototype, "getCurrentTexture", (original) =>
       function getCurrentTexture() {
         const texture = original.apply(this, arguments);
-        // The same texture until the frame is presented: a second call is the same frame.
-        if (currentTexture.get(this) !== texture) {
+        // The same texture until the frame is presented: a second call with no submission in
+        // between is the same frame. (Firefox hands out the same texture object every frame.)
+        if (currentTexture.get(this) !== texture || submitsSeen.get(this) !== submits) {
           currentTexture.set(this, texture);
+          submitsSeen.set(this, submits);
           const r = canvasRecord(this.canvas, "webgpu");
           r.started++;
           const device = contextDevice.get(this) || state.device;

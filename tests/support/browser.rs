@@ -89,16 +89,19 @@ pub struct StaticServer {
 
 impl StaticServer {
     pub fn start() -> Self {
-        Self::start_serving(None)
+        Self::start_serving(None, false)
     }
 
     /// Also serves the classic WebGL Water (`classic_dir()`, read-only) at `/classic/`;
-    /// panics with a clear message when it is missing.
-    pub fn start_with_classic() -> Self {
-        Self::start_serving(Some(classic_dir()))
+    /// panics with a clear message when it is missing. With `count_frames`, every HTML page
+    /// served starts with the frame counter ([`FRAME_COUNTER_JS`]) as its first script, so it
+    /// runs before the page's own in any engine (the way to inject it where DevTools is not
+    /// there: Firefox, WebKit).
+    pub fn start_with_classic(count_frames: bool) -> Self {
+        Self::start_serving(Some(classic_dir()), count_frames)
     }
 
-    fn start_serving(classic: Option<PathBuf>) -> Self {
+    fn start_serving(classic: Option<PathBuf>, count_frames: bool) -> Self {
         let dist = dist_dir();
         let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
         let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
@@ -106,7 +109,7 @@ impl StaticServer {
         std::thread::spawn(move || {
             for stream in listener.incoming().flatten() {
                 let (dist, pages, classic) = (dist.clone(), pages.clone(), classic.clone());
-                std::thread::spawn(move || serve(stream, &dist, &pages, classic.as_deref()));
+                std::thread::spawn(move || serve(stream, &dist, &pages, classic.as_deref(), count_frames));
             }
         });
         Self { port }
@@ -117,7 +120,15 @@ impl StaticServer {
     }
 }
 
-fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path>) {
+/// `html` with `script` inlined as the first thing of its head (or of the document).
+fn with_first_script(html: &[u8], script: &str) -> Vec<u8> {
+    let text = String::from_utf8_lossy(html);
+    let tag = format!("<script>{script}</script>");
+    let at = text.to_ascii_lowercase().find("<head>").map_or(0, |i| i + "<head>".len());
+    format!("{}{tag}{}", &text[..at], &text[at..]).into_bytes()
+}
+
+fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path>, count_frames: bool) {
     let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
     let mut request = String::new();
     if reader.read_line(&mut request).is_err() {
@@ -145,6 +156,8 @@ fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path
     let safe = !path.contains("..");
     let response = match std::fs::read(&file) {
         Ok(body) if safe => {
+            let html = file.extension().is_some_and(|e| e == "html");
+            let body = if count_frames && html { with_first_script(&body, FRAME_COUNTER_JS) } else { body };
             let head = format!(
                 "HTTP/1.1 200 OK\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n",
                 content_type(&file),
@@ -201,9 +214,9 @@ pub enum Engine {
     /// Firefox ESR with default settings under a virtual X server: WebGL2 on llvmpipe (headless
     /// Firefox has no WebGL here).
     Firefox,
-    /// Firefox ESR headless with WebGPU turned on (`dom.webgpu.enabled`,
-    /// `gfx.webgpu.ignore-blocklist`), composited by its software compositor, as it is without
-    /// a usable GPU.
+    /// Firefox ESR under a virtual X server with WebGPU turned on (`dom.webgpu.enabled`,
+    /// `gfx.webgpu.ignore-blocklist`), composited by its software compositor as without a
+    /// usable GPU (where an `rgba8unorm` canvas aborted the whole browser); WebGL2 works too.
     FirefoxWebGpu,
     /// WebKitGTK's MiniBrowser under a virtual X server: WebGL2 (this build has no WebGPU).
     WebKit,
@@ -293,7 +306,8 @@ impl Browser {
         let _ = std::fs::remove_dir_all(&profile);
         std::fs::create_dir_all(&profile).expect("profile folder");
         let log = profile.join("driver.log");
-        let xvfb = matches!(engine, Engine::Firefox | Engine::WebKit).then(VirtualDisplay::start);
+        let xvfb =
+            matches!(engine, Engine::Firefox | Engine::FirefoxWebGpu | Engine::WebKit).then(VirtualDisplay::start);
         let mut caps = serde_json::Map::new();
         let mut driver = match engine {
             Engine::Chromium(graphics) => {
@@ -315,14 +329,12 @@ impl Browser {
                 require(FIREFOX, "Debian's firefox-esr");
                 // Pages' console messages go to Firefox's output, which the driver's log keeps.
                 let mut prefs = json!({ "devtools.console.stdout.content": true });
-                let mut args = vec![];
                 if engine == Engine::FirefoxWebGpu {
                     prefs["dom.webgpu.enabled"] = json!(true);
                     prefs["gfx.webgpu.ignore-blocklist"] = json!(true);
-                    args.push("-headless");
                 }
                 caps.insert("browserName".into(), json!("firefox"));
-                caps.insert("moz:firefoxOptions".into(), json!({ "binary": FIREFOX, "args": args, "prefs": prefs }));
+                caps.insert("moz:firefoxOptions".into(), json!({ "binary": FIREFOX, "prefs": prefs }));
                 let mut driver = Command::new(geckodriver());
                 driver.args(["--port", &port.to_string()]);
                 driver
@@ -535,6 +547,9 @@ impl Browser {
             }
             window_w = (window_w as i64 + width as i64 - w as i64).max(200) as u32;
             window_h = (window_h as i64 + height as i64 - h as i64).max(200) as u32;
+        }
+        if !matches!(self.engine, Engine::Chromium(_)) {
+            return self.viewport().await;
         }
         let metrics = json!({ "width": width, "height": height, "deviceScaleFactor": 1, "mobile": false });
         self.cdp("Emulation.setDeviceMetricsOverride", metrics).await;
