@@ -395,11 +395,47 @@ impl WebDemo {
         true
     }
 
+    /// The camera as `[yaw, pitch, distance]` (degrees, degrees, m).
+    pub fn camera(&self) -> Vec<f32> {
+        let c = &self.demo.camera;
+        vec![c.yaw, c.pitch, c.distance]
+    }
+
+    /// Puts the camera at `yaw`, `pitch` (degrees) and `distance` (m); values outside the
+    /// camera's ranges are clamped with a console warning.
+    #[wasm_bindgen(js_name = setCamera)]
+    pub fn set_camera(&mut self, yaw: f32, pitch: f32, distance: f32) {
+        let mut camera = self.demo.camera;
+        let finite = |v: f32, current: f32| if v.is_finite() { v } else { current };
+        camera.yaw = finite(yaw, camera.yaw);
+        camera.pitch = finite(pitch, camera.pitch);
+        camera.distance = finite(distance, camera.distance);
+        camera.clamp();
+        if !yaw.is_finite() || camera.pitch != pitch || camera.distance != distance {
+            warn(&format!(
+                "wavepool: camera ({yaw}, {pitch}, {distance}) is outside yaw any, pitch {:?}, distance {:?}; using ({}, {}, {})",
+                crate::camera::PITCH_RANGE,
+                crate::camera::DISTANCE_RANGE,
+                camera.yaw,
+                camera.pitch,
+                camera.distance
+            ));
+        }
+        self.demo.camera = camera;
+    }
+
     /// Where a point of the pool (x, y, z in m; the water rests at y = 0, the pool spans
     /// -1..1) appears on the canvas, as `[x, y]` in backing pixels; empty when behind the camera.
     pub fn project(&self, x: f32, y: f32, z: f32) -> Vec<f32> {
         let size = glam::Vec2::new(self.config.width as f32, self.config.height as f32);
         self.demo.camera.project(glam::Vec3::new(x, y, z), size).map_or(Vec::new(), |p| vec![p.x, p.y])
+    }
+
+    /// Releases the GPU device now (WebGPU: `GPUDevice.destroy()`) instead of whenever the
+    /// garbage collector gets to it; call just before `free()`. The page's WebGL context is
+    /// released by the page (`WEBGL_lose_context`), which owns the canvas.
+    pub fn dispose(&self) {
+        self.device.destroy();
     }
 
     /// Destroys the GPU device the way a driver reset loses it, for the test of the

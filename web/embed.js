@@ -8,15 +8,48 @@ import init, { WebDemo, optionTable, paramTable } from "./wavepool.js";
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
 
+// The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm } ahead
+// of this code in the same module: the stylesheet's text and the wasm module, gzip then base64.
+// Otherwise both are files next to this one.
+// eslint-disable-next-line no-undef
+const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
+let inlineSheet = null; // the inline stylesheet, shared by every demo's shadow root
+
+/** The inline wasm module's bytes: base64 decoded, then gunzipped by the browser. */
+async function inlineWasm() {
+  const packed = Uint8Array.from(atob(inline.wasm), (c) => c.charCodeAt(0));
+  const stream = new Blob([packed]).stream().pipeThrough(new DecompressionStream("gzip"));
+  return new Response(stream).arrayBuffer();
+}
+
 function loadCore() {
   if (!ready) {
-    ready = init().then(() => {
-      window.addEventListener("wavepool:panic", (event) => {
-        for (const demo of live) demo._fail(`The water demo crashed: ${event.detail}`);
-      });
-    });
+    const module = inline ? inlineWasm().then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(undefined);
+    ready = module.then((source) => init(source)).then(
+      () => {
+        window.addEventListener("wavepool:panic", (event) => {
+          for (const demo of live) demo._fail(`The water demo crashed: ${event.detail}`);
+        });
+      },
+      (error) => {
+        throw new Error(loadFailure(error));
+      },
+    );
   }
   return ready;
+}
+
+/** Why the WebAssembly module did not load, in words a page author can act on. */
+function loadFailure(error) {
+  const text = String((error && error.message) || error);
+  if (/Content.Security.Policy|CSP|unsafe-eval|wasm-eval/i.test(text)) {
+    return (
+      "This page's Content-Security-Policy does not let it run WebAssembly: its script-src " +
+      "directive needs 'wasm-unsafe-eval' (for example script-src 'self' 'wasm-unsafe-eval'). " +
+      `Details: ${text}`
+    );
+  }
+  return `The water demo could not load its WebAssembly module (wavepool_bg.wasm next to embed.js): ${text}`;
 }
 
 /** Options understood by mount(), with defaults. Parameter names from `params()` are accepted too. */
@@ -29,6 +62,7 @@ export const DEFAULT_OPTIONS = Object.freeze({
   maxPixels: 1920 * 1080, // cap on the canvas's backing pixels (width * height)
   aspect: 4 / 3, // width / height when the element has no height of its own
   maxFps: 0, // cap on drawn frames per second (1-240; 0: as many as the browser and GPU give)
+  camera: null, // "yaw,pitch,distance" (degrees, degrees, m) to start from; null: the default view
 });
 
 /** The parameter table: name, label, group, unit, kind, min, max, step, default, help. */
@@ -88,6 +122,10 @@ function readOptions(options, table) {
       out.maxPixels = clampNumber(key, value, 64 * 64, 8192 * 8192, DEFAULT_OPTIONS.maxPixels);
     } else if (key === "maxFps") {
       out.maxFps = Number(value) === 0 ? 0 : clampNumber(key, value, 1, 240, DEFAULT_OPTIONS.maxFps);
+    } else if (key === "camera") {
+      const v = (Array.isArray(value) ? value : String(value).split(",")).map(Number);
+      if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
+      else warn(`camera "${value}" is not "yaw,pitch,distance" (three numbers); using the default view`);
     } else if (key === "aspect") {
       out.aspect = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.aspect);
     } else {
@@ -135,9 +173,19 @@ export async function mount(element, options = {}) {
   const fillsElement = element.clientHeight > 0;
   const root = document.createElement("div");
   root.className = "root" + (fillsElement ? " fill" : "");
-  const style = document.createElement("link");
-  style.rel = "stylesheet";
-  style.href = new URL("./wavepool.css", import.meta.url).href;
+  let style = [];
+  if (inline) {
+    // A constructed stylesheet: no <style> element, so a strict style-src allows it too.
+    if (!inlineSheet) {
+      inlineSheet = new CSSStyleSheet();
+      inlineSheet.replaceSync(inline.css);
+    }
+    shadow.adoptedStyleSheets = [inlineSheet];
+  } else {
+    style = [document.createElement("link")];
+    style[0].rel = "stylesheet";
+    style[0].href = new URL("./wavepool.css", import.meta.url).href;
+  }
   const stage = document.createElement("div");
   stage.className = "stage";
   const message = document.createElement("div");
@@ -146,7 +194,7 @@ export async function mount(element, options = {}) {
   message.hidden = true;
   stage.append(message);
   root.append(stage);
-  shadow.append(style, root);
+  shadow.append(...style, root);
   const id = ++instances;
 
   const handle = new Demo(element, shadow, root, stage, message, id, started);
@@ -163,7 +211,14 @@ export async function mount(element, options = {}) {
       handle._fitStage();
     }
     await handle._start();
+    // prefers-reduced-motion: start still (nothing falls, no waves) until the visitor presses
+    // play, unless the page asked for `paused` itself.
+    if (!("paused" in opts.params) && matchMedia("(prefers-reduced-motion: reduce)").matches) opts.params.paused = 1;
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
+    if (opts.camera) handle._core.setCamera(...opts.camera);
+    // What "Reset" returns to: this page's own start, not the table's defaults.
+    handle._startState = { params: table.map((p) => [p.name, handle.get(p.name)]), camera: handle._core.camera() };
+    handle._buildOverlay();
     if (opts.controls) handle._buildControls();
     handle._status(null);
     handle._run();
@@ -173,6 +228,26 @@ export async function mount(element, options = {}) {
     handle._fail(String(error && error.message ? error.message : error));
     throw error;
   }
+}
+
+/** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
+const ICONS = {
+  play: "M8 5v14l11-7z",
+  pause: "M6 5h4v14H6zm8 0h4v14h-4z",
+  fullscreen: "M4 4h6v2H6v4H4zm10 0h6v6h-2V6h-4zM4 14h2v4h4v2H4zm14 0h2v6h-6v-2h4z",
+};
+
+/** An inline SVG icon (no font glyph that a system may lack, no style attribute). */
+function icon(path) {
+  const ns = "http://www.w3.org/2000/svg";
+  const svg = document.createElementNS(ns, "svg");
+  svg.setAttribute("viewBox", "0 0 24 24");
+  svg.setAttribute("aria-hidden", "true");
+  const shape = document.createElementNS(ns, "path");
+  shape.setAttribute("d", path);
+  shape.setAttribute("fill", "currentColor");
+  svg.append(shape);
+  return svg;
 }
 
 /** Below this width (CSS px) the controls start folded, so the pool comes first on a phone. */
@@ -307,7 +382,8 @@ class Demo {
     canvas.setAttribute(
       "aria-label",
       "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere " +
-        "to turn the camera. Keys: arrows turn, + and - zoom, space pauses, G gravity, L light.",
+        "to turn the camera. Keys: arrows turn, + and - zoom, Enter makes a drop in the middle, space " +
+        "pauses, G gravity, L light.",
     );
     this._stage.prepend(canvas);
     this._sizeCanvas(canvas);
@@ -406,6 +482,7 @@ class Demo {
       if (turn) this._core.orbit(...turn);
       else if (e.key === "+" || e.key === "=") this._core.zoom(-1);
       else if (e.key === "-" || e.key === "_") this._core.zoom(1);
+      else if (e.key === "Enter") this.addDrop(0, 0);
       else used = this._core.key(e.code);
       if (used) {
         e.preventDefault();
@@ -448,7 +525,9 @@ class Demo {
       b.addEventListener("click", action);
       buttons.append(b);
     };
-    button("Reset water", "Flatten the water and put the sphere back", () => this._core && this._core.reset());
+    button("Reset", "Back to how this page started: its parameters and view, calm water, the objects in place", () =>
+      this.reset(),
+    );
     button("Defaults", "Set every parameter to its default", () => {
       for (const p of this._table) this.set(p.name, p.default);
     });
@@ -503,6 +582,46 @@ class Demo {
     } else {
       for (const update of this._controls.values()) update();
     }
+    if (this._overlayUpdate) this._overlayUpdate();
+  }
+
+  // Buttons over the pool, there with or without the controls: play/pause (the `paused`
+  // parameter: a way to stop the motion, WCAG 2.2.2) and fullscreen (only where the page
+  // allows it: an iframe needs allow="fullscreen").
+  _buildOverlay() {
+    const bar = document.createElement("div");
+    bar.className = "overlay";
+    const play = document.createElement("button");
+    play.type = "button";
+    play.className = "play";
+    const playIcon = icon(ICONS.pause);
+    play.append(playIcon);
+    play.addEventListener("click", () => this.set("paused", this.get("paused") >= 0.5 ? 0 : 1));
+    bar.append(play);
+    if (document.fullscreenEnabled && this._element.requestFullscreen) {
+      const full = document.createElement("button");
+      full.type = "button";
+      full.className = "fullscreen";
+      full.append(icon(ICONS.fullscreen));
+      full.title = "Fullscreen (Esc leaves it)";
+      full.setAttribute("aria-label", "Fullscreen");
+      full.addEventListener("click", () =>
+        document.fullscreenElement === this._element
+          ? document.exitFullscreen()
+          : this._element.requestFullscreen().catch((e) => warn(`fullscreen refused: ${e.message || e}`)),
+      );
+      bar.append(full);
+    }
+    this._overlayUpdate = () => {
+      if (!this._core) return;
+      const paused = this.get("paused") >= 0.5;
+      playIcon.firstChild.setAttribute("d", paused ? ICONS.play : ICONS.pause);
+      play.setAttribute("aria-label", paused ? "Play" : "Pause");
+      play.title = paused ? "Play: start the water and the objects moving" : "Pause: stop the water and the objects";
+      play.setAttribute("aria-pressed", String(!paused));
+    };
+    this._overlayUpdate();
+    this._stage.append(bar);
   }
 
   // ---- frame loop ---------------------------------------------------------------------
@@ -551,12 +670,21 @@ class Demo {
     }
     if (this._firstFrameMs === null) {
       this._firstFrameMs = performance.now() - this._started;
-      // Ready once the browser has composited the first frame (the next animation frame).
-      requestAnimationFrame(() => {
+      // Ready once the GPU has finished the first frame and the browser has composited it
+      // (the animation frame after that): then the pool is on screen, not just on its way.
+      const whenShown = () => {
         if (this._dead) return;
-        this._element.dataset.ready = "true";
-        this._firstFrameResolve();
-      });
+        if (this._core && !this._core.canDraw()) {
+          requestAnimationFrame(whenShown);
+          return;
+        }
+        requestAnimationFrame(() => {
+          if (this._dead) return;
+          this._element.dataset.ready = "true";
+          this._firstFrameResolve();
+        });
+      };
+      requestAnimationFrame(whenShown);
     }
     this._run();
   }
@@ -595,15 +723,23 @@ class Demo {
     for (const cleanup of this._cleanups.splice(0)) cleanup();
     if (this._frame) cancelAnimationFrame(this._frame);
     this._frame = 0;
+    const webgl = this._core && this._core.backend === "webgl2";
     if (this._core) {
       try {
+        this._core.dispose();
         this._core.free();
       } catch (_) {
         // a poisoned module cannot free; the page drops it anyway
       }
     }
     this._core = null;
-    if (this._canvas) this._canvas.remove();
+    if (this._canvas) {
+      // Browsers keep a few WebGL contexts at most: give this one back now, not at GC.
+      const gl = webgl && this._canvas.getContext("webgl2");
+      const lose = gl && gl.getExtension("WEBGL_lose_context");
+      if (lose) lose.loseContext();
+      this._canvas.remove();
+    }
     this._canvas = null;
   }
 
@@ -664,6 +800,25 @@ class Demo {
     return this._table.map((p) => ({ ...p }));
   }
 
+  /** Back to how the page started: its parameters and camera, calm water, the objects in place. */
+  reset() {
+    const core = this._alive();
+    for (const [name, value] of this._startState.params) core.set(name, value);
+    core.setCamera(...this._startState.camera);
+    core.reset();
+    this._refreshControls();
+  }
+
+  /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
+  camera() {
+    return Array.from(this._alive().camera());
+  }
+
+  /** Moves the camera; out-of-range values are clamped (console warning). */
+  setCamera(yaw, pitch, distance) {
+    this._alive().setCamera(Number(yaw), Number(pitch), Number(distance));
+  }
+
   /** Stops the frame loop (and the water) until resume(). */
   pause() {
     this._userPaused = true;
@@ -701,8 +856,67 @@ class Demo {
     this._detachCore();
     this._dead = true;
     live.delete(this);
-    this._shadow.replaceChildren();
-    delete this._element.dataset.backend;
-    delete this._element.dataset.ready;
+    // Only what is still this demo's (a newer mount in the same element keeps its own).
+    if (this._root.parentNode === this._shadow) {
+      this._shadow.replaceChildren();
+      delete this._element.dataset.backend;
+      delete this._element.dataset.ready;
+    }
   }
 }
+
+// ---- <wave-pool> ------------------------------------------------------------------------
+
+/** Mount options whose attribute is spelt in kebab case (`max-fps` for `maxFps`). */
+const CAMEL_OPTIONS = new Set([...Object.keys(DEFAULT_OPTIONS), "meshSize", "causticsSize"]);
+
+/** An attribute's name as a mount option or parameter name: `max-fps` -> `maxFps`, `wave-speed` -> `wave_speed`. */
+function optionName(attribute) {
+  const camel = attribute.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+  return CAMEL_OPTIONS.has(camel) ? camel : attribute.replace(/-/g, "_");
+}
+
+/**
+ * `<wave-pool wave-speed="0.8" objects="duck"></wave-pool>`: a demo whose attributes are the
+ * mount options and parameters. It mounts when connected to a document and frees its GPU
+ * resources when removed, so pages that insert it later (slide decks, single-page sites) work.
+ * Its `demo` property is the handle once `wavepool:ready` has fired (`wavepool:error` else).
+ */
+export class WavePoolElement extends HTMLElement {
+  connectedCallback() {
+    if (this._mounting) return; // moved within the page: keep running
+    const generation = (this._generation = (this._generation || 0) + 1);
+    const options = {};
+    for (const { name, value } of this.attributes) {
+      if (name === "style" || name === "class" || name === "id" || name.startsWith("data-") || name.startsWith("aria-")) continue;
+      options[optionName(name)] = value;
+    }
+    this._mounting = mount(this, options).then(
+      (demo) => {
+        if (generation !== this._generation || !this.isConnected) {
+          demo.destroy(); // removed while it was starting
+          return;
+        }
+        this.demo = demo;
+        this.dispatchEvent(new CustomEvent("wavepool:ready", { detail: demo }));
+      },
+      (error) => {
+        if (generation !== this._generation) return;
+        this.dispatchEvent(new CustomEvent("wavepool:error", { detail: String(error.message || error) }));
+      },
+    );
+  }
+
+  disconnectedCallback() {
+    // A move (removed and put back in the same task) keeps the demo; a removal frees it.
+    queueMicrotask(() => {
+      if (this.isConnected || !this._mounting) return;
+      this._generation++;
+      if (this.demo) this.demo.destroy();
+      this.demo = null;
+      this._mounting = null;
+    });
+  }
+}
+
+if (window.customElements && !customElements.get("wave-pool")) customElements.define("wave-pool", WavePoolElement);

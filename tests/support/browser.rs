@@ -75,6 +75,7 @@ fn content_type(path: &Path) -> &'static str {
         Some("js") => "text/javascript",
         Some("css") => "text/css",
         Some("wasm") => "application/wasm",
+        Some("svg") => "image/svg+xml",
         Some("png") => "image/png",
         Some("jpg" | "jpeg") => "image/jpeg",
         _ => "application/octet-stream",
@@ -85,6 +86,8 @@ fn content_type(path: &Path) -> &'static str {
 /// with `start_with_classic`, the classic WebGL Water at `/classic/`).
 pub struct StaticServer {
     pub port: u16,
+    /// Paths requested so far, in order.
+    requests: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
 }
 
 impl StaticServer {
@@ -106,13 +109,24 @@ impl StaticServer {
         let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
         let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
         let port = listener.local_addr().expect("address").port();
+        let requests = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+        let log = requests.clone();
         std::thread::spawn(move || {
             for stream in listener.incoming().flatten() {
-                let (dist, pages, classic) = (dist.clone(), pages.clone(), classic.clone());
-                std::thread::spawn(move || serve(stream, &dist, &pages, classic.as_deref(), count_frames));
+                let (dist, pages, classic, log) = (dist.clone(), pages.clone(), classic.clone(), log.clone());
+                std::thread::spawn(move || {
+                    if let Some(path) = serve(stream, &dist, &pages, classic.as_deref(), count_frames) {
+                        log.lock().unwrap_or_else(|e| e.into_inner()).push(path);
+                    }
+                });
             }
         });
-        Self { port }
+        Self { port, requests }
+    }
+
+    /// The paths requested so far (query strings included), in order.
+    pub fn requests(&self) -> Vec<String> {
+        self.requests.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
 
     pub fn url(&self, path: &str) -> String {
@@ -128,11 +142,18 @@ fn with_first_script(html: &[u8], script: &str) -> Vec<u8> {
     format!("{}{tag}{}", &text[..at], &text[at..]).into_bytes()
 }
 
-fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path>, count_frames: bool) {
+/// Answers one request; returns the path (with its query) it asked for.
+fn serve(
+    mut stream: TcpStream,
+    dist: &Path,
+    pages: &Path,
+    classic: Option<&Path>,
+    count_frames: bool,
+) -> Option<String> {
     let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
     let mut request = String::new();
     if reader.read_line(&mut request).is_err() {
-        return;
+        return None;
     }
     loop {
         let mut header = String::new();
@@ -171,6 +192,7 @@ fn serve(mut stream: TcpStream, dist: &Path, pages: &Path, classic: Option<&Path
     let _ = stream.flush();
     let mut rest = Vec::new();
     let _ = reader.read_to_end(&mut rest);
+    Some(target.to_owned())
 }
 
 /// What graphics the browser is started with.

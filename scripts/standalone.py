@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Writes dist/wavepool-standalone.html: the demo page as one file that makes no network
+request, so it opens by double-click from disk (file://) and inside <iframe sandbox="allow-scripts">.
+
+Everything Trunk built goes inline: the page's stylesheet as a <style>, and one module script
+holding the wasm module (gzip, then base64; the browser gunzips it with DecompressionStream and
+instantiates it asynchronously), wasm-bindgen's JS (its exports turned into a closure's return
+value), embed.js (which sees WAVEPOOL_INLINE and uses the inline wasm and a constructed
+stylesheet instead of the files next to it) and index.html's own page script.
+
+Usage: scripts/standalone.py DIST   (after `trunk build`; prints the file's size)
+"""
+
+import base64
+import gzip
+import json
+import re
+import sys
+from pathlib import Path
+
+# The single file must stay small enough to mail or upload to a learning platform.
+BUDGET_BYTES = 1_500_000
+# What the demo's JS takes from wasm-bindgen's module.
+CORE_EXPORTS = ["WebDemo", "optionTable", "paramTable", "panicForTests"]
+
+
+def fail(message):
+    sys.exit(f"standalone.py: {message}")
+
+
+def core_as_closure(bindgen_js):
+    """wasm-bindgen's ES module as an expression whose value holds its init and exports."""
+    body, count = re.subn(r"^export (class|function|async function|const|let) ", r"\1 ", bindgen_js, flags=re.M)
+    body, tail = re.subn(r"^export \{[^}]*\};?\s*$", "", body, flags=re.M)
+    if count < len(CORE_EXPORTS) or tail != 1 or re.search(r"^export ", body, flags=re.M):
+        fail("wasm-bindgen's output no longer has the shape this script expects (exports)")
+    names = ", ".join(CORE_EXPORTS)
+    return f"(() => {{\n{body}\nreturn {{ init: __wbg_init, {names} }};\n}})()"
+
+
+def main():
+    if len(sys.argv) != 2:
+        fail("usage: standalone.py DIST")
+    dist = Path(sys.argv[1])
+    read = lambda name: (dist / name).read_text(encoding="utf-8")
+    wasm = (dist / "wavepool_bg.wasm").read_bytes()
+    page = read("index.html")
+
+    embed = read("embed.js")
+    import_line = re.compile(r'^import init, \{ WebDemo, optionTable, paramTable \} from "\./wavepool\.js";$', re.M)
+    if not import_line.search(embed):
+        fail("embed.js no longer imports wavepool.js the way this script expects")
+    embed = import_line.sub("const { init, WebDemo, optionTable, paramTable } = WAVEPOOL_CORE;", embed)
+
+    # index.html: its page script (minus the import, mount is in the same module now), its
+    # body, its title; the stylesheet and Trunk's script tags are replaced by inline ones.
+    scripts = re.findall(r'<script type="module">(.*?)</script>', page, flags=re.S)
+    page_script = next((s for s in scripts if "mount(" in s), None)
+    if page_script is None:
+        fail("index.html has no page script calling mount()")
+    page_script = re.sub(r'^\s*import \{ mount \} from "\./embed\.js";\s*$', "", page_script, flags=re.M)
+    body = re.search(r"<body>(.*?)<script", page, flags=re.S)
+    title = re.search(r"<title>(.*?)</title>", page, flags=re.S)
+    if not body or not title:
+        fail("index.html has no <body> or <title> where expected")
+
+    packed = base64.b64encode(gzip.compress(wasm, compresslevel=9, mtime=0)).decode("ascii")
+    inline = "const WAVEPOOL_INLINE = " + json.dumps({"css": read("wavepool.css"), "wasm": packed}) + ";"
+    module = "\n".join(
+        [
+            inline,
+            "const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";",
+            embed,
+            page_script,
+        ]
+    ).replace("</script", "<\\/script")
+    html = f"""<!doctype html>
+<html lang="en">
+<head>
+  <meta charset="utf-8">
+  <meta name="viewport" content="width=device-width, initial-scale=1">
+  <title>{title.group(1)}</title>
+  <link rel="icon" href="data:,">
+  <style>
+{read("page.css")}
+  </style>
+</head>
+<body>{body.group(1).rstrip()}
+  <script type="module">
+{module}
+  </script>
+</body>
+</html>
+"""
+    out = dist / "wavepool-standalone.html"
+    out.write_text(html, encoding="utf-8")
+    size = out.stat().st_size
+    print(f"    {out}: {size} bytes (wasm {len(wasm)} -> {len(packed)} base64 of gzip; budget {BUDGET_BYTES})")
+    if size > BUDGET_BYTES:
+        fail(f"{out} is {size} bytes, over the {BUDGET_BYTES}-byte budget")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,301 @@
+//! The demo in a course page, in headless Chromium: a strict Content-Security-Policy runs it
+//! with no violation and one without 'wasm-unsafe-eval' gets a message naming that directive;
+//! with prefers-reduced-motion the demo starts paused and still until play is pressed; the
+//! fullscreen button is there only where the page allows fullscreen and fills the screen;
+//! Reset returns to the page's own start (parameters and camera), not the table's defaults;
+//! Enter on the focused pool makes a drop. Needs `dist/`.
+
+// One browser at a time, held across awaits: each test runs on its own thread and runtime.
+#![allow(clippy::await_holding_lock)]
+
+#[path = "support/browser.rs"]
+mod support;
+
+use std::sync::Mutex;
+use std::time::Duration;
+
+use serde_json::{json, Value};
+use support::{canvas_rect_js, changed_fraction, Browser, Graphics, Rect, StaticServer};
+
+static SERIAL: Mutex<()> = Mutex::new(());
+
+const READY: Duration = Duration::from_secs(120);
+
+fn serial() -> std::sync::MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The shown message of the demo in `#pool` ('' when hidden).
+const MESSAGE_JS: &str = "const m = document.querySelector('#pool').shadowRoot.querySelector('.message');
+                          return m && !m.hidden ? m.textContent : '';";
+
+/// Clicks the centre of an element of the demo's shadow root (real pointer events).
+async fn click_in_demo(browser: &Browser, selector: &str) {
+    let r = browser
+        .js(&format!(
+            "const e = document.querySelector('#pool').shadowRoot.querySelector('{selector}');
+             if (!e) return null;
+             e.scrollIntoView({{ block: 'center' }});
+             const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];"
+        ))
+        .await;
+    let (x, y) = (r[0].as_f64().expect("element found"), r[1].as_f64().expect("element found"));
+    browser.click_at(x, y).await;
+}
+
+#[tokio::test]
+async fn a_strict_content_security_policy_runs_the_demo_and_one_without_wasm_says_what_it_needs() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/test/csp.html?quality=1")).await;
+    browser.wait_ready("#pool", READY).await;
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    let shot = browser.screenshot().await;
+    let spread = shot.luma_spread(rect);
+    if let Some(dir) = std::env::var_os("WAVEPOOL_DUMP_FRAMES") {
+        let path = std::path::Path::new(&dir).join("csp.png");
+        let mut encoder = png::Encoder::new(std::fs::File::create(&path).expect("dump"), shot.width, shot.height);
+        encoder.set_color(png::ColorType::Rgba);
+        encoder.write_header().expect("png").write_image_data(&shot.rgba).expect("png");
+        println!("rect {rect:?}, screenshot in {}", path.display());
+    }
+    let violations = browser.js("return window.__violations;").await;
+    println!("strict CSP: luma spread {spread:.1}, violations {violations}");
+    assert!(spread > 12.0, "the canvas looks flat under the strict policy");
+    assert_eq!(violations, json!([]), "policy violations");
+
+    browser.goto(&server.url("/test/csp-no-wasm.html")).await;
+    let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
+    let message = browser.js(MESSAGE_JS).await;
+    println!("without 'wasm-unsafe-eval': {message}");
+    assert!(failed, "no error state: {message}");
+    assert!(message.as_str().unwrap_or("").contains("'wasm-unsafe-eval'"), "message: {message}");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn with_reduced_motion_the_demo_starts_still_until_play_is_pressed() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    let reduce = json!({ "features": [{ "name": "prefers-reduced-motion", "value": "reduce" }] });
+    browser.cdp("Emulation.setEmulatedMedia", reduce).await;
+    // The default scene (the objects fall in at the start) at a fixed resolution.
+    browser.goto(&server.url("/?quality=1")).await;
+    browser.wait_ready("#pool", READY).await;
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    let first = browser.screenshot().await;
+    let before = browser.js("return window.demo.stats();").await;
+    tokio::time::sleep(Duration::from_secs(2)).await;
+    let second = browser.screenshot().await;
+    let after = browser.js("return { s: window.demo.stats(), paused: window.demo.get('paused') };").await;
+    let still = changed_fraction(&first, &second, rect, 4);
+    println!(
+        "reduced motion: paused {}, simulated {} s, {:.2}% of the canvas changed over 2 s, sphere {} -> {}",
+        after["paused"],
+        after["s"]["simTime"],
+        still * 100.0,
+        before["spherePosition"],
+        after["s"]["spherePosition"]
+    );
+    assert_eq!(after["paused"], 1.0, "not paused at the start");
+    assert_eq!(after["s"]["simTime"], 0.0, "the water moved");
+    assert_eq!(before["spherePosition"], after["s"]["spherePosition"], "the sphere moved");
+    assert!(still < 0.001, "{:.2}% of the canvas changed while still", still * 100.0);
+    let label = browser.js("return document.querySelector('#pool').shadowRoot.querySelector('.play').ariaLabel;").await;
+    assert_eq!(label, "Play");
+    click_in_demo(&browser, ".overlay .play").await;
+    let moving = browser.wait_for("window.demo.stats().simTime > 0.5", Duration::from_secs(30)).await;
+    let label = browser.js("return document.querySelector('#pool').shadowRoot.querySelector('.play').ariaLabel;").await;
+    assert!(moving, "play did not start the water");
+    assert_eq!(label, "Pause");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn fullscreen_is_offered_only_where_the_page_allows_it_and_fills_the_screen() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    // In an iframe whose page does not allow fullscreen (allow="fullscreen 'none'", as for a
+    // cross-origin frame without allow="fullscreen"): no button.
+    browser
+        .goto(&server.url("/test/frame.html?width=640&height=600&allow=fullscreen%20'none'&src=/%3Fquality%3D0.5"))
+        .await;
+    let framed = "const d = document.getElementById('frame').contentDocument; const h = d && d.querySelector('#pool');
+                  if (!h || h.dataset.ready !== 'true') return null;
+                  return { enabled: d.fullscreenEnabled, button: !!h.shadowRoot.querySelector('.fullscreen'),
+                           play: !!h.shadowRoot.querySelector('.play') };";
+    let mut state = Value::Null;
+    for _ in 0..600 {
+        state = browser.js(framed).await;
+        if !state.is_null() {
+            break;
+        }
+        tokio::time::sleep(Duration::from_millis(200)).await;
+    }
+    println!("in a frame without permission: {state}");
+    assert_eq!(state, json!({ "enabled": false, "button": false, "play": true }));
+    // The page itself: the button is there and a click fills the screen with the pool.
+    browser.goto(&server.url("/?quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    click_in_demo(&browser, ".overlay .fullscreen").await;
+    let full = browser
+        .wait_for("document.fullscreenElement === document.querySelector('#pool')", Duration::from_secs(10))
+        .await;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let sizes =
+        browser.js(&canvas_rect_js("#pool").replace("return {", "return { vw: innerWidth, vh: innerHeight,")).await;
+    println!("fullscreen: {full}, canvas {sizes}");
+    assert!(full, "the pool did not go fullscreen");
+    let f = |k: &str| sizes[k].as_f64().unwrap();
+    assert!(
+        f("width") >= f("vw") - 1.0 && f("height") >= 0.9 * f("vh"),
+        "the canvas does not fill the screen: {sizes}"
+    );
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn reset_returns_to_the_pages_own_start_and_enter_makes_a_drop() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/?objects=none&quality=1&wave_speed=0.8&camera=30,20,5&drop_radius=0.1&drop_strength=0.04")).await;
+    browser.wait_ready("#pool", READY).await;
+    let start = browser.js("return { speed: window.demo.get('wave_speed'), camera: window.demo.camera() };").await;
+    assert_eq!(start["speed"], 0.8);
+    let camera: Vec<f64> = start["camera"].as_array().expect("camera").iter().filter_map(Value::as_f64).collect();
+    assert_eq!(camera, [30.0, 20.0, 5.0], "the camera option");
+    // Enter on the focused pool: a drop in the middle.
+    browser.js("document.querySelector('#pool').shadowRoot.querySelector('canvas').focus(); return true;").await;
+    {
+        use fantoccini::actions::{InputSource, KeyAction, KeyActions};
+        let enter = KeyActions::new("keyboard".into())
+            .then(KeyAction::Down { value: '\u{E007}' })
+            .then(KeyAction::Up { value: '\u{E007}' });
+        browser.client.perform_actions(enter).await.expect("press Enter");
+    }
+    let dropped = browser.wait_for("window.demo.stats().maxAbsHeight > 2e-3", Duration::from_secs(20)).await;
+    assert!(dropped, "Enter made no drop: {}", browser.js("return window.demo.stats();").await);
+    // Change things, then Reset.
+    browser.js("window.demo.set('wave_speed', 1.5); window.demo.setCamera(-90, 60, 8); return true;").await;
+    click_in_demo(&browser, ".buttons button").await;
+    let after = browser.js("return { speed: window.demo.get('wave_speed'), camera: window.demo.camera() };").await;
+    let calm = browser.wait_for("window.demo.stats().maxAbsHeight < 1e-4", Duration::from_secs(10)).await;
+    println!("start {start}, after Reset {after}, calm again: {calm}");
+    assert_eq!(after, start, "Reset did not return to the page's start");
+    assert!(calm, "the water is not calm after Reset: {}", browser.js("return window.demo.stats();").await);
+    browser.close().await;
+}
+
+/// Inserts a `<wave-pool>` with `attributes` into the test page, waits for it to be ready
+/// (or fail), and returns whether it drew.
+const INSERT_JS: &str = r#"
+const attributes = arguments[0];
+await customElements.whenDefined('wave-pool');
+const el = document.createElement('wave-pool');
+for (const [k, v] of Object.entries(attributes)) el.setAttribute(k, v);
+el.style.width = '320px';
+el.style.height = '240px';
+const result = new Promise((resolve) => {
+  el.addEventListener('wavepool:ready', (e) => resolve({ ready: true, fps: 0, backend: e.detail.stats().backend }));
+  el.addEventListener('wavepool:error', (e) => resolve({ ready: false, error: e.detail }));
+});
+document.getElementById('host').append(el);
+const r = await result;
+if (r.ready) {
+  await new Promise((done) => setTimeout(done, 300));
+  r.simTime = el.demo.stats().simTime;
+}
+return r;
+"#;
+
+/// `<wave-pool>` inserted and removed 20 times on each backend: each insertion runs (reaches
+/// its first frame and simulates), each removal gives its GPU context back (WebGL2:
+/// `WEBGL_lose_context`, WebGPU: `GPUDevice.destroy`), so the count of live contexts does not
+/// grow; attributes are the options and parameters (`wave-speed`, `max-fps`).
+#[tokio::test]
+async fn the_wave_pool_element_runs_each_time_it_is_inserted_and_frees_its_context_when_removed() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/test/insert.html")).await;
+    for backend in ["webgl2", "webgpu"] {
+        let attributes = json!({ "backend": backend, "objects": "none", "quality": "0.5", "controls": "false",
+                                 "wave-speed": "0.8", "max-fps": "30" });
+        let insert = INSERT_JS.replace("arguments[0]", &attributes.to_string());
+        let mut most_live = 0;
+        for i in 0..20 {
+            let r = browser.js_async(&insert).await;
+            assert_eq!(r["ready"], true, "{backend}: insertion {i} did not run: {r}");
+            assert_eq!(r["backend"], backend, "{backend}: insertion {i}");
+            assert!(r["simTime"].as_f64().unwrap_or(0.0) > 0.0, "{backend}: insertion {i} does not simulate: {r}");
+            let speed = browser.js("return document.querySelector('wave-pool').demo.get('wave_speed');").await;
+            assert_eq!(speed, 0.8, "the wave-speed attribute");
+            browser.js("document.querySelector('wave-pool').remove(); return true;").await;
+            tokio::time::sleep(Duration::from_millis(100)).await;
+            let gpu = browser.js("return window.__gpu;").await;
+            let n = |k: &str| gpu[k].as_i64().unwrap_or(0);
+            let live = match backend {
+                "webgl2" => n("webgl2") - n("lostWebgl2"),
+                _ => n("webgpu") - n("destroyedDevices"),
+            };
+            most_live = most_live.max(live);
+        }
+        let gpu = browser.js("return window.__gpu;").await;
+        println!("{backend}: 20 insertions ran; GPU contexts {gpu}; at most {most_live} live after a removal");
+        assert!(most_live <= 0, "{backend}: {most_live} GPU contexts still live after removals: {gpu}");
+    }
+    browser.close().await;
+}
+
+/// The single file `dist/wavepool-standalone.html` (at most 1.5 MB): opened from disk
+/// (`file://`) it reaches its first frame with a picture and fetches nothing (no resource
+/// entries), on WebGPU and WebGL2; inside `<iframe sandbox="allow-scripts">` (an opaque
+/// origin) it draws, posts `wavepool:ready` to the parent, and the server sees no request but
+/// the two pages.
+#[tokio::test]
+async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_network_requests() {
+    let _g = serial();
+    let file = support::dist_dir().join("wavepool-standalone.html");
+    let size = std::fs::metadata(&file).map(|m| m.len()).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    assert!(size <= 1_500_000, "{} is {size} bytes", file.display());
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    for backend in ["webgpu", "webgl2"] {
+        browser.goto(&format!("file://{}?backend={backend}&quality=1", file.display())).await;
+        let took = browser.wait_ready("#pool", READY).await;
+        let r = browser
+            .js("return { backend: window.demo.stats().backend, resources: performance.getEntriesByType('resource').map((e) => e.name) };")
+            .await;
+        let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+        let spread = browser.screenshot().await.luma_spread(rect);
+        println!(
+            "file:// on {backend}: {size} bytes, ready in {took:?}, luma spread {spread:.1}, fetched {}",
+            r["resources"]
+        );
+        assert_eq!(r["backend"], backend);
+        assert_eq!(r["resources"], json!([]), "the single file fetched something");
+        assert!(spread > 12.0, "the canvas looks flat from disk on {backend}");
+    }
+    let before = server.requests().len();
+    browser
+        .goto(&server.url("/test/sandboxed.html?src=/wavepool-standalone.html%3Fbackend%3Dwebgl2%26quality%3D1"))
+        .await;
+    let ready = browser.wait_for("window.__messages.some((m) => m && m.type === 'wavepool:ready')", READY).await;
+    let messages = browser.js("return window.__messages;").await;
+    let rect = Rect::from_js(&browser.js("const r = document.getElementById('frame').getBoundingClientRect(); return { left: r.left, top: r.top, width: r.width, height: 300 };").await);
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let spread = browser.screenshot().await.luma_spread(Rect { y: rect.y + 60, ..rect });
+    let requests = server.requests()[before..].to_vec();
+    println!("sandboxed frame: messages {messages}, luma spread {spread:.1}, requests {requests:?}");
+    assert!(ready, "no wavepool:ready from the sandboxed frame: {messages}");
+    assert!(spread > 12.0, "the sandboxed frame looks flat");
+    assert!(
+        requests.iter().all(|p| p.starts_with("/test/sandboxed.html") || p.starts_with("/wavepool-standalone.html")),
+        "requests beyond the two pages: {requests:?}"
+    );
+    browser.close().await;
+}
