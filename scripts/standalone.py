@@ -21,7 +21,7 @@ from pathlib import Path
 # The single file must stay small enough to mail or upload to a learning platform.
 BUDGET_BYTES = 1_500_000
 # What the demo's JS takes from wasm-bindgen's module.
-CORE_EXPORTS = ["WebDemo", "optionTable", "paramTable", "panicForTests"]
+CORE_EXPORTS = ["WebDemo", "optionTable", "paramTable", "presetTable", "panicForTests"]
 
 
 def fail(message):
@@ -47,10 +47,10 @@ def main():
     page = read("index.html")
 
     embed = read("embed.js")
-    import_line = re.compile(r'^import init, \{ WebDemo, optionTable, paramTable \} from "\./wavepool\.js";$', re.M)
+    import_line = re.compile(r'^import init, \{ ([\w, ]+) \} from "\./wavepool\.js";$', re.M)
     if not import_line.search(embed):
         fail("embed.js no longer imports wavepool.js the way this script expects")
-    embed = import_line.sub("const { init, WebDemo, optionTable, paramTable } = WAVEPOOL_CORE;", embed)
+    embed = import_line.sub(r"const { init, \1 } = WAVEPOOL_CORE;", embed)
 
     # index.html: its page script (minus the import, mount is in the same module now), its
     # body, its title; the stylesheet and Trunk's script tags are replaced by inline ones.

@@ -10,6 +10,7 @@ pub mod gpu;
 pub mod headless;
 pub mod params;
 pub mod physics;
+pub mod presets;
 pub mod quality;
 pub mod render;
 pub mod scene;

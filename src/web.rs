@@ -46,6 +46,36 @@ pub fn option_table() -> js_sys::Array {
         .collect()
 }
 
+/// The presets (`src/presets.rs`) as an array of `{ name, label, help, values: [[name,
+/// value], ...], camera: [yaw, pitch, distance] | null }`.
+#[wasm_bindgen(js_name = presetTable)]
+pub fn preset_table() -> js_sys::Array {
+    crate::presets::PRESETS
+        .iter()
+        .map(|p| {
+            let object = js_sys::Object::new();
+            set(&object, "name", p.name);
+            set(&object, "label", p.label);
+            set(&object, "help", p.help);
+            let values: js_sys::Array = p
+                .values
+                .iter()
+                .map(|&(name, value)| {
+                    JsValue::from(
+                        [JsValue::from_str(name), JsValue::from(to_js_number(value))].iter().collect::<js_sys::Array>(),
+                    )
+                })
+                .collect();
+            set(&object, "values", values);
+            let camera = p.camera.map_or(JsValue::NULL, |c| {
+                JsValue::from(c.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>())
+            });
+            set(&object, "camera", camera);
+            JsValue::from(object)
+        })
+        .collect()
+}
+
 /// Panics on purpose, for the test that a panic shows up in the page.
 #[doc(hidden)]
 #[wasm_bindgen(js_name = panicForTests)]

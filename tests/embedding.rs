@@ -301,3 +301,69 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
     );
     browser.close().await;
 }
+
+/// Presets, share links and the embed page: `preset=calm` gives the preset's values and view
+/// and the page's own options override it; the Preset select starts over from another; a share
+/// link made after changes restores the parameters and the camera in a new load; the embed
+/// code's page (`embed.html`) fills its frame and posts `wavepool:ready` and its height.
+#[tokio::test]
+async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    let state = "const d = window.demo; return { objects: d.get('objects'), damping: d.get('damping'),
+                 wave_speed: d.get('wave_speed'), drop_strength: d.get('drop_strength'),
+                 camera: d.camera().map((v) => Math.round(v * 10) / 10) };";
+    browser.goto(&server.url("/?preset=calm&drop_strength=0.01&quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let calm = browser.js(state).await;
+    println!("preset=calm&drop_strength=0.01: {calm}");
+    assert_eq!((calm["objects"].as_f64(), calm["damping"].as_f64()), (Some(0.0), Some(2.0)), "the preset's values");
+    assert_eq!(calm["drop_strength"].as_f64(), Some(0.01), "the page's own option over the preset's");
+    assert_eq!(calm["camera"], json!([-25, 50, 3.6]), "the preset's view");
+
+    let select = "const s = document.querySelector('#pool').shadowRoot.querySelector('.preset select');
+                  s.value = 'busy'; s.dispatchEvent(new Event('change')); return s.value;";
+    assert_eq!(browser.js(select).await, "busy");
+    let busy = browser.js(state).await;
+    println!("Preset select -> busy: {busy}");
+    assert_eq!((busy["objects"].as_f64(), busy["wave_speed"].as_f64()), (Some(3.0), Some(0.9)));
+
+    browser.js("window.demo.set('wave_speed', 1.3); window.demo.setCamera(40, 25, 6); return true;").await;
+    let changed = browser.js(state).await;
+    let link = browser.js("return window.demo.shareLink();").await.as_str().expect("a link").to_owned();
+    println!("share link: {link}");
+    browser.goto(&link).await;
+    browser.wait_ready("#pool", READY).await;
+    let restored = browser.js(state).await;
+    assert_eq!(restored, changed, "the share link did not restore the demo");
+
+    let code = browser.js("return window.demo.embedCode();").await.as_str().expect("embed code").to_owned();
+    let src = code.split("src=\"").nth(1).and_then(|rest| rest.split('"').next()).expect("an iframe src");
+    println!("embed code: {code}");
+    let encoded: String = src
+        .bytes()
+        .map(|b| if b.is_ascii_alphanumeric() { (b as char).to_string() } else { format!("%{b:02X}") })
+        .collect();
+    browser.goto(&server.url(&format!("/test/sandboxed.html?sandbox=none&src={encoded}"))).await;
+    let ready = browser.wait_for("window.__messages.some((m) => m && m.type === 'wavepool:ready')", READY).await;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let messages = browser.js("return window.__messages;").await;
+    let inside = browser
+        .js("const d = document.getElementById('frame').contentWindow.demo;
+             return { camera: d.camera().map((v) => Math.round(v * 10) / 10), wave_speed: d.get('wave_speed'),
+                      canvas: d.stats().height, frame: document.getElementById('frame').clientHeight,
+                      controls: !!document.getElementById('frame').contentDocument.querySelector('#pool').shadowRoot.querySelector('.controls') };")
+        .await;
+    println!("embed.html in a frame: messages {messages}, inside {inside}");
+    assert!(ready, "embed.html posted no wavepool:ready: {messages}");
+    let height = messages.as_array().unwrap().iter().filter(|m| m["type"] == "wavepool:height").last().cloned();
+    assert_eq!(height.and_then(|m| m["height"].as_f64()), Some(600.0), "wanted height for an 800 px wide frame");
+    assert_eq!((inside["camera"].clone(), inside["wave_speed"].as_f64()), (changed["camera"].clone(), Some(1.3)));
+    assert_eq!(inside["controls"], false, "embed.html shows the pool alone");
+    assert!(
+        inside["canvas"].as_f64().unwrap() >= 0.95 * inside["frame"].as_f64().unwrap(),
+        "the pool does not fill the frame"
+    );
+    browser.close().await;
+}

@@ -3,7 +3,7 @@
 // in a shadow root, so the host page's CSS and ours never meet; nothing is put on `window`.
 // The simulation and rendering are Rust (wavepool.js + wavepool_bg.wasm, next to this file).
 
-import init, { WebDemo, optionTable, paramTable } from "./wavepool.js";
+import init, { WebDemo, optionTable, paramTable, presetTable } from "./wavepool.js";
 
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
@@ -63,7 +63,14 @@ export const DEFAULT_OPTIONS = Object.freeze({
   aspect: 4 / 3, // width / height when the element has no height of its own
   maxFps: 0, // cap on drawn frames per second (1-240; 0: as many as the browser and GPU give)
   camera: null, // "yaw,pitch,distance" (degrees, degrees, m) to start from; null: the default view
+  preset: null, // a named starting state from presets(): its values, then the page's own options
 });
+
+/** The presets: named starting states, each parameter values and maybe a camera. */
+export async function presets() {
+  await loadCore();
+  return presetTable();
+}
 
 /** The parameter table: name, label, group, unit, kind, min, max, step, default, help. */
 export async function params() {
@@ -122,6 +129,10 @@ function readOptions(options, table) {
       out.maxPixels = clampNumber(key, value, 64 * 64, 8192 * 8192, DEFAULT_OPTIONS.maxPixels);
     } else if (key === "maxFps") {
       out.maxFps = Number(value) === 0 ? 0 : clampNumber(key, value, 1, 240, DEFAULT_OPTIONS.maxFps);
+    } else if (key === "preset") {
+      const preset = presetTable().find((p) => p.name === String(value).toLowerCase());
+      if (preset) out.preset = preset;
+      else warn(`preset "${value}" is not one of ${presetTable().map((p) => p.name).join(", ")}; ignored`);
     } else if (key === "camera") {
       const v = (Array.isArray(value) ? value : String(value).split(",")).map(Number);
       if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
@@ -214,6 +225,12 @@ export async function mount(element, options = {}) {
     // prefers-reduced-motion: start still (nothing falls, no waves) until the visitor presses
     // play, unless the page asked for `paused` itself.
     if (!("paused" in opts.params) && matchMedia("(prefers-reduced-motion: reduce)").matches) opts.params.paused = 1;
+    handle._defaultCamera = handle._core.camera();
+    // A preset's values first; the page's own options override them.
+    if (opts.preset) {
+      for (const [name, value] of opts.preset.values) if (!(name in opts.params)) handle.set(name, value);
+      if (opts.preset.camera && !opts.camera) handle._core.setCamera(...opts.preset.camera);
+    }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.camera) handle._core.setCamera(...opts.camera);
     // What "Reset" returns to: this page's own start, not the table's defaults.
@@ -503,6 +520,7 @@ class Demo {
     const panel = document.createElement("div");
     panel.className = "panel";
     drawer.append(summary, panel);
+    panel.append(this._presetRow());
     const groups = new Map();
     for (const p of this._table) {
       if (!groups.has(p.group)) {
@@ -531,8 +549,47 @@ class Demo {
     button("Defaults", "Set every parameter to its default", () => {
       for (const p of this._table) this.set(p.name, p.default);
     });
+    const said = document.createElement("output");
+    said.className = "said";
+    said.setAttribute("aria-live", "polite");
+    const copy = async (what, text) => {
+      try {
+        await navigator.clipboard.writeText(text);
+        said.textContent = `${what} copied.`;
+      } catch (_) {
+        said.textContent = text; // no clipboard here (an insecure page, a sandbox): shown to copy by hand
+      }
+    };
+    button("Share link", "Copy a link that opens this pool with these parameters and this view", () =>
+      copy("Link", this.shareLink()),
+    );
+    button("Copy embed code", "Copy an <iframe> that shows this pool, as it is now, in another page", () =>
+      copy("Embed code", this.embedCode()),
+    );
+    buttons.append(said);
     panel.append(buttons);
     this._root.append(drawer);
+  }
+
+  // The Preset select: a named starting state from the core's table.
+  _presetRow() {
+    const row = document.createElement("div");
+    row.className = "row preset";
+    const label = document.createElement("label");
+    label.htmlFor = `wavepool-${this._id}-preset`;
+    label.textContent = "Preset";
+    const select = document.createElement("select");
+    select.id = label.htmlFor;
+    select.append(new Option("choose…", ""));
+    for (const p of presetTable()) {
+      const option = new Option(p.label, p.name);
+      option.title = p.help;
+      select.append(option);
+    }
+    if (this._opts.preset) select.value = this._opts.preset.name;
+    select.addEventListener("change", () => select.value && this.applyPreset(select.value));
+    row.append(label, select);
+    return row;
   }
 
   _control(p) {
@@ -807,6 +864,46 @@ class Demo {
     core.setCamera(...this._startState.camera);
     core.reset();
     this._refreshControls();
+  }
+
+  /** Starts over from a preset (by name): defaults, then its values and view; calm water. */
+  applyPreset(name) {
+    const core = this._alive();
+    const preset = presetTable().find((p) => p.name === String(name).toLowerCase());
+    if (!preset) throw new Error(`wavepool: no preset "${name}"; presets: ${presetTable().map((p) => p.name).join(", ")}`);
+    for (const p of this._table) if (p.group !== "Display") core.set(p.name, p.default);
+    for (const [n, v] of preset.values) core.set(n, v);
+    core.setCamera(...(preset.camera || this._defaultCamera));
+    core.reset();
+    this._refreshControls();
+  }
+
+  /** The query string of this demo as it is now: parameters that differ from the defaults, and the camera. */
+  _query() {
+    const query = new URLSearchParams();
+    for (const p of this._table) {
+      const v = this.get(p.name);
+      if (v === p.default) continue;
+      const i = p.kind === "choice" ? p.choices.indexOf(v) : -1;
+      query.set(p.name, i >= 0 && p.choiceNames[i] ? p.choiceNames[i] : String(v));
+    }
+    query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
+    return query.toString().replace(/%2C/g, ",");
+  }
+
+  /** A link that opens the demo's page with this demo's parameters and view. */
+  shareLink() {
+    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./index.html", import.meta.url).href;
+    return `${page}?${this._query()}`;
+  }
+
+  /** An <iframe> showing this demo as it is now (the pool alone, `embed.html`; the single file when this is it). */
+  embedCode() {
+    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./embed.html", import.meta.url).href;
+    return (
+      `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
+      `title="Interactive water pool (wavepool)"></iframe>`
+    );
   }
 
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */

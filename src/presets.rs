@@ -1,0 +1,86 @@
+//! Named starting states for lessons: each is only parameter values (and optionally a camera),
+//! so a share link is a preset too. Chosen by `preset=` in the URL, a `<wave-pool preset>`
+//! attribute, `mount({ preset })` or the Preset select of the controls.
+
+/// A named set of parameter values (by the parameter table's names) and a camera to start from.
+#[derive(Clone, Copy, Debug)]
+pub struct Preset {
+    /// What `preset=` takes.
+    pub name: &'static str,
+    pub label: &'static str,
+    /// What a student sees, in a sentence.
+    pub help: &'static str,
+    /// Parameter values; the parameters not named keep their defaults.
+    pub values: &'static [(&'static str, f32)],
+    /// Camera yaw, pitch (degrees) and distance (m), or the default view.
+    pub camera: Option<[f32; 3]>,
+}
+
+pub const PRESETS: &[Preset] = &[
+    Preset {
+        name: "classic",
+        label: "The classic look",
+        help: "One ball that stays where it is put (G drops it), reflecting walls, caustics: the pool as the classic WebGL Water shows it.",
+        values: &[("objects", 1.0), ("gravity", 0.0), ("absorbing_walls", 0.0), ("caustics", 1.0), ("damping", 0.5)],
+        camera: None,
+    },
+    Preset {
+        name: "calm",
+        label: "Calm water",
+        help: "Nothing in the pool, small drops, waves that die out quickly at absorbing walls: a quiet surface to study one ripple at a time.",
+        values: &[("objects", 0.0), ("damping", 2.0), ("absorbing_walls", 1.0), ("drop_strength", 0.006)],
+        camera: Some([-25.0, 50.0, 3.6]),
+    },
+    Preset {
+        name: "busy",
+        label: "A busy pool",
+        help: "The ball and the duck floating on fast, lively water with big drops and reflecting walls.",
+        values: &[
+            ("objects", 3.0),
+            ("gravity", 1.0),
+            ("wave_speed", 0.9),
+            ("damping", 0.1),
+            ("drop_radius", 0.07),
+            ("drop_strength", 0.03),
+            ("absorbing_walls", 0.0),
+        ],
+        camera: None,
+    },
+];
+
+/// The preset called `name`.
+pub fn find(name: &str) -> Option<&'static Preset> {
+    PRESETS.iter().find(|p| p.name.eq_ignore_ascii_case(name))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::camera::{DISTANCE_RANGE, PITCH_RANGE};
+    use crate::params;
+
+    #[test]
+    fn every_preset_names_known_parameters_with_values_in_their_ranges() {
+        for preset in PRESETS {
+            for &(name, value) in preset.values {
+                let spec = params::find(name).unwrap_or_else(|| panic!("{}: unknown parameter {name}", preset.name));
+                assert_eq!(
+                    spec.sanitise(value),
+                    value,
+                    "{}: {name} = {value} is outside its range or choices",
+                    preset.name
+                );
+            }
+            if let Some([_, pitch, distance]) = preset.camera {
+                assert!((PITCH_RANGE.0..=PITCH_RANGE.1).contains(&pitch), "{}: pitch {pitch}", preset.name);
+                assert!(
+                    (DISTANCE_RANGE.0..=DISTANCE_RANGE.1).contains(&distance),
+                    "{}: distance {distance}",
+                    preset.name
+                );
+            }
+            println!("{}: {} values", preset.name, preset.values.len());
+        }
+        assert!(find("CALM").is_some() && find("nothing").is_none());
+    }
+}
