@@ -357,7 +357,7 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
         .await;
     println!("embed.html in a frame: messages {messages}, inside {inside}");
     assert!(ready, "embed.html posted no wavepool:ready: {messages}");
-    let height = messages.as_array().unwrap().iter().filter(|m| m["type"] == "wavepool:height").last().cloned();
+    let height = messages.as_array().unwrap().iter().rfind(|m| m["type"] == "wavepool:height").cloned();
     assert_eq!(height.and_then(|m| m["height"].as_f64()), Some(600.0), "wanted height for an 800 px wide frame");
     assert_eq!((inside["camera"].clone(), inside["wave_speed"].as_f64()), (changed["camera"].clone(), Some(1.3)));
     assert_eq!(inside["controls"], false, "embed.html shows the pool alone");
