@@ -208,8 +208,9 @@ async fn controls_change_parameters() {
     let _g = serial();
     let (browser, _server) = open_demo(Graphics::WebGl2Only, "", "webgl2").await;
     let table = browser.js("return window.demo.params().map((p) => p.name);").await;
-    let count =
-        browser.js("return document.querySelector('#pool').shadowRoot.querySelectorAll('input, select').length;").await;
+    let count = browser
+        .js("return document.querySelector('#pool').shadowRoot.querySelectorAll('input[name], select[name]').length;")
+        .await;
     assert_eq!(table.as_array().unwrap().len() as u64, count.as_u64().unwrap(), "one input per parameter");
     for name in [
         "wave_speed",
