@@ -315,6 +315,10 @@ async fn no_gpu_shows_a_message_in_the_page() {
         .await;
     assert!(failed, "no error state; message: {message}");
     assert!(message.as_str().unwrap().contains("neither WebGPU nor WebGL2"), "message: {message}");
+    // Behind the message, a still picture of the pool (web/no-gpu.png) instead of an empty box.
+    let loaded = "const i = document.querySelector('#pool').shadowRoot.querySelector('img.fallback');
+                  return i && i.complete ? i.naturalWidth : 0;";
+    assert!(browser.wait_for(&format!("(() => {{ {loaded} }})() > 0"), Duration::from_secs(10)).await, "no picture");
     browser.close().await;
 }
 

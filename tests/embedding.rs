@@ -367,3 +367,74 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
     );
     browser.close().await;
 }
+
+/// Printing: before a print each demo puts a still of its current frame (a 2D canvas, a real
+/// picture: luma spread over 12) over its GPU canvas; with print media the GPU canvas and the
+/// buttons are hidden and the still shown; after the print the still goes.
+#[tokio::test]
+async fn printing_swaps_in_a_still_of_the_current_frame() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/?quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    browser.js("window.dispatchEvent(new Event('beforeprint')); return true;").await;
+    let still = browser
+        .js("const s = document.querySelector('#pool').shadowRoot.querySelector('canvas.print-shot');
+             if (!s) return null;
+             const px = s.getContext('2d').getImageData(0, 0, s.width, s.height).data;
+             let n = 0, sum = 0, sq = 0;
+             for (let i = 0; i < px.length; i += 4 * 16) { const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2]; n++; sum += l; sq += l * l; }
+             const mean = sum / n; return { width: s.width, height: s.height, spread: Math.sqrt(sq / n - mean * mean) };")
+        .await;
+    assert!(!still.is_null(), "no still before printing");
+    browser.cdp("Emulation.setEmulatedMedia", json!({ "media": "print" })).await;
+    let shown = browser
+        .js("const r = document.querySelector('#pool').shadowRoot;
+             const display = (e) => getComputedStyle(e).display;
+             return { gpu: display(r.querySelector('canvas:not(.print-shot)')), still: display(r.querySelector('.print-shot')),
+                      buttons: display(r.querySelector('.overlay')) };")
+        .await;
+    browser.cdp("Emulation.setEmulatedMedia", json!({ "media": "" })).await;
+    browser.js("window.dispatchEvent(new Event('afterprint')); return true;").await;
+    let gone = browser.js("return !document.querySelector('#pool').shadowRoot.querySelector('.print-shot');").await;
+    println!("print: still {still}, with print media {shown}, removed after: {gone}");
+    assert!(still["spread"].as_f64().unwrap() > 12.0, "the still is flat: {still}");
+    assert_eq!(shown, json!({ "gpu": "none", "still": "block", "buttons": "none" }));
+    assert_eq!(gone, true);
+    browser.close().await;
+}
+
+/// Keyboard: Tab from the top of the page reaches the pool, its buttons and every control.
+#[tokio::test]
+async fn tab_reaches_the_pool_its_buttons_and_every_control() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/?quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let focusable = browser
+        .js("const r = document.querySelector('#pool').shadowRoot;
+             return [...r.querySelectorAll('canvas:not(.print-shot), button, input, select, summary')].length;")
+        .await
+        .as_u64()
+        .unwrap();
+    let focused = "const a = document.activeElement; const r = a && a.shadowRoot;
+                   const e = r ? r.activeElement : null;
+                   return e ? e.tagName.toLowerCase() + ':' + (e.name || e.className || e.textContent.trim().slice(0, 20)) : null;";
+    let mut reached = std::collections::BTreeSet::new();
+    for _ in 0..(focusable + 5) {
+        use fantoccini::actions::{InputSource, KeyAction, KeyActions};
+        let tab = KeyActions::new("keyboard".into())
+            .then(KeyAction::Down { value: '\u{E004}' })
+            .then(KeyAction::Up { value: '\u{E004}' });
+        browser.client.perform_actions(tab).await.expect("press Tab");
+        if let Some(name) = browser.js(focused).await.as_str() {
+            reached.insert(name.to_owned());
+        }
+    }
+    println!("Tab reached {} of {focusable} controls: {reached:?}", reached.len());
+    assert_eq!(reached.len() as u64, focusable, "Tab did not reach every control");
+    assert!(reached.iter().any(|n| n.starts_with("canvas")), "the pool itself is not reachable");
+    browser.close().await;
+}

@@ -14,6 +14,9 @@ const live = new Set(); // mounted demos, told when the wasm module panics
 // eslint-disable-next-line no-undef
 const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
 let inlineSheet = null; // the inline stylesheet, shared by every demo's shadow root
+let wasmMemory = null; // the module's linear memory (for stats().wasmMemoryBytes)
+/** Linear memory made available at load: one demo at the defaults uses 9.7 MB. */
+const START_MEMORY_BYTES = 16 * 1024 * 1024;
 
 /** The inline wasm module's bytes: base64 decoded, then gunzipped by the browser. */
 async function inlineWasm() {
@@ -26,10 +29,21 @@ function loadCore() {
   if (!ready) {
     const module = inline ? inlineWasm().then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(undefined);
     ready = module.then((source) => init(source)).then(
-      () => {
+      (exports) => {
+        wasmMemory = exports.memory;
+        // Grow the memory to what a demo needs before any demo code runs, once, instead of
+        // while the first demo is being created: WebKit (JavaScriptCore) has stopped a demo
+        // with "Out of bounds memory access" in its first calls after such growth (2 of ~20
+        // loads here).
+        const pages = Math.ceil((START_MEMORY_BYTES - wasmMemory.buffer.byteLength) / 65536);
+        if (pages > 0) wasmMemory.grow(pages);
         window.addEventListener("wavepool:panic", (event) => {
           for (const demo of live) demo._fail(`The water demo crashed: ${event.detail}`);
         });
+        // Printing: a GPU canvas prints blank or not at all, so each demo puts a still of its
+        // current frame in its place until the print is done.
+        window.addEventListener("beforeprint", () => live.forEach((demo) => demo._printShot()));
+        window.addEventListener("afterprint", () => live.forEach((demo) => demo._printShot(false)));
       },
       (error) => {
         throw new Error(loadFailure(error));
@@ -811,12 +825,38 @@ class Demo {
     this._dead = true;
     if (this._frame) cancelAnimationFrame(this._frame);
     this._frame = 0;
+    // A still picture of the pool (made by `wavepool render`) behind the message, so the box
+    // is not empty; the single file goes without it (it must stay small).
+    if (!inline && !this._stage.querySelector(".fallback")) {
+      const picture = new Image();
+      picture.className = "fallback";
+      picture.alt = "A still picture of the water pool (the live demo could not start here)";
+      picture.src = new URL("./no-gpu.png", import.meta.url).href;
+      this._stage.prepend(picture);
+    }
     this._message.hidden = false;
     this._message.classList.add("error");
     this._message.textContent = text;
     this._element.dataset.error = "true";
     console.error(`wavepool: ${text}`);
     this._firstFrameReject(new Error(text));
+  }
+
+  // Puts a still of the current frame (a 2D canvas, which prints and needs no image URL that
+  // a Content-Security-Policy could refuse) over the GPU canvas; `false` takes it away.
+  _printShot(show = true) {
+    const old = this._stage.querySelector(".print-shot");
+    if (old) old.remove();
+    if (!show || !this._core || !this._canvas) return;
+    const { width, height } = this._canvas;
+    this._core.frame(0, width, height);
+    const shot = document.createElement("canvas");
+    shot.className = "print-shot";
+    shot.width = width;
+    shot.height = height;
+    // In the task that drew the frame, while the GPU canvas still holds it.
+    shot.getContext("2d").drawImage(this._canvas, 0, 0);
+    this._stage.append(shot);
   }
 
   _alive() {
@@ -935,6 +975,7 @@ class Demo {
     const [t, sim, n] = [this._frames, this._simTimes, this._frames.length];
     s.simSpeed = n > 1 && t[n - 1] > t[0] ? ((sim[n - 1] - sim[0]) * 1000) / (t[n - 1] - t[0]) : 0;
     s.firstFrameMs = this._firstFrameMs;
+    s.wasmMemoryBytes = wasmMemory ? wasmMemory.buffer.byteLength : null;
     s.restarts = this._restarts;
     return s;
   }
