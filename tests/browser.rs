@@ -9,20 +9,10 @@
 #[path = "support/browser.rs"]
 mod support;
 
-use std::sync::Mutex;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{canvas_rect_js, Browser, Graphics, Rect, StaticServer};
-
-/// One browser at a time: two software-rendered Chromiums on two cores only slow each other.
-static SERIAL: Mutex<()> = Mutex::new(());
-
-const READY: Duration = Duration::from_secs(120);
-
-fn serial() -> std::sync::MutexGuard<'static, ()> {
-    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
-}
+use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, READY};
 
 /// Opens the page, waits for the first frame and checks the backend and that the canvas
 /// shows a picture (not a flat fill).

@@ -11,23 +11,10 @@
 #[path = "support/browser.rs"]
 mod support;
 
-use std::sync::Mutex;
 use std::time::Duration;
 
 use serde_json::{json, Value};
-use support::{canvas_rect_js, changed_fraction, Browser, Graphics, Rect, StaticServer};
-
-static SERIAL: Mutex<()> = Mutex::new(());
-
-const READY: Duration = Duration::from_secs(120);
-
-fn serial() -> std::sync::MutexGuard<'static, ()> {
-    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
-}
-
-/// The shown message of the demo in `#pool` ('' when hidden).
-const MESSAGE_JS: &str = "const m = document.querySelector('#pool').shadowRoot.querySelector('.message');
-                          return m && !m.hidden ? m.textContent : '';";
+use support::{canvas_rect_js, changed_fraction, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// Clicks the centre of an element of the demo's shadow root (real pointer events).
 async fn click_in_demo(browser: &Browser, selector: &str) {

@@ -11,19 +11,12 @@
 #[path = "support/browser.rs"]
 mod support;
 
-use std::sync::Mutex;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{canvas_rect_js, changed_fraction, Browser, Engine, Graphics, Rect, StaticServer};
-
-static SERIAL: Mutex<()> = Mutex::new(());
-
-const READY: Duration = Duration::from_secs(120);
-
-fn serial() -> std::sync::MutexGuard<'static, ()> {
-    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
-}
+use support::{
+    canvas_rect_js, changed_fraction, serial, Browser, Engine, Graphics, Rect, StaticServer, MESSAGE_JS, READY,
+};
 
 /// The demo page without objects (calm water until the drag), at a fixed scale.
 const CALM: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03";
@@ -120,10 +113,6 @@ async fn firefox_with_webgpu_on_its_software_compositor_runs_the_demo_without_cr
 async fn webkit_runs_the_demo_on_webgl2_and_a_drag_makes_ripples() {
     a_drag_makes_ripples_in(Engine::WebKit, "webgl2").await;
 }
-
-/// The shown message of the demo in `#pool` ('' when hidden).
-const MESSAGE_JS: &str = "const m = document.querySelector('#pool').shadowRoot.querySelector('.message');
-                          return m && !m.hidden ? m.textContent : '';";
 
 /// Waits for `#pool` to become ready: true when it did, false when it stopped with WebKit's
 /// "Out of bounds memory access"; any other failure fails the test.

@@ -35,6 +35,21 @@ pub fn geckodriver() -> PathBuf {
     })
 }
 
+/// Longest wait for a demo's first frame (SwiftShader compiles slowly).
+pub const READY: Duration = Duration::from_secs(120);
+
+/// One browser at a time in a test binary: two software-rendered browsers on two cores only
+/// slow each other. Each test holds the guard for its whole run.
+static SERIAL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+pub fn serial() -> std::sync::MutexGuard<'static, ()> {
+    SERIAL.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// JS: the message shown by the demo in `#pool` ('' when hidden).
+pub const MESSAGE_JS: &str = "const m = document.querySelector('#pool').shadowRoot.querySelector('.message');
+                              return m && !m.hidden ? m.textContent : '';";
+
 /// The built page: `$WAVEPOOL_DIST` or `dist/` in the crate.
 pub fn dist_dir() -> PathBuf {
     let dir = std::env::var_os("WAVEPOOL_DIST")
