@@ -403,7 +403,7 @@ class Demo {
       this._stage.style.maxWidth = `${Math.floor(height * this._opts.aspect)}px`;
     };
     fit();
-    this._on(window, "resize", fit);
+    this._fit = fit; // refitted on window resizes, from _listen (again after a device restart)
   }
 
   _makeCanvas() {
@@ -440,6 +440,7 @@ class Demo {
   }
 
   _listen() {
+    if (this._fit) this._on(window, "resize", this._fit);
     const canvas = this._canvas;
     const resize = new ResizeObserver(() => this._sizeCanvas(canvas));
     resize.observe(canvas);
