@@ -12,7 +12,7 @@ mod support;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, READY};
+use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// Opens the page, waits for the first frame and checks the backend and that the canvas
 /// shows a picture (not a flat fill).
@@ -300,9 +300,7 @@ async fn no_gpu_shows_a_message_in_the_page() {
     let browser = Browser::open(Graphics::Nothing).await;
     browser.goto(&server.url("/")).await;
     let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
-    let message = browser
-        .js("const m = document.querySelector('#pool').shadowRoot.querySelector('.message'); return m.hidden ? '' : m.textContent;")
-        .await;
+    let message = browser.js(MESSAGE_JS).await;
     assert!(failed, "no error state; message: {message}");
     assert!(message.as_str().unwrap().contains("neither WebGPU nor WebGL2"), "message: {message}");
     // Behind the message, a still picture of the pool (web/no-gpu.png) instead of an empty box.
@@ -321,9 +319,7 @@ async fn a_forced_backend_the_browser_lacks_says_so_and_how_to_let_the_page_choo
     let browser = Browser::open(Graphics::WebGl2Only).await;
     browser.goto(&server.url("/?backend=webgpu")).await;
     let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
-    let message = browser
-        .js("const m = document.querySelector('#pool').shadowRoot.querySelector('.message'); return m.hidden ? '' : m.textContent;")
-        .await;
+    let message = browser.js(MESSAGE_JS).await;
     let message = message.as_str().unwrap_or("").to_owned();
     println!("{message}");
     assert!(failed, "no error state; message: {message}");
@@ -398,9 +394,7 @@ async fn a_panic_shows_in_the_page() {
         .await;
     assert!(out.get("error").is_some(), "the panic did not surface as an exception: {out}");
     let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
-    let message = browser
-        .js("const m = document.querySelector('#pool').shadowRoot.querySelector('.message'); return m.hidden ? '' : m.textContent;")
-        .await;
+    let message = browser.js(MESSAGE_JS).await;
     assert!(failed, "no error state after a panic; message: {message}");
     assert!(message.as_str().unwrap().contains("deliberate test panic"), "message: {message}");
     browser.close().await;
