@@ -5,8 +5,9 @@ request, so it opens by double-click from disk (file://) and inside <iframe sand
 Everything Trunk built goes inline: the page's stylesheet as a <style>, and one module script
 holding the wasm module (gzip, then base64; the browser gunzips it with DecompressionStream and
 instantiates it asynchronously), wasm-bindgen's JS (its exports turned into a closure's return
-value), embed.js (which sees WAVEPOOL_INLINE and uses the inline wasm and a constructed
-stylesheet instead of the files next to it) and index.html's own page script.
+value), context-budget.js (likewise), embed.js (which sees WAVEPOOL_INLINE and uses the inline
+wasm and a constructed stylesheet instead of the files next to it) and index.html's own page
+script.
 
 Usage: scripts/standalone.py DIST   (after `trunk build`; prints the file's size)
 """
@@ -38,6 +39,15 @@ def core_as_closure(bindgen_js):
     return f"(() => {{\n{body}\nreturn {{ init: __wbg_init, {names} }};\n}})()"
 
 
+def module_as_closure(js, name):
+    """A small ES module of ours (no imports) as a closure returning its exports: `const { a, b } = (() => ...)();`."""
+    names = re.findall(r"^export (?:const|let|function|async function|class) (\w+)", js, flags=re.M)
+    body = re.sub(r"^export ", "", js, flags=re.M)
+    if not names or re.search(r"^(import|export) ", body, flags=re.M):
+        fail(f"{name} no longer has the shape this script expects (exports, no imports)")
+    return f"const {{ {', '.join(names)} }} = (() => {{\n{body}\nreturn {{ {', '.join(names)} }};\n}})();"
+
+
 def main():
     if len(sys.argv) != 2:
         fail("usage: standalone.py DIST")
@@ -51,6 +61,10 @@ def main():
     if not import_line.search(embed):
         fail("embed.js no longer imports wavepool.js the way this script expects")
     embed = import_line.sub(r"const { init, \1 } = WAVEPOOL_CORE;", embed)
+    budget_import = re.compile(r'^import \{ [\w, ]+ \} from "\./context-budget\.js";$', re.M)
+    if not budget_import.search(embed):
+        fail("embed.js no longer imports context-budget.js the way this script expects")
+    embed = budget_import.sub("", embed)
 
     # index.html: its page script (minus the import, mount is in the same module now), its
     # body, its title; the stylesheet and Trunk's script tags are replaced by inline ones.
@@ -70,6 +84,7 @@ def main():
         [
             inline,
             "const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";",
+            module_as_closure(read("context-budget.js"), "context-budget.js"),
             embed,
             page_script,
         ]

@@ -425,3 +425,90 @@ async fn tab_reaches_the_pool_its_buttons_and_every_control() {
     assert!(reached.iter().any(|n| n.starts_with("canvas")), "the pool itself is not reachable");
     browser.close().await;
 }
+
+/// Luma spread (0-255) of the still shown by the `<wave-pool>` with this id, or null without one.
+fn still_spread_js(id: &str) -> String {
+    format!(
+        "const s = document.getElementById('{id}').shadowRoot.querySelector('canvas.still');
+         if (!s) return null;
+         const px = s.getContext('2d').getImageData(0, 0, s.width, s.height).data;
+         let n = 0, sum = 0, sq = 0;
+         for (let i = 0; i < px.length; i += 4 * 16) {{ const l = 0.2126 * px[i] + 0.7152 * px[i + 1] + 0.0722 * px[i + 2]; n++; sum += l; sq += l * l; }}
+         const mean = sum / n; return Math.sqrt(sq / n - mean * mean);"
+    )
+}
+
+/// Twelve `<wave-pool>`s on a long page (tests/pages/many.html, a screenful of text between
+/// them), on each backend: at load only those near the viewport take a GPU context; scrolled
+/// to in turn, each starts (ready, simulating) and never are more than 8 contexts live
+/// (counted by wrapping `getContext`, `loseContext` and `GPUDevice.destroy`); those that gave
+/// theirs up show their last frame (a still with a picture in it); scrolled back, the first
+/// wakes with the parameter value set on it before and its still gives way to the live canvas.
+#[tokio::test]
+async fn twelve_demos_on_a_long_page_start_when_scrolled_to_and_hold_at_most_eight_gpu_contexts() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    let ready = |i: u32| {
+        format!("(() => {{ const e = document.getElementById('pool{i}'); return e.dataset.ready === 'true' && !e.dataset.suspended && !!e.demo; }})()")
+    };
+    for backend in ["webgl2", "webgpu"] {
+        browser.goto(&server.url(&format!("/test/many.html?backend={backend}"))).await;
+        assert!(browser.wait_for(&ready(1), READY).await, "{backend}: the first pool did not start");
+        tokio::time::sleep(Duration::from_secs(1)).await;
+        let at_load = browser
+            .js("return { started: [...document.querySelectorAll('wave-pool')].filter((e) => e.dataset.backend).length,
+                          live: window.__gpuLive(), last: document.getElementById('pool12').shadowRoot.querySelectorAll('canvas').length };")
+            .await;
+        browser.js("document.getElementById('pool1').demo.set('wave_speed', 0.7); return true;").await;
+        let mut most_live = 0;
+        let mut start_ms = Vec::new();
+        for i in 2..=12 {
+            let t = std::time::Instant::now();
+            browser
+                .js(&format!("document.getElementById('pool{i}').scrollIntoView({{ block: 'center' }}); return true;"))
+                .await;
+            assert!(browser.wait_for(&ready(i), READY).await, "{backend}: pool {i} did not start when scrolled to");
+            start_ms.push(t.elapsed().as_millis());
+            let live = browser.js("return window.__gpuLive();").await.as_i64().unwrap();
+            most_live = most_live.max(live);
+            assert!(live <= 8, "{backend}: {live} GPU contexts live with pool {i} on screen");
+        }
+        tokio::time::sleep(Duration::from_millis(500)).await;
+        let sim_time = browser.js("return document.getElementById('pool12').demo.stats().simTime;").await;
+        let suspended: Vec<u32> = {
+            let v = browser.js("return [...document.querySelectorAll('wave-pool')].filter((e) => e.dataset.suspended).map((e) => Number(e.id.slice(4)));").await;
+            v.as_array().unwrap().iter().map(|x| x.as_u64().unwrap() as u32).collect()
+        };
+        let mut spreads = Vec::new();
+        for &i in &suspended {
+            let s = browser.js(&still_spread_js(&format!("pool{i}"))).await;
+            spreads.push(s.as_f64().unwrap_or(0.0));
+        }
+        // Back to the first pool: it wakes where it was.
+        browser.js("document.getElementById('pool1').scrollIntoView({ block: 'center' }); return true;").await;
+        let woke = browser
+            .wait_for(
+                "(() => { const e = document.getElementById('pool1'); return !e.dataset.suspended && !e.shadowRoot.querySelector('canvas.still'); })()",
+                READY,
+            )
+            .await;
+        let speed = browser.js("return document.getElementById('pool1').demo.get('wave_speed');").await;
+        let live_after = browser.js("return window.__gpuLive();").await.as_i64().unwrap();
+        let gpu = browser.js("return window.__gpu;").await;
+        println!(
+            "{backend}: at load {at_load}; starts when scrolled to (ms) {start_ms:?}; at most {most_live} contexts live; \
+             suspended {suspended:?} with stills of luma spread {spreads:.1?}; pool 12 simulated {sim_time} s; \
+             pool 1 woke: {woke}, wave_speed {speed}, {live_after} live; contexts {gpu}"
+        );
+        assert!(at_load["started"].as_i64().unwrap() <= 2, "{backend}: far pools started at load: {at_load}");
+        assert!(at_load["live"].as_i64().unwrap() <= 2 && at_load["last"] == 0, "{backend}: at load {at_load}");
+        assert!(sim_time.as_f64().unwrap_or(0.0) > 0.0, "{backend}: the last pool does not simulate");
+        assert!(suspended.len() >= 4 && suspended.contains(&1), "{backend}: suspended {suspended:?}");
+        assert!(spreads.iter().all(|&s| s > 12.0), "{backend}: a flat still among {spreads:?}");
+        assert!(woke, "{backend}: the first pool did not wake when scrolled back to");
+        assert_eq!(speed, 0.7, "{backend}: the first pool's wave_speed after waking");
+        assert!(live_after <= 8, "{backend}: {live_after} contexts live after waking the first pool");
+    }
+    browser.close().await;
+}

@@ -4,6 +4,7 @@
 // The simulation and rendering are Rust (wavepool.js + wavepool_bg.wasm, next to this file).
 
 import init, { WebDemo, optionTable, paramTable, presetTable } from "./wavepool.js";
+import { acquireContext, contextsHeld, releaseContext, watchNear } from "./context-budget.js";
 
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
@@ -78,6 +79,7 @@ export const DEFAULT_OPTIONS = Object.freeze({
   maxFps: 0, // cap on drawn frames per second (1-240; 0: as many as the browser and GPU give)
   camera: null, // "yaw,pitch,distance" (degrees, degrees, m) to start from; null: the default view
   preset: null, // a named starting state from presets(): its values, then the page's own options
+  lazy: true, // start when scrolled near the viewport (false: at once); see context-budget.js
 });
 
 /** The presets: named starting states, each parameter values and maybe a camera. */
@@ -135,8 +137,8 @@ function readOptions(options, table) {
       const c = o.choices;
       out[key] = c.length ? c.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a)) : n;
       if (out[key] !== n) warn(`${key} ${n} is not one of ${c.join(", ")}; using ${out[key]}`);
-    } else if (key === "controls") {
-      out.controls = !(value === false || value === 0 || value === "0" || value === "false");
+    } else if (key === "controls" || key === "lazy") {
+      out[key] = !(value === false || value === 0 || value === "0" || value === "false");
     } else if (key === "maxPixelRatio") {
       out.maxPixelRatio = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.maxPixelRatio);
     } else if (key === "maxPixels") {
@@ -187,8 +189,9 @@ function formatValue(p, v) {
 let instances = 0;
 
 /**
- * Mounts a demo in `element`. Resolves to the demo's handle once the first frame is drawn;
- * rejects (after showing a readable message in the element) when no GPU backend works.
+ * Mounts a demo in `element`. Resolves to the demo's handle once the first frame is drawn
+ * (with `lazy`, the default, that is once the element has come near the viewport); rejects
+ * (after showing a readable message in the element) when no GPU backend works.
  */
 export async function mount(element, options = {}) {
   if (!(element instanceof Element)) throw new TypeError("wavepool.mount: the first argument must be an element");
@@ -224,6 +227,7 @@ export async function mount(element, options = {}) {
 
   const handle = new Demo(element, shadow, root, stage, message, id, started);
   live.add(handle);
+  pending.set(element, handle);
   try {
     handle._status("Loading the water…");
     await loadCore();
@@ -235,6 +239,11 @@ export async function mount(element, options = {}) {
       stage.style.aspectRatio = String(opts.aspect);
       handle._fitStage();
     }
+    // A GPU context only when near the viewport (lazy) and one of the page's few is free.
+    handle._eager = !opts.lazy;
+    handle._unwatch = watchNear(element, (near) => handle._nearChanged(near));
+    await acquireContext(handle);
+    if (handle._dead) throw new Error("wavepool: the demo was destroyed before it started");
     await handle._start();
     // prefers-reduced-motion: start still (nothing falls, no waves) until the visitor presses
     // play, unless the page asked for `paused` itself.
@@ -258,8 +267,13 @@ export async function mount(element, options = {}) {
   } catch (error) {
     handle._fail(String(error && error.message ? error.message : error));
     throw error;
+  } finally {
+    if (pending.get(element) === handle) pending.delete(element);
   }
 }
+
+/** The demo being mounted in an element, until its mount() settles (for <wave-pool>'s removal). */
+const pending = new WeakMap();
 
 /** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
 const ICONS = {
@@ -361,6 +375,15 @@ class Demo {
     });
     this._firstFrame.catch(() => {});
     this._cleanups = [];
+    // The page's context budget (context-budget.js).
+    this._near = false; // within its margin of the viewport
+    this._leftAt = 0; // when it last stopped being near (ms)
+    this._eager = false; // asks for a context even while far (lazy: false)
+    this._unwatch = null; // stops watching nearness
+    this._suspended = false; // gave its context up; shows `_still`, values in `_saved`
+    this._saved = null; // { params: [[name, value]], camera } while suspended
+    this._still = null; // the 2D canvas showing the last frame while suspended
+    this._waking = false;
   }
 
   // ---- set-up -------------------------------------------------------------------------
@@ -375,19 +398,25 @@ class Demo {
         continue;
       }
       const canvas = this._makeCanvas();
+      // The grid starts at the sim_size parameter's value (resampled if it changes later).
+      const simSize = Number(this._opts.params.sim_size ?? this._table.find((p) => p.name === "sim_size").default);
+      const o = this._opts;
+      let core;
       try {
-        // The grid starts at the sim_size parameter's value (resampled if it changes later).
-        const simSize = Number(this._opts.params.sim_size ?? this._table.find((p) => p.name === "sim_size").default);
-        const o = this._opts;
-        this._core = await WebDemo.create(canvas, backend, simSize, o.meshSize, o.causticsSize, o.float !== "none");
-        this._canvas = canvas;
-        this._element.dataset.backend = backend;
-        this._listen();
-        return;
+        core = await WebDemo.create(canvas, backend, simSize, o.meshSize, o.causticsSize, o.float !== "none");
       } catch (error) {
         canvas.remove();
         failures.push(`${backend === "webgpu" ? "WebGPU" : "WebGL2"}: ${error.message || error}`);
+        continue;
       }
+      [this._core, this._canvas] = [core, canvas];
+      if (this._dead) {
+        this._detachCore(); // destroyed while the context was being made
+        throw new Error("wavepool: the demo was destroyed while it started");
+      }
+      this._element.dataset.backend = backend;
+      this._listen();
+      return;
     }
     throw new Error(backendFailure(this._opts.backend, failures));
   }
@@ -732,6 +761,12 @@ class Demo {
       this._recover(error);
       return;
     }
+    if (this._still) {
+      // Woken: the still goes once the new context's frame is on screen.
+      const still = this._still;
+      this._still = null;
+      requestAnimationFrame(() => still.remove());
+    }
     if (this._frames.length === 0) this._runningSince = time;
     this._frames.push(time);
     this._simTimes.push(this._core.simTime);
@@ -778,16 +813,77 @@ class Demo {
     }
     this._lastRestart = now;
     this._restarts++;
-    const values = this._table.map((p) => [p.name, this.get(p.name)]);
+    const saved = this._saveState();
     this._detachCore();
     try {
       this._status("The graphics device was lost; restarting…");
-      await this._start();
-      for (const [name, v] of values) this._core.set(name, v);
-      this._status(null);
-      this._run();
+      await this._restart(saved);
     } catch (e) {
       this._fail(`The graphics device was lost and could not be restarted: ${e.message || e}`);
+    }
+  }
+
+  /** The parameters and camera, to carry across a new context. */
+  _saveState() {
+    return { params: this._table.map((p) => [p.name, this._core.get(p.name)]), camera: this._core.camera() };
+  }
+
+  /** A new context with `saved` parameters and camera (the water starts calm), running. */
+  async _restart(saved) {
+    await this._start();
+    for (const [name, v] of saved.params) this._core.set(name, v);
+    this._core.setCamera(...saved.camera);
+    this._refreshControls();
+    this._status(null);
+    this._run();
+  }
+
+  // ---- the page's context budget (context-budget.js) -----------------------------------
+
+  _nearChanged(near) {
+    this._near = near;
+    if (!near) this._leftAt = performance.now();
+    else if (this._suspended) this._wake();
+  }
+
+  /** Holds a running context it can give up now (not while one is being created). */
+  _suspendable() {
+    return !!this._core && !this._dead && !this._waking;
+  }
+
+  /** Every context is taken by demos on screen: say so until one scrolls away. */
+  _blocked() {
+    if (!this._suspended && !this._core) {
+      this._status("Waiting for a free GPU context: scroll another water demo on this page out of view.");
+    }
+  }
+
+  /** Gives the context up, keeping the last frame on show and the parameters and camera. */
+  _suspend() {
+    this._saved = this._saveState();
+    this._still = this._copyFrame("still");
+    this._detachCore();
+    this._looping = false;
+    this._suspended = true;
+    this._element.dataset.suspended = "true";
+    releaseContext(this);
+  }
+
+  /** Near again: takes a context when one is free and goes on from the saved state. */
+  async _wake() {
+    if (this._waking || this._dead) return;
+    this._waking = true;
+    try {
+      await acquireContext(this);
+      if (this._dead) return;
+      await this._restart(this._saved);
+      this._saved = null;
+      this._suspended = false;
+      delete this._element.dataset.suspended;
+    } catch (e) {
+      this._fail(`The water demo could not start again: ${e.message || e}`);
+    } finally {
+      this._waking = false;
     }
   }
 
@@ -840,29 +936,45 @@ class Demo {
     this._message.textContent = text;
     this._element.dataset.error = "true";
     console.error(`wavepool: ${text}`);
+    if (!this._core) releaseContext(this);
     this._firstFrameReject(new Error(text));
   }
 
-  // Puts a still of the current frame (a 2D canvas, which prints and needs no image URL that
-  // a Content-Security-Policy could refuse) over the GPU canvas; `false` takes it away.
+  // Puts a still of the current frame over the GPU canvas (for printing); `false` takes it away.
   _printShot(show = true) {
     const old = this._stage.querySelector(".print-shot");
     if (old) old.remove();
-    if (!show || !this._core || !this._canvas) return;
+    if (show && this._core && this._canvas) this._copyFrame("print-shot");
+  }
+
+  // A copy of the current frame in a 2D canvas of class `className`, put in the stage: it
+  // prints, and needs no image URL that a Content-Security-Policy could refuse.
+  _copyFrame(className) {
     const { width, height } = this._canvas;
     this._core.frame(0, width, height);
     const shot = document.createElement("canvas");
-    shot.className = "print-shot";
+    shot.className = className;
     shot.width = width;
     shot.height = height;
     // In the task that drew the frame, while the GPU canvas still holds it.
     shot.getContext("2d").drawImage(this._canvas, 0, 0);
-    this._stage.append(shot);
+    this._canvas.after(shot); // over the GPU canvas, under the message and the buttons
+    return shot;
   }
 
   _alive() {
-    if (this._dead || !this._core) throw new Error("wavepool: this demo is not running (destroyed or failed)");
+    if (this._suspended) {
+      throw new Error("wavepool: this demo is scrolled away and gave its GPU context to others; it goes on when it is near the viewport");
+    }
+    if (this._dead || !this._core) throw new Error("wavepool: this demo is not running (destroyed, failed or not started)");
     return this._core;
+  }
+
+  /** While suspended: the saved [name, value] entry of a parameter. */
+  _savedParam(name) {
+    const entry = this._saved.params.find(([n]) => n === name);
+    if (!entry) throw new Error(`wavepool: unknown parameter "${name}"`);
+    return entry;
   }
 
   // ---- public API ---------------------------------------------------------------------
@@ -875,6 +987,13 @@ class Demo {
   /** Sets a parameter; out-of-range values are clamped (console warning). Returns the value in effect. */
   set(name, value) {
     const spec = this._table && this._table.find((p) => p.name === String(name));
+    if (this._suspended) {
+      // Kept until it wakes; clamped then.
+      const entry = this._savedParam(String(name));
+      entry[1] = toNumber(value, spec);
+      this._refreshControls(String(name));
+      return entry[1];
+    }
     const v = this._alive().set(String(name), toNumber(value, spec));
     this._refreshControls(String(name));
     return v;
@@ -882,6 +1001,7 @@ class Demo {
 
   /** A parameter's current value; throws for unknown names. */
   get(name) {
+    if (this._suspended) return this._savedParam(String(name))[1];
     return this._alive().get(String(name));
   }
 
@@ -949,12 +1069,14 @@ class Demo {
 
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
   camera() {
+    if (this._suspended) return Array.from(this._saved.camera);
     return Array.from(this._alive().camera());
   }
 
   /** Moves the camera; out-of-range values are clamped (console warning). */
   setCamera(yaw, pitch, distance) {
-    this._alive().setCamera(Number(yaw), Number(pitch), Number(distance));
+    if (this._suspended) this._saved.camera = [Number(yaw), Number(pitch), Number(distance)];
+    else this._alive().setCamera(Number(yaw), Number(pitch), Number(distance));
   }
 
   /** Stops the frame loop (and the water) until resume(). */
@@ -970,7 +1092,14 @@ class Demo {
 
   /** { fps, frameMs, longestFrameMs, firstFrameMs, restarts, backend, adapter, simSize, ... } (see the README) */
   stats() {
+    if (this._suspended) {
+      // No context: what is known without one.
+      const { backend } = this._element.dataset;
+      return { suspended: true, fps: 0, backend, firstFrameMs: this._firstFrameMs, restarts: this._restarts, contextsOnPage: contextsHeld() };
+    }
     const s = this._alive().stats();
+    s.suspended = false;
+    s.contextsOnPage = contextsHeld();
     Object.assign(s, frameStats(this._frames, this._runningSince, performance.now()));
     // Simulated seconds per wall second over the drawn frames of the window (1: real time).
     const [t, sim, n] = [this._frames, this._simTimes, this._frames.length];
@@ -995,11 +1124,14 @@ class Demo {
     this._detachCore();
     this._dead = true;
     live.delete(this);
+    releaseContext(this);
+    if (this._unwatch) this._unwatch();
     // Only what is still this demo's (a newer mount in the same element keeps its own).
     if (this._root.parentNode === this._shadow) {
       this._shadow.replaceChildren();
       delete this._element.dataset.backend;
       delete this._element.dataset.ready;
+      delete this._element.dataset.suspended;
     }
   }
 }
@@ -1051,6 +1183,8 @@ export class WavePoolElement extends HTMLElement {
     queueMicrotask(() => {
       if (this.isConnected || !this._mounting) return;
       this._generation++;
+      const starting = pending.get(this); // still waiting to come into view, or starting
+      if (starting) starting.destroy();
       if (this.demo) this.demo.destroy();
       this.demo = null;
       this._mounting = null;
