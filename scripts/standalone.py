@@ -79,7 +79,8 @@ def main():
         fail("index.html has no <body> or <title> where expected")
 
     packed = base64.b64encode(gzip.compress(wasm, compresslevel=9, mtime=0)).decode("ascii")
-    inline = "const WAVEPOOL_INLINE = " + json.dumps({"css": read("wavepool.css"), "wasm": packed}) + ";"
+    picture = "data:image/webp;base64," + base64.b64encode((dist / "no-gpu.webp").read_bytes()).decode("ascii")
+    inline = "const WAVEPOOL_INLINE = " + json.dumps({"css": read("wavepool.css"), "wasm": packed, "picture": picture}) + ";"
     module = "\n".join(
         [
             inline,

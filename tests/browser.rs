@@ -303,10 +303,16 @@ async fn no_gpu_shows_a_message_in_the_page() {
     let message = browser.js(MESSAGE_JS).await;
     assert!(failed, "no error state; message: {message}");
     assert!(message.as_str().unwrap().contains("neither WebGPU nor WebGL2"), "message: {message}");
-    // Behind the message, a still picture of the pool (web/no-gpu.png) instead of an empty box.
-    let loaded = "const i = document.querySelector('#pool').shadowRoot.querySelector('img.fallback');
-                  return i && i.complete ? i.naturalWidth : 0;";
-    assert!(browser.wait_for(&format!("(() => {{ {loaded} }})() > 0"), Duration::from_secs(10)).await, "no picture");
+    // Behind the message, a still picture of the pool (web/no-gpu.webp) instead of an empty box;
+    // the single file from disk too (its picture is inline).
+    let loaded = "(() => { const i = document.querySelector('#pool').shadowRoot.querySelector('img.fallback');
+                  return i && i.complete ? i.naturalWidth : 0; })() > 0";
+    assert!(browser.wait_for(loaded, Duration::from_secs(10)).await, "no picture");
+    let file = support::dist_dir().join("wavepool-standalone.html");
+    browser.goto(&format!("file://{}", file.display())).await;
+    let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
+    assert!(failed, "the single file: no error state; message: {}", browser.js(MESSAGE_JS).await);
+    assert!(browser.wait_for(loaded, Duration::from_secs(10)).await, "the single file: no picture");
     browser.close().await;
 }
 

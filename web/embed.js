@@ -9,9 +9,9 @@ import { acquireContext, contextsHeld, releaseContext, watchNear } from "./conte
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
 
-// The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm } ahead
-// of this code in the same module: the stylesheet's text and the wasm module, gzip then base64.
-// Otherwise both are files next to this one.
+// The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm, picture }
+// ahead of this code in the same module: the stylesheet's text, the wasm module (gzip then
+// base64) and the no-GPU picture (a data: URL). Otherwise they are files next to this one.
 // eslint-disable-next-line no-undef
 const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
 let inlineSheet = null; // the inline stylesheet, shared by every demo's shadow root
@@ -922,13 +922,13 @@ class Demo {
     this._dead = true;
     if (this._frame) cancelAnimationFrame(this._frame);
     this._frame = 0;
-    // A still picture of the pool (made by `wavepool render`) behind the message, so the box
-    // is not empty; the single file goes without it (it must stay small).
-    if (!inline && !this._stage.querySelector(".fallback")) {
+    // A still picture of the pool (made by `wavepool render`; 7 KB, so the single file
+    // carries it too, as a data: URL) behind the message, so the box is not empty.
+    if (!this._stage.querySelector(".fallback")) {
       const picture = new Image();
       picture.className = "fallback";
       picture.alt = "A still picture of the water pool (the live demo could not start here)";
-      picture.src = new URL("./no-gpu.png", import.meta.url).href;
+      picture.src = inline ? inline.picture : new URL("./no-gpu.webp", import.meta.url).href;
       this._stage.prepend(picture);
     }
     this._message.hidden = false;
