@@ -3,7 +3,8 @@
 //! with prefers-reduced-motion the demo starts paused and still until play is pressed; the
 //! fullscreen button is there only where the page allows fullscreen and fills the screen;
 //! Reset returns to the page's own start (parameters and camera), not the table's defaults;
-//! Enter on the focused pool makes a drop. Needs `dist/`.
+//! Enter on the focused pool makes a drop; twelve demos on a long page start when scrolled to
+//! and hold at most 8 GPU contexts. Needs `dist/`.
 
 // One browser at a time, held across awaits: each test runs on its own thread and runtime.
 #![allow(clippy::await_holding_lock)]
