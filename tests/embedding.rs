@@ -245,7 +245,8 @@ async fn the_wave_pool_element_runs_each_time_it_is_inserted_and_frees_its_conte
 /// (`file://`) it reaches its first frame with a picture and fetches nothing (no resource
 /// entries), on WebGPU and WebGL2; inside `<iframe sandbox="allow-scripts">` (an opaque
 /// origin) it draws, posts `wavepool:ready` to the parent, and the server sees no request but
-/// the two pages.
+/// the two pages. Prints its start-up time beside `dist/` over HTTP's, loaded in turn in the
+/// same browser (figures for the notes, not held to anything: timing is for benchmarks).
 #[tokio::test]
 async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_network_requests() {
     let _g = serial();
@@ -258,13 +259,20 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
         browser.goto(&format!("file://{}?backend={backend}&quality=1", file.display())).await;
         let took = browser.wait_ready("#pool", READY).await;
         let r = browser
-            .js("return { backend: window.demo.stats().backend, resources: performance.getEntriesByType('resource').map((e) => e.name) };")
+            .js("return { backend: window.demo.stats().backend, firstFrameMs: window.demo.stats().firstFrameMs,
+                          resources: performance.getEntriesByType('resource').map((e) => e.name) };")
             .await;
         let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
         let spread = browser.screenshot().await.luma_spread(rect);
+        browser.goto(&server.url(&format!("/?backend={backend}&quality=1"))).await;
+        let took_http = browser.wait_ready("#pool", READY).await;
+        let http_first = browser.js("return window.demo.stats().firstFrameMs;").await;
         println!(
-            "file:// on {backend}: {size} bytes, ready in {took:?}, luma spread {spread:.1}, fetched {}",
-            r["resources"]
+            "file:// on {backend}: {size} bytes, ready in {took:?} (first frame {:.0} ms after mount), luma spread {spread:.1}, \
+             fetched {}; dist/ over HTTP: ready in {took_http:?} (first frame {:.0} ms after mount)",
+            r["firstFrameMs"].as_f64().unwrap_or(f64::NAN),
+            r["resources"],
+            http_first.as_f64().unwrap_or(f64::NAN)
         );
         assert_eq!(r["backend"], backend);
         assert_eq!(r["resources"], json!([]), "the single file fetched something");
