@@ -1,7 +1,8 @@
 // Scene bindings and the shading every scene pass shares: water sampling, pool tiles,
 // caustic light, the sphere and the duck, the sky, and tracing a ray through air or water to what it hits.
-// Compiled per feature set: HAS_SPHERE, HAS_DUCK and HAS_CAUSTICS are constants written ahead of
-// this file (render/variants.rs), so the code of what is not in the pool compiles away.
+// Compiled per feature set: HAS_SPHERE, HAS_DUCK, HAS_CAUSTICS, FRESNEL_MODEL, SPECULAR_MODEL and
+// SHOW_REFLECTANCE are constants written ahead of this file (render/variants.rs), so the code
+// of what is not in the pool, or of a model not chosen, compiles away.
 
 struct Scene {
     view_proj: mat4x4<f32>,
@@ -15,6 +16,8 @@ struct Scene {
                                // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format);
                                // y debug view (0 none, see debug_view.wgsl)
+    optics: vec4<f32>,         // x highlight exponent s, y and z cosines of the sun disk's edge
+                               // and core (optics::sun_disk_cosines)
     duck_pose: mat4x4<f32>,    // the duck's frame: rotation in columns 0-2, position (m) in column 3
     duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
@@ -31,6 +34,8 @@ struct Scene {
 @group(1) @binding(2) var sky_cube: texture_cube<f32>;
 @group(1) @binding(3) var clamp_sampler: sampler;
 @group(1) @binding(4) var repeat_sampler: sampler;
+// Exact Fresnel reflectance at FRESNEL_TABLE_SIZE angles 0-90°: row 0 from air, row 1 from water.
+@group(1) @binding(5) var fresnel_table: texture_2d<f32>;
 
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
@@ -305,18 +310,64 @@ fn duck_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) ->
     return colour;
 }
 
-// The sky cubemap plus the sun's disk (about 1.5 degrees across, HDR so its reflections stay
-// bright), dimmed where the cubemap's alpha says clouds cover it.
+// The sky cubemap plus the sun's disk (the sun_size parameter across, 1.5 degrees by default,
+// HDR so its reflections stay bright), dimmed where the cubemap's alpha says clouds cover it.
 fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
     let sky = textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0);
-    let disk = smoothstep(0.99988, 0.99995, dot(dir, scene.sun.xyz));
+    let disk = smoothstep(scene.optics.y, scene.optics.z, dot(dir, scene.sun.xyz));
     return sky.rgb + vec3<f32>(40.0, 36.0, 30.0) * disk * (1.0 - 0.8 * sky.a);
 }
 
 // Specular reflection of the sun on water, sharper and brighter than the cubemap's disk
-// can hold at its resolution: the glitter on ripples.
-fn sun_specular(dir: vec3<f32>) -> vec3<f32> {
-    return SUN_COLOUR * scene.sun.w * 80.0 * pow(max(dot(dir, scene.sun.xyz), 0.0), 3000.0);
+// can hold at its resolution: the glitter on ripples. dir: a ray leaving the surface into
+// the air. Phong: cos^s of the angle between dir (the mirrored view ray) and the sun.
+// Blinn-Phong: cos^s of the angle between the surface normal and the half vector of the
+// directions to the eye and to the sun, for a mirrored ray (`normal` given; a ray refracted
+// out of the water passes a zero normal and keeps Phong's lobe).
+fn sun_specular(dir: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
+    var lobe = max(dot(dir, scene.sun.xyz), 0.0);
+    if (SPECULAR_MODEL == SPECULAR_BLINN_PHONG) {
+        let to_eye = -reflect(dir, normal);
+        let half_vector = normalize(to_eye + scene.sun.xyz);
+        lobe = select(lobe, max(dot(normal, half_vector), 0.0), dot(normal, normal) > 0.5);
+    }
+    return SUN_COLOUR * scene.sun.w * 80.0 * pow(lobe, scene.optics.x);
+}
+
+// Fresnel reflectance by this variant's model (FRESNEL_MODEL; the formulas, their sources and
+// the tests that hold these pixels to them are in optics.rs). cos_i: cosine of the incidence
+// angle; eta: n_from / n_to. Below the surface the approximations take the angle on the air
+// side (Snell); total internal reflection stays exact.
+fn reflectance(cos_i: f32, eta: f32) -> f32 {
+    if (FRESNEL_MODEL == FRESNEL_EXACT) {
+        return fresnel(cos_i, eta);
+    }
+    let ci = clamp(cos_i, 0.0, 1.0);
+    let sin_t2 = eta * eta * (1.0 - ci * ci);
+    if (sin_t2 >= 1.0) {
+        return 1.0;
+    }
+    let c = select(ci, sqrt(1.0 - sin_t2), eta > 1.0);
+    if (FRESNEL_MODEL == FRESNEL_TABLE) {
+        // Linear interpolation between the two texels around the angle, by hand: 32-bit
+        // float textures are not filterable everywhere.
+        let u = acos(ci) / (0.5 * PI) * f32(FRESNEL_TABLE_SIZE - 1);
+        let i = min(i32(floor(u)), FRESNEL_TABLE_SIZE - 2);
+        let row = select(0, 1, eta > 1.0);
+        let a = textureLoad(fresnel_table, vec2<i32>(i, row), 0).r;
+        let b = textureLoad(fresnel_table, vec2<i32>(i + 1, row), 0).r;
+        return a + (b - a) * (u - f32(i));
+    }
+    if (FRESNEL_MODEL == FRESNEL_SCHLICK) {
+        return SCHLICK_R0 + (1.0 - SCHLICK_R0) * pow(1.0 - c, 5.0);
+    }
+    if (FRESNEL_MODEL == FRESNEL_INVERSE_POWER) {
+        return 1.0 / pow(1.0 + c, INVERSE_POWER_EXPONENT);
+    }
+    if (FRESNEL_MODEL == FRESNEL_CLAMPED_POWER) {
+        return clamp(pow(1.0 - c, CLAMPED_POWER_EXPONENT), CLAMPED_POWER_MIN, CLAMPED_POWER_MAX);
+    }
+    return 1.0 - c;
 }
 
 // What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
@@ -349,9 +400,10 @@ fn upward(dir: vec3<f32>) -> vec3<f32> {
 }
 
 // What a ray starting at the surface and going up through air (see upward) sees: the
-// sphere, the pool walls above the water line, or the sky. t_exit: pool_exit_distance of
-// the ray; lod: tile mip level (see tile_lod).
-fn trace_air(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
+// sphere, the pool walls above the water line, or the sky. normal: the surface normal the
+// ray was mirrored at (zero for a refracted ray; see sun_specular); t_exit:
+// pool_exit_distance of the ray; lod: tile mip level (see tile_lod).
+fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     let ts = hit_sphere(origin, dir);
     let t = t_exit;
     let duck = intersect_duck(origin, dir);
@@ -365,7 +417,7 @@ fn trace_air(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f
     if (hit.y < rim() - 1.0e-3) {
         return pool_colour_at_hit(hit, lod);
     }
-    return sky_colour(dir) + sun_specular(dir);
+    return sky_colour(dir) + sun_specular(dir, normal);
 }
 
 // Final colour written to the target: linear up to 0.6, then a soft shoulder so bright
@@ -375,6 +427,15 @@ fn tone_map(c: vec3<f32>) -> vec3<f32> {
     let knee = 0.6;
     let shoulder = knee + (1.0 - knee) * (1.0 - exp(-(c - knee) / (1.0 - knee)));
     return select(c, shoulder, c > vec3<f32>(knee));
+}
+
+// A debug value v in [0, 1] as the grey that displays as v (stored as v * 255): no tone curve.
+fn grey_as_displayed(v: f32) -> vec4<f32> {
+    let g = vec3<f32>(clamp(v, 0.0, 1.0));
+    if (scene.output.x > 0.5) {
+        return vec4<f32>(g, 1.0);
+    }
+    return vec4<f32>(srgb_to_linear(g), 1.0);
 }
 
 fn finish(c: vec3<f32>) -> vec4<f32> {

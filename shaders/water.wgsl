@@ -1,7 +1,7 @@
 // The water surface: the grid displaced by the simulated height. Per fragment, the view ray
 // is split at the surface into a reflected and a refracted ray (Snell, n = 1.333); each is
 // traced analytically to the pool, the sphere or the sky, and the two are blended by the
-// Fresnel reflectance for unpolarised light.
+// Fresnel reflectance (the exact equations for unpolarised light, or a model a lesson picks).
 
 struct SurfaceOut {
     @builtin(position) clip: vec4<f32>,
@@ -37,9 +37,12 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
     let t_water = pool_exit_distance(in.world, water_dir);
     let lod_air = tile_lod(in.world + air_dir * t_air);
     let lod_water = tile_lod(in.world + water_dir * t_water);
-    let reflectance = fresnel(dot(-view, n), eta);
-    let air_weight = select(1.0 - reflectance, reflectance, from_above);
-    let air = trace_air(in.world, air_dir, t_air, lod_air);
+    let r = reflectance(dot(-view, n), eta);
+    if (SHOW_REFLECTANCE) {
+        return grey_as_displayed(r);
+    }
+    let air_weight = select(1.0 - r, r, from_above);
+    let air = trace_air(in.world, air_dir, select(vec3<f32>(0.0), n, from_above), t_air, lod_air);
     let water = trace_water(in.world, water_dir, t_water, lod_water);
     var colour = mix(water, air, air_weight);
     if (!from_above) {

@@ -6,10 +6,11 @@ use glam::{Quat, Vec2, Vec3};
 
 use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
+use crate::optics::{FresnelModel, SpecularModel};
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::quality::{ResolutionGovernor, StepGovernor};
-use crate::render::{DebugTexture, DebugView, RenderSettings, Renderer, View};
+use crate::render::{DebugTexture, DebugView, Optics, RenderSettings, Renderer, View, REFLECTANCE_VIEW};
 use crate::scene::{self, Sphere};
 use crate::sim::{
     self, BodyCoupling, Drop, FixedStep, HeightField, HullMove, HullSlot, SimEngine, WaterLevel, WaveSettings,
@@ -620,6 +621,13 @@ impl WaterDemo {
             sphere: self.sphere(),
             duck: self.duck(),
             caustics: self.params.flag(ParamId::Caustics),
+            optics: Optics {
+                fresnel: FresnelModel::from_param(self.params.get(ParamId::Fresnel)),
+                specular: SpecularModel::from_param(self.params.get(ParamId::Specular)),
+                shininess: self.params.get(ParamId::Shininess),
+                sun_size: self.params.get(ParamId::SunSize),
+                show_reflectance: self.params.get(ParamId::DebugView).round() as i32 == REFLECTANCE_VIEW,
+            },
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,

@@ -28,15 +28,17 @@ pub mod wgsl {
 
 /// Constants the shaders share with the Rust side, written from the Rust values ahead of
 /// every shader, so the two cannot disagree: the refractive index of water, the number of the
-/// duck's traced parts, and the sizes of the uniform arrays the simulation fills.
+/// duck's traced parts, the sizes of the uniform arrays the simulation fills, and the optical
+/// models' numbers (optics.rs).
 pub fn shared_constants() -> String {
     use crate::{duck, scene, sim};
     format!(
-        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\nconst MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n",
+        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\nconst MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n{}",
         scene::IOR_WATER,
         duck::TRACED_PARTS.len(),
         sim::MAX_DROPS_PER_PASS,
         sim::MAX_PUSH_STEPS * sim::MAX_HULL_MOVES * 8,
+        crate::optics::wgsl_constants(),
     )
 }
 

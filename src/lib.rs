@@ -8,6 +8,7 @@ pub mod duck;
 pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
+pub mod optics;
 pub mod params;
 pub mod physics;
 pub mod presets;

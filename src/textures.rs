@@ -124,6 +124,35 @@ pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::
     texture
 }
 
+/// The Fresnel lookup texture (optics::fresnel_table): R32Float, one row per side of the
+/// surface, read with textureLoad and interpolated in the shader (32-bit float textures are
+/// not filterable everywhere).
+pub fn create_fresnel_table(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
+    let size = crate::optics::FRESNEL_TABLE_SIZE;
+    let texture = gpu::texture_2d(
+        device,
+        "Fresnel table",
+        size,
+        2,
+        1,
+        1,
+        wgpu::TextureFormat::R32Float,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
+    queue.write_texture(
+        wgpu::TexelCopyTextureInfo {
+            texture: &texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect: wgpu::TextureAspect::All,
+        },
+        bytemuck::cast_slice(&crate::optics::fresnel_table()),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
+        wgpu::Extent3d { width: size, height: 2, depth_or_array_layers: 1 },
+    );
+    texture
+}
+
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct SkyFaceUniforms {

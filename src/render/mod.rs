@@ -10,6 +10,7 @@ use glam::{Mat4, Vec3};
 
 use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::optics::{self, FresnelModel, SpecularModel};
 use crate::scene::{self, Sphere};
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
@@ -41,11 +42,26 @@ pub struct View {
     /// The rubber duck's pose, if it is in the pool.
     pub duck: Option<crate::physics::Pose>,
     pub caustics: bool,
+    /// The optical models and their parameters (optics.rs).
+    pub optics: Optics,
     /// A view of the simulation's textures drawn over the scene, if any.
     pub debug: Option<DebugView>,
     /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
     /// is scaled up to the target).
     pub render_scale: f32,
+}
+
+/// How the water surface reflects (see optics.rs).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Optics {
+    pub fresnel: FresnelModel,
+    pub specular: SpecularModel,
+    /// Exponent of the sun highlight's cos^s.
+    pub shininess: f32,
+    /// Angular diameter of the sun's disk (degrees).
+    pub sun_size: f32,
+    /// The surface shows its Fresnel reflectance as grey instead of its colour (a debug view).
+    pub show_reflectance: bool,
 }
 
 /// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
@@ -63,6 +79,10 @@ pub enum DebugTexture {
     Velocity = 3,
     Caustics = 4,
 }
+
+/// The `debug_view` value that shows the water's Fresnel reflectance: not a texture but a
+/// variant of the surface shader ([`Optics::show_reflectance`]).
+pub const REFLECTANCE_VIEW: i32 = 5;
 
 impl DebugTexture {
     /// From the `debug_view` parameter's value (0 = none).
@@ -104,6 +124,7 @@ struct SceneUniforms {
     pool: [f32; 4],
     water: [f32; 4],
     output: [f32; 4],
+    optics: [f32; 4],
     duck_pose: [[f32; 4]; 4],
     duck_bound: [f32; 4],
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
@@ -291,6 +312,7 @@ impl Upscale {
 struct SceneTextures {
     tiles: wgpu::TextureView,
     sky: wgpu::TextureView,
+    fresnel_table: wgpu::TextureView,
     clamp: wgpu::Sampler,
     repeat: wgpu::Sampler,
 }
@@ -311,6 +333,7 @@ impl SceneTextures {
                 wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&self.sky) },
                 wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.clamp) },
                 wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::Sampler(&self.repeat) },
+                wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::TextureView(&self.fresnel_table) },
             ],
         })
     }
@@ -373,6 +396,12 @@ impl Renderer {
                 ),
                 gpu::sampler_entry(3, vis),
                 gpu::sampler_entry(4, vis),
+                gpu::texture_entry(
+                    5,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
@@ -397,6 +426,7 @@ impl Renderer {
         let scene_textures = SceneTextures {
             tiles: tiles.create_view(&Default::default()),
             sky: sky_cube.view(),
+            fresnel_table: textures::create_fresnel_table(device, queue).create_view(&Default::default()),
             clamp: sampler(wgpu::AddressMode::ClampToEdge),
             repeat: sampler(wgpu::AddressMode::Repeat),
         };
@@ -534,6 +564,10 @@ impl Renderer {
                 0.0,
                 0.0,
             ],
+            optics: {
+                let (edge, core) = optics::sun_disk_cosines(view.optics.sun_size);
+                [view.optics.shininess, edge, core, 0.0]
+            },
             duck_pose: view
                 .duck
                 .map_or(Mat4::IDENTITY, |p| Mat4::from_rotation_translation(p.rotation, p.position))

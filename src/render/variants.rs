@@ -8,6 +8,7 @@
 use glam::{Vec3, Vec4Swizzles};
 
 use super::{View, DEPTH_FORMAT};
+use crate::optics::{FresnelModel, SpecularModel};
 use crate::{duck, gpu};
 
 /// What a frame shows that costs shader work: the shader constants of a variant.
@@ -19,18 +20,33 @@ pub struct Features {
     pub duck: bool,
     /// Light under water comes from the caustics map (else from a calm surface).
     pub caustics: bool,
+    /// The Fresnel reflectance model of the water surface.
+    pub fresnel: FresnelModel,
+    /// The shape of the sun's highlight on the water.
+    pub specular: SpecularModel,
+    /// The surface shows its reflectance as grey (the `reflectance` debug view).
+    pub show_reflectance: bool,
 }
 
 impl Features {
     pub fn of(view: &View) -> Self {
-        Self { sphere: view.sphere.is_some(), duck: view.duck.is_some(), caustics: view.caustics }
+        Self {
+            sphere: view.sphere.is_some(),
+            duck: view.duck.is_some(),
+            caustics: view.caustics,
+            fresnel: view.optics.fresnel,
+            specular: view.optics.specular,
+            show_reflectance: view.optics.show_reflectance,
+        }
     }
 
-    /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`).
+    /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
+    /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`).
     pub fn wgsl(&self) -> String {
         format!(
-            "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n",
-            self.sphere, self.duck, self.caustics
+            "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
+             const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n",
+            self.sphere, self.duck, self.caustics, self.fresnel as u32, self.specular as u32, self.show_reflectance
         )
     }
 }

@@ -1,0 +1,256 @@
+//! Optical models a lesson can switch between: how much of the light meeting the water
+//! surface is reflected (Fresnel reflectance: the exact equations and the cheaper curves the
+//! seeds use), and the shape of the sun's highlight (Phong or Blinn–Phong). The formulas here
+//! are the reference: the surface shader evaluates the same ones (the model is a constant of
+//! its variant, so a model not chosen costs nothing), the page and the viewer plot them, and
+//! the tests hold the GPU's pixels to them.
+
+use crate::scene::IOR_WATER;
+
+/// A Fresnel reflectance model. Each takes the cosine of the incidence angle; below the
+/// surface the approximations take the angle on the air side (Snell) and total internal
+/// reflection stays exact.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FresnelModel {
+    /// The Fresnel equations for unpolarised light, R = (Rs + Rp) / 2 (seed 000, §2.2.2).
+    #[default]
+    Exact = 0,
+    /// The exact curve sampled into a lookup texture of [`FRESNEL_TABLE_SIZE`] angles per
+    /// side, read with linear interpolation (seed 000, §3.2.2: precomputed coefficients in a
+    /// 1-D texture indexed by the angle).
+    Table = 1,
+    /// Schlick: R0 + (1 − R0)(1 − cos θ)⁵, R0 = ((n1 − n2)/(n1 + n2))² (seed 000, §3.2.2).
+    Schlick = 2,
+    /// 1 / (1 + cos θ)⁸ (seed 000, §3.2.2, after Fleck 2007).
+    InversePower = 3,
+    /// clamp((1 − cos θ)⁴, 0.05, 0.3) (seed 002's water shader: `pow(1.0 + dot(eye, n), 4.0)`
+    /// with the eye vector pointing at the surface).
+    ClampedPower = 4,
+    /// 1 − cos θ: the reflected share grows linearly as the view flattens (seed 003, eq. 1).
+    Linear = 5,
+}
+
+impl FresnelModel {
+    pub const ALL: [FresnelModel; 6] = [
+        FresnelModel::Exact,
+        FresnelModel::Table,
+        FresnelModel::Schlick,
+        FresnelModel::InversePower,
+        FresnelModel::ClampedPower,
+        FresnelModel::Linear,
+    ];
+
+    /// From the `fresnel` parameter's value.
+    pub fn from_param(value: f32) -> Self {
+        Self::ALL.get(value.round().max(0.0) as usize).copied().unwrap_or_default()
+    }
+}
+
+/// Angles per side of the Fresnel lookup texture (0° to 90° at the texel centres).
+pub const FRESNEL_TABLE_SIZE: u32 = 256;
+/// Exponent of [`FresnelModel::InversePower`].
+pub const INVERSE_POWER_EXPONENT: f32 = 8.0;
+/// Exponent and bounds of [`FresnelModel::ClampedPower`].
+pub const CLAMPED_POWER_EXPONENT: f32 = 4.0;
+pub const CLAMPED_POWER_MIN: f32 = 0.05;
+pub const CLAMPED_POWER_MAX: f32 = 0.3;
+
+/// Reflectance at normal incidence between air and water, ((n1 − n2)/(n1 + n2))².
+pub fn schlick_r0() -> f32 {
+    let r = (1.0 - IOR_WATER) / (1.0 + IOR_WATER);
+    r * r
+}
+
+/// The exact reflectance for unpolarised light. `cos_i`: cosine of the incidence angle;
+/// `eta`: n_from / n_to. Total internal reflection gives 1. Same arithmetic as the shader's
+/// `fresnel` (f32).
+pub fn fresnel_exact(cos_i: f32, eta: f32) -> f32 {
+    let ci = cos_i.clamp(0.0, 1.0);
+    let sin_t2 = eta * eta * (1.0 - ci * ci);
+    if sin_t2 >= 1.0 {
+        return 1.0;
+    }
+    let ct = (1.0 - sin_t2).sqrt();
+    let rs = (eta * ci - ct) / (eta * ci + ct);
+    let rp = (ci - eta * ct) / (ci + eta * ct);
+    0.5 * (rs * rs + rp * rp)
+}
+
+/// The lookup texture's texels: row 0 from air into water (η = 1/n), row 1 from water into
+/// air (η = n), each [`FRESNEL_TABLE_SIZE`] exact values at angles i/(size − 1) · 90°.
+pub fn fresnel_table() -> Vec<f32> {
+    let last = (FRESNEL_TABLE_SIZE - 1) as f32;
+    [1.0 / IOR_WATER, IOR_WATER]
+        .iter()
+        .flat_map(|&eta| {
+            (0..FRESNEL_TABLE_SIZE)
+                .map(move |i| fresnel_exact((i as f32 / last * std::f32::consts::FRAC_PI_2).cos(), eta))
+        })
+        .collect()
+}
+
+/// Reflectance by `model` (see [`FresnelModel`]); `table`: [`fresnel_table`], read only by
+/// [`FresnelModel::Table`].
+pub fn reflectance(model: FresnelModel, cos_i: f32, eta: f32, table: &[f32]) -> f32 {
+    let ci = cos_i.clamp(0.0, 1.0);
+    let sin_t2 = eta * eta * (1.0 - ci * ci);
+    if model == FresnelModel::Exact || sin_t2 >= 1.0 {
+        return fresnel_exact(ci, eta);
+    }
+    // The cosine on the air side: the incidence angle from above, the refracted one from below.
+    let c = if eta > 1.0 { (1.0 - sin_t2).sqrt() } else { ci };
+    match model {
+        FresnelModel::Exact => unreachable!(),
+        FresnelModel::Table => {
+            let last = (FRESNEL_TABLE_SIZE - 1) as f32;
+            let u = ci.acos() / std::f32::consts::FRAC_PI_2 * last;
+            let i = (u.floor() as usize).min(FRESNEL_TABLE_SIZE as usize - 2);
+            let row = if eta > 1.0 { FRESNEL_TABLE_SIZE as usize } else { 0 };
+            let (a, b) = (table[row + i], table[row + i + 1]);
+            a + (b - a) * (u - i as f32)
+        }
+        FresnelModel::Schlick => {
+            let r0 = schlick_r0();
+            r0 + (1.0 - r0) * (1.0 - c).powf(5.0)
+        }
+        FresnelModel::InversePower => 1.0 / (1.0 + c).powf(INVERSE_POWER_EXPONENT),
+        FresnelModel::ClampedPower => {
+            (1.0 - c).powf(CLAMPED_POWER_EXPONENT).clamp(CLAMPED_POWER_MIN, CLAMPED_POWER_MAX)
+        }
+        FresnelModel::Linear => 1.0 - c,
+    }
+}
+
+/// `samples` reflectances of `model` at incidence angles evenly from 0° to 90°, seen from air
+/// (`from_water` false) or from under the water: the curve the page and the viewer plot.
+pub fn reflectance_curve(model: FresnelModel, from_water: bool, samples: usize) -> Vec<f32> {
+    let table = fresnel_table();
+    let eta = if from_water { IOR_WATER } else { 1.0 / IOR_WATER };
+    let last = samples.max(2) as f32 - 1.0;
+    (0..samples.max(2))
+        .map(|i| reflectance(model, (i as f32 / last * std::f32::consts::FRAC_PI_2).cos(), eta, &table))
+        .collect()
+}
+
+/// The sun's highlight on the water.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum SpecularModel {
+    /// cos^s of the angle between the reflected view ray and the sun.
+    #[default]
+    Phong = 0,
+    /// cos^s of the angle between the normal and the half vector of the view and sun
+    /// directions: a wider highlight at the same s, stretched along the view at grazing angles.
+    BlinnPhong = 1,
+}
+
+impl SpecularModel {
+    pub fn from_param(value: f32) -> Self {
+        if value >= 0.5 {
+            SpecularModel::BlinnPhong
+        } else {
+            SpecularModel::Phong
+        }
+    }
+}
+
+/// The sun's disk in the sky at the default size ([`DEFAULT_SUN_SIZE_DEG`]): its brightness
+/// rises between these cosines of the angle from its centre.
+const SUN_DISK_EDGE_COS: f32 = 0.99988;
+const SUN_DISK_CORE_COS: f32 = 0.99995;
+/// Angular diameter (degrees) of the sun's disk, between the half-brightness points.
+pub const DEFAULT_SUN_SIZE_DEG: f32 = 1.5;
+
+/// The disk's (edge, core) cosines for a sun `size_deg` across: 1 − cos θ ≈ θ²/2 grows with
+/// the square of the size. Exact at the default size (the f32 arithmetic gives back the
+/// constants), so the default frame does not change.
+pub fn sun_disk_cosines(size_deg: f32) -> (f32, f32) {
+    let k = (size_deg / DEFAULT_SUN_SIZE_DEG) * (size_deg / DEFAULT_SUN_SIZE_DEG);
+    (1.0 - (1.0 - SUN_DISK_EDGE_COS) * k, 1.0 - (1.0 - SUN_DISK_CORE_COS) * k)
+}
+
+/// WGSL constants of this module, written ahead of every shader (see `gpu::shared_constants`).
+pub fn wgsl_constants() -> String {
+    use FresnelModel::*;
+    format!(
+        "const FRESNEL_EXACT: u32 = {}u;\nconst FRESNEL_TABLE: u32 = {}u;\nconst FRESNEL_SCHLICK: u32 = {}u;\n\
+         const FRESNEL_INVERSE_POWER: u32 = {}u;\nconst FRESNEL_CLAMPED_POWER: u32 = {}u;\nconst FRESNEL_LINEAR: u32 = {}u;\n\
+         const FRESNEL_TABLE_SIZE: i32 = {};\nconst SCHLICK_R0: f32 = {:?};\nconst INVERSE_POWER_EXPONENT: f32 = {:?};\n\
+         const CLAMPED_POWER_EXPONENT: f32 = {:?};\nconst CLAMPED_POWER_MIN: f32 = {:?};\nconst CLAMPED_POWER_MAX: f32 = {:?};\n\
+         const SPECULAR_PHONG: u32 = {}u;\nconst SPECULAR_BLINN_PHONG: u32 = {}u;\n",
+        Exact as u32,
+        Table as u32,
+        Schlick as u32,
+        InversePower as u32,
+        ClampedPower as u32,
+        Linear as u32,
+        FRESNEL_TABLE_SIZE,
+        schlick_r0(),
+        INVERSE_POWER_EXPONENT,
+        CLAMPED_POWER_EXPONENT,
+        CLAMPED_POWER_MIN,
+        CLAMPED_POWER_MAX,
+        SpecularModel::Phong as u32,
+        SpecularModel::BlinnPhong as u32,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_model_stays_between_0_and_1_and_total_internal_reflection_stays_exact() {
+        let table = fresnel_table();
+        let critical = (1.0 / IOR_WATER).asin();
+        for model in FresnelModel::ALL {
+            let above = reflectance_curve(model, false, 91);
+            let below = reflectance_curve(model, true, 91);
+            println!(
+                "{model:?}: from air 0° {:.4}, 45° {:.4}, 80° {:.4}; from water 30° {:.4}, 48° {:.4}",
+                above[0], above[45], above[80], below[30], below[48]
+            );
+            assert!(above.iter().chain(&below).all(|r| (0.0..=1.0).contains(r)), "{model:?} out of [0, 1]");
+            // Past the critical angle (48.6°) every model reflects everything.
+            let past = (critical + 0.01).cos();
+            assert_eq!(reflectance(model, past, IOR_WATER, &table), 1.0, "{model:?} under total internal reflection");
+        }
+    }
+
+    #[test]
+    fn the_approximations_are_near_the_exact_curve_where_the_seeds_say() {
+        let table = fresnel_table();
+        let eta = 1.0 / IOR_WATER;
+        let worst = |model, from_deg: i32, to_deg: i32| {
+            (from_deg..=to_deg)
+                .map(|d| {
+                    let c = (d as f32).to_radians().cos();
+                    (reflectance(model, c, eta, &table) - fresnel_exact(c, eta)).abs()
+                })
+                .fold(0.0f32, f32::max)
+        };
+        let table_err = worst(FresnelModel::Table, 0, 89);
+        let schlick_err = worst(FresnelModel::Schlick, 0, 89);
+        let schlick_low = worst(FresnelModel::Schlick, 0, 60);
+        let inverse_low = worst(FresnelModel::InversePower, 0, 30);
+        let linear_low = worst(FresnelModel::Linear, 0, 30);
+        println!(
+            "largest difference from exact, from air: table {table_err:.5} (0-89°), Schlick {schlick_low:.4} (0-60°) \
+             {schlick_err:.4} (0-89°), 1/(1+cos)^8 {inverse_low:.4} (0-30°), 1 - cos {linear_low:.4} (0-30°)"
+        );
+        assert!(table_err < 2e-3, "the table is {table_err} off");
+        // Schlick drifts only towards grazing incidence (most near 85°).
+        assert!(schlick_low < 0.012 && schlick_err < 0.07, "Schlick is {schlick_low} / {schlick_err} off");
+        assert!(schlick_r0() > 0.0203 && schlick_r0() < 0.0205);
+        // The cheap curves are for the look, not the numbers: at normal incidence 1/(1+cos)^8
+        // gives 1/256 (exact: 0.020), 1 - cos gives 0.
+        assert!(inverse_low < 0.02 && linear_low < 0.15);
+    }
+
+    #[test]
+    fn the_default_sun_disk_is_the_one_drawn_before_the_parameter() {
+        assert_eq!(sun_disk_cosines(DEFAULT_SUN_SIZE_DEG), (0.99988, 0.99995));
+        let (edge, core) = sun_disk_cosines(3.0);
+        println!("a 3° sun: edge cos {edge}, core cos {core}");
+        assert!(edge < 0.99988 && core < 0.99995 && edge < core);
+    }
+}

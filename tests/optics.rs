@@ -1,0 +1,144 @@
+//! The optical models on the GPU (lavapipe in CI), held to the formulas of `optics.rs`: each
+//! Fresnel model's reflectance at every sampled pixel of calm water, seen from above and from
+//! under the surface (where total internal reflection must stay); the sun's highlight wider
+//! with Blinn–Phong than with Phong at the same shininess and narrower as shininess grows; the
+//! sun's disk growing with its size parameter.
+
+mod common;
+
+use common::{render, Frame};
+use glam::{Vec2, Vec3};
+use wavepool::demo::{DemoOptions, WaterDemo};
+use wavepool::optics::{fresnel_table, reflectance, FresnelModel};
+use wavepool::params::ParamId;
+use wavepool::render::REFLECTANCE_VIEW;
+use wavepool::scene::{HALF_WIDTH, IOR_WATER};
+use wavepool::sim::random_drops;
+
+const W: u32 = 320;
+const H: u32 = 240;
+
+/// An empty pool at full resolution, nothing moving.
+fn empty_pool() -> WaterDemo {
+    let mut demo = common::demo(DemoOptions::default());
+    demo.params.set(ParamId::Objects, 0.0);
+    demo.params.set(ParamId::Quality, 1.0);
+    demo
+}
+
+/// Largest difference (0-1) between the grey the `reflectance` view drew and the formula of
+/// `model` at the calm surface point under each sampled pixel, and how many pixels were
+/// compared and how many of them were under total internal reflection.
+fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f32, usize, usize) {
+    let table = fresnel_table();
+    let size = Vec2::new(W as f32, H as f32);
+    let (mut worst, mut compared, mut total_reflection) = (0.0f32, 0, 0);
+    for y in (4..H - 4).step_by(7) {
+        for x in (4..W - 4).step_by(7) {
+            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let t = -ray.origin.y / ray.dir.y;
+            let p = ray.origin + ray.dir * t;
+            // Calm water inside the pool, away from the walls' edges.
+            if !(t > 0.0) || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
+                continue;
+            }
+            let from_above = ray.origin.y > 0.0;
+            let eta = if from_above { 1.0 / IOR_WATER } else { IOR_WATER };
+            let expected = reflectance(model, ray.dir.y.abs(), eta, &table);
+            let drawn = frame.pixel(x, y)[0];
+            total_reflection += usize::from(expected == 1.0);
+            compared += 1;
+            worst = worst.max((drawn - expected).abs());
+        }
+    }
+    (worst, compared, total_reflection)
+}
+
+#[test]
+fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_surface() {
+    let mut means = Vec::new();
+    for model in FresnelModel::ALL {
+        let mut demo = empty_pool();
+        demo.params.set(ParamId::Fresnel, model as u32 as f32);
+        demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
+        let above = render(&mut demo, W, H, 2, 1.0 / 60.0);
+        let (worst_above, n_above, _) = worst_difference(&demo, &above, model);
+        // Under water, looking up at the surface: Snell's window and, beyond 48.6° from the
+        // vertical, total internal reflection (white in every model).
+        demo.camera.target = Vec3::new(0.0, -0.55, 0.0);
+        demo.camera.pitch = -35.0;
+        demo.camera.distance = 0.45;
+        demo.camera.yaw = 20.0;
+        let below = render(&mut demo, W, H, 1, 1.0 / 60.0);
+        let (worst_below, n_below, tir) = worst_difference(&demo, &below, model);
+        // The comparison tells the models apart: held to the exact formula, an approximation's
+        // pixels fail (the table too, but only just under the critical angle, where the curve
+        // climbs to 1 faster than its texels: 14/255 there).
+        let (off_exact, _, _) = worst_difference(&demo, &below, FresnelModel::Exact);
+        let mean = (0..H).step_by(4).map(|y| above.pixel(W / 2, y)[0]).sum::<f32>() / (H / 4) as f32;
+        println!(
+            "{model:?}: largest difference from its formula {:.1}/255 over {n_above} pixels from above, \
+             {:.1}/255 over {n_below} from below ({tir} of them totally reflected), {:.1}/255 from the exact formula; \
+             mean grey down the middle {mean:.3}",
+            worst_above * 255.0,
+            worst_below * 255.0,
+            off_exact * 255.0
+        );
+        assert!(n_above > 150 && n_below > 400 && tir > 50, "{model:?}: too few pixels compared");
+        assert!(worst_above <= 2.5 / 255.0, "{model:?} from above: {:.1}/255 off its formula", worst_above * 255.0);
+        assert!(worst_below <= 2.5 / 255.0, "{model:?} from below: {:.1}/255 off its formula", worst_below * 255.0);
+        if !matches!(model, FresnelModel::Exact | FresnelModel::Table) {
+            assert!(off_exact > 8.0 / 255.0, "{model:?} is drawn like the exact curve ({:.1}/255)", off_exact * 255.0);
+        }
+        means.push(mean);
+    }
+    // The models are not one picture: the linear one reflects most at these angles, the
+    // clamped power never less than 0.05.
+    let exact = means[FresnelModel::Exact as usize];
+    assert!(means[FresnelModel::Linear as usize] > exact + 0.1, "means {means:?}");
+}
+
+/// Pixels of the water (below the horizon row `from_row`) bright enough to be the sun's glint.
+fn glint_pixels(frame: &Frame, from_row: u32) -> usize {
+    (from_row..H).flat_map(|y| (0..W).map(move |x| (x, y))).filter(|&(x, y)| frame.luma(x, y) > 0.97).count()
+}
+
+/// Rippled water seen towards the sun, at the sun's elevation: its glitter on the far half
+/// (Blinn-Phong's stretched along the view).
+fn towards_the_sun(specular: f32, shininess: f32, sun_size: f32, drops: u32) -> Frame {
+    let mut demo = empty_pool();
+    demo.params.set(ParamId::SunElevation, 30.0);
+    demo.params.set(ParamId::SunAzimuth, 0.0);
+    demo.params.set(ParamId::Specular, specular);
+    demo.params.set(ParamId::Shininess, shininess);
+    demo.params.set(ParamId::SunSize, sun_size);
+    demo.camera.pitch = 30.0;
+    demo.camera.distance = 3.2;
+    demo.camera.yaw = 180.0;
+    for d in random_drops(5, drops, 0.8, 0.03, 0.004) {
+        demo.add_drop(d.x, d.z, d.radius, d.strength);
+    }
+    render(&mut demo, W, H, 20, 1.0 / 60.0)
+}
+
+#[test]
+fn blinn_phong_gives_a_wider_glint_than_phong_and_shininess_narrows_it() {
+    let phong = glint_pixels(&towards_the_sun(0.0, 3000.0, 1.5, 30), 0);
+    let blinn = glint_pixels(&towards_the_sun(1.0, 3000.0, 1.5, 30), 0);
+    let phong_soft = glint_pixels(&towards_the_sun(0.0, 500.0, 1.5, 30), 0);
+    let phong_sharp = glint_pixels(&towards_the_sun(0.0, 10000.0, 1.5, 30), 0);
+    println!(
+        "glint pixels (luma > 0.97): Phong s=3000 {phong}, Blinn-Phong s=3000 {blinn}, Phong s=500 {phong_soft}, Phong s=10000 {phong_sharp}"
+    );
+    assert!(phong > 20, "no glint seen towards the sun ({phong} pixels)");
+    assert!(blinn as f32 > 1.25 * phong as f32, "Blinn-Phong {blinn} vs Phong {phong}");
+    assert!(phong_soft > phong && phong > phong_sharp, "shininess: {phong_soft} / {phong} / {phong_sharp}");
+}
+
+#[test]
+fn the_sun_disk_in_calm_water_grows_with_the_sun_size() {
+    let small = glint_pixels(&towards_the_sun(0.0, 10000.0, 1.0, 0), 0);
+    let large = glint_pixels(&towards_the_sun(0.0, 10000.0, 4.0, 0), 0);
+    println!("the sun's mirror image in calm water: {small} bright pixels at 1°, {large} at 4°");
+    assert!(small > 0 && large as f32 > 4.0 * small as f32, "{small} at 1°, {large} at 4°");
+}
