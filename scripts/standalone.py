@@ -5,9 +5,9 @@ request, so it opens by double-click from disk (file://) and inside <iframe sand
 Everything Trunk built goes inline: the page's stylesheet as a <style>, and one module script
 holding the wasm module (gzip, then base64; the browser gunzips it with DecompressionStream and
 instantiates it asynchronously), wasm-bindgen's JS (its exports turned into a closure's return
-value), context-budget.js (likewise), embed.js (which sees WAVEPOOL_INLINE and uses the inline
-wasm and a constructed stylesheet instead of the files next to it) and index.html's own page
-script.
+value), our own modules that embed.js imports (likewise), embed.js (which sees WAVEPOOL_INLINE
+and uses the inline wasm and a constructed stylesheet instead of the files next to it) and
+index.html's own page script.
 
 Usage: scripts/standalone.py DIST   (after `trunk build`; prints the file's size)
 """
@@ -22,7 +22,7 @@ from pathlib import Path
 # The single file must stay small enough to mail or upload to a learning platform.
 BUDGET_BYTES = 1_500_000
 # What the demo's JS takes from wasm-bindgen's module.
-CORE_EXPORTS = ["WebDemo", "optionTable", "paramTable", "presetTable", "panicForTests"]
+CORE_EXPORTS = ["WebDemo", "optionTable", "paramTable", "presetTable", "fresnelCurve", "panicForTests"]
 
 
 def fail(message):
@@ -61,10 +61,13 @@ def main():
     if not import_line.search(embed):
         fail("embed.js no longer imports wavepool.js the way this script expects")
     embed = import_line.sub(r"const { init, \1 } = WAVEPOOL_CORE;", embed)
-    budget_import = re.compile(r'^import \{ [\w, ]+ \} from "\./context-budget\.js";$', re.M)
-    if not budget_import.search(embed):
-        fail("embed.js no longer imports context-budget.js the way this script expects")
-    embed = budget_import.sub("", embed)
+    # Our own small modules (context-budget.js, fresnel-plot.js): each becomes a closure ahead
+    # of embed.js, and its import line goes.
+    own_import = re.compile(r'^import \{ [\w, ]+ \} from "\./([\w-]+\.js)";\n', re.M)
+    own_modules = own_import.findall(embed)
+    if "context-budget.js" not in own_modules:
+        fail("embed.js no longer imports its own modules the way this script expects")
+    embed = own_import.sub("", embed)
 
     # index.html: its page script (minus the import, mount is in the same module now), its
     # body, its title; the stylesheet and Trunk's script tags are replaced by inline ones.
@@ -85,7 +88,7 @@ def main():
         [
             inline,
             "const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";",
-            module_as_closure(read("context-budget.js"), "context-budget.js"),
+            *[module_as_closure(read(name), name) for name in own_modules],
             embed,
             page_script,
         ]

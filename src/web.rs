@@ -76,6 +76,18 @@ pub fn preset_table() -> js_sys::Array {
         .collect()
 }
 
+/// Fresnel reflectance of the `fresnel` parameter's model `model` at `samples` incidence
+/// angles from 0° to 90°, seen from air or from under the water: the curve the page plots,
+/// from the same formulas the surface shader uses (optics.rs).
+#[wasm_bindgen(js_name = fresnelCurve)]
+pub fn fresnel_curve(model: f32, from_water: bool, samples: u32) -> Vec<f32> {
+    crate::optics::reflectance_curve(
+        crate::optics::FresnelModel::from_param(model),
+        from_water,
+        samples.clamp(2, 1024) as usize,
+    )
+}
+
 /// Panics on purpose, for the test that a panic shows up in the page.
 #[doc(hidden)]
 #[wasm_bindgen(js_name = panicForTests)]

@@ -12,7 +12,7 @@ mod support;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
+use support::{canvas_rect_js, changed_fraction, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// Opens the page, waits for the first frame and checks the backend and that the canvas
 /// shows a picture (not a flat fill).
@@ -603,4 +603,54 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
     println!("quality=1: scale {} after 6 s at {} frames/s", s["renderScale"], s["fps"]);
     assert_eq!(s["renderScale"].as_f64(), Some(1.0));
     browser.close().await;
+}
+
+/// The Optics group in the page, on both backends: the Fresnel plot draws the chosen model's
+/// curve from the core's formulas (its first point is the reflectance at 0° from air: 0.020
+/// exact, 0 linear), choosing a model in the select redraws it and changes the water's
+/// pixels, and the plot's view mark sits at 90° minus the camera's pitch.
+async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
+    let (browser, _server) =
+        open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none&paused=1"), backend).await;
+    let plot = "const f = document.querySelector('#pool').shadowRoot.querySelector('.fresnel-plot');
+                if (!f) return null;
+                const p = f.querySelector('path.model.air').getAttribute('d');
+                const m = f.querySelector('line.view');
+                return { model: f.dataset.model, start: p.slice(0, p.indexOf('L')), points: p.split('L').length,
+                         mark: Number(m.getAttribute('x1')), pitch: window.demo.camera()[1] };";
+    let before_plot = browser.js(plot).await;
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    let before = browser.screenshot().await;
+    browser
+        .js("const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=fresnel]');
+             s.value = '5'; s.dispatchEvent(new Event('change')); return true;")
+        .await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let after_plot = browser.js(plot).await;
+    let after = browser.screenshot().await;
+    let changed = changed_fraction(&before, &after, rect, 8);
+    println!("{backend}: plot {before_plot} -> {after_plot}; {:.1} % of the canvas changed", changed * 100.0);
+    assert_eq!(before_plot["model"], "0");
+    // Plot area: x from 30 over 180 units for 0-90°, y from 8 over 100 units for 1-0.
+    assert_eq!(before_plot["start"], "M30.0,106.0", "exact at 0°: 0.020");
+    assert_eq!(after_plot["model"], "5");
+    assert_eq!(after_plot["start"], "M30.0,108.0", "linear at 0°: 0");
+    assert_eq!(after_plot["points"], 91);
+    assert_eq!(browser.js("return window.demo.get('fresnel');").await, 5.0);
+    let expected_mark = 30.0 + (90.0 - before_plot["pitch"].as_f64().unwrap().abs()) / 90.0 * 180.0;
+    assert!((before_plot["mark"].as_f64().unwrap() - expected_mark).abs() < 0.2, "view mark {before_plot}");
+    assert!(changed > 0.05, "{backend}: the linear model did not change the water ({:.2} %)", changed * 100.0);
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgpu() {
+    let _g = serial();
+    fresnel_models_in_the_page(Graphics::WebGpu, "webgpu").await;
+}
+
+#[tokio::test]
+async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgl2() {
+    let _g = serial();
+    fresnel_models_in_the_page(Graphics::WebGl2Only, "webgl2").await;
 }

@@ -39,7 +39,7 @@ fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f3
             let t = -ray.origin.y / ray.dir.y;
             let p = ray.origin + ray.dir * t;
             // Calm water inside the pool, away from the walls' edges.
-            if !(t > 0.0) || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
+            if t.is_nan() || t <= 0.0 || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
                 continue;
             }
             let from_above = ray.origin.y > 0.0;

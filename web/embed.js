@@ -3,8 +3,9 @@
 // in a shadow root, so the host page's CSS and ours never meet; nothing is put on `window`.
 // The simulation and rendering are Rust (wavepool.js + wavepool_bg.wasm, next to this file).
 
-import init, { WebDemo, optionTable, paramTable, presetTable } from "./wavepool.js";
+import init, { WebDemo, fresnelCurve, optionTable, paramTable, presetTable } from "./wavepool.js";
 import { acquireContext, contextsHeld, releaseContext, watchNear } from "./context-budget.js";
+import { FresnelPlot } from "./fresnel-plot.js";
 
 let ready = null; // one instantiation of the wasm module for every demo on the page
 const live = new Set(); // mounted demos, told when the wasm module panics
@@ -384,6 +385,8 @@ class Demo {
     this._saved = null; // { params: [[name, value]], camera } while suspended
     this._still = null; // the 2D canvas showing the last frame while suspended
     this._waking = false;
+    this._plot = null; // the Fresnel plot in the Optics group (fresnel-plot.js), with the controls
+    this._plotAt = -Infinity; // when its view mark last moved (ms)
   }
 
   // ---- set-up -------------------------------------------------------------------------
@@ -577,6 +580,12 @@ class Demo {
       }
       groups.get(p.group).append(this._control(p));
     }
+    if (groups.has("Optics")) {
+      // The Fresnel models' curves beside their select.
+      this._plot = new FresnelPlot(fresnelCurve);
+      groups.get("Optics").append(this._plot.element);
+      this._updatePlot();
+    }
     const buttons = document.createElement("div");
     buttons.className = "buttons";
     const button = (label, title, action) => {
@@ -676,7 +685,15 @@ class Demo {
     return row;
   }
 
+  // The plot's model and the angle at which the view's centre meets the water (the camera's
+  // pitch is its elevation above the pool's middle: incidence = 90° - |pitch|).
+  _updatePlot() {
+    if (!this._plot) return;
+    this._plot.update(this.get("fresnel"), 90 - Math.abs(this.camera()[1]));
+  }
+
   _refreshControls(name) {
+    if (!name || name === "fresnel") this._updatePlot();
     if (name) {
       const update = this._controls.get(name);
       if (update) update();
@@ -766,6 +783,10 @@ class Demo {
       const still = this._still;
       this._still = null;
       requestAnimationFrame(() => still.remove());
+    }
+    if (this._plot && !(time - this._plotAt < 250)) {
+      this._plotAt = time; // the view mark follows the camera, four times a second
+      this._updatePlot();
     }
     if (this._frames.length === 0) this._runningSince = time;
     this._frames.push(time);
