@@ -11,7 +11,8 @@ use std::time::Instant;
 use eframe::egui;
 
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
-use wavepool::params::{choice_label, Control, ParamSpec, PARAMS};
+use wavepool::optics::{self, FresnelModel};
+use wavepool::params::{choice_label, Control, ParamId, ParamSpec, PARAMS};
 use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
@@ -163,6 +164,10 @@ impl Viewer {
                 egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
                     for spec in PARAMS.iter().filter(|p| p.group == group) {
                         self.control(ui, spec);
+                    }
+                    if group == "Optics" {
+                        let model = FresnelModel::from_param(self.demo.params.get(ParamId::Fresnel));
+                        fresnel_plot(ui, model, 90.0 - self.demo.camera.pitch.abs());
                     }
                 });
             }
@@ -389,4 +394,41 @@ impl eframe::App for Viewer {
         self.finish_when_due(ui.ctx());
         ui.ctx().request_repaint();
     }
+}
+
+/// Reflectance against the angle of incidence, as the page draws it (web/fresnel-plot.js):
+/// `model` (blue) over the exact curve (grey), from air solid and from under the water dashed,
+/// and a mark at `view_deg`, the angle at which the view's centre meets the water.
+fn fresnel_plot(ui: &mut egui::Ui, model: FresnelModel, view_deg: f32) {
+    const SAMPLES: usize = 91;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(220.0, 110.0), egui::Sense::hover());
+    let area = rect.shrink2(egui::vec2(8.0, 6.0));
+    let painter = ui.painter_at(rect);
+    let at = |deg: f32, r: f32| egui::pos2(area.left() + deg / 90.0 * area.width(), area.bottom() - r * area.height());
+    let faint = ui.visuals().weak_text_color();
+    painter.rect_stroke(area, 0.0, egui::Stroke::new(1.0, faint), egui::StrokeKind::Inside);
+    for (from_water, dashed) in [(true, true), (false, false)] {
+        for (m, stroke) in [
+            (FresnelModel::Exact, egui::Stroke::new(3.0, egui::Color32::from_gray(138))),
+            (model, egui::Stroke::new(1.5, egui::Color32::from_rgb(31, 111, 209))),
+        ] {
+            let curve = optics::reflectance_curve(m, from_water, SAMPLES);
+            let points: Vec<egui::Pos2> =
+                curve.iter().enumerate().map(|(i, &r)| at(i as f32 * 90.0 / (SAMPLES - 1) as f32, r)).collect();
+            if dashed {
+                painter.extend(egui::Shape::dashed_line(&points, stroke, 4.0, 3.0));
+            } else {
+                painter.add(egui::Shape::line(points, stroke));
+            }
+        }
+    }
+    let x = at(view_deg.clamp(0.0, 90.0), 0.0).x;
+    painter.line_segment(
+        [egui::pos2(x, area.top()), egui::pos2(x, area.bottom())],
+        egui::Stroke::new(1.5, egui::Color32::from_rgb(209, 70, 31)),
+    );
+    ui.label(
+        egui::RichText::new("Reflectance 0-1 against incidence 0-90°: model (blue) over exact (grey); from air solid, under water dashed; red: your view")
+            .small(),
+    );
 }
