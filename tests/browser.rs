@@ -514,11 +514,12 @@ async fn open_counted(backend: &str, extra: &str) -> (Browser, StaticServer) {
 }
 
 /// Frames are paced on both backends: counted from outside the page (frames that reached the
-/// canvas; on WebGPU, frames the GPU finished), over 20 s 95 % of the intervals between drawn
-/// frames are within 2x their median (a loop that queues frames ahead of the GPU draws them in
-/// bursts: short and long intervals alternate), the page never stalls for a second, and at most
-/// two frames ever wait on the GPU. One hitch of the machine is not a pacing fault: the longest
-/// gap is printed, not held to the median. stats() agrees
+/// canvas; on WebGPU, frames the GPU finished), over 20 s at most 5 % of the intervals between
+/// drawn frames are shorter than half their median (a loop that queues frames ahead of the GPU
+/// draws them in bursts, back to back), the page never stalls for a second, and at most two
+/// frames ever wait on the GPU. Long intervals are the machine's: here the browser's GPU is the
+/// same two cores (SwiftShader) and a frame that takes twice as long now and then is noise, not
+/// a pacing fault, so they are printed (95th percentile, longest), not held to the median. stats() agrees
 /// with that count: the frames it reports over five 2 s windows (fps x 2 s) sum to the frames
 /// the counter saw in them, within 15 %.
 async fn frames_are_paced(backend: &str) {
@@ -537,15 +538,16 @@ async fn frames_are_paced(backend: &str) {
     tokio::time::sleep(Duration::from_secs(20)).await;
     let c = browser.js("return window.__frameCounter.read();").await;
     let stats = browser.js("return window.demo.stats();").await;
-    let (fps, median, p95, longest) = (
+    let (fps, median, p5, p95, longest) = (
         c["fps"].as_f64().unwrap(),
         c["medianMs"].as_f64().unwrap(),
+        c["p5Ms"].as_f64().unwrap(),
         c["p95Ms"].as_f64().unwrap(),
         c["longestMs"].as_f64().unwrap(),
     );
     let pending = c["pending"].as_f64().unwrap_or(0.0);
     println!(
-        "{backend}: {fps:.2} drawn frames/s over 20 s, interval median {median:.0} ms, 95th percentile {p95:.0} ms, \
+        "{backend}: {fps:.2} drawn frames/s over 20 s, interval median {median:.0} ms, 5th percentile {p5:.0} ms, 95th {p95:.0} ms, \
          longest {longest:.0} ms, \
          {pending} waiting on the GPU; stats() said {ours:.1} frames where the counter saw {counted} (10 s); \
          stats now: fps {:.2}, frameMs {}, longestFrameMs {}, renderScale {}",
@@ -555,7 +557,10 @@ async fn frames_are_paced(backend: &str) {
         stats["renderScale"]
     );
     assert!(fps > 0.5, "{backend}: only {fps} frames/s drawn");
-    assert!(p95 <= 2.0 * median, "{backend}: 5 % of the intervals over {p95:.0} ms against a {median:.0} ms median");
+    assert!(
+        p5 >= 0.5 * median,
+        "{backend}: 5 % of the intervals under {p5:.0} ms against a {median:.0} ms median: bursts"
+    );
     assert!(longest < 1000.0, "{backend}: the page stalled for {longest:.0} ms");
     assert!(pending <= 2.0, "{backend}: {pending} frames queued on the GPU");
     assert!((ours - counted).abs() <= 0.15 * counted, "{backend}: stats() {ours:.1} frames vs {counted} counted");

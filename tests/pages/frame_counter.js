@@ -8,7 +8,7 @@
 //
 //   window.__frameCounter.reset()  starts a new window
 //   window.__frameCounter.read()   figures over the window since reset() (or since load):
-//     { frames, seconds, fps, medianMs, p95Ms, longestMs, pending, api,
+//     { frames, seconds, fps, medianMs, p5Ms, p95Ms, longestMs, pending, api,
 //       callbacks, callbacksFps, ticks, totalFrames, canvases: [...] }
 //
 // How a frame is counted:
@@ -27,7 +27,7 @@
 //
 // Figures: `frames`, `fps` and the intervals are those of the canvas that drew most in the window
 // (the demo on a one-demo page); `canvases` lists every canvas that drew, `totalFrames` is their
-// sum. `medianMs` / `p95Ms` are over the intervals between consecutive frames (ms, null with fewer
+// sum. `medianMs` / `p5Ms` / `p95Ms` are over the intervals between consecutive frames (ms, null with fewer
 // than two frames); `longestMs` also includes the gaps from the window's start to the first frame
 // and from the last frame to read(), so a page that froze shows it. `callbacks` counts the
 // animation frames in which the page's own requestAnimationFrame callbacks ran (`ticks`: all
@@ -254,6 +254,7 @@
       frames: times.length,
       fps: round(seconds > 0 ? times.length / seconds : 0, 3),
       medianMs: round(rank(0.5), 1),
+      p5Ms: round(rank(0.05), 1),
       p95Ms: round(rank(0.95), 1),
       longestMs: round(Math.max(...intervals, ...gaps), 1),
       started: r.started, // WebGPU: frames begun in the window
@@ -277,12 +278,13 @@
       const seconds = (end - state.start) / 1000;
       const canvases = [...state.canvases.values()].map((r) => figures(r, state.start, end));
       canvases.sort((a, b) => b.frames - a.frames);
-      const main = canvases[0] || { frames: 0, fps: 0, medianMs: null, p95Ms: null, longestMs: round(end - state.start, 1), api: null };
+      const main = canvases[0] || { frames: 0, fps: 0, medianMs: null, p5Ms: null, p95Ms: null, longestMs: round(end - state.start, 1), api: null };
       return {
         frames: main.frames,
         seconds: round(seconds, 3),
         fps: main.fps,
         medianMs: main.medianMs,
+        p5Ms: main.p5Ms,
         p95Ms: main.p95Ms,
         longestMs: main.longestMs,
         pending: canvases.reduce((n, c) => n + c.pending, 0),
