@@ -5,9 +5,6 @@
 
 const PI: f32 = 3.14159265;
 const IOR_AIR: f32 = 1.0;
-// Beer–Lambert absorption of pool water per metre, per channel: red dies first,
-// so deep water and long paths turn blue-green.
-const WATER_ABSORPTION: vec3<f32> = vec3<f32>(0.42, 0.085, 0.05);
 const NO_HIT: f32 = 1.0e9;
 
 // Entry and exit distances of a ray through an axis-aligned box (slab method).

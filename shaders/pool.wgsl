@@ -22,6 +22,6 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
     var colour = pool_colour(in.world, n, albedo);
-    colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
+    colour = through_water(colour, scene.eye.xyz, in.world);
     return finish(colour);
 }

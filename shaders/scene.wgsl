@@ -18,6 +18,8 @@ struct Scene {
                                // y debug view (0 none, see debug_view.wgsl)
     optics: vec4<f32>,         // x highlight exponent s, y and z cosines of the sun disk's edge
                                // and core (optics::sun_disk_cosines)
+    absorption: vec4<f32>,     // xyz Beer–Lambert absorption of the water per channel (1/m)
+    scatter: vec4<f32>,        // xyz light the water scatters towards the eye (linear units)
     duck_pose: mat4x4<f32>,    // the duck's frame: rotation in columns 0-2, position (m) in column 3
     duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
@@ -370,11 +372,28 @@ fn reflectance(cos_i: f32, eta: f32) -> f32 {
     return 1.0 - c;
 }
 
+// Light leaving `far` as it arrives at `near` through the water between them. Beer–Lambert:
+// each channel keeps α = exp(-a d) of itself over d metres (red dies first, so long paths turn
+// blue-green). With in-scattering (HAS_SCATTERING; seed 001, after Baboud and Décoret) the
+// water adds the light it scatters towards the eye, filling in what it absorbed:
+// α L + (1 - α) L_s; with VIEW_COLOUR L_s is tinted by the path's angle as seed 002 does.
+fn through_water(colour: vec3<f32>, near: vec3<f32>, far: vec3<f32>) -> vec3<f32> {
+    let alpha = exp(-scene.absorption.xyz * water_path(near, far, half_width(), depth()));
+    if (!HAS_SCATTERING) {
+        return colour * alpha;
+    }
+    var scattered = scene.scatter.xyz;
+    if (VIEW_COLOUR) {
+        let path = far - near;
+        scattered *= mix(GRAZING_TINT, vec3<f32>(1.0), abs(path.y) / max(length(path), 1.0e-6));
+    }
+    return colour * alpha + (1.0 - alpha) * scattered;
+}
+
 // What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
 // water it crossed (Beer–Lambert). t_exit: pool_exit_distance of the ray; lod: tile mip
 // level (see tile_lod).
 fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
-    let w = half_width();
     var t = t_exit;
     var colour: vec3<f32>;
     let ts = hit_sphere(origin, dir);
@@ -389,7 +408,7 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
         let hit = origin + dir * t;
         colour = pool_colour_at_hit(hit, lod);
     }
-    return colour * exp(-WATER_ABSORPTION * water_path(origin, origin + dir * t, w, depth()));
+    return through_water(colour, origin, origin + dir * t);
 }
 
 // A ray leaving the surface into the air, folded back up if it still points down (a

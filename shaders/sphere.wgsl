@@ -17,6 +17,6 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
     var colour = sphere_colour(in.world);
-    colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
+    colour = through_water(colour, scene.eye.xyz, in.world);
     return finish(colour);
 }

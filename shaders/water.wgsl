@@ -46,7 +46,7 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
     let water = trace_water(in.world, water_dir, t_water, lod_water);
     var colour = mix(water, air, air_weight);
     if (!from_above) {
-        colour *= exp(-WATER_ABSORPTION * water_path(scene.eye.xyz, in.world, half_width(), depth()));
+        colour = through_water(colour, scene.eye.xyz, in.world);
     }
     return finish(colour);
 }

@@ -627,6 +627,17 @@ impl WaterDemo {
                 shininess: self.params.get(ParamId::Shininess),
                 sun_size: self.params.get(ParamId::SunSize),
                 show_reflectance: self.params.get(ParamId::DebugView).round() as i32 == REFLECTANCE_VIEW,
+                absorption: Vec3::new(
+                    self.params.get(ParamId::AbsorptionRed),
+                    self.params.get(ParamId::AbsorptionGreen),
+                    self.params.get(ParamId::AbsorptionBlue),
+                ),
+                scatter: Vec3::new(
+                    self.params.get(ParamId::ScatterRed),
+                    self.params.get(ParamId::ScatterGreen),
+                    self.params.get(ParamId::ScatterBlue),
+                ),
+                view_colour: self.params.flag(ParamId::ViewColour),
             },
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),

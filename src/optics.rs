@@ -168,6 +168,11 @@ pub fn sun_disk_cosines(size_deg: f32) -> (f32, f32) {
     (1.0 - (1.0 - SUN_DISK_EDGE_COS) * k, 1.0 - (1.0 - SUN_DISK_CORE_COS) * k)
 }
 
+/// With the `view_colour` option, the share of the water's scattered light left along a
+/// horizontal path (all of it looking straight down): seed 002 mixes its water colour between
+/// (0, 0.05, 0.15) at grazing and (0, 0.1, 0.15) looking down, half the green.
+pub const GRAZING_TINT: [f32; 3] = [1.0, 0.5, 1.0];
+
 /// WGSL constants of this module, written ahead of every shader (see `gpu::shared_constants`).
 pub fn wgsl_constants() -> String {
     use FresnelModel::*;
@@ -176,7 +181,8 @@ pub fn wgsl_constants() -> String {
          const FRESNEL_INVERSE_POWER: u32 = {}u;\nconst FRESNEL_CLAMPED_POWER: u32 = {}u;\nconst FRESNEL_LINEAR: u32 = {}u;\n\
          const FRESNEL_TABLE_SIZE: i32 = {};\nconst SCHLICK_R0: f32 = {:?};\nconst INVERSE_POWER_EXPONENT: f32 = {:?};\n\
          const CLAMPED_POWER_EXPONENT: f32 = {:?};\nconst CLAMPED_POWER_MIN: f32 = {:?};\nconst CLAMPED_POWER_MAX: f32 = {:?};\n\
-         const SPECULAR_PHONG: u32 = {}u;\nconst SPECULAR_BLINN_PHONG: u32 = {}u;\n",
+         const SPECULAR_PHONG: u32 = {}u;\nconst SPECULAR_BLINN_PHONG: u32 = {}u;\n\
+         const GRAZING_TINT: vec3<f32> = vec3<f32>({:?}, {:?}, {:?});\n",
         Exact as u32,
         Table as u32,
         Schlick as u32,
@@ -191,6 +197,9 @@ pub fn wgsl_constants() -> String {
         CLAMPED_POWER_MAX,
         SpecularModel::Phong as u32,
         SpecularModel::BlinnPhong as u32,
+        GRAZING_TINT[0],
+        GRAZING_TINT[1],
+        GRAZING_TINT[2],
     )
 }
 

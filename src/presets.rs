@@ -46,6 +46,43 @@ pub const PRESETS: &[Preset] = &[
         ],
         camera: None,
     },
+    Preset {
+        name: "fresnel",
+        label: "Lesson: Fresnel reflectance",
+        help: "Calm, empty water seen low across the pool, so the angle of incidence runs from about 50° near you to grazing at the far side: switch the Fresnel model and watch the reflection and the plot change.",
+        values: &[("objects", 0.0), ("fresnel", 0.0), ("damping", 1.0), ("drop_strength", 0.006), ("sun_elevation", 40.0)],
+        camera: Some([-25.0, 14.0, 3.8]),
+    },
+    Preset {
+        name: "glint",
+        label: "Lesson: the sun's glint",
+        help: "Looking towards a low sun: drag across the water to make waves and see Blinn-Phong's glint stretched along the view; switch the highlight to Phong and change the shininess to compare.",
+        values: &[
+            ("objects", 0.0),
+            ("sun_azimuth", 0.0),
+            ("sun_elevation", 30.0),
+            ("specular", 1.0),
+            ("shininess", 3000.0),
+            ("wave_speed", 0.8),
+            ("damping", 0.2),
+        ],
+        camera: Some([180.0, 30.0, 3.2]),
+    },
+    Preset {
+        name: "lake",
+        label: "Lesson: water colour",
+        help: "Green lake water: it absorbs red, green and blue faster than the pool's, and scatters a green-blue light of its own, so the deep end turns green instead of dark (turn the scattered light to 0 to see plain Beer-Lambert).",
+        values: &[
+            ("absorption_red", 0.8),
+            ("absorption_green", 0.25),
+            ("absorption_blue", 0.35),
+            ("scatter_red", 0.02),
+            ("scatter_green", 0.09),
+            ("scatter_blue", 0.08),
+            ("view_colour", 1.0),
+        ],
+        camera: None,
+    },
 ];
 
 /// The preset called `name`.

@@ -142,3 +142,90 @@ fn the_sun_disk_in_calm_water_grows_with_the_sun_size() {
     println!("the sun's mirror image in calm water: {small} bright pixels at 1°, {large} at 4°");
     assert!(small > 0 && large as f32 > 4.0 * small as f32, "{small} at 1°, {large} at 4°");
 }
+
+/// sRGB-encoded value (0-1) as linear light.
+fn linear(v: f32) -> f32 {
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// Under water, looking straight at the far wall 1.5 m away, with `set` parameters: the frame,
+/// and per sampled pixel of that wall its position and the metres of water in front of it.
+fn facing_a_wall(set: &[(ParamId, f32)]) -> (Frame, Vec<((u32, u32), f32)>) {
+    let mut demo = empty_pool();
+    demo.params.set(ParamId::Caustics, 0.0);
+    for &(id, v) in set {
+        demo.params.set(id, v);
+    }
+    demo.camera.target = Vec3::new(0.0, -0.5, 0.0);
+    demo.camera.pitch = 0.0;
+    demo.camera.yaw = 0.0;
+    demo.camera.distance = 0.5;
+    let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
+    let size = Vec2::new(W as f32, H as f32);
+    let mut wall = Vec::new();
+    for y in (H / 2 - 30..H / 2 + 30).step_by(6) {
+        for x in (W / 2 - 40..W / 2 + 40).step_by(8) {
+            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let t = (-HALF_WIDTH - ray.origin.z) / ray.dir.z;
+            let p = ray.origin + ray.dir * t;
+            if p.x.abs() < HALF_WIDTH - 0.05 && p.y < -0.05 && p.y > -0.95 {
+                wall.push(((x, y), t));
+            }
+        }
+    }
+    (frame, wall)
+}
+
+#[test]
+fn the_water_absorbs_by_beer_lambert_and_in_scattering_fills_in_what_it_takes() {
+    let default_absorption = [0.42, 0.085, 0.05];
+    let (plain, wall) = facing_a_wall(&[]);
+    assert!(wall.len() > 50, "{} wall pixels", wall.len());
+    // Bright enough that the tint's halving of green (0.024 here) is well past the tolerance.
+    let scatter = [0.2, 0.4, 0.4];
+    let with = |view_colour: f32| {
+        facing_a_wall(&[
+            (ParamId::ScatterRed, scatter[0]),
+            (ParamId::ScatterGreen, scatter[1]),
+            (ParamId::ScatterBlue, scatter[2]),
+            (ParamId::ViewColour, view_colour),
+        ])
+        .0
+    };
+    let (scattering, tinted) = (with(0.0), with(1.0));
+    let (redder, _) = facing_a_wall(&[(ParamId::AbsorptionRed, 1.5)]);
+    // Per channel, the largest departure from the formulas over the wall's pixels (linear light).
+    let (mut off_scatter, mut off_tint, mut off_ratio) = ([0.0f32; 3], [0.0f32; 3], 0.0f32);
+    let (mut green_added, mut green_added_tinted) = (0.0f32, 0.0f32);
+    for &((x, y), d) in &wall {
+        let (p, s, t, r) = (plain.pixel(x, y), scattering.pixel(x, y), tinted.pixel(x, y), redder.pixel(x, y));
+        for k in 0..3 {
+            let filled = 1.0 - (-default_absorption[k] * d).exp();
+            let tint = [1.0, 0.5, 1.0][k]; // a horizontal path: optics::GRAZING_TINT
+            off_scatter[k] = off_scatter[k].max((linear(s[k]) - linear(p[k]) - filled * scatter[k]).abs());
+            off_tint[k] = off_tint[k].max((linear(t[k]) - linear(p[k]) - filled * scatter[k] * tint).abs());
+        }
+        green_added += linear(s[1]) - linear(p[1]);
+        green_added_tinted += linear(t[1]) - linear(p[1]);
+        let expected_ratio = (-(1.5 - default_absorption[0]) * d).exp();
+        off_ratio = off_ratio.max((linear(r[0]) / linear(p[0]) / expected_ratio - 1.0).abs());
+    }
+    let centre = plain.pixel(W / 2, H / 2);
+    println!(
+        "{} wall pixels 1.5 m away (centre {centre:?}): in-scattering off its formula by at most {off_scatter:.4?} (linear), \
+         tinted by view angle {off_tint:.4?} (green added {:.4} untinted, {:.4} tinted, mean); red absorbed at 1.5 /m \
+         instead of 0.42: ratio off by {:.1} %",
+        wall.len(),
+        green_added / wall.len() as f32,
+        green_added_tinted / wall.len() as f32,
+        off_ratio * 100.0
+    );
+    assert!(off_scatter.iter().all(|&e| e < 0.01), "in-scattering: {off_scatter:?}");
+    assert!(off_tint.iter().all(|&e| e < 0.01), "view-angle tint: {off_tint:?}");
+    assert!(off_ratio < 0.1, "Beer-Lambert in red: {:.1} % off", off_ratio * 100.0);
+    assert!(green_added_tinted < 0.6 * green_added, "the tint left green at {green_added_tinted} of {green_added}");
+}

@@ -62,6 +62,12 @@ pub struct Optics {
     pub sun_size: f32,
     /// The surface shows its Fresnel reflectance as grey instead of its colour (a debug view).
     pub show_reflectance: bool,
+    /// Beer–Lambert absorption of the water per channel (1/m).
+    pub absorption: Vec3,
+    /// Light the water scatters towards the eye per channel (linear units); zero: none.
+    pub scatter: Vec3,
+    /// The scattered light is tinted by the path's angle (seed 002).
+    pub view_colour: bool,
 }
 
 /// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
@@ -125,6 +131,8 @@ struct SceneUniforms {
     water: [f32; 4],
     output: [f32; 4],
     optics: [f32; 4],
+    absorption: [f32; 4],
+    scatter: [f32; 4],
     duck_pose: [[f32; 4]; 4],
     duck_bound: [f32; 4],
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
@@ -568,6 +576,8 @@ impl Renderer {
                 let (edge, core) = optics::sun_disk_cosines(view.optics.sun_size);
                 [view.optics.shininess, edge, core, 0.0]
             },
+            absorption: view.optics.absorption.extend(0.0).to_array(),
+            scatter: view.optics.scatter.extend(0.0).to_array(),
             duck_pose: view
                 .duck
                 .map_or(Mat4::IDENTITY, |p| Mat4::from_rotation_translation(p.rotation, p.position))

@@ -26,6 +26,10 @@ pub struct Features {
     pub specular: SpecularModel,
     /// The surface shows its reflectance as grey (the `reflectance` debug view).
     pub show_reflectance: bool,
+    /// The water scatters light towards the eye (in-scattering).
+    pub scattering: bool,
+    /// ... tinted by the path's angle.
+    pub view_colour: bool,
 }
 
 impl Features {
@@ -37,16 +41,26 @@ impl Features {
             fresnel: view.optics.fresnel,
             specular: view.optics.specular,
             show_reflectance: view.optics.show_reflectance,
+            scattering: view.optics.scatter.max_element() > 0.0,
+            view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
-    /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`).
+    /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`).
     pub fn wgsl(&self) -> String {
         format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
-             const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n",
-            self.sphere, self.duck, self.caustics, self.fresnel as u32, self.specular as u32, self.show_reflectance
+             const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
+             const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\n",
+            self.sphere,
+            self.duck,
+            self.caustics,
+            self.fresnel as u32,
+            self.specular as u32,
+            self.show_reflectance,
+            self.scattering,
+            self.view_colour
         )
     }
 }
