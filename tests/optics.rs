@@ -152,9 +152,12 @@ fn linear(v: f32) -> f32 {
     }
 }
 
-/// Under water, looking straight at the far wall 1.5 m away, with `set` parameters: the frame,
-/// and per sampled pixel of that wall its position and the metres of water in front of it.
-fn facing_a_wall(set: &[(ParamId, f32)]) -> (Frame, Vec<((u32, u32), f32)>) {
+/// A sampled pixel of the wall and the metres of water in front of it.
+type WallPixel = ((u32, u32), f32);
+
+/// Under water, looking straight at the far wall 1.5 m away, with `set` parameters: the frame
+/// and the wall's sampled pixels.
+fn facing_a_wall(set: &[(ParamId, f32)]) -> (Frame, Vec<WallPixel>) {
     let mut demo = empty_pool();
     demo.params.set(ParamId::Caustics, 0.0);
     for &(id, v) in set {
