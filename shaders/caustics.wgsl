@@ -3,7 +3,9 @@
 // of its calm-surface area to its projected area (energy conservation), summed additively.
 // The map is indexed by where a calm surface would have let the light in (see light_entry),
 // so any underwater point can look its light up. Red: light; green: light with the shadows
-// of the sphere and the duck. The rim's shadow is in both.
+// of the sphere and the duck. The rim's shadow is in both. With dispersion the map is drawn
+// once per colour (CAUSTICS_CHANNEL, written ahead of this file), refracting by that colour's
+// index, into its own channel with the shadows (green's without them in alpha).
 
 struct CausticsOut {
     @builtin(position) clip: vec4<f32>,
@@ -17,7 +19,8 @@ fn vs_caustics(@location(0) grid: vec2<f32>) -> CausticsOut {
     let xz = grid * half_width();
     let state = water_at(xz);
     let p = vec3<f32>(xz.x, state.x, xz.y);
-    let ray = refract(-scene.sun.xyz, water_normal(state), IOR_AIR / IOR_WATER);
+    let ior = select(IOR_WATER, scene.ior[CAUSTICS_CHANNEL], HAS_DISPERSION);
+    let ray = refract(-scene.sun.xyz, water_normal(state), IOR_AIR / ior);
     let t_floor = (-depth() - p.y) / min(ray.y, -1.0e-4);
     let on_floor = p + ray * t_floor;
     let entry = light_entry(on_floor);
@@ -41,5 +44,10 @@ fn fs_caustics(in: CausticsOut) -> @location(0) vec4<f32> {
     let wavy = area(dpdx(in.wavy_entry), dpdy(in.wavy_entry));
     let intensity = min(calm / max(wavy, 1.0e-12), 40.0);
     // Stored divided by the map's scale (1 for float maps; an 8-bit map clips at 1.0).
-    return vec4<f32>(intensity * in.visibility / scene.water.w, 0.0, 1.0);
+    let light = intensity * in.visibility / scene.water.w;
+    if (HAS_DISPERSION) {
+        // The pipeline's write mask keeps this draw's channel(s).
+        return vec4<f32>(light.y, light.y, light.y, light.x);
+    }
+    return vec4<f32>(light, 0.0, 1.0);
 }

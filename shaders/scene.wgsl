@@ -20,6 +20,8 @@ struct Scene {
                                // and core (optics::sun_disk_cosines)
     absorption: vec4<f32>,     // xyz Beer–Lambert absorption of the water per channel (1/m)
     scatter: vec4<f32>,        // xyz light the water scatters towards the eye (linear units)
+    ior: vec4<f32>,            // xyz water's refractive index for red, green, blue light (with
+                               // dispersion; green is IOR_WATER), w the dispersion factor
     duck_pose: mat4x4<f32>,    // the duck's frame: rotation in columns 0-2, position (m) in column 3
     duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
@@ -211,6 +213,21 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     return light;
 }
 
+// Underwater light per colour channel. With dispersion the caustics map holds each channel's
+// own light (drawn with its own index of refraction, shadows included) and green's without
+// the objects' shadows in alpha; without, every channel has underwater_light's.
+fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
+    if (HAS_DISPERSION && HAS_CAUSTICS) {
+        let entry = light_entry(p);
+        if (!all(abs(entry) <= vec2<f32>(half_width()))) {
+            return vec3<f32>(0.0);
+        }
+        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0) * scene.water.w;
+        return select(vec3<f32>(c.a), c.rgb, with_sphere_shadow);
+    }
+    return vec3<f32>(underwater_light(p, with_sphere_shadow));
+}
+
 // Analytic ambient occlusion of a sphere seen from a point with normal n:
 // the sphere's projected solid angle, cos(theta) * (r / d)^2.
 fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
@@ -245,6 +262,12 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly.
 fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
+    if (HAS_DISPERSION && p.y < 0.0) {
+        // Each colour through its own caustics.
+        let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
+        let ambient = AMBIENT * (1.0 - 0.9 * sphere_occlusion(p, n));
+        return albedo * (ambient + direct_rgb * scene.sun.w * SUN_COLOUR);
+    }
     var direct: f32;
     if (p.y < 0.0) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
@@ -448,9 +471,10 @@ fn tone_map(c: vec3<f32>) -> vec3<f32> {
     return select(c, shoulder, c > vec3<f32>(knee));
 }
 
-// A debug value v in [0, 1] as the grey that displays as v (stored as v * 255): no tone curve.
-fn grey_as_displayed(v: f32) -> vec4<f32> {
-    let g = vec3<f32>(clamp(v, 0.0, 1.0));
+// Debug values in [0, 1] per channel as the colour that displays as them (stored as v * 255):
+// no tone curve.
+fn as_displayed(v: vec3<f32>) -> vec4<f32> {
+    let g = clamp(v, vec3<f32>(0.0), vec3<f32>(1.0));
     if (scene.output.x > 0.5) {
         return vec4<f32>(g, 1.0);
     }

@@ -39,14 +39,53 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
     let lod_water = tile_lod(in.world + water_dir * t_water);
     let r = reflectance(dot(-view, n), eta);
     if (SHOW_REFLECTANCE) {
-        return grey_as_displayed(r);
+        // Grey; with dispersion each channel's own reflectance (its own critical angle).
+        if (HAS_DISPERSION) {
+            return as_displayed(vec3<f32>(
+                reflectance(dot(-view, n), select(scene.ior.x / IOR_AIR, IOR_AIR / scene.ior.x, from_above)),
+                r,
+                reflectance(dot(-view, n), select(scene.ior.z / IOR_AIR, IOR_AIR / scene.ior.z, from_above)),
+            ));
+        }
+        return as_displayed(vec3<f32>(r));
     }
     let air_weight = select(1.0 - r, r, from_above);
     let air = trace_air(in.world, air_dir, select(vec3<f32>(0.0), n, from_above), t_air, lod_air);
     let water = trace_water(in.world, water_dir, t_water, lod_water);
     var colour = mix(water, air, air_weight);
+    if (HAS_DISPERSION) {
+        // Red and blue bend by their own indices: traced again, each weighted by its own
+        // reflectance, so the refracted picture and the critical angle (the rim of Snell's
+        // window) split into colours. Both sides traced, as above, for uniform control flow.
+        colour.r = dispersed(in.world, view, n, from_above, scene.ior.x, air, water, lod_air, lod_water).r;
+        colour.b = dispersed(in.world, view, n, from_above, scene.ior.z, air, water, lod_air, lod_water).b;
+    }
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
     }
     return finish(colour);
+}
+
+// The surface's colour for light of refractive index `ior` (dispersion): the ray refracted by
+// that index traced (into the water from above, out to the air from below) and blended with
+// the reflected light (`air` from above, `water` from below: reflection does not depend on
+// the index) by that index's reflectance.
+fn dispersed(
+    p: vec3<f32>,
+    view: vec3<f32>,
+    n: vec3<f32>,
+    from_above: bool,
+    ior: f32,
+    air: vec3<f32>,
+    water: vec3<f32>,
+    lod_air: f32,
+    lod_water: f32,
+) -> vec3<f32> {
+    let eta = select(ior / IOR_AIR, IOR_AIR / ior, from_above);
+    let refracted = refract(view, n, eta);
+    let into_air = upward(refracted);
+    let seen_in_water = trace_water(p, refracted, pool_exit_distance(p, refracted), lod_water);
+    let seen_in_air = trace_air(p, into_air, vec3<f32>(0.0), pool_exit_distance(p, into_air), lod_air);
+    let r = reflectance(dot(-view, n), eta);
+    return select(mix(water, seen_in_air, 1.0 - r), mix(seen_in_water, air, r), from_above);
 }

@@ -638,6 +638,7 @@ impl WaterDemo {
                     self.params.get(ParamId::ScatterBlue),
                 ),
                 view_colour: self.params.flag(ParamId::ViewColour),
+                dispersion: self.params.get(ParamId::Dispersion),
             },
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),

@@ -168,6 +168,16 @@ pub fn sun_disk_cosines(size_deg: f32) -> (f32, f32) {
     (1.0 - (1.0 - SUN_DISK_EDGE_COS) * k, 1.0 - (1.0 - SUN_DISK_CORE_COS) * k)
 }
 
+/// Water's refractive index for red, green and blue light less the green one's (n ≈ 1.331,
+/// 1.335, 1.337 across the visible range): the spread the `dispersion` parameter scales.
+pub const DISPERSION_SPREAD: [f32; 3] = [-0.004, 0.0, 0.002];
+
+/// The refractive indices of red, green and blue light with the spread exaggerated
+/// `dispersion` times, green kept at [`IOR_WATER`] so green light bends as without dispersion.
+pub fn channel_iors(dispersion: f32) -> [f32; 3] {
+    DISPERSION_SPREAD.map(|d| IOR_WATER + d * dispersion)
+}
+
 /// With the `view_colour` option, the share of the water's scattered light left along a
 /// horizontal path (all of it looking straight down): seed 002 mixes its water colour between
 /// (0, 0.05, 0.15) at grazing and (0, 0.1, 0.15) looking down, half the green.

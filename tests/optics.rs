@@ -232,3 +232,70 @@ fn the_water_absorbs_by_beer_lambert_and_in_scattering_fills_in_what_it_takes() 
     assert!(off_ratio < 0.1, "Beer-Lambert in red: {:.1} % off", off_ratio * 100.0);
     assert!(green_added_tinted < 0.6 * green_added, "the tint left green at {green_added_tinted} of {green_added}");
 }
+
+/// Dispersion at 20× the real spread of water's index: green light bends as without it, so
+/// the green channel is unchanged, while red and blue caustics and refractions split from it
+/// (seen from above, rippled water). Under the calm surface, in the `reflectance` view, each
+/// channel's reflectance follows the exact formula for its own index: the rim of Snell's
+/// window (total reflection) comes at 46.7° for blue, 48.6° for green, 53.0° for red.
+#[test]
+fn dispersion_splits_red_and_blue_at_caustics_and_at_the_rim_of_snells_window() {
+    let above = |dispersion: f32| {
+        let mut demo = empty_pool();
+        demo.params.set(ParamId::Dispersion, dispersion);
+        for d in random_drops(7, 12, 0.8, 0.05, 0.015) {
+            demo.add_drop(d.x, d.z, d.radius, d.strength);
+        }
+        render(&mut demo, W, H, 30, 1.0 / 60.0)
+    };
+    let (plain, split) = (above(0.0), above(20.0));
+    let pixels = (W * H) as usize;
+    let (mut green_off, mut colour_split) = (0u8, 0usize);
+    for i in 0..pixels {
+        let d = |k: usize| (plain.rgba[i * 4 + k] as i32 - split.rgba[i * 4 + k] as i32).unsigned_abs() as u8;
+        green_off = green_off.max(d(1));
+        colour_split += usize::from(d(0) > 8 || d(2) > 8);
+    }
+
+    // Under the calm surface, looking up (as in the Fresnel test), the reflectance per channel.
+    let mut demo = empty_pool();
+    demo.params.set(ParamId::Dispersion, 20.0);
+    demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
+    demo.camera.target = Vec3::new(0.0, -0.55, 0.0);
+    demo.camera.pitch = -35.0;
+    demo.camera.distance = 0.45;
+    demo.camera.yaw = 20.0;
+    let below = render(&mut demo, W, H, 2, 1.0 / 60.0);
+    let iors = wavepool::optics::channel_iors(20.0);
+    let critical = iors.map(|n| (1.0 / n).asin().to_degrees());
+    let size = Vec2::new(W as f32, H as f32);
+    let (mut compared, mut worst, mut fringe) = (0usize, [0.0f32; 3], 0usize);
+    for y in (2..H).step_by(3) {
+        for x in (2..W).step_by(3) {
+            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let t = -ray.origin.y / ray.dir.y;
+            let p = ray.origin + ray.dir * t;
+            if t.is_nan() || t <= 0.0 || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
+                continue; // not the surface
+            }
+            let drawn = below.pixel(x, y);
+            let expected = iors.map(|n| wavepool::optics::fresnel_exact(ray.dir.y, n));
+            for k in 0..3 {
+                worst[k] = worst[k].max((drawn[k] - expected[k]).abs());
+            }
+            // Red still passes, blue is totally reflected.
+            fringe += usize::from(expected[0] < 0.9 && expected[2] == 1.0);
+            compared += 1;
+        }
+    }
+    println!(
+        "from above: green off by at most {green_off}/255, red or blue off by > 8/255 in {colour_split} of {pixels} pixels; \
+         from below: critical angles {critical:.1?}°, reflectance per channel off its formula by at most {:.1?}/255 \
+         over {compared} pixels, {fringe} of them where red passes and blue is totally reflected",
+        worst.map(|w| w * 255.0)
+    );
+    assert!(green_off <= 1, "green changed from above: {green_off}/255");
+    assert!(colour_split as f32 > 0.01 * pixels as f32, "the caustics did not split ({colour_split} pixels)");
+    assert!(compared > 1000 && fringe > 100, "{compared} pixels compared, {fringe} in the fringe");
+    assert!(worst.iter().all(|&w| w <= 2.5 / 255.0), "reflectance per channel off by {worst:?}");
+}

@@ -68,6 +68,8 @@ pub struct Optics {
     pub scatter: Vec3,
     /// The scattered light is tinted by the path's angle (seed 002).
     pub view_colour: bool,
+    /// Times the real spread of water's refractive index across colours (0: one index).
+    pub dispersion: f32,
 }
 
 /// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
@@ -133,6 +135,7 @@ struct SceneUniforms {
     optics: [f32; 4],
     absorption: [f32; 4],
     scatter: [f32; 4],
+    ior: [f32; 4],
     duck_pose: [[f32; 4]; 4],
     duck_bound: [f32; 4],
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
@@ -156,10 +159,17 @@ pub struct RenderSettings {
 impl RenderSettings {
     /// Format and scale (light per unit stored) of the caustics map.
     pub fn caustics_format(&self) -> (wgpu::TextureFormat, f32) {
-        if self.float_targets {
-            (CAUSTICS_FORMAT, 1.0)
-        } else {
-            (CAUSTICS_FORMAT_8BIT, CAUSTICS_8BIT_SCALE)
+        self.caustics_format_for(false)
+    }
+
+    /// The same for a map with light per colour channel (dispersion): red, green and blue
+    /// light with the objects' shadows, and green light without them in alpha.
+    pub fn caustics_format_for(&self, per_channel: bool) -> (wgpu::TextureFormat, f32) {
+        match (self.float_targets, per_channel) {
+            (true, false) => (CAUSTICS_FORMAT, 1.0),
+            (true, true) => (wgpu::TextureFormat::Rgba16Float, 1.0),
+            (false, false) => (CAUSTICS_FORMAT_8BIT, CAUSTICS_8BIT_SCALE),
+            (false, true) => (wgpu::TextureFormat::Rgba8Unorm, CAUSTICS_8BIT_SCALE),
         }
     }
 }
@@ -189,6 +199,8 @@ struct CausticsMap {
     view: wgpu::TextureView,
     /// Texels per side.
     size: u32,
+    /// Whether `view` holds light per colour channel (dispersion; an RGBA map).
+    per_channel: bool,
     grid: Mesh,
     /// Quads per side of `grid`.
     grid_size: u32,
@@ -199,7 +211,7 @@ impl CausticsMap {
         let grid_size = caustics_grid(sim_size);
         let (grid_vertices, grid_indices) = water_grid(grid_size);
         let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
-        Self { view: Self::map(device, size, format), size, grid, grid_size }
+        Self { view: Self::map(device, size, format), size, per_channel: false, grid, grid_size }
     }
 
     /// A map of `size` texels per side.
@@ -482,7 +494,7 @@ impl Renderer {
     fn variant(&mut self, device: &wgpu::Device, features: Features) -> &ScenePipelines {
         let targets = PipelineTargets {
             format: self.settings.target_format,
-            caustics_format: self.settings.caustics_format().0,
+            caustics_format: self.settings.caustics_format_for(features.dispersion).0,
             water_layout: &self.water_layout,
             textures_layout: &self.textures_layout,
         };
@@ -536,11 +548,13 @@ impl Renderer {
         side.clamp(128.min(self.settings.caustics_size), self.settings.caustics_size)
     }
 
-    /// Makes the caustics map `size` texels per side (rebinding it), if it is not already.
-    fn resize_caustics(&mut self, device: &wgpu::Device, size: u32) {
-        if size != self.caustics.size {
-            self.caustics.view = CausticsMap::map(device, size, self.settings.caustics_format().0);
+    /// Makes the caustics map `size` texels per side, with light per colour channel or not
+    /// (rebinding it), if it is not already.
+    fn resize_caustics(&mut self, device: &wgpu::Device, size: u32, per_channel: bool) {
+        if size != self.caustics.size || per_channel != self.caustics.per_channel {
+            self.caustics.view = CausticsMap::map(device, size, self.settings.caustics_format_for(per_channel).0);
             self.caustics.size = size;
+            self.caustics.per_channel = per_channel;
             self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
         }
     }
@@ -578,6 +592,10 @@ impl Renderer {
             },
             absorption: view.optics.absorption.extend(0.0).to_array(),
             scatter: view.optics.scatter.extend(0.0).to_array(),
+            ior: {
+                let [r, g, b] = optics::channel_iors(view.optics.dispersion);
+                [r, g, b, view.optics.dispersion]
+            },
             duck_pose: view
                 .duck
                 .map_or(Mat4::IDENTITY, |p| Mat4::from_rotation_translation(p.rotation, p.position))
@@ -597,18 +615,20 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
-        self.resize_caustics(device, self.caustics_size(view.render_scale));
+        let features = Features::of(view);
+        self.resize_caustics(device, self.caustics_size(view.render_scale), features.dispersion);
         if !view.caustics {
             return;
         }
-        let features = Features::of(view);
         self.variant(device, features);
-        let pipeline = &self.variants[&features].caustics;
         let mut pass =
             gpu::colour_pass(encoder, "caustics", &self.caustics.view, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
-        pass.set_pipeline(pipeline);
         pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
-        self.caustics.grid.draw(&mut pass);
+        // One draw, or with dispersion one per colour channel (each with its own index).
+        for pipeline in &self.variants[&features].caustics {
+            pass.set_pipeline(pipeline);
+            self.caustics.grid.draw(&mut pass);
+        }
     }
 
     fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {

@@ -30,6 +30,8 @@ pub struct Features {
     pub scattering: bool,
     /// ... tinted by the path's angle.
     pub view_colour: bool,
+    /// Red, green and blue light refract by their own indices (the `dispersion` parameter).
+    pub dispersion: bool,
 }
 
 impl Features {
@@ -43,16 +45,18 @@ impl Features {
             show_reflectance: view.optics.show_reflectance,
             scattering: view.optics.scatter.max_element() > 0.0,
             view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
+            dispersion: view.optics.dispersion > 0.0,
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
-    /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`).
+    /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
+    /// `HAS_DISPERSION`).
     pub fn wgsl(&self) -> String {
         format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
-             const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\n",
+             const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n",
             self.sphere,
             self.duck,
             self.caustics,
@@ -60,7 +64,8 @@ impl Features {
             self.specular as u32,
             self.show_reflectance,
             self.scattering,
-            self.view_colour
+            self.view_colour,
+            self.dispersion
         )
     }
 }
@@ -175,7 +180,9 @@ fn partition(rects: &[([u32; 4], Features)], base: Features, size: (u32, u32)) -
 /// The pipelines of the passes that read the scene's features: the caustics map and the
 /// water surface, pool, sphere and duck of the scene pass.
 pub struct ScenePipelines {
-    pub caustics: wgpu::RenderPipeline,
+    /// The caustics map's draw, or with dispersion one per colour channel (red, green with
+    /// alpha, blue), each writing only its channels.
+    pub caustics: Vec<wgpu::RenderPipeline>,
     pub surface: wgpu::RenderPipeline,
     pub pool: wgpu::RenderPipeline,
     pub sphere: wgpu::RenderPipeline,
@@ -197,28 +204,49 @@ impl ScenePipelines {
     pub fn new(device: &wgpu::Device, features: Features, targets: &PipelineTargets<'_>) -> Self {
         let constants = features.wgsl();
         let module = |label, part| gpu::shader(device, label, &[&constants, gpu::wgsl::COMMON, gpu::wgsl::SCENE, part]);
-        let caustics_module = module("caustics", gpu::wgsl::CAUSTICS);
         let additive = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::One,
             operation: wgpu::BlendOperation::Add,
         };
-        let caustics = mesh_pipeline(
-            device,
-            MeshPipeline {
-                label: "caustics",
-                module: &caustics_module,
-                vertex_entry: "vs_caustics",
-                fragment_entry: "fs_caustics",
-                layouts: &[targets.water_layout],
-                attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-                stride: 8,
-                cull: None,
-                format: targets.caustics_format,
-                blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
-                depth: false,
-            },
-        );
+        // CAUSTICS_CHANNEL: the colour whose index of refraction a draw uses (with dispersion).
+        let channels: &[(i32, wgpu::ColorWrites)] = if features.dispersion {
+            &[
+                (0, wgpu::ColorWrites::RED),
+                (1, wgpu::ColorWrites::GREEN.union(wgpu::ColorWrites::ALPHA)),
+                (2, wgpu::ColorWrites::BLUE),
+            ]
+        } else {
+            &[(1, wgpu::ColorWrites::ALL)]
+        };
+        let caustics = channels
+            .iter()
+            .map(|&(channel, write_mask)| {
+                let channel_constant = format!("const CAUSTICS_CHANNEL: i32 = {channel};\n");
+                let caustics_module = gpu::shader(
+                    device,
+                    "caustics",
+                    &[&constants, &channel_constant, gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS],
+                );
+                mesh_pipeline(
+                    device,
+                    MeshPipeline {
+                        label: "caustics",
+                        module: &caustics_module,
+                        vertex_entry: "vs_caustics",
+                        fragment_entry: "fs_caustics",
+                        layouts: &[targets.water_layout],
+                        attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+                        stride: 8,
+                        cull: None,
+                        format: targets.caustics_format,
+                        blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
+                        write_mask,
+                        depth: false,
+                    },
+                )
+            })
+            .collect();
         let layouts = [targets.water_layout, targets.textures_layout];
         let scene_pipeline =
             |label, module: &wgpu::ShaderModule, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
@@ -235,6 +263,7 @@ impl ScenePipelines {
                         cull,
                         format: targets.format,
                         blend: None,
+                        write_mask: wgpu::ColorWrites::ALL,
                         depth: true,
                     },
                 )
@@ -294,6 +323,7 @@ pub struct MeshPipeline<'a> {
     pub cull: Option<wgpu::Face>,
     pub format: wgpu::TextureFormat,
     pub blend: Option<wgpu::BlendState>,
+    pub write_mask: wgpu::ColorWrites,
     /// Depth-tested and written against [`DEPTH_FORMAT`].
     pub depth: bool,
 }
@@ -326,11 +356,7 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
             module: p.module,
             entry_point: Some(p.fragment_entry),
             compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: p.format,
-                blend: p.blend,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
+            targets: &[Some(wgpu::ColorTargetState { format: p.format, blend: p.blend, write_mask: p.write_mask })],
         }),
         multiview_mask: None,
         cache: None,
