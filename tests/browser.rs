@@ -613,7 +613,9 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
 /// The Optics group in the page, on both backends: the Fresnel plot draws the chosen model's
 /// curve from the core's formulas (its first point is the reflectance at 0° from air: 0.020
 /// exact, 0 linear), choosing a model in the select redraws it and changes the water's
-/// pixels, and the plot's view mark sits at 90° minus the camera's pitch.
+/// pixels, and the plot's view mark sits at 90° minus the camera's pitch. Dispersion (a
+/// per-channel caustics map, three caustics draws) and in-scattered light run there too,
+/// each changing the picture, with no error.
 async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) =
         open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none&paused=1"), backend).await;
@@ -645,6 +647,19 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let expected_mark = 30.0 + (90.0 - before_plot["pitch"].as_f64().unwrap().abs()) / 90.0 * 180.0;
     assert!((before_plot["mark"].as_f64().unwrap() - expected_mark).abs() < 0.2, "view mark {before_plot}");
     assert!(changed > 0.05, "{backend}: the linear model did not change the water ({:.2} %)", changed * 100.0);
+    for (name, value) in [("dispersion", 20.0), ("scatter_red", 0.5)] {
+        let before = browser.screenshot().await;
+        browser.js(&format!("window.demo.set('{name}', {value}); return true;")).await;
+        tokio::time::sleep(Duration::from_millis(1500)).await;
+        let after = browser.screenshot().await;
+        let changed = changed_fraction(&before, &after, rect, 8);
+        let state = browser
+            .js("const e = document.querySelector('#pool'); return { error: e.dataset.error || null, fps: window.demo.stats().fps };")
+            .await;
+        println!("{backend}: {name} = {value}: {:.1} % of the canvas changed, {state}", changed * 100.0);
+        assert!(state["error"].is_null(), "{backend}: {name} stopped the demo: {state}");
+        assert!(changed > 0.01, "{backend}: {name} changed {:.2} % of the canvas", changed * 100.0);
+    }
     browser.close().await;
 }
 
