@@ -27,6 +27,9 @@ struct Scene {
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
     // and linear colour.
     duck_parts: array<vec4<f32>, 3 * DUCK_PARTS>,
+    ambient_count: vec4<f32>,  // x waves in ambient_waves
+    // Per ambient wave (ambient.rs): kx, kz (rad/m), amplitude (m), phase at this frame's time.
+    ambient_waves: array<vec4<f32>, MAX_AMBIENT_WAVES>,
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -63,7 +66,46 @@ fn water_at(xz: vec2<f32>) -> vec4<f32> {
     let b = textureLoad(water_state, vec2<i32>(i1.x, i0.y), 0);
     let c = textureLoad(water_state, vec2<i32>(i0.x, i1.y), 0);
     let d = textureLoad(water_state, vec2<i32>(i1.x, i1.y), 0);
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    let simulated = mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    if (AMBIENT_MODEL != AMBIENT_NONE) {
+        return with_ambient(simulated, xz);
+    }
+    return simulated;
+}
+
+// Height (m) and slopes dh/dx, dh/dz of the ambient waves at xz (the formulas of ambient.rs:
+// Finch's sharpened travelling sines, or the basin's standing modes).
+fn ambient_at(xz: vec2<f32>) -> vec3<f32> {
+    var sum = vec3<f32>(0.0);
+    let count = i32(scene.ambient_count.x);
+    for (var i = 0; i < MAX_AMBIENT_WAVES; i++) {
+        if (i >= count) {
+            break;
+        }
+        let w = scene.ambient_waves[i];
+        if (AMBIENT_MODEL == AMBIENT_SINES) {
+            let theta = w.x * xz.x + w.y * xz.y + w.w;
+            let s = (sin(theta) + 1.0) * 0.5;
+            let dh = 2.0 * w.z * s * cos(theta);
+            sum += vec3<f32>(2.0 * w.z * (s * s - SHARP_SINE_MEAN), dh * w.x, dh * w.y);
+        } else {
+            let u = w.x * (xz.x + half_width());
+            let v = w.y * (xz.y + half_width());
+            let c = w.z * cos(w.w);
+            sum += vec3<f32>(c * cos(u) * cos(v), -c * w.x * sin(u) * cos(v), -c * w.y * cos(u) * sin(v));
+        }
+    }
+    return sum;
+}
+
+// The simulated state with the ambient waves added: heights summed, slopes summed (the
+// state's normal is (-dh/dx, 1, -dh/dz) normalised), the velocity left as simulated.
+fn with_ambient(state: vec4<f32>, xz: vec2<f32>) -> vec4<f32> {
+    let ambient = ambient_at(xz);
+    let n = water_normal(state);
+    let slope = vec2<f32>(-n.x, -n.z) / max(n.y, 1.0e-4) + ambient.yz;
+    let total = normalize(vec3<f32>(-slope.x, 1.0, -slope.y));
+    return vec4<f32>(state.x + ambient.x, state.y, total.x, total.z);
 }
 
 fn water_normal(state: vec4<f32>) -> vec3<f32> {

@@ -4,13 +4,14 @@
 
 use glam::{Quat, Vec2, Vec3};
 
+use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves};
 use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
 use crate::optics::{FresnelModel, SpecularModel};
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::quality::{ResolutionGovernor, StepGovernor};
-use crate::render::{DebugTexture, DebugView, Optics, RenderSettings, Renderer, View, REFLECTANCE_VIEW};
+use crate::render::{AmbientView, DebugTexture, DebugView, Optics, RenderSettings, Renderer, View, REFLECTANCE_VIEW};
 use crate::scene::{self, Sphere};
 use crate::sim::{
     self, BodyCoupling, Drop, FixedStep, HeightField, HullMove, HullSlot, SimEngine, WaterLevel, WaveSettings,
@@ -187,6 +188,9 @@ pub struct WaterDemo {
     step_governor: StepGovernor,
     /// The render scale of the last frame drawn.
     render_scale: f32,
+    /// The ambient waves of the current parameters, and the settings they were made for.
+    ambient: AmbientWaves,
+    ambient_settings: AmbientSettings,
 }
 
 impl WaterDemo {
@@ -225,7 +229,10 @@ impl WaterDemo {
             governor: ResolutionGovernor::default(),
             step_governor: StepGovernor::new(MAX_STEPS_PER_FRAME, 1.0 / REAL_TIME_DOWN_TO_FPS as f32),
             render_scale: 1.0,
+            ambient: AmbientWaves::new(&AmbientSettings::default()),
+            ambient_settings: AmbientSettings::default(),
         };
+        demo.refresh_ambient();
         demo.place_duck_at_start();
         demo
     }
@@ -476,19 +483,48 @@ impl WaterDemo {
         }
     }
 
-    /// The water plane under each body from the newest probe heights (flat at the rest level
-    /// before any have arrived).
+    /// The ambient waves' settings in the parameters.
+    fn ambient_settings_now(&self) -> AmbientSettings {
+        AmbientSettings {
+            model: AmbientModel::from_param(self.params.get(ParamId::Ambient)),
+            wind_speed: self.params.get(ParamId::WindSpeed),
+            wind_direction_deg: self.params.get(ParamId::WindDirection),
+            significant_height: self.params.get(ParamId::WaveHeight),
+            spread_deg: self.params.get(ParamId::WaveSpread),
+        }
+    }
+
+    /// Remakes the ambient waves if their parameters changed.
+    fn refresh_ambient(&mut self) {
+        let settings = self.ambient_settings_now();
+        if settings != self.ambient_settings {
+            self.ambient = AmbientWaves::new(&settings);
+            self.ambient_settings = settings;
+        }
+    }
+
+    /// The ambient waves (heights in m at simulated time [`WaterDemo::sim_time`]).
+    pub fn ambient(&self) -> &AmbientWaves {
+        &self.ambient
+    }
+
+    /// The water plane under each body from the newest probe heights plus the ambient waves
+    /// there now (flat at the rest level before any probes have arrived).
     fn water_planes(&mut self) -> [WaterPlane; 2] {
         let frame = self.water.frames() + 1;
         let level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
         let mut planes = [WaterPlane::flat(level); 2];
+        let t = self.sim_time();
         if let Some(samples) = self.water.probes() {
             self.probe_latency = Some(frame.saturating_sub(samples.frame));
             for id in BodyId::ALL {
                 let k = id as usize * PROBES_PER_BODY;
                 if let Some(heights) = samples.heights.get(k..k + PROBES_PER_BODY) {
-                    let radius = samples.points[k].distance(samples.points[k + PROBES_PER_BODY / 2]) / 2.0;
-                    planes[id as usize] = WaterPlane::from_ring(heights, radius);
+                    let points = &samples.points[k..k + PROBES_PER_BODY];
+                    let heights: Vec<f32> =
+                        heights.iter().zip(points).map(|(h, p)| h + self.ambient.sample(p.x, p.y, t)[0]).collect();
+                    let radius = points[0].distance(points[PROBES_PER_BODY / 2]) / 2.0;
+                    planes[id as usize] = WaterPlane::from_ring(&heights, radius);
                 }
             }
         }
@@ -640,6 +676,10 @@ impl WaterDemo {
                 view_colour: self.params.flag(ParamId::ViewColour),
                 dispersion: self.params.get(ParamId::Dispersion),
             },
+            ambient: {
+                let (waves, count) = self.ambient.uniform(self.sim_time());
+                AmbientView { model: self.ambient.model, waves, count }
+            },
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
@@ -693,6 +733,7 @@ impl WaterDemo {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
         self.set_viewport(size.0, size.1);
+        self.refresh_ambient();
         self.choose_render_scale(frame_time);
         self.step_governor.observe(frame_time);
         self.clock.max_steps = self.step_governor.cap();

@@ -38,7 +38,7 @@ pub fn shared_constants() -> String {
         duck::TRACED_PARTS.len(),
         sim::MAX_DROPS_PER_PASS,
         sim::MAX_PUSH_STEPS * sim::MAX_HULL_MOVES * 8,
-        crate::optics::wgsl_constants(),
+        crate::optics::wgsl_constants() + &crate::ambient::wgsl_constants(),
     )
 }
 

@@ -2,6 +2,7 @@
 //! ray-traced pool with caustics, an orbit camera, and a platform-free core that the
 //! browser and native shells drive.
 
+pub mod ambient;
 pub mod camera;
 pub mod demo;
 pub mod duck;

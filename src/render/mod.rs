@@ -8,6 +8,7 @@ use std::collections::HashMap;
 
 use glam::{Mat4, Vec3};
 
+use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
 use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::optics::{self, FresnelModel, SpecularModel};
@@ -44,11 +45,22 @@ pub struct View {
     pub caustics: bool,
     /// The optical models and their parameters (optics.rs).
     pub optics: Optics,
+    /// The ambient waves to add to the simulated surface, at this frame's simulated time.
+    pub ambient: AmbientView,
     /// A view of the simulation's textures drawn over the scene, if any.
     pub debug: Option<DebugView>,
     /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
     /// is scaled up to the target).
     pub render_scale: f32,
+}
+
+/// The ambient waves as the shader takes them (see ambient.rs).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct AmbientView {
+    pub model: AmbientModel,
+    /// Per wave (kx, kz in rad/m, amplitude in m, phase now).
+    pub waves: [[f32; 4]; MAX_AMBIENT_WAVES],
+    pub count: u32,
 }
 
 /// How the water surface reflects (see optics.rs).
@@ -139,6 +151,8 @@ struct SceneUniforms {
     duck_pose: [[f32; 4]; 4],
     duck_bound: [f32; 4],
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
+    ambient_count: [f32; 4],
+    ambient_waves: [[f32; 4]; MAX_AMBIENT_WAVES],
 }
 
 /// Renderer settings fixed at creation.
@@ -602,6 +616,8 @@ impl Renderer {
                 .to_cols_array_2d(),
             duck_bound: view.duck.map_or([0.0; 4], |p| p.position.extend(duck::bounding_radius()).to_array()),
             duck_parts: duck_parts(),
+            ambient_count: [view.ambient.count as f32, 0.0, 0.0, 0.0],
+            ambient_waves: view.ambient.waves,
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         self.sky_cube.update(queue, encoder, view.sun);

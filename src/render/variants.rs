@@ -8,6 +8,7 @@
 use glam::{Vec3, Vec4Swizzles};
 
 use super::{View, DEPTH_FORMAT};
+use crate::ambient::AmbientModel;
 use crate::optics::{FresnelModel, SpecularModel};
 use crate::{duck, gpu};
 
@@ -32,6 +33,8 @@ pub struct Features {
     pub view_colour: bool,
     /// Red, green and blue light refract by their own indices (the `dispersion` parameter).
     pub dispersion: bool,
+    /// The ambient waves added to the simulated surface.
+    pub ambient: AmbientModel,
 }
 
 impl Features {
@@ -46,17 +49,19 @@ impl Features {
             scattering: view.optics.scatter.max_element() > 0.0,
             view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
             dispersion: view.optics.dispersion > 0.0,
+            ambient: view.ambient.model,
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
-    /// `HAS_DISPERSION`).
+    /// `HAS_DISPERSION`, `AMBIENT_MODEL`).
     pub fn wgsl(&self) -> String {
         format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
-             const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n",
+             const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
+             const AMBIENT_MODEL: u32 = {}u;\n",
             self.sphere,
             self.duck,
             self.caustics,
@@ -65,7 +70,8 @@ impl Features {
             self.show_reflectance,
             self.scattering,
             self.view_colour,
-            self.dispersion
+            self.dispersion,
+            self.ambient as u32
         )
     }
 }

@@ -1,0 +1,365 @@
+//! Ambient waves: a surface that moves on its own under the interactive ripples, as the
+//! seeds teach it (sums of sines; the basin's own standing waves). It is added to the
+//! simulated heightfield where the renderer reads the water (heights and slopes summed) and
+//! where the floating bodies feel it; the simulation itself never sees it. Its time is
+//! simulated time, so pausing stops it and every frame rate gives the same surface.
+//!
+//! One set of formulas for both sides: the shader (`ambient_at` in scene.wgsl) evaluates the
+//! waves from [`AmbientWaves::uniform`], the bodies and the tests from
+//! [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
+//! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
+
+use crate::scene::{DEPTH, HALF_WIDTH};
+use crate::sim::SplitMix64;
+
+/// Which ambient surface, from the `ambient` parameter.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AmbientModel {
+    #[default]
+    None = 0,
+    /// A few directional travelling waves with sharpened crests, Finch's
+    /// h = 2a(((sin θ + 1)/2)^k − mean) (seed 000): no longer one sine's symmetric hump.
+    Sines = 1,
+    /// The basin's own standing waves, h = Σ a cos(nπx'/W) cos(mπz'/W) cos(ωt + φ) with x', z'
+    /// measured from a wall: every wall is met with zero slope, as a reflecting pool does.
+    Modes = 2,
+}
+
+impl AmbientModel {
+    pub fn from_param(value: f32) -> Self {
+        match value.round() as i32 {
+            1 => AmbientModel::Sines,
+            2 => AmbientModel::Modes,
+            _ => AmbientModel::None,
+        }
+    }
+}
+
+/// Waves an ambient surface holds (the shader's uniform array has room for this many).
+pub const MAX_AMBIENT_WAVES: usize = 16;
+/// Travelling waves of the `sines` model.
+const SINE_WAVES: usize = 6;
+/// Exponent k of Finch's sharpened sine.
+pub const CREST_SHARPNESS: f32 = 2.0;
+/// Shortest and longest wavelengths (m) of the ambient waves: a pool in a light breeze.
+pub const SHORTEST_WAVELENGTH: f32 = 0.2;
+pub const LONGEST_WAVELENGTH: f32 = 0.9;
+/// Gravity (m/s²).
+pub const G: f32 = 9.81;
+/// k_m = sqrt(ρ g / σ) for clean water (rad/m): where surface tension weighs as much as
+/// gravity in the dispersion relation.
+pub const CAPILLARY_WAVENUMBER: f32 = 370.0;
+
+/// Angular frequency (rad/s) of a water wave of wavenumber `k` (rad/m) on water `DEPTH` deep:
+/// ω² = g k tanh(k D) (1 + (k/k_m)²), gravity and surface tension. (Beware the widely copied
+/// `k * k / KM * KM`: that is k², not (k/k_m)².)
+pub fn angular_frequency(k: f32) -> f32 {
+    let ratio = k / CAPILLARY_WAVENUMBER;
+    (G * k * (k * DEPTH).tanh() * (1.0 + ratio * ratio)).sqrt()
+}
+
+/// The physical settings of the ambient surface (from the parameter table).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct AmbientSettings {
+    pub model: AmbientModel,
+    /// Wind speed (m/s): the Phillips spectrum's L = V²/g puts its energy at wavelengths
+    /// around 2πL, so stronger wind favours the longer waves.
+    pub wind_speed: f32,
+    /// Direction the wind blows towards (degrees, from +x towards +z).
+    pub wind_direction_deg: f32,
+    /// Significant wave height H_s = 4 × standard deviation of the surface (m).
+    pub significant_height: f32,
+    /// Spread of the waves' directions around the wind (degrees, ±).
+    pub spread_deg: f32,
+}
+
+/// One wave of the surface. Sines: h = 2a(((sin(k·x + p) + 1)/2)^k − mean); modes:
+/// h = a cos(kx (x + W)) cos(kz (z + W)) cos(p); p advances by −ω t (sines) or ω t (modes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Wave {
+    pub kx: f32,
+    pub kz: f32,
+    pub amplitude: f32,
+    pub omega: f32,
+    /// Phase at t = 0.
+    pub phase: f64,
+}
+
+/// The waves of one ambient surface.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AmbientWaves {
+    pub model: AmbientModel,
+    pub waves: Vec<Wave>,
+}
+
+/// The Phillips spectrum's shape at wavevector (kx, kz) for wind `settings`, without its
+/// scale: exp(−1/(kL)²)/k⁴ · (its alignment with the wind)², L = V²/g.
+fn phillips(kx: f32, kz: f32, settings: &AmbientSettings) -> f32 {
+    let k = (kx * kx + kz * kz).sqrt().max(1e-6);
+    let l = settings.wind_speed * settings.wind_speed / G;
+    let wind = settings.wind_direction_deg.to_radians();
+    let align = (kx * wind.cos() + kz * wind.sin()) / k;
+    (-1.0 / (k * l).powi(2)).exp() / k.powi(4) * align * align
+}
+
+impl AmbientWaves {
+    /// The wave set for `settings`, the same every time for the same settings (seeded).
+    pub fn new(settings: &AmbientSettings) -> Self {
+        let mut rng = SplitMix64(0x5eed_a3b1);
+        let (k_min, k_max) = (std::f32::consts::TAU / LONGEST_WAVELENGTH, std::f32::consts::TAU / SHORTEST_WAVELENGTH);
+        let mut waves = Vec::new();
+        match settings.model {
+            AmbientModel::None => {}
+            AmbientModel::Sines => {
+                let wind = settings.wind_direction_deg.to_radians();
+                for i in 0..SINE_WAVES {
+                    // Wavenumbers evenly in log between the shortest and longest wavelengths,
+                    // each direction within the spread around the wind.
+                    let k = k_min * (k_max / k_min).powf((i as f32 + rng.range(0.0, 1.0)) / SINE_WAVES as f32);
+                    let angle = wind + settings.spread_deg.to_radians() * (2.0 * rng.range(0.0, 1.0) - 1.0);
+                    let (kx, kz) = (k * angle.cos(), k * angle.sin());
+                    let weight = phillips(kx, kz, settings).max(0.0) * k * k;
+                    waves.push(Wave {
+                        kx,
+                        kz,
+                        amplitude: weight.sqrt(),
+                        omega: angular_frequency(k),
+                        phase: rng.range(0.0, 1.0) as f64 * std::f64::consts::TAU,
+                    });
+                }
+            }
+            AmbientModel::Modes => {
+                // Basin modes (n, m) with wavenumbers in the band, weighted by the spectrum at
+                // their wavevector (a standing wave is two opposite travelling ones: the wind
+                // picks the modes lined up with it): in each of MAX_AMBIENT_WAVES bands of
+                // wavenumber (even in log, as the sines) the strongest, so short and long
+                // waves are all there.
+                let width = 2.0 * HALF_WIDTH;
+                let unit = std::f32::consts::PI / width;
+                let mut candidates = Vec::new();
+                let top = (k_max / unit).ceil() as i32;
+                for n in 0..=top {
+                    for m in 0..=top {
+                        let (kx, kz) = (n as f32 * unit, m as f32 * unit);
+                        let k = (kx * kx + kz * kz).sqrt();
+                        if k < k_min || k > k_max {
+                            continue;
+                        }
+                        // Both diagonal directions of the mode's wavevector: its best alignment.
+                        let w = phillips(kx, kz, settings).max(phillips(kx, -kz, settings)) * k * k;
+                        candidates.push((w * (0.5 + rng.range(0.0, 1.0)), kx, kz, k));
+                    }
+                }
+                let band = |k: f32| {
+                    ((k / k_min).ln() / (k_max / k_min).ln() * MAX_AMBIENT_WAVES as f32).min(MAX_AMBIENT_WAVES as f32 - 1.0)
+                        as usize
+                };
+                let mut strongest: [Option<(f32, f32, f32, f32)>; MAX_AMBIENT_WAVES] = [None; MAX_AMBIENT_WAVES];
+                for c in candidates {
+                    let slot = &mut strongest[band(c.3)];
+                    if slot.is_none_or(|s| c.0 > s.0) {
+                        *slot = Some(c);
+                    }
+                }
+                for &(w, kx, kz, k) in strongest.iter().flatten() {
+                    waves.push(Wave {
+                        kx,
+                        kz,
+                        amplitude: w.max(0.0).sqrt(),
+                        omega: angular_frequency(k),
+                        phase: rng.range(0.0, 1.0) as f64 * std::f64::consts::TAU,
+                    });
+                }
+            }
+        }
+        let mut set = Self { model: settings.model, waves };
+        // Scale to the significant height, measured over the pool and a few instants.
+        let hs = set.measured_significant_height();
+        if hs > 0.0 {
+            let scale = settings.significant_height / hs;
+            for w in &mut set.waves {
+                w.amplitude *= scale;
+            }
+        }
+        set
+    }
+
+    /// 4 × the standard deviation of the surface over a grid of the pool at a few instants.
+    pub fn measured_significant_height(&self) -> f32 {
+        let (mut sum, mut sq, mut n) = (0.0f64, 0.0f64, 0.0f64);
+        for t in [0.0, 0.37, 1.1, 2.9] {
+            for i in 0..40 {
+                for j in 0..40 {
+                    let x = (i as f32 + 0.5) / 40.0 * 2.0 * HALF_WIDTH - HALF_WIDTH;
+                    let z = (j as f32 + 0.5) / 40.0 * 2.0 * HALF_WIDTH - HALF_WIDTH;
+                    let h = self.sample(x, z, t)[0] as f64;
+                    sum += h;
+                    sq += h * h;
+                    n += 1.0;
+                }
+            }
+        }
+        let mean = sum / n;
+        (4.0 * (sq / n - mean * mean).max(0.0).sqrt()) as f32
+    }
+
+    /// Each wave's phase p at simulated time `t` (s), reduced to [0, 2π) in f64.
+    pub fn phases(&self, t: f64) -> Vec<f32> {
+        let sign = if self.model == AmbientModel::Modes { 1.0 } else { -1.0 };
+        self.waves
+            .iter()
+            .map(|w| (w.phase + sign * w.omega as f64 * t).rem_euclid(std::f64::consts::TAU) as f32)
+            .collect()
+    }
+
+    /// Height (m) and slopes dh/dx, dh/dz of the ambient surface at (x, z) (m) and simulated
+    /// time `t` (s). Same arithmetic as the shader's `ambient_at`.
+    pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
+        let phases = self.phases(t);
+        let mut out = [0.0f32; 3];
+        for (w, &p) in self.waves.iter().zip(&phases) {
+            let [h, dx, dz] = match self.model {
+                AmbientModel::None => [0.0; 3],
+                AmbientModel::Sines => sharp_sine(w.kx, w.kz, w.amplitude, p, x, z),
+                AmbientModel::Modes => standing(w.kx, w.kz, w.amplitude, p, x, z),
+            };
+            out = [out[0] + h, out[1] + dx, out[2] + dz];
+        }
+        out
+    }
+
+    /// The shader's view of the waves at simulated time `t`: per wave (kx, kz, amplitude,
+    /// phase), [`MAX_AMBIENT_WAVES`] of them (unused ones have zero amplitude), and the count.
+    pub fn uniform(&self, t: f64) -> ([[f32; 4]; MAX_AMBIENT_WAVES], u32) {
+        let mut out = [[0.0; 4]; MAX_AMBIENT_WAVES];
+        for ((slot, w), p) in out.iter_mut().zip(&self.waves).zip(self.phases(t)) {
+            *slot = [w.kx, w.kz, w.amplitude, p];
+        }
+        (out, self.waves.len().min(MAX_AMBIENT_WAVES) as u32)
+    }
+}
+
+/// Mean of ((sin θ + 1)/2)² over θ: 3/8 (for [`CREST_SHARPNESS`] = 2).
+const SHARP_SINE_MEAN: f32 = 0.375;
+
+/// Finch's sharpened travelling wave and its slopes: h = 2a(s² − 3/8), s = (sin θ + 1)/2,
+/// θ = kx x + kz z + p.
+fn sharp_sine(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f32; 3] {
+    let theta = kx * x + kz * z + p;
+    let s = (theta.sin() + 1.0) * 0.5;
+    let h = 2.0 * a * (s * s - SHARP_SINE_MEAN);
+    // dh/dθ = 2a · 2s · cos θ / 2
+    let dh = 2.0 * a * s * theta.cos();
+    [h, dh * kx, dh * kz]
+}
+
+/// A standing mode and its slopes: h = a cos(kx (x + W)) cos(kz (z + W)) cos p.
+fn standing(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f32; 3] {
+    let (u, v) = (kx * (x + HALF_WIDTH), kz * (z + HALF_WIDTH));
+    let c = a * p.cos();
+    [c * u.cos() * v.cos(), -c * kx * u.sin() * v.cos(), -c * kz * u.cos() * v.sin()]
+}
+
+/// WGSL constants of this module, written ahead of every shader (see `gpu::shared_constants`).
+pub fn wgsl_constants() -> String {
+    format!(
+        "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\
+         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\n",
+        AmbientModel::None as u32,
+        AmbientModel::Sines as u32,
+        AmbientModel::Modes as u32,
+        MAX_AMBIENT_WAVES,
+        SHARP_SINE_MEAN,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn settings(model: AmbientModel) -> AmbientSettings {
+        AmbientSettings { model, wind_speed: 3.0, wind_direction_deg: 30.0, significant_height: 0.01, spread_deg: 30.0 }
+    }
+
+    #[test]
+    fn the_dispersion_relation_has_gravity_depth_and_surface_tension() {
+        // Deep-water gravity waves: ω² = g k; at k_m surface tension doubles it.
+        let k = 10.0;
+        let deep = (G * k).sqrt();
+        println!(
+            "ω at k = 10: {:.4} (deep gravity {deep:.4}); at k_m: {:.2}",
+            angular_frequency(k),
+            angular_frequency(CAPILLARY_WAVENUMBER)
+        );
+        assert!((angular_frequency(k) / deep - (1.0 + (k / CAPILLARY_WAVENUMBER).powi(2)).sqrt()).abs() < 1e-3);
+        let km = CAPILLARY_WAVENUMBER;
+        assert!((angular_frequency(km).powi(2) / (2.0 * G * km) - 1.0).abs() < 1e-3);
+        // The wrong `k * k / KM * KM` would give ω² = g k (1 + k²): 100x too fast here.
+        assert!(angular_frequency(k) < 1.01 * (G * k * 1.01).sqrt());
+        // Shallow-ish: a 4 m wave on 1 m of water is slowed by tanh(k D).
+        let long = std::f32::consts::PI / 2.0;
+        assert!(angular_frequency(long) < 0.96 * (G * long).sqrt());
+    }
+
+    #[test]
+    fn each_model_has_the_asked_significant_height_and_stays_far_below_the_rim() {
+        for model in [AmbientModel::Sines, AmbientModel::Modes] {
+            let waves = AmbientWaves::new(&settings(model));
+            let hs = waves.measured_significant_height();
+            let highest = (0..2000)
+                .map(|i| {
+                    let (x, z, t) = ((i % 41) as f32 / 20.0 - 1.0, (i / 41) as f32 / 24.0 - 1.0, i as f64 * 0.013);
+                    waves.sample(x, z, t)[0].abs()
+                })
+                .fold(0.0f32, f32::max);
+            let lengths: Vec<String> = waves
+                .waves
+                .iter()
+                .map(|w| format!("{:.2}", std::f32::consts::TAU / (w.kx * w.kx + w.kz * w.kz).sqrt()))
+                .collect();
+            println!(
+                "{model:?}: {} waves, wavelengths {lengths:?} m, H_s {hs:.4} m, highest {highest:.4} m",
+                waves.waves.len()
+            );
+            assert!(!waves.waves.is_empty() && waves.waves.len() <= MAX_AMBIENT_WAVES);
+            assert!((hs - 0.01).abs() < 1e-4, "{model:?}: H_s {hs}");
+            assert!(highest < 0.03, "{model:?}: {highest} m");
+        }
+    }
+
+    #[test]
+    fn the_modes_meet_every_wall_with_zero_slope_and_the_sines_travel_with_the_wind() {
+        let modes = AmbientWaves::new(&settings(AmbientModel::Modes));
+        let mut steepest_at_wall = 0.0f32;
+        for i in 0..=20 {
+            let along = i as f32 / 10.0 - 1.0;
+            for t in [0.0, 0.7, 1.9] {
+                let [_, dx, _] = modes.sample(HALF_WIDTH, along, t);
+                let [_, dx2, _] = modes.sample(-HALF_WIDTH, along, t);
+                let [_, _, dz] = modes.sample(along, HALF_WIDTH, t);
+                let [_, _, dz2] = modes.sample(along, -HALF_WIDTH, t);
+                steepest_at_wall = steepest_at_wall.max(dx.abs()).max(dx2.abs()).max(dz.abs()).max(dz2.abs());
+            }
+        }
+        let inside = (0..50).map(|i| modes.sample(0.3 - i as f32 * 0.01, 0.1, 0.5)[1].abs()).fold(0.0f32, f32::max);
+        println!("modes: steepest slope across a wall {steepest_at_wall:.2e}, inside up to {inside:.3}");
+        assert!(steepest_at_wall < 1e-4, "slope {steepest_at_wall} at a wall");
+        assert!(inside > 1e-3);
+        // The sines' crests move downwind at the phase speed ω/k of their wavelength.
+        let sines = AmbientWaves::new(&settings(AmbientModel::Sines));
+        let w = sines.waves[0];
+        let k = (w.kx * w.kx + w.kz * w.kz).sqrt();
+        let speed = w.omega / k;
+        let dt = 0.05;
+        let moved = speed * dt as f32; // along (kx, kz) / k
+        let single = AmbientWaves { model: AmbientModel::Sines, waves: vec![w] };
+        let (x0, z0) = (0.1, -0.2);
+        let (x1, z1) = (x0 + moved * w.kx / k, z0 + moved * w.kz / k);
+        let (a, b) = (single.sample(x0, z0, 0.0)[0], single.sample(x1, z1, dt)[0]);
+        println!(
+            "a {:.2} m wave: phase speed {speed:.3} m/s; height {a:.6} here now, {b:.6} downwind {dt} s later",
+            std::f32::consts::TAU / k
+        );
+        assert!((a - b).abs() < 1e-6);
+    }
+}
