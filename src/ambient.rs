@@ -151,8 +151,8 @@ impl AmbientWaves {
                     }
                 }
                 let band = |k: f32| {
-                    ((k / k_min).ln() / (k_max / k_min).ln() * MAX_AMBIENT_WAVES as f32).min(MAX_AMBIENT_WAVES as f32 - 1.0)
-                        as usize
+                    ((k / k_min).ln() / (k_max / k_min).ln() * MAX_AMBIENT_WAVES as f32)
+                        .min(MAX_AMBIENT_WAVES as f32 - 1.0) as usize
                 };
                 let mut strongest: [Option<(f32, f32, f32, f32)>; MAX_AMBIENT_WAVES] = [None; MAX_AMBIENT_WAVES];
                 for c in candidates {

@@ -69,6 +69,13 @@ pub const PRESETS: &[Preset] = &[
         camera: Some([180.0, 30.0, 3.2]),
     },
     Preset {
+        name: "breeze",
+        label: "Lesson: ambient waves",
+        help: "A light breeze makes sharp-crested waves travel across the pool under your ripples; switch Ambient waves to modes to see the pool's own standing waves, which meet every wall flat.",
+        values: &[("objects", 2.0), ("ambient", 1.0), ("wind_speed", 3.0), ("wave_height", 0.012), ("wind_direction", 30.0)],
+        camera: None,
+    },
+    Preset {
         name: "lake",
         label: "Lesson: water colour",
         help: "Green lake water: it absorbs red, green and blue faster than the pool's, and scatters a green-blue light of its own, so the deep end turns green instead of dark (turn the scattered light to 0 to see plain Beer-Lambert).",

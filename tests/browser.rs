@@ -615,7 +615,8 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
 /// exact, 0 linear), choosing a model in the select redraws it and changes the water's
 /// pixels, and the plot's view mark sits at 90° minus the camera's pitch. Dispersion (a
 /// per-channel caustics map, three caustics draws) and in-scattered light run there too,
-/// each changing the picture, with no error.
+/// each changing the picture, with no error; ambient waves move the calm pool with no input
+/// and stand still while it is paused.
 async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) =
         open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none&paused=1"), backend).await;
@@ -660,6 +661,23 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         assert!(state["error"].is_null(), "{backend}: {name} stopped the demo: {state}");
         assert!(changed > 0.01, "{backend}: {name} changed {:.2} % of the canvas", changed * 100.0);
     }
+    browser.js("window.demo.set('dispersion', 0); window.demo.set('scatter_red', 0); window.demo.set('ambient', 'sines'); window.demo.set('paused', 0); return true;").await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let a = browser.screenshot().await;
+    tokio::time::sleep(Duration::from_millis(1000)).await;
+    let b = browser.screenshot().await;
+    browser.js("window.demo.set('paused', 1); return true;").await;
+    tokio::time::sleep(Duration::from_millis(800)).await;
+    let c = browser.screenshot().await;
+    tokio::time::sleep(Duration::from_millis(1000)).await;
+    let d = browser.screenshot().await;
+    let (moving, paused) = (changed_fraction(&a, &b, rect, 8), changed_fraction(&c, &d, rect, 8));
+    println!(
+        "{backend}: ambient sines: {:.1} % changed in 1 s with no input; paused: {:.2} %",
+        moving * 100.0,
+        paused * 100.0
+    );
+    assert!(moving > 0.01 && paused == 0.0, "{backend}: ambient waves {moving} moving, {paused} paused");
     browser.close().await;
 }
 
