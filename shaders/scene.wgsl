@@ -43,11 +43,14 @@ struct Scene {
 @group(1) @binding(4) var repeat_sampler: sampler;
 // Exact Fresnel reflectance at FRESNEL_TABLE_SIZE angles 0-90°: row 0 from air, row 1 from water.
 @group(1) @binding(5) var fresnel_table: texture_2d<f32>;
+// Foam amount (0-1) per cell of the CPU field that integrates it (sim/foam.rs), when on.
+@group(1) @binding(6) var foam_map: texture_2d<f32>;
 
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
 
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.62, 0.60, 0.56);
+const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }
 fn depth() -> f32 { return scene.pool.y; }
@@ -71,6 +74,32 @@ fn water_at(xz: vec2<f32>) -> vec4<f32> {
         return with_ambient(simulated, xz);
     }
     return simulated;
+}
+
+// Foam amount at pool point xz (m): bilinear between cell centres, by hand (32-bit floats).
+fn foam_at(xz: vec2<f32>) -> f32 {
+    let size = vec2<i32>(textureDimensions(foam_map));
+    let p = (xz / half_width() * 0.5 + 0.5) * vec2<f32>(size) - 0.5;
+    let base = floor(p);
+    let f = p - base;
+    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), size - 1);
+    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), size - 1);
+    let a = textureLoad(foam_map, vec2<i32>(i0.x, i0.y), 0).r;
+    let b = textureLoad(foam_map, vec2<i32>(i1.x, i0.y), 0).r;
+    let c = textureLoad(foam_map, vec2<i32>(i0.x, i1.y), 0).r;
+    let d = textureLoad(foam_map, vec2<i32>(i1.x, i1.y), 0).r;
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// Foam over the surface colour at p: the amount as bubbly coverage (scattered bubbles where
+// thin, solid white where thick) that hides what lies behind; lit by the sky and the sun
+// seen from above, a shadow seen from below.
+fn with_foam(colour: vec3<f32>, p: vec3<f32>, from_above: bool) -> vec3<f32> {
+    let amount = foam_at(p.xz);
+    let bubbles = 0.6 * value_noise(vec3<f32>(p.xz * 90.0, 0.0)) + 0.4 * value_noise(vec3<f32>(p.xz * 23.0, 3.7));
+    let coverage = smoothstep(bubbles - 0.1, bubbles + 0.1, 1.4 * amount);
+    let lit = FOAM_ALBEDO * (AMBIENT + max(scene.sun.y, 0.0) * scene.sun.w * SUN_COLOUR);
+    return select(colour * (1.0 - 0.8 * coverage), mix(colour, lit, coverage), from_above);
 }
 
 // Height (m) and slopes dh/dx, dh/dz of the ambient waves at xz (the formulas of ambient.rs:

@@ -60,6 +60,9 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
         colour.r = dispersed(in.world, view, n, from_above, scene.ior.x, air, water, lod_air, lod_water).r;
         colour.b = dispersed(in.world, view, n, from_above, scene.ior.z, air, water, lod_air, lod_water).b;
     }
+    if (HAS_FOAM) {
+        colour = with_foam(colour, in.world, from_above);
+    }
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
     }

@@ -680,6 +680,7 @@ impl WaterDemo {
                 let (waves, count) = self.ambient.uniform(self.sim_time());
                 AmbientView { model: self.ambient.model, waves, count }
             },
+            foam: self.water.foam().is_some(),
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
@@ -766,11 +767,16 @@ impl WaterDemo {
             absorbing_walls: self.params.flag(ParamId::AbsorbingWalls),
         };
         mark(&mut sim_encoder, Stage::Start);
+        let foam = self.params.flag(ParamId::Foam).then(|| self.params.get(ParamId::FoamDecay));
+        self.water.set_foam(foam);
         self.water.encode(queue, &mut sim_encoder, steps, STEP_DT, settings);
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         self.water.after_submit();
         let view = self.view();
+        if let Some(foam) = self.water.foam() {
+            self.renderer.upload_foam(device, queue, foam);
+        }
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(device, encoder, &view, &self.water);
         mark(encoder, Stage::AfterCaustics);

@@ -11,6 +11,7 @@ use crate::gpu::PingPong;
 
 mod coupling;
 pub mod cpu;
+pub mod foam;
 mod gpu_engine;
 mod plan;
 mod random;
@@ -199,6 +200,24 @@ impl HeightField {
             self.state.run(encoder, &sim.normals_pass, &sim.bind_groups);
         }
         sim.probe.encode(encoder, &sim.mean.result);
+    }
+
+    /// Turns foam on (decay time in s) or off. Foam is integrated per step on the CPU field
+    /// of either engine (the GPU engine's shadow of the water, at most [`SHADOW_SIZE`] cells
+    /// per side), the same code for both.
+    pub fn set_foam(&mut self, decay_s: Option<f32>) {
+        match &mut self.engine {
+            Engine::Gpu(sim) => sim.shadow.set_foam(decay_s),
+            Engine::Cpu { water, .. } => water.set_foam(decay_s),
+        }
+    }
+
+    /// The foam, when on (updated by [`HeightField::encode`]).
+    pub fn foam(&self) -> Option<&foam::Foam> {
+        match &self.engine {
+            Engine::Gpu(sim) => sim.shadow.foam(),
+            Engine::Cpu { water, .. } => water.foam(),
+        }
     }
 
     /// Sets what the bodies do to the water in the next [`HeightField::encode`].

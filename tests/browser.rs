@@ -616,7 +616,7 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
 /// pixels, and the plot's view mark sits at 90° minus the camera's pitch. Dispersion (a
 /// per-channel caustics map, three caustics draws) and in-scattered light run there too,
 /// each changing the picture, with no error; ambient waves move the calm pool with no input
-/// and stand still while it is paused.
+/// and stand still while it is paused; with foam on a hard drop leaves white water.
 async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) =
         open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none&paused=1"), backend).await;
@@ -678,6 +678,28 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         paused * 100.0
     );
     assert!(moving > 0.01 && paused == 0.0, "{backend}: ambient waves {moving} moving, {paused} paused");
+    // A hard drop with foam, then frozen: the same water drawn with foam and without it.
+    browser
+        .js("const d = window.demo; d.reset(); d.set('foam', 1); d.set('foam_decay', 5); d.set('paused', 0);
+             for (const [x, z] of [[0, 0], [0.4, 0.3], [-0.4, -0.3]]) d.addDrop(x, z, 0.1, 0.045);
+             return true;")
+        .await;
+    tokio::time::sleep(Duration::from_millis(600)).await;
+    browser.js("window.demo.set('paused', 1); return true;").await;
+    tokio::time::sleep(Duration::from_millis(800)).await;
+    let with_foam = browser.screenshot().await;
+    browser.js("window.demo.set('foam', 0); return true;").await;
+    tokio::time::sleep(Duration::from_millis(800)).await;
+    let without = browser.screenshot().await;
+    let luma = |p: &[u8; 3]| 0.2126 * p[0] as f32 + 0.7152 * p[1] as f32 + 0.0722 * p[2] as f32;
+    let whiter = with_foam
+        .region(rect)
+        .iter()
+        .zip(without.region(rect).iter())
+        .filter(|(a, b)| luma(a) > luma(b) + 30.0)
+        .count();
+    println!("{backend}: {whiter} pixels whiter with foam than the same frozen water without");
+    assert!(whiter > 100, "{backend}: no foam seen ({whiter} pixels)");
     browser.close().await;
 }
 

@@ -13,6 +13,7 @@ use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::optics::{self, FresnelModel, SpecularModel};
 use crate::scene::{self, Sphere};
+use crate::sim::foam::Foam;
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
 use meshes::{pool_box, unit_sphere, water_grid, Mesh};
@@ -47,6 +48,8 @@ pub struct View {
     pub optics: Optics,
     /// The ambient waves to add to the simulated surface, at this frame's simulated time.
     pub ambient: AmbientView,
+    /// Foam is drawn on the surface (from the map [`Renderer::upload_foam`] filled).
+    pub foam: bool,
     /// A view of the simulation's textures drawn over the scene, if any.
     pub debug: Option<DebugView>,
     /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
@@ -347,6 +350,8 @@ struct SceneTextures {
     tiles: wgpu::TextureView,
     sky: wgpu::TextureView,
     fresnel_table: wgpu::TextureView,
+    /// The foam amount per cell (R32Float), 1 x 1 until foam is first drawn.
+    foam: (wgpu::Texture, wgpu::TextureView),
     clamp: wgpu::Sampler,
     repeat: wgpu::Sampler,
 }
@@ -368,9 +373,18 @@ impl SceneTextures {
                 wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::Sampler(&self.clamp) },
                 wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::Sampler(&self.repeat) },
                 wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::TextureView(&self.fresnel_table) },
+                wgpu::BindGroupEntry { binding: 6, resource: wgpu::BindingResource::TextureView(&self.foam.1) },
             ],
         })
     }
+}
+
+/// A `size` x `size` foam map (R32Float, filled from the CPU).
+fn foam_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu::TextureView) {
+    let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+    let texture = gpu::texture_2d(device, "foam", size, size, 1, 1, wgpu::TextureFormat::R32Float, usage);
+    let view = texture.create_view(&Default::default());
+    (texture, view)
 }
 
 /// The scene uniforms with each of the water's two state textures (group 0 of every scene pass).
@@ -436,6 +450,12 @@ impl Renderer {
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
                 ),
+                gpu::texture_entry(
+                    6,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
@@ -461,6 +481,7 @@ impl Renderer {
             tiles: tiles.create_view(&Default::default()),
             sky: sky_cube.view(),
             fresnel_table: textures::create_fresnel_table(device, queue).create_view(&Default::default()),
+            foam: foam_map(device, 1),
             clamp: sampler(wgpu::AddressMode::ClampToEdge),
             repeat: sampler(wgpu::AddressMode::Repeat),
         };
@@ -560,6 +581,27 @@ impl Renderer {
     pub fn caustics_size(&self, render_scale: f32) -> u32 {
         let side = (self.settings.caustics_size as f32 * render_scale.clamp(0.25, 1.0)).round() as u32;
         side.clamp(128.min(self.settings.caustics_size), self.settings.caustics_size)
+    }
+
+    /// Copies the foam amounts into the foam map the surface reads (remade, and rebound, when
+    /// the foam's grid changes size). Call before [`Renderer::encode_scene`] when foam is on.
+    pub fn upload_foam(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, foam: &Foam) {
+        let size = foam.size();
+        if self.scene_textures.foam.0.width() != size {
+            self.scene_textures.foam = foam_map(device, size);
+            self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
+        }
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.scene_textures.foam.0,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(foam.amount()),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        );
     }
 
     /// Makes the caustics map `size` texels per side, with light per colour channel or not

@@ -3,6 +3,7 @@
 //! [`StepPlan`]. Tests compare the GPU against it; it also serves where the GPU cannot render
 //! to float textures.
 
+use super::foam::Foam;
 use super::{
     displaced_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings, MAX_HEIGHT,
     MAX_VELOCITY,
@@ -40,6 +41,8 @@ pub struct CpuHeightField {
     pending: Vec<Drop>,
     /// Rest level of the last advance (m).
     rest_level: f32,
+    /// Foam integrated with the steps, when on.
+    foam: Option<Foam>,
 }
 
 /// One cell's update, as in `shaders/sim_update.wgsl` (same operations in the same order).
@@ -71,7 +74,22 @@ impl CpuHeightField {
             last_max_abs: 0.0,
             pending: Vec::new(),
             rest_level: 0.0,
+            foam: None,
         }
+    }
+
+    /// Turns foam on with decay time `decay_s` (s), or off (`None`: no work, foam dropped).
+    pub fn set_foam(&mut self, decay_s: Option<f32>) {
+        match (decay_s, &mut self.foam) {
+            (None, _) => self.foam = None,
+            (Some(d), Some(foam)) => foam.decay_s = d,
+            (Some(d), None) => self.foam = Some(Foam::new(self.size, self.half_width, d)),
+        }
+    }
+
+    /// The foam, when on.
+    pub fn foam(&self) -> Option<&Foam> {
+        self.foam.as_ref()
     }
 
     pub fn size(&self) -> u32 {
@@ -131,11 +149,20 @@ impl CpuHeightField {
         }
         let per_step = plan.updates_per_step(steps);
         for step in 0..(steps as usize).max(1) {
+            if let Some(foam) = &mut self.foam {
+                foam.begin_step(&self.height);
+            }
             if plan.pushes_water(step) {
                 self.apply_drops(&plan, step);
             }
+            if let Some(foam) = &mut self.foam {
+                foam.after_pushes(&self.height, &self.velocity);
+            }
             for _ in 0..per_step {
                 self.update(&plan);
+            }
+            if let Some(foam) = &mut self.foam {
+                foam.end_step(per_step as f32 * plan.dt, &self.height, &self.velocity, plan.rest_level);
             }
         }
         if plan.changes_state() {
