@@ -445,9 +445,9 @@ fn reflectance(cos_i: f32, eta: f32) -> f32 {
     }
     let c = select(ci, sqrt(1.0 - sin_t2), eta > 1.0);
     if (FRESNEL_MODEL == FRESNEL_TABLE) {
-        // Linear interpolation between the two texels around the angle, by hand: 32-bit
-        // float textures are not filterable everywhere.
-        let u = acos(ci) / (0.5 * PI) * f32(FRESNEL_TABLE_SIZE - 1);
+        // Indexed by the air-side angle (optics::fresnel_table); linear interpolation between
+        // the two texels around it, by hand: 32-bit float textures are not filterable everywhere.
+        let u = acos(c) / (0.5 * PI) * f32(FRESNEL_TABLE_SIZE - 1);
         let i = min(i32(floor(u)), FRESNEL_TABLE_SIZE - 2);
         let row = select(0, 1, eta > 1.0);
         let a = textureLoad(fresnel_table, vec2<i32>(i, row), 0).r;

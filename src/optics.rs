@@ -76,17 +76,21 @@ pub fn fresnel_exact(cos_i: f32, eta: f32) -> f32 {
     0.5 * (rs * rs + rp * rp)
 }
 
-/// The lookup texture's texels: row 0 from air into water (η = 1/n), row 1 from water into
-/// air (η = n), each [`FRESNEL_TABLE_SIZE`] exact values at angles i/(size − 1) · 90°.
+/// The lookup texture's texels, each row [`FRESNEL_TABLE_SIZE`] exact values at air-side
+/// angles i/(size − 1) · 90°: row 0 from air into water (η = 1/n, the incidence angle), row 1
+/// from water into air (η = n) indexed by the refracted angle in the air, on which the
+/// reflectance is smooth right up to the critical angle (by its own angle it climbs to 1
+/// within a fraction of a degree, faster than texels can follow).
 pub fn fresnel_table() -> Vec<f32> {
     let last = (FRESNEL_TABLE_SIZE - 1) as f32;
-    [1.0 / IOR_WATER, IOR_WATER]
-        .iter()
-        .flat_map(|&eta| {
-            (0..FRESNEL_TABLE_SIZE)
-                .map(move |i| fresnel_exact((i as f32 / last * std::f32::consts::FRAC_PI_2).cos(), eta))
-        })
-        .collect()
+    let air_angle = move |i: u32| i as f32 / last * std::f32::consts::FRAC_PI_2;
+    let from_air = (0..FRESNEL_TABLE_SIZE).map(move |i| fresnel_exact(air_angle(i).cos(), 1.0 / IOR_WATER));
+    let from_water = (0..FRESNEL_TABLE_SIZE).map(move |i| {
+        // Snell: sin θ_water = sin θ_air / n.
+        let sin_w = air_angle(i).sin() / IOR_WATER;
+        fresnel_exact((1.0 - sin_w * sin_w).sqrt(), IOR_WATER)
+    });
+    from_air.chain(from_water).collect()
 }
 
 /// Reflectance by `model` (see [`FresnelModel`]); `table`: [`fresnel_table`], read only by
@@ -103,7 +107,7 @@ pub fn reflectance(model: FresnelModel, cos_i: f32, eta: f32, table: &[f32]) -> 
         FresnelModel::Exact => unreachable!(),
         FresnelModel::Table => {
             let last = (FRESNEL_TABLE_SIZE - 1) as f32;
-            let u = ci.acos() / std::f32::consts::FRAC_PI_2 * last;
+            let u = c.acos() / std::f32::consts::FRAC_PI_2 * last;
             let i = (u.floor() as usize).min(FRESNEL_TABLE_SIZE as usize - 2);
             let row = if eta > 1.0 { FRESNEL_TABLE_SIZE as usize } else { 0 };
             let (a, b) = (table[row + i], table[row + i + 1]);
