@@ -100,3 +100,68 @@ fn foam_shows_white_on_the_surface_and_off_nothing_is_integrated() {
     assert!(with > 2 * without + 100, "foam does not show ({with} vs {without})");
     assert!(on && !off, "foam integrated with it off");
 }
+
+/// With absorbing walls (no waves left to run up them), the foam of a strong drop falls below
+/// 1 % of its peak within five time constants; a gentle ring foams nowhere it passes.
+#[test]
+fn foam_falls_below_one_percent_of_its_peak_after_five_time_constants_and_a_gentle_ring_makes_none() {
+    let mut demo = pool(true, true);
+    demo.params.set(ParamId::AbsorbingWalls, 1.0);
+    demo.add_drop(0.0, 0.0, 0.08, 0.04);
+    let mut peak = 0.0f64;
+    for _ in 0..30 {
+        render(&mut demo, 32, 24, 1, 1.0 / 60.0);
+        peak = peak.max(demo.water().foam().unwrap().total());
+    }
+    render(&mut demo, 32, 24, 450, 1.0 / 60.0); // 7.5 s = 5 x 1.5 s
+    let left = demo.water().foam().unwrap().total();
+    let mut gentle = pool(true, true);
+    gentle.add_drop(-0.6, -0.6, 0.04, 0.003);
+    render(&mut gentle, 32, 24, 60, 1.0 / 60.0);
+    let (passed, at_drop) = (foam_at(&gentle, 0.0, 0.0).max(foam_at(&gentle, -0.6, 0.2)), foam_at(&gentle, -0.6, -0.6));
+    println!(
+        "strong drop: peak {peak:.4} m², {left:.6} m² after 5 time constants ({:.3} %); a gentle ring: {passed} where it passed, {at_drop:.3} where it fell",
+        left / peak * 100.0
+    );
+    assert!(left < 0.01 * peak, "foam {left} of a {peak} peak after 5 time constants");
+    assert!(passed < 1e-4, "a gentle ring foamed where it passed ({passed})");
+}
+
+/// A ball dragged along the surface leaves a trail of foam behind it.
+#[test]
+fn a_sphere_dragged_through_the_surface_leaves_foam_behind_it() {
+    let mut demo = pool(true, true);
+    demo.params.set(ParamId::Objects, 1.0);
+    demo.params.set(ParamId::Gravity, 0.0);
+    for i in 0..=60 {
+        let x = -0.6 + 1.2 * i as f32 / 60.0;
+        demo.set_body_pose(BodyId::Sphere, Pose::at(Vec3::new(x, 0.0, 0.0)));
+        render(&mut demo, 32, 24, 1, 1.0 / 60.0);
+    }
+    let trail =
+        [-0.3f32, 0.0, 0.3].map(|x| (-6..=6).map(|k| foam_at(&demo, x, k as f32 * 0.05)).fold(0.0f32, f32::max));
+    let aside = foam_at(&demo, 0.0, -0.8);
+    println!("after dragging the ball from x = -0.6 to 0.6: foam along its path {trail:?}, off it {aside}");
+    assert!(trail.iter().all(|&f| f > 0.05) && aside < 0.01, "trail {trail:?}, aside {aside}");
+}
+
+/// Foam follows the fixed steps, not the frames: one second at 30, 60 and 144 frames/s
+/// leaves the same foam (to float rounding, 1e-6).
+#[test]
+fn foam_is_the_same_at_30_60_and_144_frames_per_second() {
+    let run = |fps: u32| {
+        let mut demo = pool(true, true);
+        demo.add_drop(0.2, 0.1, 0.08, 0.04);
+        render(&mut demo, 32, 24, fps, 1.0 / fps as f32);
+        demo.water().foam().unwrap().amount().to_vec()
+    };
+    let (a, b, c) = (run(30), run(60), run(144));
+    let diff = |x: &[f32], y: &[f32]| x.iter().zip(y).map(|(p, q)| (p - q).abs()).fold(0.0f32, f32::max);
+    println!(
+        "foam after 1 s: sum {:.2}; largest difference 30 vs 60 {:e}, 60 vs 144 {:e}",
+        a.iter().sum::<f32>(),
+        diff(&a, &b),
+        diff(&b, &c)
+    );
+    assert!(a.iter().sum::<f32>() > 1.0 && diff(&a, &b) < 1e-6 && diff(&b, &c) < 1e-6);
+}

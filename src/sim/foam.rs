@@ -42,6 +42,9 @@ pub struct Foam {
     before_height: Vec<f32>,
     splash: Vec<f32>,
     before_velocity: Vec<f32>,
+    /// Splash of drops applied in a frame without steps (a fast display between two steps),
+    /// carried to the next step so every frame rate foams alike.
+    pending_splash: Vec<f32>,
     /// Decay time τ (s).
     pub decay_s: f32,
 }
@@ -57,6 +60,7 @@ impl Foam {
             before_height: Vec::new(),
             splash: Vec::new(),
             before_velocity: Vec::new(),
+            pending_splash: Vec::new(),
             decay_s,
         }
     }
@@ -125,14 +129,23 @@ impl Foam {
     pub fn after_pushes(&mut self, height: &[f32], velocity: &[f32]) {
         self.splash.clear();
         self.splash.extend(height.iter().zip(&self.before_height).map(|(h, b)| ((h - b).abs() - SPLASH_MIN).max(0.0)));
+        if self.pending_splash.len() == self.splash.len() {
+            self.splash.iter_mut().zip(&self.pending_splash).for_each(|(s, p)| *s += p);
+        }
+        self.pending_splash.clear();
         self.before_velocity.clear();
         self.before_velocity.extend_from_slice(velocity);
     }
 
     /// After the step's updates (`dt` s in all): integrates the foam ([`Foam::step`]).
     pub fn end_step(&mut self, dt: f32, height: &[f32], velocity: &[f32], rest: f32) {
-        if dt <= 0.0 || self.splash.len() != height.len() {
-            return; // paused: nothing moved
+        if self.splash.len() != height.len() {
+            return;
+        }
+        if dt <= 0.0 {
+            // No step this frame (paused, or a frame shorter than a step): keep the splash.
+            self.pending_splash.clone_from(&self.splash);
+            return;
         }
         let (splash, before) = (std::mem::take(&mut self.splash), std::mem::take(&mut self.before_velocity));
         self.step(dt, &splash, height, velocity, &before, rest);
