@@ -616,7 +616,8 @@ async fn a_slow_frame_budget_lowers_the_resolution_and_quality_one_keeps_it() {
 /// pixels, and the plot's view mark sits at 90° minus the camera's pitch. Dispersion (a
 /// per-channel caustics map, three caustics draws) and in-scattered light run there too,
 /// each changing the picture, with no error; ambient waves move the calm pool with no input
-/// and stand still while it is paused; with foam on a hard drop leaves white water.
+/// and stand still while it is paused; with foam on a hard drop leaves white water; every
+/// new optics, foam and ambient parameter takes its value from its own control.
 async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) =
         open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none&paused=1"), backend).await;
@@ -700,6 +701,38 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         .count();
     println!("{backend}: {whiter} pixels whiter with foam than the same frozen water without");
     assert!(whiter > 100, "{backend}: no foam seen ({whiter} pixels)");
+    // Every parameter of this issue's lessons from its own control: sliders to their maximum,
+    // toggles clicked, selects to their last choice.
+    let set_by_controls = browser
+        .js("const root = document.querySelector('#pool').shadowRoot;
+             const names = ['sun_size', 'fresnel', 'specular', 'shininess', 'dispersion', 'absorption_red', 'absorption_green',
+                            'absorption_blue', 'scatter_red', 'scatter_green', 'scatter_blue', 'view_colour', 'foam', 'foam_decay',
+                            'ambient', 'wind_speed', 'wind_direction', 'wave_height', 'wave_spread'];
+             const out = {};
+             for (const name of names) {
+               const input = root.querySelector(`[name=${name}]`);
+               if (!input) { out[name] = 'no control'; continue; }
+               let want;
+               if (input.type === 'checkbox') { want = window.demo.get(name) >= 0.5 ? 0 : 1; input.click(); }
+               else if (input.tagName === 'SELECT') {
+                 input.value = input.options[input.options.length - 1].value; want = Number(input.value);
+                 input.dispatchEvent(new Event('change'));
+               } else {
+                 input.value = input.max; want = Number(input.max); input.dispatchEvent(new Event('input'));
+               }
+               out[name] = window.demo.get(name) === want ? 'ok' : `got ${window.demo.get(name)}, wanted ${want}`;
+             }
+             return out;")
+        .await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let state = browser
+        .js("return { error: document.querySelector('#pool').dataset.error || null, fps: window.demo.stats().fps };")
+        .await;
+    println!("{backend}: set from the controls: {set_by_controls}; then {state}");
+    for (name, result) in set_by_controls.as_object().unwrap() {
+        assert_eq!(result, "ok", "{backend}: {name} from its control");
+    }
+    assert!(state["error"].is_null() && state["fps"].as_f64().unwrap() > 0.0, "{backend}: {state}");
     browser.close().await;
 }
 
