@@ -366,3 +366,47 @@ fn every_model_draws_its_formula_at_0_30_60_80_and_89_degrees() {
     );
     assert!((at_60[1] - at_60[0] - known).abs() <= 1.5 / 255.0, "Schlick - exact at 60°");
 }
+
+/// With dispersion, red light (the lower index) bends less towards the vertical than blue, so
+/// under a low sun the red caustics land farther along the light's way than the blue: seen
+/// from straight above a drop's caustic ring, the centroid of the red light dispersion adds
+/// lies downwind of the blue one's (along the sun's horizontal direction of travel).
+#[test]
+fn dispersion_moves_the_red_caustics_farther_along_the_light_than_the_blue() {
+    let top_down = |dispersion: f32| {
+        let mut demo = empty_pool();
+        demo.params.set(ParamId::SunElevation, 35.0);
+        demo.params.set(ParamId::SunAzimuth, 0.0);
+        demo.params.set(ParamId::Dispersion, dispersion);
+        demo.camera.pitch = 89.0;
+        demo.camera.distance = 2.6;
+        demo.add_drop(0.0, 0.0, 0.06, 0.02);
+        let frame = render(&mut demo, W, H, 25, 1.0 / 60.0);
+        (frame, demo)
+    };
+    let ((plain, demo), (split, _)) = (top_down(0.0), top_down(20.0));
+    // Centroids (pixels) of what dispersion adds to red and to blue.
+    let centroid = |k: usize| {
+        let (mut sx, mut sy, mut sw) = (0.0f64, 0.0f64, 0.0f64);
+        for y in 0..H {
+            for x in 0..W {
+                let w = (split.pixel(x, y)[k] - plain.pixel(x, y)[k]).max(0.0) as f64;
+                (sx, sy, sw) = (sx + w * x as f64, sy + w * y as f64, sw + w);
+            }
+        }
+        (Vec2::new((sx / sw) as f32, (sy / sw) as f32), sw)
+    };
+    let ((red, red_weight), (blue, blue_weight)) = (centroid(0), centroid(2));
+    // The sunlight's horizontal direction of travel, on screen.
+    let sun = demo.sun();
+    let size = Vec2::new(W as f32, H as f32);
+    let floor = Vec3::new(0.0, -1.0, 0.0);
+    let on_screen = |p: Vec3| demo.camera.project(p, size).expect("in front of the camera");
+    let travel = (on_screen(floor - Vec3::new(sun.x, 0.0, sun.z).normalize() * 0.5) - on_screen(floor)).normalize();
+    let along = (red - blue).dot(travel);
+    println!(
+        "red added {red_weight:.1} at {red:?}, blue added {blue_weight:.1} at {blue:?}: red {along:.1} px farther along the light's way"
+    );
+    assert!(red_weight > 5.0 && blue_weight > 5.0, "dispersion added no red or blue");
+    assert!(along > 2.0, "the red caustics are not downwind of the blue ({along} px)");
+}
