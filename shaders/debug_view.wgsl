@@ -5,6 +5,8 @@
 //     ripples show), flat water is (0.5, 1, 0.5)
 //   3 velocity: signed colour map, full colour at 0.05 m/s
 //   4 caustics: the caustics map's light (with the sphere's shadow), 1 = calm-surface light at 40%
+// With ambient waves (AMBIENT_MODEL), height and normals are those of the surface drawn: the
+// simulation's plus the waves'.
 
 // Grey at 0, towards red for +1 and towards blue for -1 (values beyond are clamped).
 fn signed_colour(t: f32) -> vec3<f32> {
@@ -20,7 +22,11 @@ fn fs_debug(in: FullscreenOut) -> @location(0) vec4<f32> {
     // Nearest cell of the state texture, so single cells stay visible.
     let n = i32(scene.water.x);
     let cell = clamp(vec2<i32>(in.uv * scene.water.x), vec2<i32>(0), vec2<i32>(n - 1));
-    let state = textureLoad(water_state, cell, 0);
+    var state = textureLoad(water_state, cell, 0);
+    if (AMBIENT_MODEL != AMBIENT_NONE) {
+        // The surface the renderer draws: the simulation plus the ambient waves at the cell.
+        state = with_ambient(state, ((vec2<f32>(cell) + 0.5) / scene.water.x * 2.0 - 1.0) * half_width());
+    }
     var colour: vec3<f32>;
     if (mode == 1) {
         colour = signed_colour(state.x / 0.005);

@@ -97,3 +97,23 @@ fn a_floating_duck_rides_the_ambient_waves() {
     assert!(calm < 0.5e-3, "the duck moves on calm water ({calm} m)");
     assert!(sines > 1e-3 && modes > 1e-3, "the duck does not ride the waves ({sines} / {modes} m)");
 }
+
+/// The height and normals debug views show the surface that is drawn: on calm water with
+/// ambient waves they are no longer the flat rest colour.
+#[test]
+fn the_height_and_normals_views_show_the_ambient_waves() {
+    for (view, name) in [(1.0, "height"), (2.0, "normals")] {
+        let frame = |model: f32| {
+            let mut demo = pool_with(model);
+            demo.params.set(ParamId::DebugView, view);
+            demo.params.set(ParamId::DebugInset, 0.0);
+            render(&mut demo, W, H, 10, 1.0 / 60.0)
+        };
+        let (calm, waves) = (frame(0.0), frame(1.0));
+        // The view is the centred square (H pixels); compare inside it.
+        let square = common::Rect(0.5 - 0.5 * H as f32 / W as f32 + 0.02, 0.02, H as f32 / W as f32 - 0.04, 0.96);
+        let changed = waves.changed_fraction(&calm, square, 8);
+        println!("{name} view: {:.1} % of the pool's square changed by ambient sines", changed * 100.0);
+        assert!(changed > 0.3, "{name} view does not show the ambient waves ({:.1} %)", changed * 100.0);
+    }
+}

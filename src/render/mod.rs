@@ -260,7 +260,7 @@ pub struct Renderer {
     /// The scene's pipelines per feature set drawn so far (see [`Features`]).
     variants: HashMap<Features, ScenePipelines>,
     /// The debug view's pass per texture shown so far.
-    debug_passes: HashMap<DebugTexture, FullscreenPass>,
+    debug_passes: HashMap<(DebugTexture, AmbientModel), FullscreenPass>,
     /// The water surface, both sides in one draw.
     grid: Mesh,
     pool_mesh: Mesh,
@@ -546,11 +546,13 @@ impl Renderer {
         self.variants.len()
     }
 
-    fn debug_pass(&mut self, device: &wgpu::Device, texture: DebugTexture) -> &FullscreenPass {
+    /// The debug view's pass for `texture`, seeing the water with `ambient` waves added.
+    fn debug_pass(&mut self, device: &wgpu::Device, texture: DebugTexture, ambient: AmbientModel) -> &FullscreenPass {
         let layouts = [&self.water_layout, &self.textures_layout];
         let format = self.settings.target_format;
-        self.debug_passes.entry(texture).or_insert_with(|| {
-            let constants = format!("{}const DEBUG_TEXTURE: i32 = {};\n", Features::default().wgsl(), texture as i32);
+        self.debug_passes.entry((texture, ambient)).or_insert_with(|| {
+            let features = Features { ambient, ..Features::default() };
+            let constants = format!("{}const DEBUG_TEXTURE: i32 = {};\n", features.wgsl(), texture as i32);
             FullscreenPass::new(
                 device,
                 "debug view",
@@ -728,12 +730,13 @@ impl Renderer {
             self.draw_scene(device, encoder, target, size, view, water);
         }
         if let Some(debug) = view.debug {
-            self.debug_pass(device, debug.texture);
+            self.debug_pass(device, debug.texture, view.ambient.model);
             let mut pass = gpu::colour_pass(encoder, "debug view", target, wgpu::LoadOp::Load);
             let [x, y, w, h] = debug.viewport(size);
             pass.set_viewport(x, y, w, h, 0.0, 1.0);
             let water_group = &self.water_groups[water.state().current()];
-            self.debug_passes[&debug.texture].draw(&mut pass, &[water_group, &self.textures_group]);
+            self.debug_passes[&(debug.texture, view.ambient.model)]
+                .draw(&mut pass, &[water_group, &self.textures_group]);
         }
     }
 
