@@ -12,7 +12,7 @@ const live = new Set(); // mounted demos, told when the wasm module panics
 
 // The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm, picture }
 // ahead of this code in the same module: the stylesheet's text, the wasm module (gzip then
-// base64) and the no-GPU picture (a data: URL). Otherwise they are files next to this one.
+// base 85 in the alphabet it carries, its gzip length in wasmBytes) and the no-GPU picture (a data: URL). Otherwise they are files next to this one.
 // eslint-disable-next-line no-undef
 const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
 let inlineSheet = null; // the inline stylesheet, shared by every demo's shadow root
@@ -20,10 +20,22 @@ let wasmMemory = null; // the module's linear memory (for stats().wasmMemoryByte
 /** Linear memory made available at load: one demo at the defaults uses 9.7 MB. */
 const START_MEMORY_BYTES = 16 * 1024 * 1024;
 
-/** The inline wasm module's bytes: base64 decoded, then gunzipped by the browser. */
+/** The inline wasm module's bytes: base 85 decoded (5 digits, most significant first, per
+ * 4 bytes big-endian), then gunzipped by the browser. */
 async function inlineWasm() {
-  const packed = Uint8Array.from(atob(inline.wasm), (c) => c.charCodeAt(0));
-  const stream = new Blob([packed]).stream().pipeThrough(new DecompressionStream("gzip"));
+  const digit = new Uint8Array(128);
+  for (let i = 0; i < inline.alphabet.length; i++) digit[inline.alphabet.charCodeAt(i)] = i;
+  const text = inline.wasm;
+  const packed = new Uint8Array((text.length / 5) * 4);
+  for (let i = 0, o = 0; i < text.length; i += 5, o += 4) {
+    let n = 0;
+    for (let j = 0; j < 5; j++) n = n * 85 + digit[text.charCodeAt(i + j)];
+    packed[o] = n >>> 24;
+    packed[o + 1] = (n >>> 16) & 255;
+    packed[o + 2] = (n >>> 8) & 255;
+    packed[o + 3] = n & 255;
+  }
+  const stream = new Blob([packed.subarray(0, inline.wasmBytes)]).stream().pipeThrough(new DecompressionStream("gzip"));
   return new Response(stream).arrayBuffer();
 }
 
