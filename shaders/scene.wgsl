@@ -27,7 +27,7 @@ struct Scene {
     // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
     // and linear colour.
     duck_parts: array<vec4<f32>, 3 * DUCK_PARTS>,
-    ambient_count: vec4<f32>,  // x waves in ambient_waves
+    ambient_header: vec4<f32>, // x waves in ambient_waves, y Gerstner's c = Q / sum(a k)
     // Per ambient wave (ambient.rs): kx, kz (rad/m), amplitude (m), phase at this frame's time.
     ambient_waves: array<vec4<f32>, MAX_AMBIENT_WAVES>,
 };
@@ -35,6 +35,8 @@ struct Scene {
 @group(0) @binding(0) var<uniform> scene: Scene;
 // Simulation state per cell: (height m, vertical velocity m/s, normal.x, normal.z).
 @group(0) @binding(1) var water_state: texture_2d<f32>;
+// The FFT ocean's surface per texel (height m, dh/dx, dh/dz, 0), tiling the pool (AMBIENT_FFT).
+@group(0) @binding(2) var ambient_map: texture_2d<f32>;
 
 @group(1) @binding(0) var caustics_map: texture_2d<f32>;
 @group(1) @binding(1) var tile_texture: texture_2d<f32>;
@@ -103,10 +105,17 @@ fn with_foam(colour: vec3<f32>, p: vec3<f32>, from_above: bool) -> vec3<f32> {
 }
 
 // Height (m) and slopes dh/dx, dh/dz of the ambient waves at xz (the formulas of ambient.rs:
-// Finch's sharpened travelling sines, or the basin's standing modes).
+// Finch's sharpened travelling sines, the basin's standing modes, Gerstner waves, or the FFT
+// ocean's map).
 fn ambient_at(xz: vec2<f32>) -> vec3<f32> {
+    if (AMBIENT_MODEL == AMBIENT_FFT) {
+        return ocean_at(xz);
+    }
+    if (AMBIENT_MODEL == AMBIENT_GERSTNER) {
+        return gerstner_at(xz);
+    }
     var sum = vec3<f32>(0.0);
-    let count = i32(scene.ambient_count.x);
+    let count = i32(scene.ambient_header.x);
     for (var i = 0; i < MAX_AMBIENT_WAVES; i++) {
         if (i >= count) {
             break;
@@ -125,6 +134,69 @@ fn ambient_at(xz: vec2<f32>) -> vec3<f32> {
         }
     }
     return sum;
+}
+
+// The FFT ocean at xz: bilinear between texel centres of its map, which tiles the pool
+// (indices wrap: the lattice's waves are periodic over the pool's width).
+fn ocean_at(xz: vec2<f32>) -> vec3<f32> {
+    let n = i32(textureDimensions(ambient_map).x);
+    let p = (xz / half_width() * 0.5 + 0.5) * f32(n) - 0.5;
+    let base = floor(p);
+    let f = p - base;
+    let i0 = (vec2<i32>(base) + n) % n;
+    let i1 = (i0 + 1) % n;
+    let a = textureLoad(ambient_map, vec2<i32>(i0.x, i0.y), 0).xyz;
+    let b = textureLoad(ambient_map, vec2<i32>(i1.x, i0.y), 0).xyz;
+    let c = textureLoad(ambient_map, vec2<i32>(i0.x, i1.y), 0).xyz;
+    let d = textureLoad(ambient_map, vec2<i32>(i1.x, i1.y), 0).xyz;
+    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+// Gerstner waves at rest point x0: the horizontal displacement D (m), the motion's Jacobian
+// J = I - sum(b cos t K K^T) as (xx, xz, zz) and the height; b = c a / k, t = K.x0 + phase.
+struct GerstnerPoint {
+    displacement: vec2<f32>,
+    jacobian: vec3<f32>,
+    height: f32,
+    gradient: vec2<f32>,  // dh/dx0
+};
+
+fn gerstner_point(x0: vec2<f32>) -> GerstnerPoint {
+    var g = GerstnerPoint(vec2<f32>(0.0), vec3<f32>(1.0, 0.0, 1.0), 0.0, vec2<f32>(0.0));
+    let c = scene.ambient_header.y;
+    let count = i32(scene.ambient_header.x);
+    for (var i = 0; i < MAX_AMBIENT_WAVES; i++) {
+        if (i >= count) {
+            break;
+        }
+        let w = scene.ambient_waves[i];
+        let theta = dot(w.xy, x0) + w.w;
+        let s = sin(theta);
+        let co = cos(theta);
+        let b = c * w.z / length(w.xy);
+        g.displacement += b * s * w.xy;
+        g.jacobian -= b * co * vec3<f32>(w.x * w.x, w.x * w.y, w.y * w.y);
+        g.height += w.z * co;
+        g.gradient -= w.z * s * w.xy;
+    }
+    return g;
+}
+
+// J^-1 v for the symmetric 2x2 Jacobian (xx, xz, zz).
+fn gerstner_solve(j: vec3<f32>, v: vec2<f32>) -> vec2<f32> {
+    return vec2<f32>(j.z * v.x - j.y * v.y, j.x * v.y - j.y * v.x) / (j.x * j.z - j.y * j.y);
+}
+
+// The Gerstner surface above xz: Newton's method finds the rest point x0 the waves carry to
+// xz (x0 - D(x0) = xz), then the height there and the slopes J^-1 grad h (as ambient.rs).
+fn gerstner_at(xz: vec2<f32>) -> vec3<f32> {
+    var x0 = xz;
+    for (var i = 0; i < GERSTNER_NEWTON_STEPS; i++) {
+        let g = gerstner_point(x0);
+        x0 -= gerstner_solve(g.jacobian, x0 - g.displacement - xz);
+    }
+    let g = gerstner_point(x0);
+    return vec3<f32>(g.height, gerstner_solve(g.jacobian, g.gradient));
 }
 
 // The simulated state with the ambient waves added: heights summed, slopes summed (the

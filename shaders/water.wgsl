@@ -10,7 +10,15 @@ struct SurfaceOut {
 
 @vertex
 fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
-    let xz = grid * half_width();
+    var xz = grid * half_width();
+    if (AMBIENT_MODEL == AMBIENT_GERSTNER) {
+        // Gerstner waves move the water sideways: the grid point goes where the waves carry
+        // it (vertices gather under the crests); across a wall the motion fades out over the
+        // last 10 cm (it is below Q/k_min = 9 cm), so no vertex leaves the pool or crosses
+        // the wall's own. Its height is the surface's there.
+        let carry = -gerstner_point(xz).displacement;
+        xz += carry * clamp((half_width() - abs(xz)) / 0.1, vec2<f32>(0.0), vec2<f32>(1.0));
+    }
     let height = water_at(xz).x;
     var out: SurfaceOut;
     out.world = vec3<f32>(xz.x, height, xz.y);

@@ -1,16 +1,20 @@
 //! Ambient waves: a surface that moves on its own under the interactive ripples, as the
-//! seeds teach it (sums of sines; the basin's own standing waves). It is added to the
+//! seeds teach it (sums of sines, Gerstner waves, the basin's own standing waves, and
+//! Tessendorf's FFT ocean in [`ocean`]). It is added to the
 //! simulated heightfield where the renderer reads the water (heights and slopes summed) and
 //! where the floating bodies feel it; the simulation itself never sees it. Its time is
 //! simulated time, so pausing stops it and every frame rate gives the same surface.
 //!
 //! One set of formulas for both sides: the shader (`ambient_at` in scene.wgsl) evaluates the
-//! waves from [`AmbientWaves::uniform`], the bodies and the tests from
-//! [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
+//! waves from [`AmbientWaves::uniform`] (the FFT ocean from a map of its surface), the bodies
+//! and the tests from [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
 //! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
+
+pub mod ocean;
 
 use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
+use ocean::Ocean;
 
 /// Which ambient surface, from the `ambient` parameter.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -23,6 +27,13 @@ pub enum AmbientModel {
     /// The basin's own standing waves, h = Σ a cos(nπx'/W) cos(mπz'/W) cos(ωt + φ) with x', z'
     /// measured from a wall: every wall is met with zero slope, as a reflecting pool does.
     Modes = 2,
+    /// Gerstner (trochoidal) waves: each point of the surface moves on a circle, the water
+    /// gathering under the crests (sharp) and spreading in the troughs (flat). A point at rest
+    /// x₀ is at x₀ − Σ c a (K/k) sin θ, height Σ a cos θ, θ = K·x₀ + p, c = Q / Σ a k.
+    Gerstner = 3,
+    /// Tessendorf's ocean: a wave spectrum on the lattice that tiles the pool, summed by an
+    /// inverse FFT every frame ([`ocean`]).
+    Fft = 4,
 }
 
 impl AmbientModel {
@@ -30,15 +41,40 @@ impl AmbientModel {
         match value.round() as i32 {
             1 => AmbientModel::Sines,
             2 => AmbientModel::Modes,
+            3 => AmbientModel::Gerstner,
+            4 => AmbientModel::Fft,
             _ => AmbientModel::None,
+        }
+    }
+}
+
+/// The wave spectrum of the FFT ocean, from the `spectrum` parameter.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Spectrum {
+    /// Tessendorf's choice: exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
+    #[default]
+    Phillips = 0,
+    /// Measured seas of limited fetch (Hasselmann 1973): a sharper peak.
+    Jonswap = 1,
+}
+
+impl Spectrum {
+    pub fn from_param(value: f32) -> Self {
+        if value.round() as i32 == 1 {
+            Spectrum::Jonswap
+        } else {
+            Spectrum::Phillips
         }
     }
 }
 
 /// Waves an ambient surface holds (the shader's uniform array has room for this many).
 pub const MAX_AMBIENT_WAVES: usize = 16;
-/// Travelling waves of the `sines` model.
+/// Travelling waves of the `sines` and `gerstner` models.
 const SINE_WAVES: usize = 6;
+/// Newton steps that find the rest point of the Gerstner surface above a point (the
+/// displacement is a contraction of factor ≤ Q, four steps leave < 2e-6 m even at the largest Q).
+pub const GERSTNER_NEWTON_STEPS: usize = 4;
 /// Exponent k of Finch's sharpened sine.
 pub const CREST_SHARPNESS: f32 = 2.0;
 /// Shortest and longest wavelengths (m) of the ambient waves: a pool in a light breeze.
@@ -71,6 +107,11 @@ pub struct AmbientSettings {
     pub significant_height: f32,
     /// Spread of the waves' directions around the wind (degrees, ±).
     pub spread_deg: f32,
+    /// Gerstner steepness Q (0 = sines, 1 = cusps at the crests): Σ Q_i k_i a_i = Q.
+    pub steepness: f32,
+    /// The FFT ocean's spectrum and lattice points per side (64 or 128).
+    pub spectrum: Spectrum,
+    pub fft_size: usize,
 }
 
 /// One wave of the surface. Sines: h = 2a(((sin(k·x + p) + 1)/2)^k − mean); modes:
@@ -90,6 +131,11 @@ pub struct Wave {
 pub struct AmbientWaves {
     pub model: AmbientModel,
     pub waves: Vec<Wave>,
+    /// Gerstner: Q / Σ a_i k_i; wave i moves the water sideways by this × a_i (m) and
+    /// takes Q_i = this × a_i k_i of the steepness.
+    pub gerstner_c: f32,
+    /// The FFT ocean's spectrum (model `Fft`).
+    pub ocean: Option<Ocean>,
 }
 
 /// The Phillips spectrum's shape at wavevector (kx, kz) for wind `settings`, without its
@@ -110,7 +156,11 @@ impl AmbientWaves {
         let mut waves = Vec::new();
         match settings.model {
             AmbientModel::None => {}
-            AmbientModel::Sines => {
+            AmbientModel::Fft => {
+                let size = settings.fft_size.clamp(8, 256).next_power_of_two();
+                return Self { model: settings.model, waves, gerstner_c: 0.0, ocean: Some(Ocean::new(settings, size)) };
+            }
+            AmbientModel::Sines | AmbientModel::Gerstner => {
                 let wind = settings.wind_direction_deg.to_radians();
                 for i in 0..SINE_WAVES {
                     // Wavenumbers evenly in log between the shortest and longest wavelengths,
@@ -172,13 +222,28 @@ impl AmbientWaves {
                 }
             }
         }
-        let mut set = Self { model: settings.model, waves };
+        let mut set = Self { model: settings.model, waves, gerstner_c: 0.0, ocean: None };
         // Scale to the significant height, measured over the pool and a few instants.
         let hs = set.measured_significant_height();
         if hs > 0.0 {
             let scale = settings.significant_height / hs;
             for w in &mut set.waves {
                 w.amplitude *= scale;
+            }
+        }
+        // Gerstner: each wave's share of the steepness Q in proportion to its slope a k, so the
+        // waves that shape the surface are the ones that sharpen (Σ Q_i = Q < 1: no loops).
+        let slopes: f32 = set.waves.iter().map(|w| w.amplitude * (w.kx * w.kx + w.kz * w.kz).sqrt()).sum();
+        if settings.model == AmbientModel::Gerstner && slopes > 0.0 {
+            set.gerstner_c = settings.steepness.clamp(0.0, MAX_STEEPNESS) / slopes;
+            // The shape changed the heights' spread a little: measure again.
+            let hs = set.measured_significant_height();
+            if hs > 0.0 {
+                let scale = settings.significant_height / hs;
+                for w in &mut set.waves {
+                    w.amplitude *= scale;
+                }
+                set.gerstner_c /= scale;
             }
         }
         set
@@ -213,15 +278,21 @@ impl AmbientWaves {
     }
 
     /// Height (m) and slopes dh/dx, dh/dz of the ambient surface at (x, z) (m) and simulated
-    /// time `t` (s). Same arithmetic as the shader's `ambient_at`.
+    /// time `t` (s). Same arithmetic as the shader's `ambient_at` (the FFT ocean: its waves
+    /// summed one by one, of which the shader's map holds the samples).
     pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
+        if let Some(ocean) = &self.ocean {
+            return ocean.sample(x, z, t);
+        }
         let phases = self.phases(t);
+        if self.model == AmbientModel::Gerstner {
+            return gerstner(&self.waves, &phases, self.gerstner_c, x, z);
+        }
         let mut out = [0.0f32; 3];
         for (w, &p) in self.waves.iter().zip(&phases) {
             let [h, dx, dz] = match self.model {
-                AmbientModel::None => [0.0; 3],
-                AmbientModel::Sines => sharp_sine(w.kx, w.kz, w.amplitude, p, x, z),
                 AmbientModel::Modes => standing(w.kx, w.kz, w.amplitude, p, x, z),
+                _ => sharp_sine(w.kx, w.kz, w.amplitude, p, x, z),
             };
             out = [out[0] + h, out[1] + dx, out[2] + dz];
         }
@@ -229,14 +300,61 @@ impl AmbientWaves {
     }
 
     /// The shader's view of the waves at simulated time `t`: per wave (kx, kz, amplitude,
-    /// phase), [`MAX_AMBIENT_WAVES`] of them (unused ones have zero amplitude), and the count.
-    pub fn uniform(&self, t: f64) -> ([[f32; 4]; MAX_AMBIENT_WAVES], u32) {
+    /// phase), [`MAX_AMBIENT_WAVES`] of them (unused ones have zero amplitude), and
+    /// (count, Gerstner's c = Q / Σ a k, 0, 0).
+    pub fn uniform(&self, t: f64) -> ([[f32; 4]; MAX_AMBIENT_WAVES], [f32; 4]) {
         let mut out = [[0.0; 4]; MAX_AMBIENT_WAVES];
         for ((slot, w), p) in out.iter_mut().zip(&self.waves).zip(self.phases(t)) {
             *slot = [w.kx, w.kz, w.amplitude, p];
         }
-        (out, self.waves.len().min(MAX_AMBIENT_WAVES) as u32)
+        (out, [self.waves.len().min(MAX_AMBIENT_WAVES) as f32, self.gerstner_c, 0.0, 0.0])
     }
+
+    /// The FFT ocean's surface on its lattice at time `t` (see [`Ocean::surface`]), for the
+    /// renderer's ambient map; `None` for the other models.
+    pub fn surface_map(&self, t: f64) -> Option<Vec<[f32; 4]>> {
+        self.ocean.as_ref().map(|o| o.surface(t))
+    }
+}
+
+/// The largest Gerstner steepness: at Q = 1 the crests become cusps (infinite slope); a
+/// little below keeps the surface a function and its normals finite.
+pub const MAX_STEEPNESS: f32 = 0.9;
+
+/// The Gerstner surface above the point (x, z): Newton's method finds the rest point x₀ that
+/// the waves carry to (x, z) (x₀ − D(x₀) = x, with D(x₀) = Σ b K sin θ, b = c a / k), then the
+/// height Σ a cos θ there and the slopes J⁻¹ ∇₀h, J = I − Σ b cos θ K Kᵀ the Jacobian of the
+/// motion (symmetric). Same steps as `gerstner_at` in scene.wgsl.
+fn gerstner(waves: &[Wave], phases: &[f32], c: f32, x: f32, z: f32) -> [f32; 3] {
+    // Per rest point: the displacement, the Jacobian (xx, xz, zz), height and gradient at rest.
+    let at = |x0: f32, z0: f32| {
+        let (mut d, mut j, mut h, mut g) = ([0.0f32; 2], [1.0f32, 0.0, 1.0], 0.0f32, [0.0f32; 2]);
+        for (w, &p) in waves.iter().zip(phases) {
+            let theta = w.kx * x0 + w.kz * z0 + p;
+            let (s, co) = theta.sin_cos();
+            let b = c * w.amplitude / (w.kx * w.kx + w.kz * w.kz).sqrt();
+            d = [d[0] + b * w.kx * s, d[1] + b * w.kz * s];
+            j = [j[0] - b * co * w.kx * w.kx, j[1] - b * co * w.kx * w.kz, j[2] - b * co * w.kz * w.kz];
+            h += w.amplitude * co;
+            g = [g[0] - w.amplitude * s * w.kx, g[1] - w.amplitude * s * w.kz];
+        }
+        (d, j, h, g)
+    };
+    let solve = |j: [f32; 3], v: [f32; 2]| {
+        let det = j[0] * j[2] - j[1] * j[1];
+        [(j[2] * v[0] - j[1] * v[1]) / det, (j[0] * v[1] - j[1] * v[0]) / det]
+    };
+    let (mut x0, mut z0) = (x, z);
+    for _ in 0..GERSTNER_NEWTON_STEPS {
+        let (d, j, _, _) = at(x0, z0);
+        // F(x₀) = x₀ − D(x₀) − x; F' = J.
+        let step = solve(j, [x0 - d[0] - x, z0 - d[1] - z]);
+        x0 -= step[0];
+        z0 -= step[1];
+    }
+    let (_, j, h, g) = at(x0, z0);
+    let slope = solve(j, g);
+    [h, slope[0], slope[1]]
 }
 
 /// Mean of ((sin θ + 1)/2)² over θ: 3/8 (for [`CREST_SHARPNESS`] = 2).
@@ -264,12 +382,16 @@ fn standing(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f32; 3] {
 pub fn wgsl_constants() -> String {
     format!(
         "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\
-         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\n",
+         const AMBIENT_GERSTNER: u32 = {}u;\nconst AMBIENT_FFT: u32 = {}u;\n\
+         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\n",
         AmbientModel::None as u32,
         AmbientModel::Sines as u32,
         AmbientModel::Modes as u32,
+        AmbientModel::Gerstner as u32,
+        AmbientModel::Fft as u32,
         MAX_AMBIENT_WAVES,
         SHARP_SINE_MEAN,
+        GERSTNER_NEWTON_STEPS,
     )
 }
 
@@ -278,7 +400,16 @@ mod tests {
     use super::*;
 
     fn settings(model: AmbientModel) -> AmbientSettings {
-        AmbientSettings { model, wind_speed: 3.0, wind_direction_deg: 30.0, significant_height: 0.01, spread_deg: 30.0 }
+        AmbientSettings {
+            model,
+            wind_speed: 3.0,
+            wind_direction_deg: 30.0,
+            significant_height: 0.01,
+            spread_deg: 30.0,
+            steepness: 0.6,
+            spectrum: Spectrum::Phillips,
+            fft_size: 64,
+        }
     }
 
     #[test]
@@ -303,7 +434,7 @@ mod tests {
 
     #[test]
     fn each_model_has_the_asked_significant_height_and_stays_far_below_the_rim() {
-        for model in [AmbientModel::Sines, AmbientModel::Modes] {
+        for model in [AmbientModel::Sines, AmbientModel::Gerstner, AmbientModel::Modes] {
             let waves = AmbientWaves::new(&settings(model));
             let hs = waves.measured_significant_height();
             let highest = (0..2000)
@@ -352,7 +483,7 @@ mod tests {
         let speed = w.omega / k;
         let dt = 0.05;
         let moved = speed * dt as f32; // along (kx, kz) / k
-        let single = AmbientWaves { model: AmbientModel::Sines, waves: vec![w] };
+        let single = AmbientWaves { waves: vec![w], ..sines.clone() };
         let (x0, z0) = (0.1, -0.2);
         let (x1, z1) = (x0 + moved * w.kx / k, z0 + moved * w.kz / k);
         let (a, b) = (single.sample(x0, z0, 0.0)[0], single.sample(x1, z1, dt)[0]);

@@ -4,7 +4,7 @@
 
 use glam::{Quat, Vec2, Vec3};
 
-use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves};
+use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves, Spectrum};
 use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
 use crate::optics::{FresnelModel, SpecularModel};
@@ -491,6 +491,9 @@ impl WaterDemo {
             wind_direction_deg: self.params.get(ParamId::WindDirection),
             significant_height: self.params.get(ParamId::WaveHeight),
             spread_deg: self.params.get(ParamId::WaveSpread),
+            steepness: self.params.get(ParamId::Steepness),
+            spectrum: Spectrum::from_param(self.params.get(ParamId::Spectrum)),
+            fft_size: self.params.get(ParamId::FftSize) as usize,
         }
     }
 
@@ -677,8 +680,8 @@ impl WaterDemo {
                 dispersion: self.params.get(ParamId::Dispersion),
             },
             ambient: {
-                let (waves, count) = self.ambient.uniform(self.sim_time());
-                AmbientView { model: self.ambient.model, waves, count }
+                let (waves, header) = self.ambient.uniform(self.sim_time());
+                AmbientView { model: self.ambient.model, waves, header }
             },
             foam: self.water.foam().is_some(),
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
@@ -776,6 +779,10 @@ impl WaterDemo {
         let view = self.view();
         if let Some(foam) = self.water.foam() {
             self.renderer.upload_foam(device, queue, foam);
+        }
+        if let Some(ocean) = &self.ambient.ocean {
+            let map = ocean.surface(self.sim_time());
+            self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, &map);
         }
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(device, encoder, &view, &self.water);

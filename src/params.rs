@@ -23,6 +23,9 @@ pub enum ParamId {
     WindDirection,
     WaveHeight,
     WaveSpread,
+    Steepness,
+    Spectrum,
+    FftSize,
     Fresnel,
     Specular,
     Shininess,
@@ -113,6 +116,25 @@ impl ParamSpec {
                 values.iter().copied().min_by(|a, b| (a - value).abs().total_cmp(&(b - value).abs())).unwrap_or(value)
             }
         }
+    }
+}
+
+/// Parameters that matter only for some values of another (a model's own settings): the
+/// controls show them only then. (parameter, the one it depends on, the values it needs)
+pub const SHOWN_WHEN: &[(ParamId, ParamId, &[f32])] = &[
+    (ParamId::WindSpeed, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
+    (ParamId::WindDirection, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
+    (ParamId::WaveHeight, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
+    (ParamId::WaveSpread, ParamId::Ambient, &[1.0, 3.0, 4.0]),
+    (ParamId::Steepness, ParamId::Ambient, &[3.0]),
+    (ParamId::Spectrum, ParamId::Ambient, &[4.0]),
+    (ParamId::FftSize, ParamId::Ambient, &[4.0]),
+];
+
+impl ParamId {
+    /// The parameter this one's control depends on, and the values that show it.
+    pub fn shown_when(self) -> Option<(ParamId, &'static [f32])> {
+        SHOWN_WHEN.iter().find(|(id, _, _)| *id == self).map(|&(_, on, values)| (on, values))
     }
 }
 
@@ -237,9 +259,12 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Ambient waves",
         group: "Ambient waves",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["none", "sines", "modes"] },
+        control: Control::Choice {
+            values: &[0.0, 1.0, 2.0, 3.0, 4.0],
+            names: &["none", "sines", "modes", "gerstner", "fft"],
+        },
         default: 0.0,
-        help: "A surface that moves on its own under your ripples: none, a sum of sharp-crested travelling sines, or the pool's own standing waves (modes) that meet every wall flat.",
+        help: "A surface that moves on its own under your ripples: none, a sum of sharp-crested travelling sines, the pool's own standing waves (modes) that meet every wall flat, Gerstner waves (the water moves in circles, crests sharpen), or an FFT ocean (thousands of waves from a spectrum).",
     },
     ParamSpec {
         id: ParamId::WindSpeed,
@@ -280,6 +305,36 @@ pub const PARAMS: &[ParamSpec] = &[
         control: slider(0.0, 90.0, 1.0),
         default: 30.0,
         help: "How far (±) the travelling waves' directions stray from the wind's.",
+    },
+    ParamSpec {
+        id: ParamId::Steepness,
+        name: "steepness",
+        label: "Steepness Q",
+        group: "Ambient waves",
+        unit: "",
+        control: slider(0.0, crate::ambient::MAX_STEEPNESS, 0.05),
+        default: 0.6,
+        help: "Gerstner steepness: 0 gives plain sines; towards 1 the water gathers under sharp crests (at 1 they would become cusps).",
+    },
+    ParamSpec {
+        id: ParamId::Spectrum,
+        name: "spectrum",
+        label: "Spectrum",
+        group: "Ambient waves",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0], names: &["phillips", "jonswap"] },
+        default: 0.0,
+        help: "The FFT ocean's wave spectrum: Phillips (Tessendorf's) or JONSWAP (measured seas of limited fetch, a sharper peak; here a 100 m fetch).",
+    },
+    ParamSpec {
+        id: ParamId::FftSize,
+        name: "fft_size",
+        label: "FFT grid",
+        group: "Ambient waves",
+        unit: "",
+        control: Control::Choice { values: &[64.0, 128.0], names: &[] },
+        default: 64.0,
+        help: "Waves per side of the FFT ocean's lattice: 128 adds ripples down to 6 cm.",
     },
     ParamSpec {
         id: ParamId::Fresnel,

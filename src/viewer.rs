@@ -163,7 +163,13 @@ impl Viewer {
             for group in groups {
                 egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
                     for spec in PARAMS.iter().filter(|p| p.group == group) {
-                        self.control(ui, spec);
+                        // A model's own settings only while that model is chosen.
+                        let shown = spec.id.shown_when().is_none_or(|(on, values)| {
+                            values.contains(&self.demo.params.get(on))
+                        });
+                        if shown {
+                            self.control(ui, spec);
+                        }
                     }
                     if group == "Optics" {
                         let model = FresnelModel::from_param(self.demo.params.get(ParamId::Fresnel));

@@ -101,8 +101,10 @@ fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
 
 /// The parameter table (the core's one source of truth) as an array of plain objects:
 /// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
-/// choices, choiceNames, default, help }` (`choices`: the allowed values of a choice, else
-/// empty; `choiceNames`: what to show for them, or empty to show the numbers).
+/// choices, choiceNames, default, help, shownWhen }` (`choices`: the allowed values of a
+/// choice, else empty; `choiceNames`: what to show for them, or empty to show the numbers;
+/// `shownWhen`: `{ param, values }` when the control matters only for those values of
+/// another parameter, else null).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
     PARAMS
@@ -126,6 +128,13 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "step", to_js_number(step));
             set(&o, "default", to_js_number(p.default));
             set(&o, "help", p.help);
+            let shown_when = p.id.shown_when().map_or(JsValue::NULL, |(on, values)| {
+                let w = js_sys::Object::new();
+                set(&w, "param", PARAMS[on as usize].name);
+                set(&w, "values", values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
+                JsValue::from(w)
+            });
+            set(&o, "shownWhen", shown_when);
             JsValue::from(o)
         })
         .collect()

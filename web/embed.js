@@ -379,6 +379,7 @@ class Demo {
     this._restarts = 0; // devices recreated after a loss
     this._lastRestart = -Infinity;
     this._controls = new Map(); // parameter name -> update function
+    this._dependants = new Map(); // parameter name -> update functions of controls shown by its value
     this._pointers = new Map(); // pointerId -> {x, y}
     this._pinch = 0; // distance between two touching pointers (px), 0 when not pinching
     this._firstFrameMs = null;
@@ -690,8 +691,14 @@ class Demo {
       else input.value = String(v);
       output.textContent = formatValue(p, v);
       input.setAttribute("aria-valuetext", output.textContent);
+      // A model's own settings show only while that model is chosen.
+      if (p.shownWhen) row.hidden = !p.shownWhen.values.includes(this.get(p.shownWhen.param));
     };
     this._controls.set(p.name, update);
+    if (p.shownWhen) {
+      const list = this._dependants.get(p.shownWhen.param) || [];
+      this._dependants.set(p.shownWhen.param, [...list, update]);
+    }
     update();
     row.append(label, input, output);
     return row;
@@ -709,6 +716,7 @@ class Demo {
     if (name) {
       const update = this._controls.get(name);
       if (update) update();
+      for (const dependant of this._dependants.get(name) || []) dependant();
     } else {
       for (const update of this._controls.values()) update();
     }

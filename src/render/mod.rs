@@ -63,7 +63,8 @@ pub struct AmbientView {
     pub model: AmbientModel,
     /// Per wave (kx, kz in rad/m, amplitude in m, phase now).
     pub waves: [[f32; 4]; MAX_AMBIENT_WAVES],
-    pub count: u32,
+    /// (waves, Gerstner's c, 0, 0); see `AmbientWaves::uniform`.
+    pub header: [f32; 4],
 }
 
 /// How the water surface reflects (see optics.rs).
@@ -154,7 +155,7 @@ struct SceneUniforms {
     duck_pose: [[f32; 4]; 4],
     duck_bound: [f32; 4],
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
-    ambient_count: [f32; 4],
+    ambient_header: [f32; 4],
     ambient_waves: [[f32; 4]; MAX_AMBIENT_WAVES],
 }
 
@@ -251,6 +252,8 @@ pub struct Renderer {
     textures_layout: wgpu::BindGroupLayout,
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
+    /// The FFT ocean's surface (height, slopes per texel; 1 x 1 until the ocean is first drawn).
+    ambient: (wgpu::Texture, wgpu::TextureView),
     textures_group: wgpu::BindGroup,
     /// What `textures_group` binds besides the caustics map (kept to bind a resized map).
     scene_textures: SceneTextures,
@@ -387,12 +390,14 @@ fn foam_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu::TextureVi
     (texture, view)
 }
 
-/// The scene uniforms with each of the water's two state textures (group 0 of every scene pass).
+/// The scene uniforms with each of the water's two state textures and the ambient map (group
+/// 0 of every scene pass).
 fn water_bind_groups(
     device: &wgpu::Device,
     layout: &wgpu::BindGroupLayout,
     uniforms: &wgpu::Buffer,
     water: &HeightField,
+    ambient_map: &wgpu::TextureView,
 ) -> [wgpu::BindGroup; 2] {
     water.state().bind_groups(|view| {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -401,9 +406,19 @@ fn water_bind_groups(
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(ambient_map) },
             ],
         })
     })
+}
+
+/// A `size` x `size` ambient map (RGBA32Float: height, slopes of the FFT ocean), filled from
+/// the CPU or drawn by the GPU FFT.
+fn ambient_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu::TextureView) {
+    let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+    let texture = gpu::texture_2d(device, "ambient map", size, size, 1, 1, wgpu::TextureFormat::Rgba32Float, usage);
+    let view = texture.create_view(&Default::default());
+    (texture, view)
 }
 
 impl Renderer {
@@ -415,6 +430,12 @@ impl Renderer {
                 gpu::uniform_entry(0, vis),
                 gpu::texture_entry(
                     1,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
+                gpu::texture_entry(
+                    2,
                     vis,
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
@@ -459,7 +480,8 @@ impl Renderer {
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
-        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water);
+        let ambient = ambient_map(device, 1);
+        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &ambient.1);
         let (caustics_format, _) = settings.caustics_format();
         let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
@@ -507,6 +529,7 @@ impl Renderer {
             water_layout,
             textures_layout,
             water_groups,
+            ambient,
             textures_group,
             scene_textures,
             caustics,
@@ -574,7 +597,35 @@ impl Renderer {
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
-        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water);
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient.1);
+    }
+
+    /// Copies the FFT ocean's surface (`size`² texels of height and slopes, from
+    /// `AmbientWaves::surface_map`) into the ambient map the water is read with (remade, and
+    /// `water`'s groups rebound, when the size changes).
+    pub fn upload_ambient(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        water: &HeightField,
+        size: u32,
+        texels: &[[f32; 4]],
+    ) {
+        if self.ambient.0.width() != size {
+            self.ambient = ambient_map(device, size);
+            self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient.1);
+        }
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.ambient.0,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(texels),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 16), rows_per_image: None },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        );
     }
 
     /// Side (texels) of the caustics map for a frame drawn at `render_scale`: the map's texels
@@ -660,7 +711,7 @@ impl Renderer {
                 .to_cols_array_2d(),
             duck_bound: view.duck.map_or([0.0; 4], |p| p.position.extend(duck::bounding_radius()).to_array()),
             duck_parts: duck_parts(),
-            ambient_count: [view.ambient.count as f32, 0.0, 0.0, 0.0],
+            ambient_header: view.ambient.header,
             ambient_waves: view.ambient.waves,
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));

@@ -1,0 +1,273 @@
+//! Tessendorf's FFT ocean at pool scale: a wave spectrum (Phillips, or JONSWAP) sampled once on
+//! the lattice of waves that tile the pool (wavevectors k = (π/W)(m, n), the tile being the
+//! pool 2W wide) with seeded Gaussian noise, h(k, t) advanced analytically, and the surface
+//! h(x) = Σ h(k, t) e^{i k·x} made by an inverse FFT.
+//!
+//! The inverse FFT is Stockham's radix-2 autosort, written as a gather (each output from two
+//! inputs) so that one fragment pass can compute one stage on the GPU (shaders/ambient_fft.wgsl);
+//! [`inverse_fft_2d`] runs the very same stages on the CPU: it is the reference the tests hold
+//! the GPU to, and the path for devices without float render targets. Lengths in metres, times
+//! in seconds.
+
+use super::{angular_frequency, AmbientSettings, Spectrum, G, LONGEST_WAVELENGTH};
+use crate::scene::HALF_WIDTH;
+use crate::sim::SplitMix64;
+
+/// A complex number (re, im) in f32, as the GPU holds it.
+pub type Complex = [f32; 2];
+
+fn mul(a: Complex, b: Complex) -> Complex {
+    [a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]]
+}
+
+fn add(a: Complex, b: Complex) -> Complex {
+    [a[0] + b[0], a[1] + b[1]]
+}
+
+fn conj(a: Complex) -> Complex {
+    [a[0], -a[1]]
+}
+
+/// The shortest wave the lattice holds, in grid cells (4: a wave of 4 cells is still drawn
+/// as a wave by bilinear sampling, one of 2 would be a checkerboard).
+pub const SHORTEST_WAVE_CELLS: f32 = 4.0;
+/// JONSWAP's peak enhancement γ and widths σ below and above the peak (Hasselmann et al. 1973).
+const JONSWAP_GAMMA: f32 = 3.3;
+const JONSWAP_SIGMA: (f32, f32) = (0.07, 0.09);
+/// The fetch (m) the JONSWAP peak is computed for: the pool stands for a patch of a lake the
+/// wind has crossed this far (with the pool's own 2 m the peak would be 2 cm ripples).
+pub const JONSWAP_FETCH: f32 = 100.0;
+
+/// The spectrum sampled on the pool's lattice, and how it moves.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ocean {
+    /// Lattice points per side (a power of two).
+    pub size: usize,
+    /// Per lattice point, row-major with index (m mod N, n mod N) for k = (π/W)(m, n):
+    /// h0(k) and conj(h0(−k)), the amplitudes at t = 0 (m).
+    pub h0: Vec<[f32; 4]>,
+}
+
+/// Wavenumber (rad/m) of lattice index `i` (0..N) along one axis: indices past N/2 are negative.
+pub fn lattice_k(i: usize, size: usize) -> f32 {
+    let m = if i < size / 2 { i as i32 } else { i as i32 - size as i32 };
+    m as f32 * std::f32::consts::PI / HALF_WIDTH
+}
+
+/// The spectrum's density (m⁴ per unit of k², up to a scale) at wavevector (kx, kz), zero
+/// outside the band the lattice and the pool hold and outside the spread around the wind.
+fn density(kx: f32, kz: f32, settings: &AmbientSettings, shortest: f32) -> f32 {
+    let k = (kx * kx + kz * kz).sqrt();
+    let (k_min, k_max) = (std::f32::consts::TAU / LONGEST_WAVELENGTH, std::f32::consts::TAU / shortest);
+    if k < k_min || k > k_max {
+        return 0.0;
+    }
+    // Travelling downwind, within the spread of directions.
+    let wind = settings.wind_direction_deg.to_radians();
+    let off = (kz.atan2(kx) - wind + std::f32::consts::PI).rem_euclid(std::f32::consts::TAU) - std::f32::consts::PI;
+    if off.abs() > settings.spread_deg.to_radians().max(1e-3) {
+        return 0.0;
+    }
+    let align = off.cos();
+    match settings.spectrum {
+        Spectrum::Phillips => {
+            // exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
+            let l = settings.wind_speed * settings.wind_speed / G;
+            (-1.0 / (k * l).powi(2)).exp() / k.powi(4) * align * align
+        }
+        Spectrum::Jonswap => {
+            // S(ω) = g²/ω⁵ exp(−5/4 (ω_p/ω)⁴) γ^r, r = exp(−(ω − ω_p)²/(2σ²ω_p²)), the
+            // fetch-limited peak ω_p = 22 (g²/(U F))^(1/3); per unit k²: S(ω) dω/dk / k,
+            // with cos² spreading.
+            let omega_p = 22.0 * (G * G / (settings.wind_speed * JONSWAP_FETCH)).cbrt();
+            let omega = angular_frequency(k);
+            let sigma = if omega <= omega_p { JONSWAP_SIGMA.0 } else { JONSWAP_SIGMA.1 };
+            let r = (-(omega - omega_p).powi(2) / (2.0 * sigma * sigma * omega_p * omega_p)).exp();
+            let s = G * G / omega.powi(5) * (-1.25 * (omega_p / omega).powi(4)).exp() * JONSWAP_GAMMA.powf(r);
+            let dk = 1e-3 * k;
+            let domega_dk = (angular_frequency(k + dk) - angular_frequency(k - dk)) / (2.0 * dk);
+            s * domega_dk / k * align * align
+        }
+    }
+}
+
+/// A standard normal number (Box–Muller).
+fn gaussian(rng: &mut SplitMix64) -> f32 {
+    let u = rng.range(1e-7, 1.0);
+    let v = rng.range(0.0, 1.0);
+    (-2.0 * u.ln()).sqrt() * (std::f32::consts::TAU * v).cos()
+}
+
+impl Ocean {
+    /// The lattice of `size`² points for `settings`, scaled so that the significant height
+    /// (4 × the surface's standard deviation, averaged over time) is the asked one.
+    pub fn new(settings: &AmbientSettings, size: usize) -> Self {
+        assert!(size.is_power_of_two() && size >= 8, "lattice size {size}");
+        let mut rng = SplitMix64(0x0cea_4f17);
+        let shortest = SHORTEST_WAVE_CELLS * 2.0 * HALF_WIDTH / size as f32;
+        let mut amplitude = vec![[0.0f32; 2]; size * size];
+        for j in 0..size {
+            for i in 0..size {
+                let (kx, kz) = (lattice_k(i, size), lattice_k(j, size));
+                // h0 = (ξr + i ξi)/√2 · √(S(k) Δk²); the scale comes below.
+                let a = density(kx, kz, settings, shortest).max(0.0).sqrt() / std::f32::consts::SQRT_2;
+                amplitude[j * size + i] = [gaussian(&mut rng) * a, gaussian(&mut rng) * a];
+            }
+        }
+        let negative = |i: usize| (size - i) % size;
+        let mut h0: Vec<[f32; 4]> = (0..size * size)
+            .map(|idx| {
+                let (i, j) = (idx % size, idx / size);
+                let minus = conj(amplitude[negative(j) * size + negative(i)]);
+                let here = amplitude[idx];
+                [here[0], here[1], minus[0], minus[1]]
+            })
+            .collect();
+        // The variance averaged over time is Σ |h0(k)|² + |h0(−k)|².
+        let variance: f64 = h0.iter().map(|a| (a.iter().map(|v| v * v).sum::<f32>()) as f64).sum();
+        if variance > 0.0 {
+            let scale = settings.significant_height / 4.0 / (variance.sqrt() as f32);
+            for a in &mut h0 {
+                for v in a.iter_mut() {
+                    *v *= scale;
+                }
+            }
+        }
+        Self { size, h0 }
+    }
+
+    /// The number of lattice points with a wave on them.
+    pub fn wave_count(&self) -> usize {
+        self.h0.iter().filter(|a| a.iter().any(|v| *v != 0.0)).count()
+    }
+
+    /// h(k, t) = h0(k) e^{−iωt} + conj(h0(−k)) e^{iωt} at lattice index `idx`: the first
+    /// term travels along k, the second against it; the sum is Hermitian (a real surface).
+    pub fn amplitude(&self, idx: usize, t: f64) -> Complex {
+        let (i, j) = (idx % self.size, idx / self.size);
+        let (kx, kz) = (lattice_k(i, self.size), lattice_k(j, self.size));
+        let omega = angular_frequency((kx * kx + kz * kz).sqrt()) as f64;
+        let phase = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
+        let turn = [phase.cos(), phase.sin()];
+        let a = self.h0[idx];
+        add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn))
+    }
+
+    /// The spectrum of the fields the renderer reads at time `t`, two complex signals per
+    /// point packed as (re, im, re, im): h + i ∂h/∂x and ∂h/∂z, each term multiplied by
+    /// e^{i k·x₀} so that the inverse FFT's sample (0, 0) lies at the first texel's centre
+    /// x₀ = −W + Δ/2. (The real fields come out as the real and imaginary parts.)
+    pub fn fields_spectrum(&self, t: f64) -> Vec<[f32; 4]> {
+        let n = self.size;
+        let x0 = -HALF_WIDTH + HALF_WIDTH / n as f32;
+        (0..n * n)
+            .map(|idx| {
+                let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+                let shift = [(kx * x0 + kz * x0).cos(), (kx * x0 + kz * x0).sin()];
+                let h = mul(self.amplitude(idx, t), shift);
+                // i kx h and i kz h.
+                let (dx, dz) = ([-kx * h[1], kx * h[0]], [-kz * h[1], kz * h[0]]);
+                let a = add(h, mul([0.0, 1.0], dx));
+                [a[0], a[1], dz[0], dz[1]]
+            })
+            .collect()
+    }
+
+    /// The surface on the lattice's texels at time `t`: per texel (row-major, x along rows,
+    /// centres at −W + (i + ½)Δ) the height (m) and slopes ∂h/∂x, ∂h/∂z, and 0.
+    pub fn surface(&self, t: f64) -> Vec<[f32; 4]> {
+        let fields = inverse_fft_2d(self.fields_spectrum(t), self.size);
+        fields.into_iter().map(|f| [f[0], f[1], f[2], 0.0]).collect()
+    }
+
+    /// Height (m) and slopes at a point (x, z) (m), summed wave by wave (no grid): what the
+    /// floating bodies feel, and the tests' closed form.
+    pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
+        let n = self.size;
+        let mut out = [0.0f32; 3];
+        for (idx, a) in self.h0.iter().enumerate() {
+            if a.iter().all(|v| *v == 0.0) {
+                continue;
+            }
+            let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+            let h = self.amplitude(idx, t);
+            let turn = [(kx * x + kz * z).cos(), (kx * x + kz * z).sin()];
+            let v = mul(h, turn);
+            // Re(h e^{ik·x}), Re(i k h e^{ik·x}) = −k Im(...).
+            out[0] += v[0];
+            out[1] -= kx * v[1];
+            out[2] -= kz * v[1];
+        }
+        out
+    }
+}
+
+/// One stage of Stockham's radix-2 inverse FFT along a line of `n` values, as a gather:
+/// output `i` of the stage with half-block `half` (1, 2, 4, … n/2) is in[j] ± w·in[j + n/2],
+/// with the block b = i / (2·half), r = i mod (2·half), the twiddle index q = r mod half,
+/// j = b·half + q, w = e^{+iπq/half} and the sign + for r < half. After log₂ n stages the
+/// output is the inverse DFT Σ X_k e^{+2πi jk/n} in natural order. (shaders/ambient_fft.wgsl
+/// computes the same per texel.)
+pub fn stockham_source(i: usize, half: usize, n: usize) -> (usize, usize, Complex, f32) {
+    let (b, r) = (i / (2 * half), i % (2 * half));
+    let q = r % half;
+    let j = b * half + q;
+    let angle = std::f32::consts::PI * q as f32 / half as f32;
+    (j, j + n / 2, [angle.cos(), angle.sin()], if r < half { 1.0 } else { -1.0 })
+}
+
+/// The inverse 2D DFT of `data` (`n`² points, row-major; two complex signals per point,
+/// transformed together): rows, then columns, by [`stockham_source`]'s stages.
+pub fn inverse_fft_2d(mut data: Vec<[f32; 4]>, n: usize) -> Vec<[f32; 4]> {
+    let mut scratch = data.clone();
+    for along_rows in [true, false] {
+        let mut half = 1;
+        while half < n {
+            for line in 0..n {
+                for i in 0..n {
+                    let (j0, j1, w, sign) = stockham_source(i, half, n);
+                    let at = |k: usize| if along_rows { line * n + k } else { k * n + line };
+                    let (a, b) = (data[at(j0)], data[at(j1)]);
+                    let (b0, b1) = (mul(w, [b[0], b[1]]), mul(w, [b[2], b[3]]));
+                    scratch[at(i)] =
+                        [a[0] + sign * b0[0], a[1] + sign * b0[1], a[2] + sign * b1[0], a[3] + sign * b1[1]];
+                }
+            }
+            std::mem::swap(&mut data, &mut scratch);
+            half *= 2;
+        }
+    }
+    data
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_stockham_stages_are_the_inverse_dft() {
+        let n = 16;
+        let mut rng = SplitMix64(7);
+        let input: Vec<[f32; 4]> = (0..n * n).map(|_| [0; 4].map(|_: i32| rng.range(-1.0, 1.0))).collect();
+        let fast = inverse_fft_2d(input.clone(), n);
+        let mut largest = 0.0f32;
+        for (y, x) in [(0, 0), (3, 5), (15, 1), (8, 8)] {
+            let mut sum = [0.0f64; 4];
+            for (idx, v) in input.iter().enumerate() {
+                let (kx, ky) = (idx % n, idx / n);
+                let a = std::f64::consts::TAU * ((kx * x + ky * y) as f64) / n as f64;
+                let (c, s) = (a.cos(), a.sin());
+                let v = v.map(|c| c as f64);
+                sum[0] += v[0] * c - v[1] * s;
+                sum[1] += v[0] * s + v[1] * c;
+                sum[2] += v[2] * c - v[3] * s;
+                sum[3] += v[2] * s + v[3] * c;
+            }
+            for c in 0..4 {
+                largest = largest.max((fast[y * n + x][c] - sum[c] as f32).abs());
+            }
+        }
+        println!("Stockham inverse FFT 16²: largest difference from the direct sum {largest:e}");
+        assert!(largest < 1e-4);
+    }
+}
