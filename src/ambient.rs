@@ -10,6 +10,7 @@
 //! and the tests from [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
 //! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
 
+pub mod gpu_ocean;
 pub mod ocean;
 
 use crate::scene::{DEPTH, HALF_WIDTH};
@@ -383,7 +384,9 @@ pub fn wgsl_constants() -> String {
     format!(
         "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\
          const AMBIENT_GERSTNER: u32 = {}u;\nconst AMBIENT_FFT: u32 = {}u;\n\
-         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\n",
+         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\n\
+         const GRAVITY: f32 = {:?};\nconst CAPILLARY_WAVENUMBER: f32 = {:?};\nconst OCEAN_DEPTH: f32 = {:?};\n\
+         const OCEAN_HALF_WIDTH: f32 = {:?};\n",
         AmbientModel::None as u32,
         AmbientModel::Sines as u32,
         AmbientModel::Modes as u32,
@@ -392,6 +395,10 @@ pub fn wgsl_constants() -> String {
         MAX_AMBIENT_WAVES,
         SHARP_SINE_MEAN,
         GERSTNER_NEWTON_STEPS,
+        G,
+        CAPILLARY_WAVENUMBER,
+        DEPTH,
+        HALF_WIDTH,
     )
 }
 

@@ -4,6 +4,7 @@
 
 use glam::{Quat, Vec2, Vec3};
 
+use crate::ambient::gpu_ocean::GpuOcean;
 use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves, Spectrum};
 use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
@@ -191,6 +192,10 @@ pub struct WaterDemo {
     /// The ambient waves of the current parameters, and the settings they were made for.
     ambient: AmbientWaves,
     ambient_settings: AmbientSettings,
+    /// Whether the FFT ocean is summed on the GPU (float render targets) or on the CPU.
+    ocean_on_gpu: bool,
+    /// The GPU's FFT passes, made when the FFT ocean is first drawn on the GPU path.
+    gpu_ocean: Option<GpuOcean>,
 }
 
 impl WaterDemo {
@@ -231,6 +236,8 @@ impl WaterDemo {
             render_scale: 1.0,
             ambient: AmbientWaves::new(&AmbientSettings::default()),
             ambient_settings: AmbientSettings::default(),
+            ocean_on_gpu: options.float_targets,
+            gpu_ocean: None,
         };
         demo.refresh_ambient();
         demo.place_duck_at_start();
@@ -511,6 +518,11 @@ impl WaterDemo {
         &self.ambient
     }
 
+    /// The GPU's FFT ocean, once the FFT ocean has been drawn on the GPU path (for tests).
+    pub fn gpu_ocean(&self) -> Option<&GpuOcean> {
+        self.gpu_ocean.as_ref()
+    }
+
     /// The water plane under each body from the newest probe heights plus the ambient waves
     /// there now (flat at the rest level before any probes have arrived).
     fn water_planes(&mut self) -> [WaterPlane; 2] {
@@ -781,8 +793,20 @@ impl WaterDemo {
             self.renderer.upload_foam(device, queue, foam);
         }
         if let Some(ocean) = &self.ambient.ocean {
-            let map = ocean.surface(self.sim_time());
-            self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, &map);
+            let t = self.sim_time();
+            if self.ocean_on_gpu {
+                let size = ocean.size as u32;
+                if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
+                    let made = GpuOcean::new(device, size);
+                    self.renderer.use_ambient_view(device, &self.water, made.surface());
+                    self.gpu_ocean = Some(made);
+                }
+                if let Some(gpu_ocean) = &mut self.gpu_ocean {
+                    gpu_ocean.encode(queue, encoder, ocean, t);
+                }
+            } else {
+                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, &ocean.surface(t));
+            }
         }
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(device, encoder, &view, &self.water);

@@ -24,6 +24,7 @@ pub mod wgsl {
     pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
     pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
+    pub const AMBIENT_FFT: &str = include_str!("../shaders/ambient_fft.wgsl");
 }
 
 /// Constants the shaders share with the Rust side, written from the Rust values ahead of
@@ -290,6 +291,12 @@ impl PingPong {
         let textures = [make(0), make(1)];
         let views = [textures[0].create_view(&Default::default()), textures[1].create_view(&Default::default())];
         Self { textures, views, current: 0 }
+    }
+
+    /// Makes texture 0 current: the next pass reads it and writes texture 1. (For a chain of
+    /// passes that starts afresh every frame and should end in the same texture.)
+    pub fn restart(&mut self) {
+        self.current = 0;
     }
 
     /// Index (0 or 1) of the texture that holds the latest state.

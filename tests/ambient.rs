@@ -1,17 +1,24 @@
 //! Ambient waves on the GPU (lavapipe in CI): the picture moves with simulated time only
 //! (paused, it stands; 30 and 144 frames/s give the same frame after the same second), the
-//! simulation's own state never sees them, and a floating duck rides them.
+//! simulation's own state never sees them, a floating duck rides them, the GPU's FFT agrees
+//! with the CPU's, and each model draws its own picture and its own caustics.
 
 mod common;
 
 use common::render;
+use wavepool::ambient::gpu_ocean::GpuOcean;
+use wavepool::ambient::ocean::Ocean;
+use wavepool::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::params::ParamId;
+
+/// Every ambient model, as (parameter value, name).
+const MODELS: [(f32, &str); 4] = [(1.0, "sines"), (2.0, "modes"), (3.0, "gerstner"), (4.0, "fft")];
 
 const W: u32 = 240;
 const H: u32 = 180;
 
-/// An empty pool with ambient waves of `model` (1 sines, 2 modes).
+/// An empty pool with ambient waves of `model` (1 sines, 2 modes, 3 Gerstner, 4 FFT).
 fn pool_with(model: f32) -> WaterDemo {
     let mut demo = common::demo(DemoOptions::default());
     demo.params.set(ParamId::Objects, 0.0);
@@ -22,7 +29,7 @@ fn pool_with(model: f32) -> WaterDemo {
 
 #[test]
 fn ambient_waves_move_the_picture_with_simulated_time_only() {
-    for (model, name) in [(1.0, "sines"), (2.0, "modes")] {
+    for (model, name) in MODELS {
         let mut calm = pool_with(0.0);
         let still = render(&mut calm, W, H, 60, 1.0 / 60.0);
         // One second at 30 and at 144 frames/s: the same 120 fixed steps, the same surface.
@@ -87,33 +94,135 @@ fn a_floating_duck_rides_the_ambient_waves() {
         let mean = ys.iter().sum::<f32>() / ys.len() as f32;
         (ys.iter().map(|y| (y - mean).powi(2)).sum::<f32>() / ys.len() as f32).sqrt()
     };
-    let (calm, sines, modes) = (heave(0.0), heave(1.0), heave(2.0));
-    println!(
-        "the duck's heave (std of its height over 2 s): calm {:.2} mm, sines {:.2} mm, modes {:.2} mm",
-        calm * 1e3,
-        sines * 1e3,
-        modes * 1e3
-    );
+    let calm = heave(0.0);
+    println!("the duck's heave (std of its height over 2 s): calm {:.2} mm", calm * 1e3);
     assert!(calm < 0.5e-3, "the duck moves on calm water ({calm} m)");
-    assert!(sines > 1e-3 && modes > 1e-3, "the duck does not ride the waves ({sines} / {modes} m)");
+    for (model, name) in MODELS {
+        let riding = heave(model);
+        println!("  {name}: {:.2} mm", riding * 1e3);
+        assert!(riding > 1e-3, "the duck does not ride the {name} waves ({riding} m)");
+    }
 }
 
 /// The height and normals debug views show the surface that is drawn: on calm water with
 /// ambient waves they are no longer the flat rest colour.
 #[test]
 fn the_height_and_normals_views_show_the_ambient_waves() {
-    for (view, name) in [(1.0, "height"), (2.0, "normals")] {
+    for (view, name, model) in [(1.0, "height", 1.0), (2.0, "normals", 1.0), (1.0, "height", 4.0)] {
         let frame = |model: f32| {
             let mut demo = pool_with(model);
             demo.params.set(ParamId::DebugView, view);
             demo.params.set(ParamId::DebugInset, 0.0);
             render(&mut demo, W, H, 10, 1.0 / 60.0)
         };
-        let (calm, waves) = (frame(0.0), frame(1.0));
+        let (calm, waves) = (frame(0.0), frame(model));
         // The view is the centred square (H pixels); compare inside it.
         let square = common::Rect(0.5 - 0.5 * H as f32 / W as f32 + 0.02, 0.02, H as f32 / W as f32 - 0.04, 0.96);
         let changed = waves.changed_fraction(&calm, square, 8);
-        println!("{name} view: {:.1} % of the pool's square changed by ambient sines", changed * 100.0);
+        println!("{name} view: {:.1} % of the pool's square changed by ambient model {model}", changed * 100.0);
         assert!(changed > 0.3, "{name} view does not show the ambient waves ({:.1} %)", changed * 100.0);
     }
+}
+
+/// The GPU's FFT (spectrum pass and Stockham stages in fragment passes) against the CPU's
+/// (the same stages), for both lattice sizes, early and late (after several epochs).
+#[test]
+fn the_gpu_fft_matches_the_cpu_reference() {
+    let g = common::gpu();
+    for size in [64usize, 128] {
+        let settings = AmbientSettings {
+            model: AmbientModel::Fft,
+            wind_speed: 3.0,
+            wind_direction_deg: 30.0,
+            significant_height: 0.01,
+            spread_deg: 30.0,
+            steepness: 0.0,
+            spectrum: Spectrum::Phillips,
+            fft_size: size,
+        };
+        let ocean = Ocean::new(&settings, size);
+        let mut gpu_ocean = GpuOcean::new(&g.device, size as u32);
+        for t in [2.3, 1234.56] {
+            let mut encoder = g.device.create_command_encoder(&Default::default());
+            gpu_ocean.encode(&g.queue, &mut encoder, &ocean, t);
+            g.queue.submit([encoder.finish()]);
+            let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, gpu_ocean.surface_texture());
+            let on_gpu: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+            let on_cpu = ocean.surface(t);
+            let peak = on_cpu.iter().map(|v| v[0].abs()).fold(0.0f32, f32::max);
+            let steepest = on_cpu.iter().map(|v| v[1].abs().max(v[2].abs())).fold(0.0f32, f32::max);
+            let (mut height, mut slope) = (0.0f32, 0.0f32);
+            for (a, b) in on_gpu.iter().zip(&on_cpu) {
+                height = height.max((a[0] - b[0]).abs());
+                slope = slope.max((a[1] - b[1]).abs().max((a[2] - b[2]).abs()));
+            }
+            println!(
+                "FFT {size}² at t = {t} s: GPU vs CPU height {:.1e} of the peak {peak:.4} m, slopes {:.1e} of the \
+                 steepest {steepest:.3}",
+                height / peak,
+                slope / steepest
+            );
+            assert!(height < 1e-5 * peak, "heights differ by {height} m (peak {peak})");
+            assert!(slope < 1e-4 * steepest, "slopes differ by {slope} (steepest {steepest})");
+        }
+    }
+}
+
+/// Each model draws its own picture (no two alike), and moves the caustics on the floor
+/// without a click.
+#[test]
+fn each_model_draws_its_own_picture_and_moves_the_caustics() {
+    let all = common::Rect::ALL;
+    let mut frames = Vec::new();
+    for (model, name) in MODELS {
+        let mut demo = pool_with(model);
+        let picture = render(&mut demo, W, H, 30, 1.0 / 60.0);
+        demo.params.set(ParamId::DebugView, 4.0); // the caustics map
+        demo.params.set(ParamId::DebugInset, 0.0);
+        let caustics = render(&mut demo, W, H, 1, 1.0 / 60.0);
+        let later = render(&mut demo, W, H, 20, 1.0 / 60.0);
+        let mut calm = pool_with(0.0);
+        calm.params.set(ParamId::DebugView, 4.0);
+        calm.params.set(ParamId::DebugInset, 0.0);
+        let calm_caustics = render(&mut calm, W, H, 31, 1.0 / 60.0);
+        let (vs_calm, moving) =
+            (caustics.changed_fraction(&calm_caustics, all, 8), caustics.changed_fraction(&later, all, 8));
+        println!(
+            "{name}: caustics differ from calm water's in {:.1} % of pixels, move in 1/3 s: {:.1} %",
+            vs_calm * 100.0,
+            moving * 100.0
+        );
+        assert!(vs_calm > 0.05 && moving > 0.05, "{name}: caustics {vs_calm} / {moving}");
+        frames.push((name, picture));
+    }
+    for (i, (a, fa)) in frames.iter().enumerate() {
+        for (b, fb) in &frames[i + 1..] {
+            let changed = fa.changed_fraction(fb, all, 8);
+            println!("  {a} vs {b}: {:.1} % of pixels differ", changed * 100.0);
+            assert!(changed > 0.02, "{a} and {b} look alike ({changed})");
+        }
+    }
+}
+
+/// Without float render targets (many phones, WebGL2 without EXT_color_buffer_float) the FFT
+/// ocean is summed on the CPU and uploaded: the same waves on the screen.
+#[test]
+fn without_float_targets_the_cpu_fft_draws_the_same_ocean() {
+    let frame = |float_targets: bool, model: f32| {
+        let mut demo = common::demo(DemoOptions { float_targets, ..DemoOptions::default() });
+        demo.params.set(ParamId::Objects, 0.0);
+        demo.params.set(ParamId::Quality, 1.0);
+        demo.params.set(ParamId::Ambient, model);
+        demo.params.set(ParamId::DebugView, 1.0); // heights: no 8-bit caustics in the way
+        demo.params.set(ParamId::DebugInset, 0.0);
+        render(&mut demo, W, H, 20, 1.0 / 60.0)
+    };
+    let all = common::Rect::ALL;
+    let (gpu, cpu, calm) = (frame(true, 4.0), frame(false, 4.0), frame(false, 0.0));
+    let (same, shows) = (gpu.mean_abs_diff(&cpu, all), cpu.changed_fraction(&calm, all, 8));
+    println!(
+        "FFT ocean's heights, GPU FFT vs CPU FFT: {same:.3}/255 mean difference; CPU path vs calm: {:.1} % changed",
+        shows * 100.0
+    );
+    assert!(same < 0.1 && shows > 0.3, "GPU vs CPU {same}/255, shows {shows}");
 }

@@ -153,23 +153,38 @@ impl Ocean {
         add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn))
     }
 
-    /// The spectrum of the fields the renderer reads at time `t`, two complex signals per
-    /// point packed as (re, im, re, im): h + i ∂h/∂x and ∂h/∂z, each term multiplied by
-    /// e^{i k·x₀} so that the inverse FFT's sample (0, 0) lies at the first texel's centre
-    /// x₀ = −W + Δ/2. (The real fields come out as the real and imaginary parts.)
-    pub fn fields_spectrum(&self, t: f64) -> Vec<[f32; 4]> {
+    /// The spectrum as the GPU takes it: per lattice point h0(k) e^{−iωT} and
+    /// conj(h0(−k)) e^{iωT} at the epoch T (s; phases in f64), each multiplied by e^{i k·x₀}
+    /// so that the inverse FFT's sample (0, 0) lies at the first texel's centre
+    /// x₀ = −W + Δ/2. Re-based every [`EPOCH_SECONDS`], so that the time the GPU advances it
+    /// by in f32 stays short (the phase ωt keeps its precision in long sessions).
+    pub fn epoch_spectrum(&self, epoch: f64) -> Vec<[f32; 4]> {
         let n = self.size;
         let x0 = -HALF_WIDTH + HALF_WIDTH / n as f32;
         (0..n * n)
             .map(|idx| {
                 let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
                 let shift = [(kx * x0 + kz * x0).cos(), (kx * x0 + kz * x0).sin()];
-                let h = mul(self.amplitude(idx, t), shift);
-                // i kx h and i kz h.
-                let (dx, dz) = ([-kx * h[1], kx * h[0]], [-kz * h[1], kz * h[0]]);
-                let a = add(h, mul([0.0, 1.0], dx));
-                [a[0], a[1], dz[0], dz[1]]
+                let omega = angular_frequency((kx * kx + kz * kz).sqrt()) as f64;
+                let phase = (omega * epoch).rem_euclid(std::f64::consts::TAU) as f32;
+                let turn = [phase.cos(), phase.sin()];
+                let a = self.h0[idx];
+                let here = mul(mul([a[0], a[1]], conj(turn)), shift);
+                let minus = mul(mul([a[2], a[3]], turn), shift);
+                [here[0], here[1], minus[0], minus[1]]
             })
+            .collect()
+    }
+
+    /// The spectrum of the fields the renderer reads at time `t` (see [`advance`]).
+    pub fn fields_spectrum(&self, t: f64) -> Vec<[f32; 4]> {
+        let n = self.size;
+        let epoch = epoch_of(t);
+        let dt = (t - epoch) as f32;
+        self.epoch_spectrum(epoch)
+            .into_iter()
+            .enumerate()
+            .map(|(idx, a)| advance(a, lattice_k(idx % n, n), lattice_k(idx / n, n), dt))
             .collect()
     }
 
@@ -200,6 +215,26 @@ impl Ocean {
         }
         out
     }
+}
+
+/// How often (s) the spectrum given to the GPU is re-based ([`Ocean::epoch_spectrum`]).
+pub const EPOCH_SECONDS: f64 = 16.0;
+
+/// The epoch of time `t` (s): the last multiple of [`EPOCH_SECONDS`].
+pub fn epoch_of(t: f64) -> f64 {
+    (t / EPOCH_SECONDS).floor() * EPOCH_SECONDS
+}
+
+/// The spectrum pass (shaders/ambient_fft.wgsl, `fs_ocean_spectrum`) for one lattice point:
+/// `a` from [`Ocean::epoch_spectrum`] advanced by `dt` (s) past its epoch, h = a₀ e^{−iω dt} +
+/// a₁ e^{iω dt}, packed as two complex signals (re, im, re, im): h + i (i kx h) and i kz h,
+/// whose inverse FFTs are h + i ∂h/∂x and ∂h/∂z (real fields come out as the real and
+/// imaginary parts).
+pub fn advance(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
+    let phase = angular_frequency((kx * kx + kz * kz).sqrt()) * dt;
+    let turn = [phase.cos(), phase.sin()];
+    let h = add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn));
+    [h[0] - kx * h[0], h[1] - kx * h[1], -kz * h[1], kz * h[0]]
 }
 
 /// One stage of Stockham's radix-2 inverse FFT along a line of `n` values, as a gather:

@@ -252,8 +252,10 @@ pub struct Renderer {
     textures_layout: wgpu::BindGroupLayout,
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
-    /// The FFT ocean's surface (height, slopes per texel; 1 x 1 until the ocean is first drawn).
-    ambient: (wgpu::Texture, wgpu::TextureView),
+    /// The map the FFT ocean's surface is read from (height, slopes per texel): the GPU
+    /// ocean's output, or `cpu_ambient` filled from the CPU; a 1 x 1 `cpu_ambient` until then.
+    ambient_view: wgpu::TextureView,
+    cpu_ambient: (wgpu::Texture, wgpu::TextureView),
     textures_group: wgpu::BindGroup,
     /// What `textures_group` binds besides the caustics map (kept to bind a resized map).
     scene_textures: SceneTextures,
@@ -480,8 +482,8 @@ impl Renderer {
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
-        let ambient = ambient_map(device, 1);
-        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &ambient.1);
+        let cpu_ambient = ambient_map(device, 1);
+        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &cpu_ambient.1);
         let (caustics_format, _) = settings.caustics_format();
         let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
@@ -529,7 +531,8 @@ impl Renderer {
             water_layout,
             textures_layout,
             water_groups,
-            ambient,
+            ambient_view: cpu_ambient.1.clone(),
+            cpu_ambient,
             textures_group,
             scene_textures,
             caustics,
@@ -597,7 +600,13 @@ impl Renderer {
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
-        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient.1);
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_view);
+    }
+
+    /// Reads the FFT ocean's surface from `view` (the GPU ocean's output) from now on.
+    pub fn use_ambient_view(&mut self, device: &wgpu::Device, water: &HeightField, view: &wgpu::TextureView) {
+        self.ambient_view = view.clone();
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_view);
     }
 
     /// Copies the FFT ocean's surface (`size`² texels of height and slopes, from
@@ -611,13 +620,15 @@ impl Renderer {
         size: u32,
         texels: &[[f32; 4]],
     ) {
-        if self.ambient.0.width() != size {
-            self.ambient = ambient_map(device, size);
-            self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient.1);
+        if self.cpu_ambient.0.width() != size || self.ambient_view != self.cpu_ambient.1 {
+            if self.cpu_ambient.0.width() != size {
+                self.cpu_ambient = ambient_map(device, size);
+            }
+            self.use_ambient_view(device, water, &self.cpu_ambient.1.clone());
         }
         queue.write_texture(
             wgpu::TexelCopyTextureInfo {
-                texture: &self.ambient.0,
+                texture: &self.cpu_ambient.0,
                 mip_level: 0,
                 origin: wgpu::Origin3d::ZERO,
                 aspect: wgpu::TextureAspect::All,
