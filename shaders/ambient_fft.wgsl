@@ -21,10 +21,11 @@ fn complex_mul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
 }
 
 // Angular frequency (rad/s) of a wave of wavenumber k (rad/m): gravity on water of the pool's
-// depth, and surface tension (ambient.rs angular_frequency).
+// depth, and surface tension (ambient.rs angular_frequency). tanh's argument is capped at 9
+// (tanh 9 = 1 - 3e-8): some GPUs compute tanh from exponentials that overflow to inf/inf.
 fn wave_frequency(k: f32) -> f32 {
     let ratio = k / CAPILLARY_WAVENUMBER;
-    return sqrt(GRAVITY * k * tanh(k * OCEAN_DEPTH) * (1.0 + ratio * ratio));
+    return sqrt(GRAVITY * k * tanh(min(k * OCEAN_DEPTH, 9.0)) * (1.0 + ratio * ratio));
 }
 
 // Wavenumber (rad/m) of lattice index i along one axis: indices past N/2 are negative.

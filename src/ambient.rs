@@ -92,7 +92,8 @@ pub const CAPILLARY_WAVENUMBER: f32 = 370.0;
 /// `k * k / KM * KM`: that is k², not (k/k_m)².)
 pub fn angular_frequency(k: f32) -> f32 {
     let ratio = k / CAPILLARY_WAVENUMBER;
-    (G * k * (k * DEPTH).tanh() * (1.0 + ratio * ratio)).sqrt()
+    // tanh(9) = 1 − 3e-8; the cap keeps the shader's copy finite where tanh overflows.
+    (G * k * (k * DEPTH).min(9.0).tanh() * (1.0 + ratio * ratio)).sqrt()
 }
 
 /// The physical settings of the ambient surface (from the parameter table).

@@ -707,7 +707,8 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         .js("const root = document.querySelector('#pool').shadowRoot;
              const names = ['sun_size', 'fresnel', 'specular', 'shininess', 'dispersion', 'absorption_red', 'absorption_green',
                             'absorption_blue', 'scatter_red', 'scatter_green', 'scatter_blue', 'view_colour', 'foam', 'foam_decay',
-                            'ambient', 'wind_speed', 'wind_direction', 'wave_height', 'wave_spread'];
+                            'ambient', 'wind_speed', 'wind_direction', 'wave_height', 'wave_spread', 'steepness',
+                            'spectrum', 'fft_size'];
              const out = {};
              for (const name of names) {
                const input = root.querySelector(`[name=${name}]`);
@@ -746,4 +747,80 @@ async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgpu() {
 async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgl2() {
     let _g = serial();
     fresnel_models_in_the_page(Graphics::WebGl2Only, "webgl2").await;
+}
+
+/// The page's Ambient waves select switches between the five models: each draws its own
+/// moving water without an error, and the controls show a model's own settings only while it
+/// is chosen (wind with any model, steepness with Gerstner, spectrum and grid with the FFT).
+async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
+    let (browser, _server) = open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none"), backend).await;
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    let shown = "const root = document.querySelector('#pool').shadowRoot;
+                 return ['wind_speed', 'wave_spread', 'steepness', 'spectrum', 'fft_size']
+                   .filter((n) => !root.querySelector(`[name=${n}]`).closest('.row').hidden
+                                  && root.querySelector(`[name=${n}]`).offsetParent !== null)
+                   .join(' ');";
+    let at_start = browser.js(shown).await;
+    println!("{backend}: ambient none: settings shown [{}]", at_start.as_str().unwrap());
+    assert_eq!(at_start, "", "{backend}: a model's settings show with no model");
+    let mut previous = browser.screenshot().await;
+    for (value, name, expected) in [
+        (1, "sines", "wind_speed wave_spread"),
+        (3, "gerstner", "wind_speed wave_spread steepness"),
+        (2, "modes", "wind_speed"),
+        (4, "fft", "wind_speed wave_spread spectrum fft_size"),
+    ] {
+        browser
+            .js(&format!(
+                "const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=ambient]');
+                 s.value = '{value}'; s.dispatchEvent(new Event('change')); return true;"
+            ))
+            .await;
+        tokio::time::sleep(Duration::from_millis(2500)).await;
+        let a = browser.screenshot().await;
+        tokio::time::sleep(Duration::from_millis(1000)).await;
+        let b = browser.screenshot().await;
+        let settings = browser.js(shown).await;
+        let state = browser
+            .js("return { error: document.querySelector('#pool').dataset.error || null, model: window.demo.get('ambient'),
+                          fps: window.demo.stats().fps };")
+            .await;
+        let (vs_previous, moving) = (changed_fraction(&previous, &a, rect, 8), changed_fraction(&a, &b, rect, 8));
+        println!(
+            "{backend}: {name}: {:.1} % of the canvas differs from the model before, {:.1} % moved in 1 s; settings \
+             shown [{}]; {state}",
+            vs_previous * 100.0,
+            moving * 100.0,
+            settings.as_str().unwrap()
+        );
+        assert!(state["error"].is_null() && state["model"] == value as f64, "{backend}: {name}: {state}");
+        assert_eq!(settings, expected, "{backend}: {name}: settings shown");
+        assert!(vs_previous > 0.01 && moving > 0.01, "{backend}: {name}: {vs_previous} / {moving}");
+        previous = a;
+    }
+    // The finer lattice and the other spectrum run too.
+    browser.js("window.demo.set('fft_size', 128); window.demo.set('spectrum', 'jonswap'); return true;").await;
+    tokio::time::sleep(Duration::from_millis(2500)).await;
+    let after = browser.screenshot().await;
+    let state = browser
+        .js("return { error: document.querySelector('#pool').dataset.error || null, size: window.demo.get('fft_size'),
+                      spectrum: window.demo.get('spectrum') };")
+        .await;
+    let changed = changed_fraction(&previous, &after, rect, 8);
+    println!("{backend}: fft 128² JONSWAP: {:.1} % changed; {state}", changed * 100.0);
+    assert!(state["error"].is_null() && state["size"] == 128.0 && state["spectrum"] == 1.0, "{backend}: {state}");
+    assert!(changed > 0.01);
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn the_ambient_select_switches_all_five_models_on_webgpu() {
+    let _g = serial();
+    ambient_models_in_the_page(Graphics::WebGpu, "webgpu").await;
+}
+
+#[tokio::test]
+async fn the_ambient_select_switches_all_five_models_on_webgl2() {
+    let _g = serial();
+    ambient_models_in_the_page(Graphics::WebGl2Only, "webgl2").await;
 }
