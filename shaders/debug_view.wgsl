@@ -5,6 +5,9 @@
 //     ripples show), flat water is (0.5, 1, 0.5)
 //   3 velocity: signed colour map, full colour at 0.05 m/s
 //   4 caustics: the caustics map's light (with the sphere's shadow), 1 = calm-surface light at 40%
+//   6 spectrum: the ambient waves' amplitude per wavevector (kx right, kz down, 0 in the
+//     middle), black 1 um to white 1 cm on a log scale through blue and orange; grey rings at
+//     the 0.9 m and 0.2 m wavelengths the models' waves lie between
 // With ambient waves (AMBIENT_MODEL), height and normals are those of the surface drawn: the
 // simulation's plus the waves'.
 
@@ -35,6 +38,21 @@ fn fs_debug(in: FullscreenOut) -> @location(0) vec4<f32> {
         colour = vec3<f32>(4.0 * n.x, n.y, 4.0 * n.z) * 0.5 + 0.5;
     } else if (mode == 3) {
         colour = signed_colour(state.y / 0.05);
+    } else if (mode == 6) {
+        let n = f32(textureDimensions(ambient_spectrum).x);
+        let cell = vec2<i32>(in.uv * n);
+        let level = clamp((textureLoad(ambient_spectrum, cell, 0).r + 6.0) / 4.0, 0.0, 1.0);
+        colour = mix(mix(vec3<f32>(0.0), vec3<f32>(0.1, 0.3, 1.0), smoothstep(0.0, 0.5, level)),
+                     vec3<f32>(1.0, 0.85, 0.5), smoothstep(0.5, 1.0, level));
+        // Wavenumber here (rad/m): cells are pi/W apart.
+        let k = length((in.uv - 0.5) * n) * PI / half_width();
+        let pixel = fwidth(k);
+        for (var r = 0; r < 2; r++) {
+            let ring = 2.0 * PI / select(AMBIENT_SHORTEST, AMBIENT_LONGEST, r == 0);
+            if (abs(k - ring) < pixel) {
+                colour = vec3<f32>(0.6);
+            }
+        }
     } else {
         // The caustics map is indexed by light entry point: v runs along -z (see caustics_uv).
         let light = textureSampleLevel(caustics_map, clamp_sampler, vec2<f32>(in.uv.x, 1.0 - in.uv.y), 0.0).g * scene.water.w;

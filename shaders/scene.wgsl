@@ -47,6 +47,9 @@ struct Scene {
 @group(1) @binding(5) var fresnel_table: texture_2d<f32>;
 // Foam amount (0-1) per cell of the CPU field that integrates it (sim/foam.rs), when on.
 @group(1) @binding(6) var foam_map: texture_2d<f32>;
+// The ambient waves' spectrum for the debug view: log10 amplitude (m) per wavevector cell
+// (ambient.rs spectrum_image).
+@group(1) @binding(7) var ambient_spectrum: texture_2d<f32>;
 
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);

@@ -69,6 +69,10 @@ impl Spectrum {
     }
 }
 
+/// Cells per side of the spectrum debug view's image (wavevectors up to ±32π/W rad/m:
+/// wavelengths down to 6 cm with the 2 m pool).
+pub const SPECTRUM_IMAGE_SIZE: usize = 64;
+
 /// Waves an ambient surface holds (the shader's uniform array has room for this many).
 pub const MAX_AMBIENT_WAVES: usize = 16;
 /// Travelling waves of the `sines` and `gerstner` models.
@@ -312,6 +316,43 @@ impl AmbientWaves {
         (out, [self.waves.len().min(MAX_AMBIENT_WAVES) as f32, self.gerstner_c, 0.0, 0.0])
     }
 
+    /// The spectrum debug view's image: [`SPECTRUM_IMAGE_SIZE`]² cells of wavevector space,
+    /// (π/W) rad/m apart with k = 0 at cell (N/2, N/2), x along rows, each holding log10 of
+    /// the amplitude (m) there (−12 where there is no wave). The FFT ocean: |h0(k)| per
+    /// lattice point (the wave travelling along k); the sines and Gerstner waves: each wave's amplitude at its
+    /// nearest cell; a standing mode: half its amplitude at (±kx, ±kz), the travelling waves
+    /// it is made of.
+    pub fn spectrum_image(&self) -> Vec<f32> {
+        let n = SPECTRUM_IMAGE_SIZE;
+        let mut amplitude = vec![0.0f32; n * n];
+        let unit = std::f32::consts::PI / HALF_WIDTH;
+        let mut add = |kx: f32, kz: f32, a: f32| {
+            let (i, j) = ((kx / unit).round() as i32 + n as i32 / 2, (kz / unit).round() as i32 + n as i32 / 2);
+            if (0..n as i32).contains(&i) && (0..n as i32).contains(&j) {
+                let cell = &mut amplitude[j as usize * n + i as usize];
+                *cell = (*cell * *cell + a * a).sqrt();
+            }
+        };
+        if let Some(ocean) = &self.ocean {
+            let m = ocean.size;
+            for (idx, h) in ocean.h0.iter().enumerate() {
+                let (kx, kz) = (ocean::lattice_k(idx % m, m), ocean::lattice_k(idx / m, m));
+                add(kx, kz, (h[0] * h[0] + h[1] * h[1]).sqrt());
+            }
+        } else {
+            for w in &self.waves {
+                if self.model == AmbientModel::Modes {
+                    for (sx, sz) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+                        add(sx * w.kx, sz * w.kz, 0.5 * w.amplitude);
+                    }
+                } else {
+                    add(w.kx, w.kz, w.amplitude);
+                }
+            }
+        }
+        amplitude.iter().map(|&a| if a > 0.0 { a.log10() } else { -12.0 }).collect()
+    }
+
     /// The FFT ocean's surface on its lattice at time `t` (see [`Ocean::surface`]), for the
     /// renderer's ambient map; `None` for the other models.
     pub fn surface_map(&self, t: f64) -> Option<Vec<[f32; 4]>> {
@@ -387,7 +428,8 @@ pub fn wgsl_constants() -> String {
          const AMBIENT_GERSTNER: u32 = {}u;\nconst AMBIENT_FFT: u32 = {}u;\n\
          const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\n\
          const GRAVITY: f32 = {:?};\nconst CAPILLARY_WAVENUMBER: f32 = {:?};\nconst OCEAN_DEPTH: f32 = {:?};\n\
-         const OCEAN_HALF_WIDTH: f32 = {:?};\n",
+         const OCEAN_HALF_WIDTH: f32 = {:?};\n\
+         const AMBIENT_SHORTEST: f32 = {:?};\nconst AMBIENT_LONGEST: f32 = {:?};\n",
         AmbientModel::None as u32,
         AmbientModel::Sines as u32,
         AmbientModel::Modes as u32,
@@ -400,6 +442,8 @@ pub fn wgsl_constants() -> String {
         CAPILLARY_WAVENUMBER,
         DEPTH,
         HALF_WIDTH,
+        SHORTEST_WAVELENGTH,
+        LONGEST_WAVELENGTH,
     )
 }
 

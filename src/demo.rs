@@ -196,6 +196,8 @@ pub struct WaterDemo {
     ocean_on_gpu: bool,
     /// The GPU's FFT passes, made when the FFT ocean is first drawn on the GPU path.
     gpu_ocean: Option<GpuOcean>,
+    /// Whether the renderer holds the current ambient waves' spectrum image.
+    spectrum_shown: bool,
 }
 
 impl WaterDemo {
@@ -238,6 +240,7 @@ impl WaterDemo {
             ambient_settings: AmbientSettings::default(),
             ocean_on_gpu: options.float_targets,
             gpu_ocean: None,
+            spectrum_shown: false,
         };
         demo.refresh_ambient();
         demo.place_duck_at_start();
@@ -510,6 +513,7 @@ impl WaterDemo {
         if settings != self.ambient_settings {
             self.ambient = AmbientWaves::new(&settings);
             self.ambient_settings = settings;
+            self.spectrum_shown = false;
         }
     }
 
@@ -791,6 +795,10 @@ impl WaterDemo {
         let view = self.view();
         if let Some(foam) = self.water.foam() {
             self.renderer.upload_foam(device, queue, foam);
+        }
+        if view.debug.is_some_and(|d| d.texture == DebugTexture::Spectrum) && !self.spectrum_shown {
+            self.renderer.upload_spectrum(queue, &self.ambient.spectrum_image());
+            self.spectrum_shown = true;
         }
         if let Some(ocean) = &self.ambient.ocean {
             let t = self.sim_time();

@@ -526,11 +526,11 @@ pub const PARAMS: &[ParamSpec] = &[
         group: "Debug",
         unit: "",
         control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0],
-            names: &["off", "height", "normals", "velocity", "caustics", "reflectance"],
+            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0],
+            names: &["off", "height", "normals", "velocity", "caustics", "reflectance", "spectrum"],
         },
         default: 0.0,
-        help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map; or the water's Fresnel reflectance as grey (black 0, white 1).",
+        help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map; or the water's Fresnel reflectance as grey (black 0, white 1); or the ambient waves' spectrum (amplitude per wavevector, log scale, k = 0 in the middle, rings at the 0.9 m and 0.2 m wavelengths).",
     },
     ParamSpec {
         id: ParamId::DebugInset,

@@ -226,3 +226,36 @@ fn without_float_targets_the_cpu_fft_draws_the_same_ocean() {
     );
     assert!(same < 0.1 && shows > 0.3, "GPU vs CPU {same}/255, shows {shows}");
 }
+
+/// The spectrum view shows where the waves' energy lies in wavevector space: the FFT ocean's
+/// many waves downwind (their centroid in the wind's direction, 30°), a sum of sines' six.
+#[test]
+fn the_spectrum_view_shows_the_waves_downwind() {
+    let lit = |model: f32| {
+        let mut demo = pool_with(model);
+        demo.params.set(ParamId::DebugView, 6.0);
+        demo.params.set(ParamId::DebugInset, 0.0);
+        let frame = render(&mut demo, H, H, 2, 1.0 / 60.0); // square: the view fills it
+                                                            // Lit cells are blue to orange; the rings are grey (all channels equal).
+        let mut points = Vec::new();
+        for y in 0..H {
+            for x in 0..H {
+                let [r, g, b] = frame.pixel(x, y);
+                if b.max(r) > 0.15 && (b - r).abs() > 0.1 && (r - g).abs() + (g - b).abs() > 0.1 {
+                    points.push((x as f32 / H as f32 - 0.5, y as f32 / H as f32 - 0.5));
+                }
+            }
+        }
+        points
+    };
+    let (fft, sines) = (lit(4.0), lit(1.0));
+    let (sx, sz) = fft.iter().fold((0.0, 0.0), |(a, b), p| (a + p.0, b + p.1));
+    let angle = sz.atan2(sx).to_degrees();
+    println!(
+        "spectrum view: FFT {} lit pixels, centroid at {angle:.1}° (wind 30°); sines {} lit pixels",
+        fft.len(),
+        sines.len()
+    );
+    assert!((angle - 30.0).abs() < 15.0, "the FFT's waves are not downwind ({angle}°)");
+    assert!(fft.len() > 4 * sines.len() && !sines.is_empty());
+}

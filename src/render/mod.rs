@@ -8,7 +8,7 @@ use std::collections::HashMap;
 
 use glam::{Mat4, Vec3};
 
-use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
+use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES, SPECTRUM_IMAGE_SIZE};
 use crate::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::optics::{self, FresnelModel, SpecularModel};
@@ -102,6 +102,8 @@ pub enum DebugTexture {
     Normals = 2,
     Velocity = 3,
     Caustics = 4,
+    /// The ambient waves' spectrum (not a simulation texture: `AmbientWaves::spectrum_image`).
+    Spectrum = 6,
 }
 
 /// The `debug_view` value that shows the water's Fresnel reflectance: not a texture but a
@@ -116,6 +118,7 @@ impl DebugTexture {
             2 => Some(Self::Normals),
             3 => Some(Self::Velocity),
             4 => Some(Self::Caustics),
+            6 => Some(Self::Spectrum),
             _ => None,
         }
     }
@@ -357,6 +360,8 @@ struct SceneTextures {
     fresnel_table: wgpu::TextureView,
     /// The foam amount per cell (R32Float), 1 x 1 until foam is first drawn.
     foam: (wgpu::Texture, wgpu::TextureView),
+    /// The ambient waves' spectrum for the debug view (R32Float, log10 of the amplitude in m).
+    spectrum: (wgpu::Texture, wgpu::TextureView),
     clamp: wgpu::Sampler,
     repeat: wgpu::Sampler,
 }
@@ -379,6 +384,7 @@ impl SceneTextures {
                 wgpu::BindGroupEntry { binding: 4, resource: wgpu::BindingResource::Sampler(&self.repeat) },
                 wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::TextureView(&self.fresnel_table) },
                 wgpu::BindGroupEntry { binding: 6, resource: wgpu::BindingResource::TextureView(&self.foam.1) },
+                wgpu::BindGroupEntry { binding: 7, resource: wgpu::BindingResource::TextureView(&self.spectrum.1) },
             ],
         })
     }
@@ -479,6 +485,12 @@ impl Renderer {
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
                 ),
+                gpu::texture_entry(
+                    7,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
@@ -506,6 +518,14 @@ impl Renderer {
             sky: sky_cube.view(),
             fresnel_table: textures::create_fresnel_table(device, queue).create_view(&Default::default()),
             foam: foam_map(device, 1),
+            spectrum: {
+                let size = SPECTRUM_IMAGE_SIZE as u32;
+                let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+                let texture =
+                    gpu::texture_2d(device, "ambient spectrum", size, size, 1, 1, wgpu::TextureFormat::R32Float, usage);
+                let view = texture.create_view(&Default::default());
+                (texture, view)
+            },
             clamp: sampler(wgpu::AddressMode::ClampToEdge),
             repeat: sampler(wgpu::AddressMode::Repeat),
         };
@@ -663,6 +683,23 @@ impl Renderer {
                 aspect: wgpu::TextureAspect::All,
             },
             bytemuck::cast_slice(foam.amount()),
+            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
+            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+        );
+    }
+
+    /// Copies the ambient waves' spectrum image (`AmbientWaves::spectrum_image`) for the
+    /// spectrum debug view.
+    pub fn upload_spectrum(&self, queue: &wgpu::Queue, image: &[f32]) {
+        let size = SPECTRUM_IMAGE_SIZE as u32;
+        queue.write_texture(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.scene_textures.spectrum.0,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            bytemuck::cast_slice(image),
             wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
             wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
         );
