@@ -71,8 +71,23 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "breeze",
         label: "Lesson: ambient waves",
-        help: "A light breeze makes sharp-crested waves travel across the pool under your ripples; switch Ambient waves to modes to see the pool's own standing waves, which meet every wall flat.",
+        help: "A light breeze makes sharp-crested waves travel across the pool under your ripples; switch Ambient waves to modes to see the pool's own standing waves, which meet every wall flat, to gerstner for water moving in circles, or to fft for a spectrum of thousands of waves (the spectrum debug view shows each model's waves).",
         values: &[("objects", 2.0), ("ambient", 1.0), ("wind_speed", 3.0), ("wave_height", 0.012), ("wind_direction", 30.0)],
+        camera: None,
+    },
+    Preset {
+        name: "ocean",
+        label: "Lesson: an FFT ocean",
+        help: "Tessendorf's ocean in the pool: a Phillips spectrum of about a thousand waves on a 128-point lattice, summed by an FFT every frame; the debug view shows the spectrum, downwind of the wind's direction.",
+        values: &[
+            ("objects", 2.0),
+            ("ambient", 4.0),
+            ("fft_size", 128.0),
+            ("wind_speed", 5.0),
+            ("wave_height", 0.015),
+            ("wave_spread", 60.0),
+            ("debug_view", 6.0),
+        ],
         camera: None,
     },
     Preset {

@@ -32,11 +32,13 @@ fn ambient_waves_move_the_picture_with_simulated_time_only() {
     for (model, name) in MODELS {
         let mut calm = pool_with(0.0);
         let still = render(&mut calm, W, H, 60, 1.0 / 60.0);
-        // One second at 30 and at 144 frames/s: the same 120 fixed steps, the same surface.
+        // Five seconds at 30, 60 and 144 frames/s: the same 600 fixed steps, the same surface.
         let mut slow = pool_with(model);
-        let at_30 = render(&mut slow, W, H, 30, 1.0 / 30.0);
+        let at_30 = render(&mut slow, W, H, 150, 1.0 / 30.0);
+        let mut mid = pool_with(model);
+        let at_60 = render(&mut mid, W, H, 300, 1.0 / 60.0);
         let mut fast = pool_with(model);
-        let at_144 = render(&mut fast, W, H, 144, 1.0 / 144.0);
+        let at_144 = render(&mut fast, W, H, 720, 1.0 / 144.0);
         // Later, and paused for a while.
         let later = render(&mut slow, W, H, 15, 1.0 / 30.0);
         slow.params.set(ParamId::Paused, 1.0);
@@ -45,13 +47,13 @@ fn ambient_waves_move_the_picture_with_simulated_time_only() {
         let all = common::Rect::ALL;
         let (vs_calm, rates, moving, paused) = (
             at_30.changed_fraction(&still, all, 8),
-            at_30.mean_abs_diff(&at_144, all),
+            at_30.mean_abs_diff(&at_144, all).max(at_60.mean_abs_diff(&at_144, all)),
             at_30.changed_fraction(&later, all, 8),
             paused_a.mean_abs_diff(&paused_b, all),
         );
         println!(
-            "{name}: {:.1} % of pixels differ from calm water; 30 vs 144 frames/s after 1 s: {rates:.3}/255 mean \
-             difference; 0.5 s later {:.1} % changed; paused for 20 frames: {paused:.3}/255",
+            "{name}: {:.1} % of pixels differ from calm water; 30 and 60 vs 144 frames/s after 5 s: {rates:.3}/255 mean \
+             difference (largest); 0.5 s later {:.1} % changed; paused for 20 frames: {paused:.3}/255",
             vs_calm * 100.0,
             moving * 100.0
         );
@@ -258,4 +260,50 @@ fn the_spectrum_view_shows_the_waves_downwind() {
     );
     assert!((angle - 30.0).abs() < 15.0, "the FFT's waves are not downwind ({angle}°)");
     assert!(fft.len() > 4 * sines.len() && !sines.is_empty());
+}
+
+/// The shader's sines, modes and Gerstner waves are their closed forms: the height debug view
+/// of calm water with ambient waves (one pixel per simulation cell), its colours turned back
+/// into heights, against `AmbientWaves::sample` (the formulas) at each cell's centre.
+#[test]
+fn the_shaders_ambient_heights_are_the_closed_forms() {
+    // The view's red channel: 0.5 + 0.5 t above rest, 0.5 + 0.4 t below (t = h / 5 mm),
+    // displayed as colour^2.2 sRGB-encoded (debug_view.wgsl).
+    let height_of = |byte: u8| {
+        let encoded = byte as f32 / 255.0;
+        let linear = if encoded <= 0.04045 { encoded / 12.92 } else { ((encoded + 0.055) / 1.055).powf(2.4) };
+        let red = linear.powf(1.0 / 2.2);
+        0.005 * if red >= 0.5 { (red - 0.5) / 0.5 } else { (red - 0.5) / 0.4 }
+    };
+    for (model, name) in [(1.0, "sines"), (2.0, "modes"), (3.0, "gerstner")] {
+        let mut demo = common::demo(DemoOptions { sim_size: 256, ..DemoOptions::default() });
+        demo.params.set(ParamId::Objects, 0.0);
+        demo.params.set(ParamId::Ambient, model);
+        demo.params.set(ParamId::WaveHeight, 0.004);
+        demo.params.set(ParamId::DebugView, 1.0);
+        demo.params.set(ParamId::DebugInset, 0.0);
+        let frame = render(&mut demo, 256, 256, 20, 1.0 / 60.0);
+        let t = demo.sim_time();
+        let (mut worst, mut sum, mut peak) = (0.0f32, 0.0f32, 0.0f32);
+        for y in (2..254).step_by(3) {
+            for x in (2..254).step_by(3) {
+                let i = ((y * 256 + x) * 4) as usize;
+                let seen = height_of(frame.rgba[i]);
+                let (px, pz) = ((x as f32 + 0.5) / 128.0 - 1.0, (y as f32 + 0.5) / 128.0 - 1.0);
+                let expected = demo.ambient().sample(px, pz, t)[0];
+                worst = worst.max((seen - expected).abs());
+                sum += (seen - expected).abs();
+                peak = peak.max(expected.abs());
+            }
+        }
+        let mean = sum / (84.0 * 84.0);
+        println!(
+            "{name}: the shader's heights within {:.3} mm (mean {:.3} mm) of the closed form; highest {:.2} mm",
+            worst * 1e3,
+            mean * 1e3,
+            peak * 1e3
+        );
+        assert!(peak > 1e-3 && peak < 4.9e-3, "{name}: heights out of the view's scale ({peak} m)");
+        assert!(worst < 1.2e-4 && mean < 4e-5, "{name}: {worst} m off the closed form");
+    }
 }
