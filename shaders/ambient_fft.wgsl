@@ -2,8 +2,10 @@
 // spectrum pass advances each wave of the pool's lattice analytically, h = a0 e^{-i w t} +
 // a1 e^{+i w t} with w^2 = g k tanh(k D) (1 + (k/k_m)^2), and packs the height and slope
 // spectra as two complex signals per texel; then log2(N) Stockham stages along the rows and
-// log2(N) along the columns sum the waves (inverse DFT). ambient/ocean.rs runs the very same
-// arithmetic on the CPU (`advance`, `stockham_source`).
+// log2(N) along the columns sum the waves (inverse DFT). With choppiness a second chain sums
+// the horizontal displacement D = sum(-i k/|k| h e^{ik.x}) and its derivatives.
+// ambient/ocean.rs runs the very same arithmetic on the CPU (`advance`, `advance_choppy`,
+// `stockham_source`).
 
 struct FftStage {
     // x: half-block of this stage (1, 2, ... N/2); y: 0 along rows, 1 along columns;
@@ -33,17 +35,40 @@ fn lattice_k(i: i32, n: i32) -> f32 {
     return f32(select(i - n, i, i < n / 2)) * PI / OCEAN_HALF_WIDTH;
 }
 
-@fragment
-fn fs_ocean_spectrum(in: FullscreenOut) -> @location(0) vec4<f32> {
-    let texel = vec2<i32>(in.position.xy);
+// This texel's wavevector (rad/m) and its wave h = a0 e^{-i w dt} + a1 e^{i w dt}.
+fn advanced_wave(position: vec4<f32>) -> mat2x2<f32> {
+    let texel = vec2<i32>(position.xy);
     let n = i32(textureDimensions(source).x);
     let a = textureLoad(source, texel, 0);
     let k = vec2<f32>(lattice_k(texel.x, n), lattice_k(texel.y, n));
     let phase = wave_frequency(length(k)) * stage.params.z;
     let turn = vec2<f32>(cos(phase), sin(phase));
-    let h = complex_mul(a.xy, vec2<f32>(turn.x, -turn.y)) + complex_mul(a.zw, turn);
-    // h + i (i kx h) and i kz h.
-    return vec4<f32>(h - k.x * h, -k.y * h.y, k.y * h.x);
+    return mat2x2<f32>(k, complex_mul(a.xy, vec2<f32>(turn.x, -turn.y)) + complex_mul(a.zw, turn));
+}
+
+// 1/|k|, 0 at k = 0 (no wave there).
+fn inverse_k(k: vec2<f32>) -> f32 {
+    return select(0.0, 1.0 / length(k), dot(k, k) > 0.0);
+}
+
+@fragment
+fn fs_ocean_spectrum(in: FullscreenOut) -> @location(0) vec4<f32> {
+    let wave = advanced_wave(in.position);
+    let k = wave[0];
+    let h = wave[1];
+    // h + i (i kx h), and i kz h + i (kx kz / k) h (dh/dz, and dDx/dz for choppiness).
+    let c = k.y + k.x * k.y * inverse_k(k);
+    return vec4<f32>(h - k.x * h, -c * h.y, c * h.x);
+}
+
+@fragment
+fn fs_ocean_choppy_spectrum(in: FullscreenOut) -> @location(0) vec4<f32> {
+    let wave = advanced_wave(in.position);
+    let k = wave[0];
+    let h = wave[1];
+    let r = inverse_k(k);
+    // Dx + i Dz = (kz/k - i kx/k) h, and dDx/dx + i dDz/dz = (kx^2/k + i kz^2/k) h.
+    return vec4<f32>(complex_mul(vec2<f32>(k.y * r, -k.x * r), h), complex_mul(vec2<f32>(k.x * k.x * r, k.y * k.y * r), h));
 }
 
 @fragment

@@ -35,8 +35,10 @@ struct Scene {
 @group(0) @binding(0) var<uniform> scene: Scene;
 // Simulation state per cell: (height m, vertical velocity m/s, normal.x, normal.z).
 @group(0) @binding(1) var water_state: texture_2d<f32>;
-// The FFT ocean's surface per texel (height m, dh/dx, dh/dz, 0), tiling the pool (AMBIENT_FFT).
+// The FFT ocean's surface per texel (height m, dh/dx, dh/dz, dDx/dz), tiling the pool
+// (AMBIENT_FFT), and with choppiness its displacement (Dx, Dz m, dDx/dx, dDz/dz) at rest points.
 @group(0) @binding(2) var ambient_map: texture_2d<f32>;
+@group(0) @binding(3) var ambient_displacement: texture_2d<f32>;
 
 @group(1) @binding(0) var caustics_map: texture_2d<f32>;
 @group(1) @binding(1) var tile_texture: texture_2d<f32>;
@@ -139,20 +141,70 @@ fn ambient_at(xz: vec2<f32>) -> vec3<f32> {
     return sum;
 }
 
-// The FFT ocean at xz: bilinear between texel centres of its map, which tiles the pool
-// (indices wrap: the lattice's waves are periodic over the pool's width).
-fn ocean_at(xz: vec2<f32>) -> vec3<f32> {
+// Where a bilinear lookup of the FFT ocean's maps reads at pool point xz: the four texels
+// around it (indices wrap: the lattice's waves are periodic over the pool's width) and the
+// weights.
+struct OceanTaps {
+    i0: vec2<i32>,
+    i1: vec2<i32>,
+    f: vec2<f32>,
+};
+
+fn ocean_taps(xz: vec2<f32>) -> OceanTaps {
     let n = i32(textureDimensions(ambient_map).x);
     let p = (xz / half_width() * 0.5 + 0.5) * f32(n) - 0.5;
     let base = floor(p);
-    let f = p - base;
-    let i0 = (vec2<i32>(base) + n) % n;
-    let i1 = (i0 + 1) % n;
-    let a = textureLoad(ambient_map, vec2<i32>(i0.x, i0.y), 0).xyz;
-    let b = textureLoad(ambient_map, vec2<i32>(i1.x, i0.y), 0).xyz;
-    let c = textureLoad(ambient_map, vec2<i32>(i0.x, i1.y), 0).xyz;
-    let d = textureLoad(ambient_map, vec2<i32>(i1.x, i1.y), 0).xyz;
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    let i0 = ((vec2<i32>(base) % n) + n) % n;
+    return OceanTaps(i0, (i0 + 1) % n, p - base);
+}
+
+fn ocean_surface(t: OceanTaps) -> vec4<f32> {
+    let a = textureLoad(ambient_map, t.i0, 0);
+    let b = textureLoad(ambient_map, vec2<i32>(t.i1.x, t.i0.y), 0);
+    let c = textureLoad(ambient_map, vec2<i32>(t.i0.x, t.i1.y), 0);
+    let d = textureLoad(ambient_map, t.i1, 0);
+    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
+}
+
+fn ocean_displacement(t: OceanTaps) -> vec4<f32> {
+    let a = textureLoad(ambient_displacement, t.i0, 0);
+    let b = textureLoad(ambient_displacement, vec2<i32>(t.i1.x, t.i0.y), 0);
+    let c = textureLoad(ambient_displacement, vec2<i32>(t.i0.x, t.i1.y), 0);
+    let d = textureLoad(ambient_displacement, t.i1, 0);
+    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
+}
+
+// J^-1 v for the choppy surface's Jacobian (xx, xz, zz), its length held to `limit` and its
+// determinant away from 0 (where the sea folds over), so it stays finite (ocean.rs folded_solve).
+fn folded_solve(j: vec3<f32>, v: vec2<f32>, limit: f32) -> vec2<f32> {
+    var det = j.x * j.z - j.y * j.y;
+    det = select(det, 1.0e-6, abs(det) < 1.0e-6);
+    let s = vec2<f32>(j.z * v.x - j.y * v.y, j.x * v.y - j.y * v.x) / det;
+    return s * min(1.0, limit / max(length(s), 1.0e-12));
+}
+
+// The FFT ocean above xz. With choppiness (AMBIENT_CHOPPY, lambda in ambient_header.z) the
+// water at rest point x0 is carried to x0 - lambda D(x0): Newton's method finds the x0
+// carried to xz (J = I - lambda dD/dx0), then the height there and the slopes J^-1 grad h
+// (as ocean.rs `sample`).
+fn ocean_at(xz: vec2<f32>) -> vec3<f32> {
+    if (AMBIENT_CHOPPY) {
+        let lambda = scene.ambient_header.z;
+        var x0 = xz;
+        for (var i = 0; i < CHOP_NEWTON_STEPS; i++) {
+            let taps = ocean_taps(x0);
+            let s = ocean_surface(taps);
+            let d = ocean_displacement(taps);
+            let j = vec3<f32>(1.0 - lambda * d.z, -lambda * s.w, 1.0 - lambda * d.w);
+            x0 -= folded_solve(j, x0 - lambda * d.xy - xz, CHOP_STEP_LIMIT);
+        }
+        let taps = ocean_taps(x0);
+        let s = ocean_surface(taps);
+        let d = ocean_displacement(taps);
+        let j = vec3<f32>(1.0 - lambda * d.z, -lambda * s.w, 1.0 - lambda * d.w);
+        return vec3<f32>(s.x, folded_solve(j, s.yz, CHOP_SLOPE_LIMIT));
+    }
+    return ocean_surface(ocean_taps(xz)).xyz;
 }
 
 // Gerstner waves at rest point x0: the horizontal displacement D (m), the motion's Jacobian
@@ -185,8 +237,8 @@ fn gerstner_point(x0: vec2<f32>) -> GerstnerPoint {
     return g;
 }
 
-// J^-1 v for the symmetric 2x2 Jacobian (xx, xz, zz).
-fn gerstner_solve(j: vec3<f32>, v: vec2<f32>) -> vec2<f32> {
+// J^-1 v for a symmetric 2x2 matrix J given as (xx, xz, zz).
+fn symmetric_solve(j: vec3<f32>, v: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(j.z * v.x - j.y * v.y, j.x * v.y - j.y * v.x) / (j.x * j.z - j.y * j.y);
 }
 
@@ -196,10 +248,10 @@ fn gerstner_at(xz: vec2<f32>) -> vec3<f32> {
     var x0 = xz;
     for (var i = 0; i < GERSTNER_NEWTON_STEPS; i++) {
         let g = gerstner_point(x0);
-        x0 -= gerstner_solve(g.jacobian, x0 - g.displacement - xz);
+        x0 -= symmetric_solve(g.jacobian, x0 - g.displacement - xz);
     }
     let g = gerstner_point(x0);
-    return vec3<f32>(g.height, gerstner_solve(g.jacobian, g.gradient));
+    return vec3<f32>(g.height, symmetric_solve(g.jacobian, g.gradient));
 }
 
 // The simulated state with the ambient waves added: heights summed, slopes summed (the

@@ -19,6 +19,11 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
         let carry = -gerstner_point(xz).displacement;
         xz += carry * clamp((half_width() - abs(xz)) / 0.1, vec2<f32>(0.0), vec2<f32>(1.0));
     }
+    if (AMBIENT_CHOPPY) {
+        // The choppy FFT ocean carries its water the same way (by -lambda D).
+        let carry = -scene.ambient_header.z * ocean_displacement(ocean_taps(xz)).xy;
+        xz += carry * clamp((half_width() - abs(xz)) / 0.1, vec2<f32>(0.0), vec2<f32>(1.0));
+    }
     let height = water_at(xz).x;
     var out: SurfaceOut;
     out.world = vec3<f32>(xz.x, height, xz.y);

@@ -118,6 +118,8 @@ pub struct AmbientSettings {
     /// The FFT ocean's spectrum and lattice points per side (64 or 128).
     pub spectrum: Spectrum,
     pub fft_size: usize,
+    /// The FFT ocean's choppiness λ (see [`Ocean::choppiness`]).
+    pub choppiness: f32,
 }
 
 /// One wave of the surface. Sines: h = 2a(((sin(k·x + p) + 1)/2)^k − mean); modes:
@@ -307,13 +309,14 @@ impl AmbientWaves {
 
     /// The shader's view of the waves at simulated time `t`: per wave (kx, kz, amplitude,
     /// phase), [`MAX_AMBIENT_WAVES`] of them (unused ones have zero amplitude), and
-    /// (count, Gerstner's c = Q / Σ a k, 0, 0).
+    /// (count, Gerstner's c = Q / Σ a k, the FFT's choppiness λ, 0).
     pub fn uniform(&self, t: f64) -> ([[f32; 4]; MAX_AMBIENT_WAVES], [f32; 4]) {
         let mut out = [[0.0; 4]; MAX_AMBIENT_WAVES];
         for ((slot, w), p) in out.iter_mut().zip(&self.waves).zip(self.phases(t)) {
             *slot = [w.kx, w.kz, w.amplitude, p];
         }
-        (out, [self.waves.len().min(MAX_AMBIENT_WAVES) as f32, self.gerstner_c, 0.0, 0.0])
+        let choppiness = self.ocean.as_ref().map_or(0.0, |o| o.choppiness);
+        (out, [self.waves.len().min(MAX_AMBIENT_WAVES) as f32, self.gerstner_c, choppiness, 0.0])
     }
 
     /// The spectrum debug view's image: [`SPECTRUM_IMAGE_SIZE`]² cells of wavevector space,
@@ -360,6 +363,12 @@ impl AmbientWaves {
     }
 }
 
+/// J⁻¹ v for a symmetric 2×2 matrix J given as (xx, xz, zz).
+pub fn symmetric_solve(j: [f32; 3], v: [f32; 2]) -> [f32; 2] {
+    let det = j[0] * j[2] - j[1] * j[1];
+    [(j[2] * v[0] - j[1] * v[1]) / det, (j[0] * v[1] - j[1] * v[0]) / det]
+}
+
 /// The largest Gerstner steepness: at Q = 1 the crests become cusps (infinite slope); a
 /// little below keeps the surface a function and its normals finite.
 pub const MAX_STEEPNESS: f32 = 0.9;
@@ -383,10 +392,7 @@ fn gerstner(waves: &[Wave], phases: &[f32], c: f32, x: f32, z: f32) -> [f32; 3] 
         }
         (d, j, h, g)
     };
-    let solve = |j: [f32; 3], v: [f32; 2]| {
-        let det = j[0] * j[2] - j[1] * j[1];
-        [(j[2] * v[0] - j[1] * v[1]) / det, (j[0] * v[1] - j[1] * v[0]) / det]
-    };
+    let solve = symmetric_solve;
     let (mut x0, mut z0) = (x, z);
     for _ in 0..GERSTNER_NEWTON_STEPS {
         let (d, j, _, _) = at(x0, z0);
@@ -426,7 +432,8 @@ pub fn wgsl_constants() -> String {
     format!(
         "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\
          const AMBIENT_GERSTNER: u32 = {}u;\nconst AMBIENT_FFT: u32 = {}u;\n\
-         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\n\
+         const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\nconst CHOP_NEWTON_STEPS: i32 = {};\n\
+         const CHOP_STEP_LIMIT: f32 = {:?};\nconst CHOP_SLOPE_LIMIT: f32 = {:?};\n\
          const GRAVITY: f32 = {:?};\nconst CAPILLARY_WAVENUMBER: f32 = {:?};\nconst OCEAN_DEPTH: f32 = {:?};\n\
          const OCEAN_HALF_WIDTH: f32 = {:?};\n\
          const AMBIENT_SHORTEST: f32 = {:?};\nconst AMBIENT_LONGEST: f32 = {:?};\n",
@@ -438,6 +445,9 @@ pub fn wgsl_constants() -> String {
         MAX_AMBIENT_WAVES,
         SHARP_SINE_MEAN,
         GERSTNER_NEWTON_STEPS,
+        ocean::CHOP_NEWTON_STEPS,
+        ocean::CHOP_STEP_LIMIT,
+        ocean::CHOP_SLOPE_LIMIT,
         G,
         CAPILLARY_WAVENUMBER,
         DEPTH,
@@ -461,6 +471,7 @@ mod tests {
             steepness: 0.6,
             spectrum: Spectrum::Phillips,
             fft_size: 64,
+            choppiness: 0.0,
         }
     }
 

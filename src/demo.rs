@@ -504,6 +504,7 @@ impl WaterDemo {
             steepness: self.params.get(ParamId::Steepness),
             spectrum: Spectrum::from_param(self.params.get(ParamId::Spectrum)),
             fft_size: self.params.get(ParamId::FftSize) as usize,
+            choppiness: self.params.get(ParamId::Choppiness),
         }
     }
 
@@ -806,14 +807,17 @@ impl WaterDemo {
                 let size = ocean.size as u32;
                 if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
                     let made = GpuOcean::new(device, size);
-                    self.renderer.use_ambient_view(device, &self.water, made.surface());
+                    self.renderer.use_ambient_views(device, &self.water, [made.surface(), made.displacement()]);
                     self.gpu_ocean = Some(made);
                 }
                 if let Some(gpu_ocean) = &mut self.gpu_ocean {
                     gpu_ocean.encode(queue, encoder, ocean, t);
                 }
             } else {
-                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, &ocean.surface(t));
+                let surface = ocean.surface(t);
+                let displacement = (ocean.choppiness > 0.0).then(|| ocean.displacement(t));
+                let maps = [Some(&surface[..]), displacement.as_deref()];
+                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, maps);
             }
         }
         self.renderer.prepare(queue, encoder, &view, &self.water);

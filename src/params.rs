@@ -26,6 +26,7 @@ pub enum ParamId {
     Steepness,
     Spectrum,
     FftSize,
+    Choppiness,
     Fresnel,
     Specular,
     Shininess,
@@ -129,6 +130,7 @@ pub const SHOWN_WHEN: &[(ParamId, ParamId, &[f32])] = &[
     (ParamId::Steepness, ParamId::Ambient, &[3.0]),
     (ParamId::Spectrum, ParamId::Ambient, &[4.0]),
     (ParamId::FftSize, ParamId::Ambient, &[4.0]),
+    (ParamId::Choppiness, ParamId::Ambient, &[4.0]),
 ];
 
 impl ParamId {
@@ -335,6 +337,16 @@ pub const PARAMS: &[ParamSpec] = &[
         control: Control::Choice { values: &[64.0, 128.0], names: &[] },
         default: 64.0,
         help: "Waves per side of the FFT ocean's lattice: 128 adds ripples down to 6 cm.",
+    },
+    ParamSpec {
+        id: ParamId::Choppiness,
+        name: "choppiness",
+        label: "Choppiness",
+        group: "Ambient waves",
+        unit: "",
+        control: slider(0.0, crate::ambient::ocean::MAX_CHOPPINESS, 0.1),
+        default: 0.0,
+        help: "The FFT ocean's water also moves sideways, gathering under the crests (Tessendorf's choppy waves); 0 is the height field alone.",
     },
     ParamSpec {
         id: ParamId::Fresnel,

@@ -3,7 +3,7 @@
 //! against the closed form, the FFT ocean against its direct sum and Parseval, and every model
 //! finite and below the rim at every parameter's extreme.
 
-use wavepool::ambient::ocean::{lattice_k, Ocean};
+use wavepool::ambient::ocean::{lattice_k, Ocean, MAX_CHOPPINESS};
 use wavepool::ambient::{angular_frequency, AmbientModel, AmbientSettings, AmbientWaves, Spectrum, MAX_STEEPNESS};
 use wavepool::scene::{HALF_WIDTH, RIM};
 
@@ -17,6 +17,7 @@ fn settings(model: AmbientModel) -> AmbientSettings {
         steepness: 0.6,
         spectrum: Spectrum::Phillips,
         fft_size: 64,
+        choppiness: 0.0,
     }
 }
 
@@ -49,7 +50,7 @@ fn a_single_sine_and_a_single_fft_wave_travel_at_the_speed_the_dispersion_relati
         let m = (2.0 * HALF_WIDTH / wavelength).round() as usize;
         let mut h0 = vec![[0.0f32; 4]; n * n];
         h0[m] = [0.004, 0.001, 0.0, 0.0];
-        let ocean = Ocean { size: n, h0 };
+        let ocean = Ocean { size: n, h0, choppiness: 0.0 };
         let k_lattice = lattice_k(m, n);
         let expected_lattice = angular_frequency(k_lattice) / k_lattice;
         let fft = measured_phase_speed(|x, t| ocean.sample(x, 0.2, t)[0], dt, 0.5 * wavelength);
@@ -175,8 +176,8 @@ fn every_model_stays_finite_and_below_the_rim_at_every_extreme() {
     for model in [AmbientModel::Sines, AmbientModel::Gerstner, AmbientModel::Modes, AmbientModel::Fft] {
         for wind_speed in [0.5, 10.0] {
             for spread_deg in [0.0, 90.0] {
-                for (steepness, spectrum, fft_size) in
-                    [(0.0, Spectrum::Phillips, 64), (MAX_STEEPNESS, Spectrum::Jonswap, 128)]
+                for (steepness, spectrum, fft_size, choppiness) in
+                    [(0.0, Spectrum::Phillips, 64, 0.0), (MAX_STEEPNESS, Spectrum::Jonswap, 128, MAX_CHOPPINESS)]
                 {
                     let s = AmbientSettings {
                         model,
@@ -187,6 +188,7 @@ fn every_model_stays_finite_and_below_the_rim_at_every_extreme() {
                         steepness,
                         spectrum,
                         fft_size,
+                        choppiness,
                     };
                     let waves = AmbientWaves::new(&s);
                     for i in 0..300 {
@@ -201,4 +203,44 @@ fn every_model_stays_finite_and_below_the_rim_at_every_extreme() {
     }
     println!("highest ambient height at the extremes: {:.1} mm (rim {:.0} mm above rest)", highest * 1e3, RIM * 1e3);
     assert!(highest < 0.5 * RIM);
+}
+
+#[test]
+fn the_choppy_ocean_carries_its_water_sideways_and_its_maps_are_its_waves_summed() {
+    for choppiness in [1.0, MAX_CHOPPINESS] {
+        let ocean =
+            Ocean::new(&AmbientSettings { choppiness, significant_height: 0.03, ..settings(AmbientModel::Fft) }, 64);
+        let t = 3.1;
+        // The surface above the point a rest point is carried to has the rest point's height.
+        let (mut worst, mut moved) = (0.0f32, 0.0f32);
+        for i in 0..64 {
+            let (x0, z0) = ((i % 8) as f32 * 0.23 - 0.8, (i / 8) as f32 * 0.23 - 0.8);
+            let f = ocean.fields_at(x0, z0, t);
+            let (x, z) = (x0 - choppiness * f[3], z0 - choppiness * f[4]);
+            moved = moved.max(((x - x0).powi(2) + (z - z0).powi(2)).sqrt());
+            worst = worst.max((ocean.sample(x, z, t)[0] - f[0]).abs());
+        }
+        // The displacement map against the wave-by-wave sums at texel centres.
+        let map = ocean.displacement(t);
+        let peak = map.iter().map(|v| v[0].abs().max(v[1].abs())).fold(0.0f32, f32::max);
+        let mut off = 0.0f32;
+        for idx in (0..64 * 64).step_by(61) {
+            let cell = 2.0 / 64.0;
+            let (x, z) = (-1.0 + ((idx % 64) as f32 + 0.5) * cell, -1.0 + ((idx / 64) as f32 + 0.5) * cell);
+            let f = ocean.fields_at(x, z, t);
+            for (c, want) in [f[3], f[4], f[5], f[7]].into_iter().enumerate() {
+                off = off.max((map[idx][c] - want).abs());
+            }
+        }
+        println!(
+            "choppiness {choppiness}: water carried up to {:.1} mm; height above the carried point within {worst:.1e} m \
+             of the rest point's; displacement map vs direct sums {:.1e} of its peak {:.2} mm",
+            moved * 1e3,
+            off / peak,
+            peak * 1e3
+        );
+        assert!(moved > 1e-3 * choppiness, "the water does not move sideways ({moved} m)");
+        assert!(worst < 2e-5, "{worst} m off the carried height");
+        assert!(off < 1e-4 * peak, "the displacement map is {off} off");
+    }
 }

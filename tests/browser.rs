@@ -708,7 +708,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
              const names = ['sun_size', 'fresnel', 'specular', 'shininess', 'dispersion', 'absorption_red', 'absorption_green',
                             'absorption_blue', 'scatter_red', 'scatter_green', 'scatter_blue', 'view_colour', 'foam', 'foam_decay',
                             'ambient', 'wind_speed', 'wind_direction', 'wave_height', 'wave_spread', 'steepness',
-                            'spectrum', 'fft_size'];
+                            'spectrum', 'fft_size', 'choppiness'];
              const out = {};
              for (const name of names) {
                const input = root.querySelector(`[name=${name}]`);
@@ -751,12 +751,13 @@ async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgl2() {
 
 /// The page's Ambient waves select switches between the five models: each draws its own
 /// moving water without an error, and the controls show a model's own settings only while it
-/// is chosen (wind with any model, steepness with Gerstner, spectrum and grid with the FFT).
+/// is chosen (wind with any model, steepness with Gerstner, spectrum, grid and choppiness with
+/// the FFT).
 async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) = open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none"), backend).await;
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
     let shown = "const root = document.querySelector('#pool').shadowRoot;
-                 return ['wind_speed', 'wave_spread', 'steepness', 'spectrum', 'fft_size']
+                 return ['wind_speed', 'wave_spread', 'steepness', 'spectrum', 'fft_size', 'choppiness']
                    .filter((n) => !root.querySelector(`[name=${n}]`).closest('.row').hidden
                                   && root.querySelector(`[name=${n}]`).offsetParent !== null)
                    .join(' ');";
@@ -768,7 +769,7 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
         (1, "sines", "wind_speed wave_spread"),
         (3, "gerstner", "wind_speed wave_spread steepness"),
         (2, "modes", "wind_speed"),
-        (4, "fft", "wind_speed wave_spread spectrum fft_size"),
+        (4, "fft", "wind_speed wave_spread spectrum fft_size choppiness"),
     ] {
         browser
             .js(&format!(
@@ -810,6 +811,25 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     println!("{backend}: fft 128² JONSWAP: {:.1} % changed; {state}", changed * 100.0);
     assert!(state["error"].is_null() && state["size"] == 128.0 && state["spectrum"] == 1.0, "{backend}: {state}");
     assert!(changed > 0.01);
+    // Choppy: the second FFT chain and the fixed-point lookups run too, the water still there.
+    let before = after;
+    browser.js("window.demo.set('choppiness', 3); return true;").await;
+    tokio::time::sleep(Duration::from_millis(2500)).await;
+    let choppy = browser.screenshot().await;
+    let state = browser.js("return { error: document.querySelector('#pool').dataset.error || null };").await;
+    tokio::time::sleep(Duration::from_millis(1000)).await;
+    let later = browser.screenshot().await;
+    // A surface lost to NaN shows the bare pool, which does not move.
+    let (changed, moving) = (changed_fraction(&before, &choppy, rect, 8), changed_fraction(&choppy, &later, rect, 8));
+    println!(
+        "{backend}: choppiness 3: {:.1} % changed, {:.1} % moved in 1 s; {state}",
+        changed * 100.0,
+        moving * 100.0
+    );
+    assert!(
+        state["error"].is_null() && changed > 0.01 && moving > 0.01,
+        "{backend}: choppy {changed} / {moving}, {state}"
+    );
     browser.close().await;
 }
 

@@ -16,13 +16,20 @@ pub struct GpuOcean {
     /// epoch changes.
     spectrum: wgpu::Texture,
     uploaded: Option<(Vec<[f32; 4]>, f64)>,
-    /// The passes' targets; every frame's chain starts afresh and ends in texture 1.
-    fields: PingPong,
-    surface: wgpu::TextureView,
     time: wgpu::Buffer,
-    spectrum_pass: FullscreenPass,
     spectrum_groups: [wgpu::BindGroup; 2],
     stage_pass: FullscreenPass,
+    /// The surface's chain (height, slopes, ∂Dx/∂z) and the displacement's (Dx, Dz, ∂Dx/∂x,
+    /// ∂Dz/∂z; run only with choppiness).
+    chains: [Chain; 2],
+}
+
+/// One inverse FFT: its spectrum pass, its targets and its stages' bind groups.
+struct Chain {
+    spectrum_pass: FullscreenPass,
+    /// The passes' targets; every frame's chain starts afresh and ends in texture 1.
+    fields: PingPong,
+    output: wgpu::TextureView,
     /// Per stage (rows first, then columns), its bind groups reading texture 0 or 1.
     stage_groups: Vec<[wgpu::BindGroup; 2]>,
 }
@@ -46,8 +53,6 @@ impl GpuOcean {
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
         let spectrum = gpu::texture_2d(device, "ocean spectrum", size, size, 1, 1, FORMAT, usage);
         let spectrum_view = spectrum.create_view(&Default::default());
-        let fields = PingPong::new(device, "ocean fields", size, size, FORMAT, true);
-        let views = [0, 1].map(|i| fields.textures()[i].create_view(&Default::default()));
         let group = |buffer: &wgpu::Buffer, view: &wgpu::TextureView| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("ocean fft"),
@@ -60,33 +65,28 @@ impl GpuOcean {
         };
         let time = gpu::uniform_buffer(device, "ocean time", &[0.0f32; 4]);
         let spectrum_groups = [group(&time, &spectrum_view), group(&time, &spectrum_view)];
-        let mut stage_groups = Vec::new();
+        let mut stage_buffers = Vec::new();
         for axis in [0.0f32, 1.0] {
             let mut half = 1;
             while half < size {
-                let buffer = gpu::uniform_buffer(device, "ocean stage", &[half as f32, axis, 0.0, 0.0]);
-                stage_groups.push([group(&buffer, &views[0]), group(&buffer, &views[1])]);
+                stage_buffers.push(gpu::uniform_buffer(device, "ocean stage", &[half as f32, axis, 0.0, 0.0]));
                 half *= 2;
             }
         }
         let target = || FullscreenTarget { format: FORMAT, blend: None, depth: None };
         let parts = [gpu::wgsl::AMBIENT_FFT];
-        let spectrum_pass =
-            FullscreenPass::new(device, "ocean spectrum", &parts, "fs_ocean_spectrum", &[&layout], target());
+        let chain = |label: &str, entry: &str| {
+            let fields = PingPong::new(device, label, size, size, FORMAT, true);
+            let views = [0, 1].map(|i| fields.textures()[i].create_view(&Default::default()));
+            let stage_groups = stage_buffers.iter().map(|b| [group(b, &views[0]), group(b, &views[1])]).collect();
+            let spectrum_pass = FullscreenPass::new(device, label, &parts, entry, &[&layout], target());
+            let [_, output] = views;
+            Chain { spectrum_pass, fields, output, stage_groups }
+        };
+        let chains =
+            [chain("ocean surface", "fs_ocean_spectrum"), chain("ocean displacement", "fs_ocean_choppy_spectrum")];
         let stage_pass = FullscreenPass::new(device, "ocean fft stage", &parts, "fs_ocean_stage", &[&layout], target());
-        let [_, surface] = views;
-        Self {
-            size,
-            spectrum,
-            uploaded: None,
-            fields,
-            surface,
-            time,
-            spectrum_pass,
-            spectrum_groups,
-            stage_pass,
-            stage_groups,
-        }
+        Self { size, spectrum, uploaded: None, time, spectrum_groups, stage_pass, chains }
     }
 
     /// Lattice points per side.
@@ -95,7 +95,9 @@ impl GpuOcean {
     }
 
     /// Encodes the passes that make `ocean`'s surface at simulated time `t` (s) in
-    /// [`GpuOcean::surface`]: per texel height (m), ∂h/∂x, ∂h/∂z and 0, as `Ocean::surface`.
+    /// [`GpuOcean::surface`] (per texel height (m), ∂h/∂x, ∂h/∂z, ∂Dx/∂z, as `Ocean::surface`)
+    /// and, with choppiness, its displacement in [`GpuOcean::displacement`] (as
+    /// `Ocean::displacement`).
     pub fn encode(&mut self, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, ocean: &Ocean, t: f64) {
         let epoch = epoch_of(t);
         let fresh = self.uploaded.as_ref().is_some_and(|(h0, at)| *at == epoch && *h0 == ocean.h0);
@@ -115,21 +117,30 @@ impl GpuOcean {
             self.uploaded = Some((ocean.h0.clone(), epoch));
         }
         queue.write_buffer(&self.time, 0, bytemuck::cast_slice(&[0.0f32, 0.0, (t - epoch) as f32, 0.0]));
-        self.fields.restart();
-        self.fields.run(encoder, &self.spectrum_pass, &self.spectrum_groups);
-        for groups in &self.stage_groups {
-            self.fields.run(encoder, &self.stage_pass, groups);
+        let chains = if ocean.choppiness > 0.0 { &mut self.chains[..] } else { &mut self.chains[..1] };
+        for chain in chains {
+            chain.fields.restart();
+            chain.fields.run(encoder, &chain.spectrum_pass, &self.spectrum_groups);
+            for groups in &chain.stage_groups {
+                chain.fields.run(encoder, &self.stage_pass, groups);
+            }
+            debug_assert_eq!(chain.fields.current(), 1);
         }
-        debug_assert_eq!(self.fields.current(), 1);
     }
 
     /// The surface the last [`GpuOcean::encode`] made (the ambient map the renderer reads).
     pub fn surface(&self) -> &wgpu::TextureView {
-        &self.surface
+        &self.chains[0].output
     }
 
-    /// The texture behind [`GpuOcean::surface`] (for tests to read back).
-    pub fn surface_texture(&self) -> &wgpu::Texture {
-        &self.fields.textures()[1]
+    /// The displacement the last [`GpuOcean::encode`] with choppiness made.
+    pub fn displacement(&self) -> &wgpu::TextureView {
+        &self.chains[1].output
+    }
+
+    /// The textures behind [`GpuOcean::surface`] and [`GpuOcean::displacement`] (for tests
+    /// to read back).
+    pub fn output_textures(&self) -> [&wgpu::Texture; 2] {
+        [&self.chains[0].fields.textures()[1], &self.chains[1].fields.textures()[1]]
     }
 }

@@ -46,7 +46,21 @@ pub struct Ocean {
     /// Per lattice point, row-major with index (m mod N, n mod N) for k = (π/W)(m, n):
     /// h0(k) and conj(h0(−k)), the amplitudes at t = 0 (m).
     pub h0: Vec<[f32; 4]>,
+    /// Choppiness λ: the water at rest point x₀ is carried to x₀ − λ D(x₀), with
+    /// D = Σ −i k̂ h(k) e^{i k·x} (for one wave a cos(k·x): D = a k̂ sin(k·x), so crests sharpen
+    /// as Gerstner's do). 0: the height field alone.
+    pub choppiness: f32,
 }
+
+/// The largest choppiness: beyond about this the steepest parts of a 3 cm sea fold over.
+pub const MAX_CHOPPINESS: f32 = 3.0;
+/// Newton steps that find the rest point of the choppy surface above a point
+/// (x₀ − λ D(x₀) = x), each at most [`CHOP_STEP_LIMIT`] long.
+pub const CHOP_NEWTON_STEPS: usize = 4;
+/// The longest Newton step (m), and the steepest slope the choppy surface reports: where the
+/// sea folds over (det J ≤ 0) the solve would run off; this keeps every number finite.
+pub const CHOP_STEP_LIMIT: f32 = 0.05;
+pub const CHOP_SLOPE_LIMIT: f32 = 4.0;
 
 /// Wavenumber (rad/m) of lattice index `i` (0..N) along one axis: indices past N/2 are negative.
 pub fn lattice_k(i: usize, size: usize) -> f32 {
@@ -133,7 +147,7 @@ impl Ocean {
                 }
             }
         }
-        Self { size, h0 }
+        Self { size, h0, choppiness: settings.choppiness.clamp(0.0, MAX_CHOPPINESS) }
     }
 
     /// The number of lattice points with a wave on them.
@@ -176,44 +190,95 @@ impl Ocean {
             .collect()
     }
 
-    /// The spectrum of the fields the renderer reads at time `t` (see [`advance`]).
-    pub fn fields_spectrum(&self, t: f64) -> Vec<[f32; 4]> {
+    /// The spectrum of the fields the renderer reads at time `t`: the surface's (see
+    /// [`advance`]), or with `choppy` the displacement's (see [`advance_choppy`]).
+    pub fn fields_spectrum(&self, t: f64, choppy: bool) -> Vec<[f32; 4]> {
         let n = self.size;
         let epoch = epoch_of(t);
         let dt = (t - epoch) as f32;
+        let step = if choppy { advance_choppy } else { advance };
         self.epoch_spectrum(epoch)
             .into_iter()
             .enumerate()
-            .map(|(idx, a)| advance(a, lattice_k(idx % n, n), lattice_k(idx / n, n), dt))
+            .map(|(idx, a)| step(a, lattice_k(idx % n, n), lattice_k(idx / n, n), dt))
             .collect()
     }
 
     /// The surface on the lattice's texels at time `t`: per texel (row-major, x along rows,
-    /// centres at −W + (i + ½)Δ) the height (m) and slopes ∂h/∂x, ∂h/∂z, and 0.
+    /// centres at −W + (i + ½)Δ) the height (m), slopes ∂h/∂x, ∂h/∂z and ∂Dx/∂z.
     pub fn surface(&self, t: f64) -> Vec<[f32; 4]> {
-        let fields = inverse_fft_2d(self.fields_spectrum(t), self.size);
-        fields.into_iter().map(|f| [f[0], f[1], f[2], 0.0]).collect()
+        inverse_fft_2d(self.fields_spectrum(t, false), self.size)
     }
 
-    /// Height (m) and slopes at a point (x, z) (m), summed wave by wave (no grid): what the
-    /// floating bodies feel, and the tests' closed form.
-    pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
+    /// The displacement on the same texels: Dx, Dz (m) and ∂Dx/∂x, ∂Dz/∂z.
+    pub fn displacement(&self, t: f64) -> Vec<[f32; 4]> {
+        inverse_fft_2d(self.fields_spectrum(t, true), self.size)
+    }
+
+    /// Every field at a rest point (x, z), summed wave by wave: h, ∂h/∂x, ∂h/∂z, Dx, Dz,
+    /// ∂Dx/∂x, ∂Dx/∂z, ∂Dz/∂z. (A field with spectrum m(k) h(k) is Re(m h e^{ik·x}).)
+    pub fn fields_at(&self, x: f32, z: f32, t: f64) -> [f32; 8] {
         let n = self.size;
-        let mut out = [0.0f32; 3];
+        let mut out = [0.0f32; 8];
         for (idx, a) in self.h0.iter().enumerate() {
             if a.iter().all(|v| *v == 0.0) {
                 continue;
             }
             let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
-            let h = self.amplitude(idx, t);
-            let turn = [(kx * x + kz * z).cos(), (kx * x + kz * z).sin()];
-            let v = mul(h, turn);
-            // Re(h e^{ik·x}), Re(i k h e^{ik·x}) = −k Im(...).
-            out[0] += v[0];
-            out[1] -= kx * v[1];
-            out[2] -= kz * v[1];
+            let k = (kx * kx + kz * kz).sqrt();
+            let v = mul(self.amplitude(idx, t), [(kx * x + kz * z).cos(), (kx * x + kz * z).sin()]);
+            let terms = [
+                v[0],
+                -kx * v[1],
+                -kz * v[1],
+                kx / k * v[1],
+                kz / k * v[1],
+                kx * kx / k * v[0],
+                kx * kz / k * v[0],
+                kz * kz / k * v[0],
+            ];
+            for (o, t) in out.iter_mut().zip(terms) {
+                *o += t;
+            }
         }
         out
+    }
+
+    /// Height (m) and slopes at a point (x, z) (m), summed wave by wave (no grid): what the
+    /// floating bodies feel, and the tests' closed form. With choppiness, the rest point
+    /// carried to (x, z) is found first (the shader's `ocean_at` takes the same steps on its
+    /// maps) and the slopes are J⁻¹∇₀h, J = I − λ ∂D/∂x₀.
+    pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
+        let lambda = self.choppiness;
+        if lambda <= 0.0 {
+            let f = self.fields_at(x, z, t);
+            return [f[0], f[1], f[2]];
+        }
+        let jacobian = |f: &[f32; 8]| [1.0 - lambda * f[5], -lambda * f[6], 1.0 - lambda * f[7]];
+        let (mut x0, mut z0) = (x, z);
+        for _ in 0..CHOP_NEWTON_STEPS {
+            let f = self.fields_at(x0, z0, t);
+            let step = folded_solve(jacobian(&f), [x0 - lambda * f[3] - x, z0 - lambda * f[4] - z], CHOP_STEP_LIMIT);
+            (x0, z0) = (x0 - step[0], z0 - step[1]);
+        }
+        let f = self.fields_at(x0, z0, t);
+        let slope = folded_solve(jacobian(&f), [f[1], f[2]], CHOP_SLOPE_LIMIT);
+        [f[0], slope[0], slope[1]]
+    }
+}
+
+/// J⁻¹ v for the choppy surface's symmetric Jacobian J = (xx, xz, zz), its length held to
+/// `limit` and its determinant away from 0 (where the sea folds over), so it stays finite.
+/// (scene.wgsl `folded_solve` is the same.)
+pub fn folded_solve(j: [f32; 3], v: [f32; 2], limit: f32) -> [f32; 2] {
+    let det = j[0] * j[2] - j[1] * j[1];
+    let det = if det.abs() < 1e-6 { 1e-6 } else { det };
+    let s = [(j[2] * v[0] - j[1] * v[1]) / det, (j[0] * v[1] - j[1] * v[0]) / det];
+    let length = (s[0] * s[0] + s[1] * s[1]).sqrt();
+    if length > limit {
+        [s[0] * limit / length, s[1] * limit / length]
+    } else {
+        s
     }
 }
 
@@ -231,10 +296,37 @@ pub fn epoch_of(t: f64) -> f64 {
 /// whose inverse FFTs are h + i ∂h/∂x and ∂h/∂z (real fields come out as the real and
 /// imaginary parts).
 pub fn advance(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
+    let h = advanced(a, kx, kz, dt);
+    // The second signal also carries ∂Dx/∂z (spectrum (kx kz / k) h) in its imaginary part.
+    let c = kz + kx * kz * inverse_k(kx, kz);
+    [h[0] - kx * h[0], h[1] - kx * h[1], -c * h[1], c * h[0]]
+}
+
+/// The choppy spectrum pass (`fs_ocean_choppy_spectrum`): Dx + i Dz and ∂Dx/∂x + i ∂Dz/∂z,
+/// from Dx = −i (kx/k) h, Dz = −i (kz/k) h and their derivatives (kx²/k) h, (kz²/k) h.
+pub fn advance_choppy(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
+    let h = advanced(a, kx, kz, dt);
+    let r = inverse_k(kx, kz);
+    let d = mul([kz * r, -kx * r], h);
+    let j = mul([kx * kx * r, kz * kz * r], h);
+    [d[0], d[1], j[0], j[1]]
+}
+
+/// h = a₀ e^{−iω dt} + a₁ e^{iω dt}.
+fn advanced(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> Complex {
     let phase = angular_frequency((kx * kx + kz * kz).sqrt()) * dt;
     let turn = [phase.cos(), phase.sin()];
-    let h = add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn));
-    [h[0] - kx * h[0], h[1] - kx * h[1], -kz * h[1], kz * h[0]]
+    add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn))
+}
+
+/// 1/k, and 0 at k = 0 (where there is no wave).
+fn inverse_k(kx: f32, kz: f32) -> f32 {
+    let k = (kx * kx + kz * kz).sqrt();
+    if k > 0.0 {
+        1.0 / k
+    } else {
+        0.0
+    }
 }
 
 /// One stage of Stockham's radix-2 inverse FFT along a line of `n` values, as a gather:

@@ -63,8 +63,15 @@ pub struct AmbientView {
     pub model: AmbientModel,
     /// Per wave (kx, kz in rad/m, amplitude in m, phase now).
     pub waves: [[f32; 4]; MAX_AMBIENT_WAVES],
-    /// (waves, Gerstner's c, 0, 0); see `AmbientWaves::uniform`.
+    /// (waves, Gerstner's c, the FFT's choppiness, 0); see `AmbientWaves::uniform`.
     pub header: [f32; 4],
+}
+
+impl AmbientView {
+    /// Whether the FFT ocean carries its water sideways (reads the displacement map).
+    pub fn choppy(&self) -> bool {
+        self.model == AmbientModel::Fft && self.header[2] > 0.0
+    }
 }
 
 /// How the water surface reflects (see optics.rs).
@@ -255,10 +262,11 @@ pub struct Renderer {
     textures_layout: wgpu::BindGroupLayout,
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
-    /// The map the FFT ocean's surface is read from (height, slopes per texel): the GPU
-    /// ocean's output, or `cpu_ambient` filled from the CPU; a 1 x 1 `cpu_ambient` until then.
-    ambient_view: wgpu::TextureView,
-    cpu_ambient: (wgpu::Texture, wgpu::TextureView),
+    /// The maps the FFT ocean is read from (its surface, and its displacement with
+    /// choppiness): the GPU ocean's outputs, or `cpu_ambient` filled from the CPU; a 1 x 1
+    /// `cpu_ambient` until then.
+    ambient_views: [wgpu::TextureView; 2],
+    cpu_ambient: [(wgpu::Texture, wgpu::TextureView); 2],
     textures_group: wgpu::BindGroup,
     /// What `textures_group` binds besides the caustics map (kept to bind a resized map).
     scene_textures: SceneTextures,
@@ -268,7 +276,7 @@ pub struct Renderer {
     /// The scene's pipelines per feature set drawn so far (see [`Features`]).
     variants: HashMap<Features, ScenePipelines>,
     /// The debug view's pass per texture shown so far.
-    debug_passes: HashMap<(DebugTexture, AmbientModel), FullscreenPass>,
+    debug_passes: HashMap<(DebugTexture, AmbientModel, bool), FullscreenPass>,
     /// The water surface, both sides in one draw.
     grid: Mesh,
     pool_mesh: Mesh,
@@ -405,7 +413,7 @@ fn water_bind_groups(
     layout: &wgpu::BindGroupLayout,
     uniforms: &wgpu::Buffer,
     water: &HeightField,
-    ambient_map: &wgpu::TextureView,
+    ambient: &[wgpu::TextureView; 2],
 ) -> [wgpu::BindGroup; 2] {
     water.state().bind_groups(|view| {
         device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -414,7 +422,8 @@ fn water_bind_groups(
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(view) },
-                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(ambient_map) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&ambient[0]) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&ambient[1]) },
             ],
         })
     })
@@ -444,6 +453,12 @@ impl Renderer {
                 ),
                 gpu::texture_entry(
                     2,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: false },
+                    wgpu::TextureViewDimension::D2,
+                ),
+                gpu::texture_entry(
+                    3,
                     vis,
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
@@ -494,8 +509,9 @@ impl Renderer {
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
-        let cpu_ambient = ambient_map(device, 1);
-        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &cpu_ambient.1);
+        let cpu_ambient = [ambient_map(device, 1), ambient_map(device, 1)];
+        let ambient_views = [cpu_ambient[0].1.clone(), cpu_ambient[1].1.clone()];
+        let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &ambient_views);
         let (caustics_format, _) = settings.caustics_format();
         let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
@@ -551,7 +567,7 @@ impl Renderer {
             water_layout,
             textures_layout,
             water_groups,
-            ambient_view: cpu_ambient.1.clone(),
+            ambient_views,
             cpu_ambient,
             textures_group,
             scene_textures,
@@ -593,11 +609,12 @@ impl Renderer {
     }
 
     /// The debug view's pass for `texture`, seeing the water with `ambient` waves added.
-    fn debug_pass(&mut self, device: &wgpu::Device, texture: DebugTexture, ambient: AmbientModel) -> &FullscreenPass {
+    fn debug_pass(&mut self, device: &wgpu::Device, texture: DebugTexture, ambient: AmbientView) -> &FullscreenPass {
         let layouts = [&self.water_layout, &self.textures_layout];
         let format = self.settings.target_format;
-        self.debug_passes.entry((texture, ambient)).or_insert_with(|| {
-            let features = Features { ambient, ..Features::default() };
+        let key = (texture, ambient.model, ambient.choppy());
+        self.debug_passes.entry(key).or_insert_with(|| {
+            let features = Features { ambient: ambient.model, choppy: ambient.choppy(), ..Features::default() };
             let constants = format!("{}const DEBUG_TEXTURE: i32 = {};\n", features.wgsl(), texture as i32);
             FullscreenPass::new(
                 device,
@@ -620,43 +637,49 @@ impl Renderer {
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
-        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_view);
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_views);
     }
 
-    /// Reads the FFT ocean's surface from `view` (the GPU ocean's output) from now on.
-    pub fn use_ambient_view(&mut self, device: &wgpu::Device, water: &HeightField, view: &wgpu::TextureView) {
-        self.ambient_view = view.clone();
-        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_view);
+    /// Reads the FFT ocean's surface and displacement from `views` (the GPU ocean's outputs)
+    /// from now on.
+    pub fn use_ambient_views(&mut self, device: &wgpu::Device, water: &HeightField, views: [&wgpu::TextureView; 2]) {
+        self.ambient_views = views.map(|v| v.clone());
+        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_views);
     }
 
-    /// Copies the FFT ocean's surface (`size`² texels of height and slopes, from
-    /// `AmbientWaves::surface_map`) into the ambient map the water is read with (remade, and
-    /// `water`'s groups rebound, when the size changes).
+    /// Copies the FFT ocean's surface and, with choppiness, its displacement (`size`² texels
+    /// each, from `Ocean::surface` and `Ocean::displacement`) into the ambient maps the water
+    /// is read with (remade, and `water`'s groups rebound, when the size changes).
     pub fn upload_ambient(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         water: &HeightField,
         size: u32,
-        texels: &[[f32; 4]],
+        maps: [Option<&[[f32; 4]]>; 2],
     ) {
-        if self.cpu_ambient.0.width() != size || self.ambient_view != self.cpu_ambient.1 {
-            if self.cpu_ambient.0.width() != size {
-                self.cpu_ambient = ambient_map(device, size);
+        let cpu_views = [self.cpu_ambient[0].1.clone(), self.cpu_ambient[1].1.clone()];
+        if self.cpu_ambient[0].0.width() != size || self.ambient_views != cpu_views {
+            if self.cpu_ambient[0].0.width() != size {
+                self.cpu_ambient = [ambient_map(device, size), ambient_map(device, size)];
             }
-            self.use_ambient_view(device, water, &self.cpu_ambient.1.clone());
+            let views = [self.cpu_ambient[0].1.clone(), self.cpu_ambient[1].1.clone()];
+            self.use_ambient_views(device, water, [&views[0], &views[1]]);
         }
-        queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &self.cpu_ambient.0,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            bytemuck::cast_slice(texels),
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 16), rows_per_image: None },
-            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-        );
+        for (map, texels) in self.cpu_ambient.iter().zip(maps) {
+            let Some(texels) = texels else { continue };
+            queue.write_texture(
+                wgpu::TexelCopyTextureInfo {
+                    texture: &map.0,
+                    mip_level: 0,
+                    origin: wgpu::Origin3d::ZERO,
+                    aspect: wgpu::TextureAspect::All,
+                },
+                bytemuck::cast_slice(texels),
+                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 16), rows_per_image: None },
+                wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+            );
+        }
     }
 
     /// Side (texels) of the caustics map for a frame drawn at `render_scale`: the map's texels
@@ -829,12 +852,12 @@ impl Renderer {
             self.draw_scene(device, encoder, target, size, view, water);
         }
         if let Some(debug) = view.debug {
-            self.debug_pass(device, debug.texture, view.ambient.model);
+            self.debug_pass(device, debug.texture, view.ambient);
             let mut pass = gpu::colour_pass(encoder, "debug view", target, wgpu::LoadOp::Load);
             let [x, y, w, h] = debug.viewport(size);
             pass.set_viewport(x, y, w, h, 0.0, 1.0);
             let water_group = &self.water_groups[water.state().current()];
-            self.debug_passes[&(debug.texture, view.ambient.model)]
+            self.debug_passes[&(debug.texture, view.ambient.model, view.ambient.choppy())]
                 .draw(&mut pass, &[water_group, &self.textures_group]);
         }
     }

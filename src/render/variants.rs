@@ -35,6 +35,8 @@ pub struct Features {
     pub dispersion: bool,
     /// The ambient waves added to the simulated surface.
     pub ambient: AmbientModel,
+    /// The FFT ocean carries its water sideways (choppiness above 0).
+    pub choppy: bool,
     /// Foam on the surface.
     pub foam: bool,
 }
@@ -52,19 +54,20 @@ impl Features {
             view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
             dispersion: view.optics.dispersion > 0.0,
             ambient: view.ambient.model,
+            choppy: view.ambient.choppy(),
             foam: view.foam,
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
-    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `HAS_FOAM`).
+    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`).
     pub fn wgsl(&self) -> String {
         format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
-             const AMBIENT_MODEL: u32 = {}u;\nconst HAS_FOAM: bool = {};\n",
+             const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n",
             self.sphere,
             self.duck,
             self.caustics,
@@ -75,6 +78,7 @@ impl Features {
             self.view_colour,
             self.dispersion,
             self.ambient as u32,
+            self.choppy,
             self.foam
         )
     }
