@@ -40,6 +40,9 @@ const START_DUCK_XZ: Vec2 = Vec2::new(0.35, -0.3);
 const START_DUCK_TURN: f32 = 2.4;
 /// Points on the ring around each body where the water is sampled for its buoyancy.
 const PROBES_PER_BODY: usize = 8;
+/// Radius (m) of the ring on which a body feels the ambient waves (about the duck's and a
+/// small sphere's waterline).
+const AMBIENT_RING_RADIUS: f32 = 0.05;
 
 /// The things that float in the pool.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -541,10 +544,24 @@ impl WaterDemo {
                 let k = id as usize * PROBES_PER_BODY;
                 if let Some(heights) = samples.heights.get(k..k + PROBES_PER_BODY) {
                     let points = &samples.points[k..k + PROBES_PER_BODY];
-                    let heights: Vec<f32> =
-                        heights.iter().zip(points).map(|(h, p)| h + self.ambient.sample(p.x, p.y, t)[0]).collect();
                     let radius = points[0].distance(points[PROBES_PER_BODY / 2]) / 2.0;
-                    planes[id as usize] = WaterPlane::from_ring(&heights, radius);
+                    planes[id as usize] = WaterPlane::from_ring(heights, radius);
+                    if self.ambient.model != AmbientModel::None {
+                        // The ambient waves on a ring of their own, at the body's waterline:
+                        // the simulated water's ring keeps clear of the ripples the body
+                        // makes itself (up to 0.3 m), which would average short ambient waves
+                        // away or even turn them over (a 0.5 m wave on a 0.3 m ring).
+                        let centre = points.iter().fold(Vec2::ZERO, |a, p| a + *p) / PROBES_PER_BODY as f32;
+                        let ring: Vec<f32> = (0..PROBES_PER_BODY)
+                            .map(|i| {
+                                let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
+                                let p = centre + AMBIENT_RING_RADIUS * Vec2::new(a.cos(), a.sin());
+                                self.ambient.sample(p.x, p.y, t)[0]
+                            })
+                            .collect();
+                        let waves = WaterPlane::from_ring(&ring, AMBIENT_RING_RADIUS);
+                        planes[id as usize] = planes[id as usize].plus(waves);
+                    }
                 }
             }
         }

@@ -83,6 +83,16 @@ impl WaterPlane {
     }
 }
 
+impl WaterPlane {
+    /// This plane with another surface's added: levels summed, slopes summed (the ambient
+    /// waves over the simulated water).
+    pub fn plus(self, other: WaterPlane) -> Self {
+        let slope = |p: &WaterPlane| Vec2::new(-p.normal.x, -p.normal.z) / p.normal.y.max(1e-3);
+        let sum = (slope(&self) + slope(&other)).clamp_length_max(1.0);
+        Self { level: self.level + other.level, normal: Vec3::new(-sum.x, 1.0, -sum.y).normalize() }
+    }
+}
+
 /// Volume of the unit ball on the side u·m̂ < `delta` of a plane at signed distance `delta`
 /// from its centre, and the first moment of that part along m̂ (its centroid times volume).
 fn unit_ball_below(delta: f32) -> (f32, f32) {
