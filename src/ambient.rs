@@ -355,12 +355,6 @@ impl AmbientWaves {
         }
         amplitude.iter().map(|&a| if a > 0.0 { a.log10() } else { -12.0 }).collect()
     }
-
-    /// The FFT ocean's surface on its lattice at time `t` (see [`Ocean::surface`]), for the
-    /// renderer's ambient map; `None` for the other models.
-    pub fn surface_map(&self, t: f64) -> Option<Vec<[f32; 4]>> {
-        self.ocean.as_ref().map(|o| o.surface(t))
-    }
 }
 
 /// J⁻¹ v for a symmetric 2×2 matrix J given as (xx, xz, zz).
