@@ -22,7 +22,5 @@ fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @lo
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
-    var colour = duck_colour(in.world, normalize(in.normal), in.colour, view);
-    colour = through_water(colour, scene.eye.xyz, in.world);
-    return finish(colour);
+    return seen_directly(duck_colour(in.world, normalize(in.normal), in.colour, view), in.world);
 }

@@ -21,7 +21,6 @@ fn vs_pool(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> 
 fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
-    var colour = pool_colour(in.world, n, albedo);
-    colour = through_water(colour, scene.eye.xyz, in.world);
-    return finish(colour);
+    let colour = pool_colour(in.world, n, albedo);
+    return seen_directly(colour, in.world);
 }

@@ -30,6 +30,8 @@ struct Scene {
     ambient_header: vec4<f32>, // x waves in ambient_waves, y Gerstner's c = Q / sum(a k)
     // Per ambient wave (ambient.rs): kx, kz (rad/m), amplitude (m), phase at this frame's time.
     ambient_waves: array<vec4<f32>, MAX_AMBIENT_WAVES>,
+    flat: vec4<f32>,           // flat water (flat.rs): x plane height (m), y largest texture shift
+                               // (fraction of the screen), z dUdV scroll (tiles), w soft edge (m)
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -52,6 +54,9 @@ struct Scene {
 // The ambient waves' spectrum for the debug view: log10 amplitude (m) per wavevector cell
 // (ambient.rs spectrum_image).
 @group(1) @binding(7) var ambient_spectrum: texture_2d<f32>;
+// The flat water's dUdV map (flat.rs dudv_map): slopes dH/du, dH/dv in red and green (0.5 flat,
+// 0 and 1 the largest, DUDV_SLOPE), tiling DUDV_TILES times across the pool.
+@group(1) @binding(8) var dudv_map: texture_2d<f32>;
 
 const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
 const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
@@ -269,6 +274,20 @@ fn water_normal(state: vec4<f32>) -> vec3<f32> {
     return vec3<f32>(t.x, sqrt(max(1.0 - dot(t, t), 0.0)), t.y);
 }
 
+// The flat water's normal at xz (m): the simulated surface's (FLAT_RIPPLES), or the dUdV
+// map's read as seed 000 does (its own distortion, read at a scrolled place, offsets where it is
+// read again, so the pattern churns instead of sliding).
+fn flat_normal(xz: vec2<f32>) -> vec3<f32> {
+    if (FLAT_DISTORTION == FLAT_RIPPLES) {
+        return water_normal(water_at(xz));
+    }
+    let t = xz * (DUDV_TILES / (2.0 * half_width()));
+    let scroll = scene.flat.z;
+    let first = textureSampleLevel(dudv_map, repeat_sampler, t + vec2<f32>(scroll, 0.0), 0.0).rg * 2.0 - 1.0;
+    let s = textureSampleLevel(dudv_map, repeat_sampler, t + 0.1 * first + vec2<f32>(0.0, scroll), 0.0).rg * 2.0 - 1.0;
+    return normalize(vec3<f32>(-s.x * DUDV_SLOPE, 1.0, -s.y * DUDV_SLOPE));
+}
+
 // Where the flat-surface refracted sunbeam through p entered the water (xz, m): the
 // caustics map is indexed by this point.
 fn light_entry(p: vec3<f32>) -> vec2<f32> {
@@ -403,6 +422,14 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     // Caustics off: a calm surface, with the same rim and sphere shadows.
     let surface = vec3<f32>(entry.x, 0.0, entry.y);
     var light = rim_visibility(surface);
+    if (FLAT_CAUSTICS) {
+        // Seed 000's fake caustics: follow the calm refracted sunbeam back up through the
+        // flat water's normal there; where it leaves towards the sun the floor is bright, where
+        // the normal tilts it away, darker. No focusing: a highlight pattern, not caustics.
+        let n = flat_normal(entry);
+        let to_source = refract(-scene.refracted_sun.xyz, -n, IOR_WATER / IOR_AIR);
+        light *= 0.6 + 0.9 * pow(max(dot(to_source, scene.sun.xyz), 0.0), 1500.0);
+    }
     if (with_sphere_shadow && (HAS_SPHERE || HAS_DUCK)) {
         let r = scene.refracted_sun.xyz;
         light *= objects_visibility(surface, r, distance(surface, p));
@@ -677,6 +704,23 @@ fn as_displayed(v: vec3<f32>) -> vec4<f32> {
         return vec4<f32>(g, 1.0);
     }
     return vec4<f32>(srgb_to_linear(g), 1.0);
+}
+
+// A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to
+// the target: dimmed by the water between it and the eye. In the flat water's textures
+// (CLIP_SIDE, flat.rs) only the side of the water plane the texture keeps; the refraction
+// texture holds the water path in alpha (m / FLAT_PATH_SCALE), the reflection 0 (the sky, 1,
+// is where the sun's highlight may show).
+fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
+    var out = finish(through_water(colour, scene.eye.xyz, p));
+    if (CLIP_SIDE != 0) {
+        if (f32(CLIP_SIDE) * (p.y - scene.flat.x) < 0.0) {
+            discard;
+        }
+        let path = water_path(scene.eye.xyz, p, half_width(), depth()) / FLAT_PATH_SCALE;
+        out.a = select(0.0, min(path, 1.0), CLIP_SIDE < 0);
+    }
+    return out;
 }
 
 fn finish(c: vec3<f32>) -> vec4<f32> {

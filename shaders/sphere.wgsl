@@ -16,7 +16,5 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
-    var colour = sphere_colour(in.world);
-    colour = through_water(colour, scene.eye.xyz, in.world);
-    return finish(colour);
+    return seen_directly(sphere_colour(in.world), in.world);
 }

@@ -12,6 +12,7 @@ use crate::optics::{FresnelModel, SpecularModel};
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::quality::{ResolutionGovernor, StepGovernor};
+use crate::render::flat::{Distortion, FlatCaustics, FlatView, RenderMode};
 use crate::render::{AmbientView, DebugTexture, DebugView, Optics, RenderSettings, Renderer, View, REFLECTANCE_VIEW};
 use crate::scene::{self, Sphere};
 use crate::sim::{
@@ -152,10 +153,24 @@ pub enum Key {
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Drag {
     None,
-    Orbit { last: Vec2 },
-    Water { last: Vec2 },
-    Body { id: BodyId, offset: Vec3, plane_normal: Vec3, plane_point: Vec3 },
+    Orbit {
+        last: Vec2,
+    },
+    Water {
+        last: Vec2,
+    },
+    Body {
+        id: BodyId,
+        offset: Vec3,
+        plane_normal: Vec3,
+        plane_point: Vec3,
+    },
+    /// The split view's divider.
+    Divider,
 }
+
+/// How near (pixels) to the split view's divider a press grabs it.
+pub const DIVIDER_GRAB_PX: f32 = 12.0;
 
 /// Stages of a frame, for timing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -409,10 +424,20 @@ impl WaterDemo {
         }
     }
 
-    /// Pointer pressed at pixel (x, y): on the sphere or the duck starts moving it, on the
+    /// Whether a press at column `x` (pixels) grabs the split view's divider.
+    pub fn over_divider(&self, x: f32) -> bool {
+        RenderMode::from_param(self.params.get(ParamId::RenderMode)) == RenderMode::Split
+            && (x - self.params.get(ParamId::Split) * self.viewport.x).abs() <= DIVIDER_GRAB_PX
+    }
+
+    /// Pointer pressed at pixel (x, y): on the split view's divider moves it; on the sphere or the duck starts moving it, on the
     /// water starts drawing ripples, elsewhere starts orbiting.
     pub fn pointer_down(&mut self, x: f32, y: f32) {
         let p = Vec2::new(x, y);
+        if self.over_divider(x) {
+            self.drag = Drag::Divider;
+            return;
+        }
         if let Some((id, hit)) = self.pick_body(p) {
             let centre = self.bodies[id as usize].pose.position;
             let plane_normal = (self.camera.eye() - hit).normalize();
@@ -432,6 +457,9 @@ impl WaterDemo {
         let p = Vec2::new(x, y);
         match self.drag {
             Drag::None => {}
+            Drag::Divider => {
+                self.params.set(ParamId::Split, x / self.viewport.x.max(1.0));
+            }
             Drag::Orbit { last } => {
                 let d = p - last;
                 self.camera.orbit(d.x, d.y);
@@ -721,7 +749,44 @@ impl WaterDemo {
             debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
+            flat: self.flat_view(),
         }
+    }
+
+    /// The flat water settings in the parameters (`None` when ray-traced).
+    fn flat_view(&self) -> Option<FlatView> {
+        let mode = RenderMode::from_param(self.params.get(ParamId::RenderMode));
+        let scroll = self.params.get(ParamId::DudvSpeed) as f64 * self.sim_time();
+        (mode != RenderMode::RayTraced).then(|| FlatView {
+            mode,
+            split: self.params.get(ParamId::Split),
+            distortion: Distortion::from_param(self.params.get(ParamId::FlatDistortion)),
+            strength: self.params.get(ParamId::FlatStrength),
+            move_factor: (scroll - scroll.floor()) as f32,
+            resolution: self.params.get(ParamId::FlatResolution),
+            caustics: FlatCaustics::from_param(self.params.get(ParamId::FlatCaustics)),
+            soft_edge: self.params.get(ParamId::FlatSoftEdge),
+            plane: self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH),
+        })
+    }
+
+    /// The flat water's reflection texture, once flat water has been drawn (for tests).
+    #[doc(hidden)]
+    pub fn flat_reflection_texture(&self) -> Option<&wgpu::Texture> {
+        self.renderer.flat_reflection_texture()
+    }
+
+    /// Whether the flat water is drawn now: flat or split chosen and the camera above the
+    /// water (it is an above-water technique; under water the ray tracer draws).
+    pub fn flat_water_drawn(&self) -> bool {
+        crate::render::flat_shown(&self.view()).is_some()
+    }
+
+    /// Why the chosen flat water is not drawn, if it is not (for the page and the viewer).
+    pub fn flat_water_note(&self) -> Option<&'static str> {
+        let mode = RenderMode::from_param(self.params.get(ParamId::RenderMode));
+        (mode != RenderMode::RayTraced && !self.flat_water_drawn())
+            .then_some("Flat water is an above-water technique: under the water the ray tracer draws.")
     }
 
     /// Advances the water by `frame_time` seconds (in fixed steps) and draws into `target`

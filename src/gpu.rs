@@ -25,6 +25,7 @@ pub mod wgsl {
     pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
     pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
     pub const AMBIENT_FFT: &str = include_str!("../shaders/ambient_fft.wgsl");
+    pub const FLAT_WATER: &str = include_str!("../shaders/flat_water.wgsl");
 }
 
 /// Constants the shaders share with the Rust side, written from the Rust values ahead of
@@ -39,7 +40,7 @@ pub fn shared_constants() -> String {
         duck::TRACED_PARTS.len(),
         sim::MAX_DROPS_PER_PASS,
         sim::MAX_PUSH_STEPS * sim::MAX_HULL_MOVES * 8,
-        crate::optics::wgsl_constants() + &crate::ambient::wgsl_constants(),
+        crate::optics::wgsl_constants() + &crate::ambient::wgsl_constants() + &crate::render::flat::wgsl_constants(),
     )
 }
 

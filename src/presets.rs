@@ -91,6 +91,19 @@ pub const PRESETS: &[Preset] = &[
         camera: None,
     },
     Preset {
+        name: "flat",
+        label: "Lesson: flat water vs ray tracing",
+        help: "The games' flat water (left) against the ray tracer (right), the ball half out of the water: drag the divider across the ball. Left, its submerged half sits unbent at its true depth and the reflections wobble by a fixed shift; right, the water lifts it and bends everything by the waves' slopes. Make ripples and switch the distortion to ripples to see the same waves with faked optics.",
+        values: &[
+            ("objects", 1.0),
+            ("gravity", 1.0),
+            ("render_mode", 2.0),
+            ("split", 0.5),
+            ("flat_distortion", 0.0),
+        ],
+        camera: Some([-25.0, 22.0, 3.8]),
+    },
+    Preset {
         name: "lake",
         label: "Lesson: water colour",
         help: "Green lake water: it absorbs red, green and blue faster than the pool's, and scatters a green-blue light of its own, so the deep end turns green instead of dark (turn the scattered light to 0 to see plain Beer-Lambert).",

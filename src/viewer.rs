@@ -13,7 +13,8 @@ use eframe::egui;
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
 use wavepool::params::{choice_label, Control, ParamId, ParamSpec, PARAMS};
-use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
+use wavepool::render::flat::RenderMode;
+use wavepool::timing::{ModeCosts, StageTimer, TIMESTAMP_FEATURES};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
 const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -77,6 +78,8 @@ struct Viewer {
     render_state: egui_wgpu::RenderState,
     /// GPU time per stage, where the device has timestamp queries.
     timer: Option<StageTimer>,
+    /// Each render mode's drawing time, from the timer.
+    mode_costs: ModeCosts,
     target: Option<SceneTarget>,
     options: ViewerOptions,
     frames: u32,
@@ -107,6 +110,7 @@ impl Viewer {
             demo,
             render_state: state.clone(),
             timer: StageTimer::new(&state.device, &state.queue),
+            mode_costs: ModeCosts::default(),
             target: None,
             options,
             frames: 0,
@@ -197,6 +201,14 @@ impl Viewer {
                 None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
                 None => ui.label("GPU time: waiting for the first timestamps"),
             };
+            if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()) {
+                let mode = RenderMode::from_param(self.demo.params.get(ParamId::RenderMode));
+                self.mode_costs.observe(mode, stages);
+                ui.label(format!("drawing the water (caustics + scene): {}", self.mode_costs.summary()));
+            }
+            if let Some(note) = self.demo.flat_water_note() {
+                ui.colored_label(egui::Color32::from_rgb(230, 180, 60), note);
+            }
             ui.label(format!(
                 "water: {}² cells, {:.1} s simulated",
                 self.demo.water().size(),

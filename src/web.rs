@@ -414,6 +414,12 @@ impl WebDemo {
         self.demo.pointer_down(x, y);
     }
 
+    /// Whether a press at (x, y) pixels would grab the split view's divider (for the cursor).
+    #[wasm_bindgen(js_name = overDivider)]
+    pub fn over_divider(&self, x: f32, _y: f32) -> bool {
+        self.demo.over_divider(x)
+    }
+
     #[wasm_bindgen(js_name = pointerMove)]
     pub fn pointer_move(&mut self, x: f32, y: f32) {
         self.demo.pointer_move(x, y);
@@ -525,6 +531,7 @@ impl WebDemo {
         set(&o, "spherePosition", position(self.demo.sphere().map(|s| s.centre)));
         set(&o, "duckPosition", position(self.demo.duck().map(|p| p.position)));
         set(&o, "submergedVolume", self.demo.submerged_volume() as f64);
+        set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
         set(&o, "probeLatency", self.demo.probe_latency().map_or(JsValue::NULL, |l| JsValue::from_f64(l as f64)));
         o
     }

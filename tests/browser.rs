@@ -844,3 +844,70 @@ async fn the_ambient_select_switches_all_five_models_on_webgl2() {
     let _g = serial();
     ambient_models_in_the_page(Graphics::WebGl2Only, "webgl2").await;
 }
+
+/// Flat water in the page: the split view's halves are the flat and the ray-traced pictures,
+/// the divider drags, its control follows, no error.
+async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
+    let query = format!("?backend={backend}&quality=1&objects=sphere&paused=1&flat_resolution=1");
+    let (browser, _server) = open_demo(graphics, &query, backend).await;
+    let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    let shot = |mode: u32| {
+        let browser = &browser;
+        async move {
+            browser.js(&format!("window.demo.set('render_mode', {mode}); return true;")).await;
+            tokio::time::sleep(Duration::from_millis(2500)).await;
+            browser.screenshot().await
+        }
+    };
+    let traced = shot(0).await;
+    let flat = shot(1).await;
+    let split = shot(2).await;
+    // Halves, leaving out the divider's grip in the middle.
+    let half = rect.w / 2;
+    let left = Rect { w: half - 8, ..rect };
+    let right = Rect { x: rect.x + half + 8, w: rect.w - half - 8, ..rect };
+    let (left_diff, right_diff, modes) = (
+        changed_fraction(&split, &flat, left, 16),
+        changed_fraction(&split, &traced, right, 16),
+        changed_fraction(&flat, &traced, rect, 16),
+    );
+    let state = browser
+        .js("return { error: document.querySelector('#pool').dataset.error || null, note: window.demo.stats().flatNote,
+                      splitShown: !document.querySelector('#pool').shadowRoot.querySelector('[name=split]').closest('.row').hidden };")
+        .await;
+    println!(
+        "{backend}: split vs flat on the left {:.2} % of pixels differ, vs ray-traced on the right {:.2} %; flat vs \
+         ray-traced {:.1} %; {state}",
+        left_diff * 100.0,
+        right_diff * 100.0,
+        modes * 100.0
+    );
+    assert!(state["error"].is_null() && state["note"].is_null() && state["splitShown"] == true, "{backend}: {state}");
+    assert!(left_diff < 0.02 && right_diff < 0.02, "{backend}: the split halves are not the two modes");
+    assert!(modes > 0.05, "{backend}: flat and ray-traced water look alike ({:.1} %)", modes * 100.0);
+    // Drag the divider a quarter of the width to the right.
+    let (cx, cy) = (rect.x as f64 + rect.w as f64 / 2.0, rect.y as f64 + rect.h as f64 / 2.0);
+    browser.drag((cx, cy), (cx + rect.w as f64 / 4.0, cy), 8).await;
+    tokio::time::sleep(Duration::from_millis(500)).await;
+    let after = browser
+        .js("const root = document.querySelector('#pool').shadowRoot;
+             return { split: window.demo.get('split'), control: Number(root.querySelector('[name=split]').value) };")
+        .await;
+    println!("{backend}: divider dragged: {after}");
+    let split_now = after["split"].as_f64().unwrap();
+    assert!((split_now - 0.75).abs() < 0.02, "{backend}: the divider is at {split_now}");
+    assert!((after["control"].as_f64().unwrap() - split_now).abs() < 0.011, "{backend}: the control did not follow");
+    browser.close().await;
+}
+
+#[tokio::test]
+async fn flat_water_splits_and_the_divider_drags_on_webgpu() {
+    let _g = serial();
+    flat_water_in_the_page(Graphics::WebGpu, "webgpu").await;
+}
+
+#[tokio::test]
+async fn flat_water_splits_and_the_divider_drags_on_webgl2() {
+    let _g = serial();
+    flat_water_in_the_page(Graphics::WebGl2Only, "webgl2").await;
+}

@@ -523,10 +523,15 @@ class Demo {
       e.preventDefault();
     });
     this._on(canvas, "pointermove", (e) => {
-      if (!this._pointers.has(e.pointerId)) return;
+      if (!this._pointers.has(e.pointerId)) {
+        // Hovering: the split view's divider shows it can be dragged.
+        if (this._core) canvas.style.cursor = this._core.overDivider(...at(e)) ? "ew-resize" : "";
+        return;
+      }
       this._pointers.set(e.pointerId, at(e));
       if (this._pointers.size === 1) {
         this._core.pointerMove(...at(e));
+        if (this.get("render_mode") === 2) this._refreshControls("split");
       } else if (this._pointers.size === 2 && this._pinch > 0) {
         const d = spread();
         if (d > 0) this._core.zoom(-10 * Math.log(d / this._pinch));

@@ -1,6 +1,7 @@
 //! The renderer: caustics map, then one scene pass of sky, pool, sphere and the water
 //! surface (from above and from below) into any colour target.
 
+pub mod flat;
 mod meshes;
 mod variants;
 
@@ -16,6 +17,7 @@ use crate::scene::{self, Sphere};
 use crate::sim::foam::Foam;
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
+use flat::{FlatCaustics, FlatView, FlatWater};
 use meshes::{pool_box, unit_sphere, water_grid, Mesh};
 pub use variants::Features;
 use variants::{PipelineTargets, ScenePipelines};
@@ -55,6 +57,8 @@ pub struct View {
     /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
     /// is scaled up to the target).
     pub render_scale: f32,
+    /// Flat water instead of (or beside) the ray-traced surface; `None`: ray-traced.
+    pub flat: Option<FlatView>,
 }
 
 /// The ambient waves as the shader takes them (see ambient.rs).
@@ -167,6 +171,7 @@ struct SceneUniforms {
     duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
     ambient_header: [f32; 4],
     ambient_waves: [[f32; 4]; MAX_AMBIENT_WAVES],
+    flat: [f32; 4],
 }
 
 /// Renderer settings fixed at creation.
@@ -262,6 +267,10 @@ pub struct Renderer {
     textures_layout: wgpu::BindGroupLayout,
     /// Scene uniforms + water state, one per ping-pong texture.
     water_groups: [wgpu::BindGroup; 2],
+    /// The same for the flat water's mirrored camera (its reflection texture).
+    mirror_uniforms: wgpu::Buffer,
+    mirror_groups: [wgpu::BindGroup; 2],
+    flat: FlatWater,
     /// The maps the FFT ocean is read from (its surface, and its displacement with
     /// choppiness): the GPU ocean's outputs, or `cpu_ambient` filled from the CPU; a 1 x 1
     /// `cpu_ambient` until then.
@@ -370,6 +379,8 @@ struct SceneTextures {
     foam: (wgpu::Texture, wgpu::TextureView),
     /// The ambient waves' spectrum for the debug view (R32Float, log10 of the amplitude in m).
     spectrum: (wgpu::Texture, wgpu::TextureView),
+    /// The flat water's dUdV map (flat.rs).
+    dudv: wgpu::TextureView,
     clamp: wgpu::Sampler,
     repeat: wgpu::Sampler,
 }
@@ -393,6 +404,7 @@ impl SceneTextures {
                 wgpu::BindGroupEntry { binding: 5, resource: wgpu::BindingResource::TextureView(&self.fresnel_table) },
                 wgpu::BindGroupEntry { binding: 6, resource: wgpu::BindingResource::TextureView(&self.foam.1) },
                 wgpu::BindGroupEntry { binding: 7, resource: wgpu::BindingResource::TextureView(&self.spectrum.1) },
+                wgpu::BindGroupEntry { binding: 8, resource: wgpu::BindingResource::TextureView(&self.dudv) },
             ],
         })
     }
@@ -506,12 +518,21 @@ impl Renderer {
                     wgpu::TextureSampleType::Float { filterable: false },
                     wgpu::TextureViewDimension::D2,
                 ),
+                gpu::texture_entry(
+                    8,
+                    vis,
+                    wgpu::TextureSampleType::Float { filterable: true },
+                    wgpu::TextureViewDimension::D2,
+                ),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
         let cpu_ambient = [ambient_map(device, 1), ambient_map(device, 1)];
         let ambient_views = [cpu_ambient[0].1.clone(), cpu_ambient[1].1.clone()];
         let water_groups = water_bind_groups(device, &water_layout, &uniforms, water, &ambient_views);
+        let mirror_uniforms =
+            gpu::uniform_buffer(device, "mirrored scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
+        let mirror_groups = water_bind_groups(device, &water_layout, &mirror_uniforms, water, &ambient_views);
         let (caustics_format, _) = settings.caustics_format();
         let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
@@ -542,6 +563,7 @@ impl Renderer {
                 let view = texture.create_view(&Default::default());
                 (texture, view)
             },
+            dudv: flat::dudv_texture(device, queue),
             clamp: sampler(wgpu::AddressMode::ClampToEdge),
             repeat: sampler(wgpu::AddressMode::Repeat),
         };
@@ -567,6 +589,9 @@ impl Renderer {
             water_layout,
             textures_layout,
             water_groups,
+            mirror_uniforms,
+            mirror_groups,
+            flat: FlatWater::new(device, settings.target_format),
             ambient_views,
             cpu_ambient,
             textures_group,
@@ -637,14 +662,21 @@ impl Renderer {
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
+        self.bind_water(device, water);
+    }
+
+    /// Makes the scene passes' group 0 (for the camera and the mirrored one) for `water`.
+    fn bind_water(&mut self, device: &wgpu::Device, water: &HeightField) {
         self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_views);
+        self.mirror_groups =
+            water_bind_groups(device, &self.water_layout, &self.mirror_uniforms, water, &self.ambient_views);
     }
 
     /// Reads the FFT ocean's surface and displacement from `views` (the GPU ocean's outputs)
     /// from now on.
     pub fn use_ambient_views(&mut self, device: &wgpu::Device, water: &HeightField, views: [&wgpu::TextureView; 2]) {
         self.ambient_views = views.map(|v| v.clone());
-        self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_views);
+        self.bind_water(device, water);
     }
 
     /// Copies the FFT ocean's surface and, with choppiness, its displacement (`size`² texels
@@ -784,8 +816,24 @@ impl Renderer {
             duck_parts: duck_parts(),
             ambient_header: view.ambient.header,
             ambient_waves: view.ambient.waves,
+            flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+        if let Some(f) = flat_shown(view) {
+            // The mirrored camera: everything it sees is above the water, so nothing is dimmed
+            // by water on the way (no absorption, no scattering).
+            let mirrored = view.view_proj * flat::mirror(f.plane);
+            let eye = view.eye * glam::Vec3::new(1.0, -1.0, 1.0) + glam::Vec3::new(0.0, 2.0 * f.plane, 0.0);
+            let m = SceneUniforms {
+                view_proj: mirrored.to_cols_array_2d(),
+                inv_view_proj: mirrored.inverse().to_cols_array_2d(),
+                eye: eye.extend(1.0).to_array(),
+                absorption: [0.0; 4],
+                scatter: [0.0; 4],
+                ..u
+            };
+            queue.write_buffer(&self.mirror_uniforms, 0, bytemuck::bytes_of(&m));
+        }
         self.sky_cube.update(queue, encoder, view.sun);
     }
 
@@ -799,7 +847,10 @@ impl Renderer {
     ) {
         let features = Features::of(view);
         self.resize_caustics(device, self.caustics_size(view.render_scale), features.dispersion);
-        if !view.caustics {
+        // The ray-traced part reads the map if caustics are on, flat water if it uses the real ones.
+        let traced_shown = flat_shown(view).is_none_or(|f| f.mode == flat::RenderMode::Split && f.split < 1.0);
+        let flat_reads = flat_shown(view).is_some_and(|f| f.caustics == FlatCaustics::Real);
+        if !((view.caustics && traced_shown) || flat_reads) {
             return;
         }
         self.variant(device, features);
@@ -831,7 +882,7 @@ impl Renderer {
     }
 
     /// Draws sky, pool, sphere and water into `target` (of `size` pixels) at the view's
-    /// render scale, and the debug view over them.
+    /// render scale, the split view's divider and the debug view over them.
     pub fn encode_scene(
         &mut self,
         device: &wgpu::Device,
@@ -846,10 +897,13 @@ impl Renderer {
             let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
             let scaled = (scaled(size.0), scaled(size.1));
             let image = self.upscale.image(device, self.settings.target_format, scaled);
-            self.draw_scene(device, encoder, &image, scaled, view, water);
+            self.draw_picture(device, encoder, &image, scaled, view, water);
             self.upscale.run(encoder, target);
         } else {
-            self.draw_scene(device, encoder, target, size, view, water);
+            self.draw_picture(device, encoder, target, size, view, water);
+        }
+        if let Some(f) = flat_shown(view).filter(|f| f.mode == flat::RenderMode::Split) {
+            self.flat.draw_divider(encoder, target, size, f.divider(size.0));
         }
         if let Some(debug) = view.debug {
             self.debug_pass(device, debug.texture, view.ambient);
@@ -862,9 +916,9 @@ impl Renderer {
         }
     }
 
-    /// The scene pass: water surface, objects and pool front to back (early depth testing
-    /// skips what the water and objects hide), then the sky where nothing else was drawn.
-    fn draw_scene(
+    /// The scene at `size` pixels: ray-traced, flat, or flat left of the divider and
+    /// ray-traced right of it (two passes on disjoint pixels, so each is shaded once).
+    fn draw_picture(
         &mut self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
@@ -873,45 +927,151 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
+        let Some(f) = flat_shown(view) else {
+            self.draw_scene(device, encoder, target, size, view, water, None, [0, 0, size.0, size.1]);
+            return;
+        };
+        let divider = f.divider(size.0);
+        if divider > 0 {
+            self.encode_flat_textures(device, encoder, view, water, size, &f);
+            self.draw_scene(device, encoder, target, size, view, water, Some(&f), [0, 0, divider, size.1]);
+        }
+        if divider < size.0 {
+            self.draw_scene(device, encoder, target, size, view, water, None, [divider, 0, size.0 - divider, size.1]);
+        }
+    }
+
+    /// The flat water's reflection texture (for tests: what the mirrored camera drew), once
+    /// flat water has been drawn.
+    #[doc(hidden)]
+    pub fn flat_reflection_texture(&self) -> Option<&wgpu::Texture> {
+        self.flat.targets.as_ref().map(|t| &t.reflection)
+    }
+
+    /// Draws the flat water's reflection (mirrored camera, above the plane, with the sky) and
+    /// refraction (below the plane) textures for a scene of `size` pixels. In a split view only
+    /// the columns the flat part can read: left of the divider plus the largest shift.
+    fn encode_flat_textures(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        view: &View,
+        water: &HeightField,
+        size: (u32, u32),
+        f: &FlatView,
+    ) {
+        let resolution = f.resolution.clamp(0.25, 1.0);
+        let side = |s: u32| ((s as f32 * resolution).round() as u32).max(1);
+        let texture_size = (side(size.0), side(size.1));
+        let divider = f.divider(size.0);
+        let reach = if divider < size.0 {
+            let x = divider as f32 / size.0 as f32 + f.strength;
+            ((x * texture_size.0 as f32).ceil() as u32 + 2).min(texture_size.0)
+        } else {
+            texture_size.0
+        };
+        let base = Features::of(view);
+        let reflection = Features { clip: 1, ..base };
+        let refraction = Features {
+            clip: -1,
+            caustics: f.caustics == FlatCaustics::Real,
+            flat_caustics: f.caustics == FlatCaustics::Fake,
+            flat_distortion: f.distortion,
+            ..base
+        };
+        self.variant(device, reflection);
+        self.variant(device, refraction);
+        let targets = self.flat.targets(device, self.settings.target_format, texture_size);
+        let (reflection_view, refraction_view, depth) =
+            (targets.reflection_view.clone(), targets.refraction_view.clone(), targets.depth.clone());
+        let current = water.state().current();
+        let passes = [
+            ("flat water reflection", &reflection_view, reflection, &self.mirror_groups[current]),
+            ("flat water refraction", &refraction_view, refraction, &self.water_groups[current]),
+        ];
+        for (label, colour, features, group) in passes {
+            // Cleared to alpha 0: "nothing here" for the water reading the refraction.
+            let mut pass = begin_scene_pass(encoder, label, colour, &depth, Some(wgpu::Color::TRANSPARENT));
+            pass.set_scissor_rect(0, 0, reach, texture_size.1);
+            pass.set_bind_group(0, Some(group), &[]);
+            pass.set_bind_group(1, Some(&self.textures_group), &[]);
+            let pipelines = &self.variants[&features];
+            if view.sphere.is_some() {
+                pass.set_pipeline(&pipelines.sphere);
+                self.sphere_mesh.draw(&mut pass);
+            }
+            if view.duck.is_some() {
+                pass.set_pipeline(&pipelines.duck);
+                self.duck_mesh.draw(&mut pass);
+            }
+            pass.set_pipeline(&pipelines.pool);
+            self.pool_mesh.draw(&mut pass);
+            if features.clip > 0 {
+                self.sky.draw(&mut pass, &[group, &self.textures_group]);
+            }
+        }
+    }
+
+    /// A scene pass over the pixels `rect` (x, y, width, height) of `target`: the water
+    /// surface (ray-traced, or flat with `flat`), objects and pool front to back (early depth
+    /// testing skips what the water and objects hide), then the sky where nothing else was
+    /// drawn. The pass starting at column 0 clears the target.
+    #[allow(clippy::too_many_arguments)]
+    fn draw_scene(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &View,
+        water: &HeightField,
+        flat: Option<&FlatView>,
+        rect: [u32; 4],
+    ) {
         let depth = self.depth_view(device, size).clone();
         let features = Features::of(view);
-        let regions = variants::surface_regions(view, size);
+        let regions = if flat.is_some() { None } else { variants::surface_regions(view, size) };
         self.variant(device, features);
         for (_, needs) in regions.iter().flatten() {
             self.variant(device, *needs);
         }
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("scene"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
+        let flat_features = flat.map(|f| Features { flat_distortion: f.distortion, ..features });
+        if let Some(flat_features) = flat_features {
+            let targets = PipelineTargets {
+                format: self.settings.target_format,
+                caustics_format: self.settings.caustics_format_for(features.dispersion).0,
+                water_layout: &self.water_layout,
+                textures_layout: &self.textures_layout,
+            };
+            self.flat.prepare_pipeline(device, flat_features, &targets);
+        }
+        let clear = (rect[0] == 0).then_some(wgpu::Color::BLACK);
+        let mut pass = begin_scene_pass(encoder, "scene", target, &depth, clear);
         let pipelines = &self.variants[&features];
         let water_group = &self.water_groups[water.state().current()];
         pass.set_bind_group(0, Some(water_group), &[]);
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
-        match regions {
-            // The objects are traced only where the water can show them (see surface_regions).
-            Some(regions) => {
-                for ([x, y, w, h], needs) in regions {
-                    pass.set_pipeline(&self.variants[&needs].surface);
-                    pass.set_scissor_rect(x, y, w, h);
-                    self.grid.draw(&mut pass);
-                }
-                pass.set_scissor_rect(0, 0, size.0, size.1);
+        let [x, y, w, h] = rect;
+        pass.set_scissor_rect(x, y, w, h);
+        match (flat_features, regions) {
+            (Some(flat_features), _) => {
+                let group = &self.flat.targets.as_ref().expect("flat textures are drawn first").group;
+                pass.set_pipeline(self.flat.pipeline(flat_features));
+                pass.set_bind_group(2, Some(group), &[]);
+                self.grid.draw(&mut pass);
             }
-            None => {
+            // The objects are traced only where the water can show them (see surface_regions).
+            (None, Some(regions)) => {
+                for (region, needs) in regions {
+                    if let Some([x, y, w, h]) = overlap(region, rect) {
+                        pass.set_pipeline(&self.variants[&needs].surface);
+                        pass.set_scissor_rect(x, y, w, h);
+                        self.grid.draw(&mut pass);
+                    }
+                }
+                pass.set_scissor_rect(x, y, w, h);
+            }
+            (None, None) => {
                 pass.set_pipeline(&pipelines.surface);
                 self.grid.draw(&mut pass);
             }
@@ -928,4 +1088,47 @@ impl Renderer {
         self.pool_mesh.draw(&mut pass);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
     }
+}
+
+/// The flat water settings if flat water is drawn this frame: flat or split mode with the
+/// camera above the plane (flat water is an above-water technique; under it the ray tracer
+/// draws everything).
+pub fn flat_shown(view: &View) -> Option<FlatView> {
+    view.flat.filter(|f| f.mode != flat::RenderMode::RayTraced && view.eye.y > f.plane)
+}
+
+/// The part two rectangles (x, y, width, height) share, if any.
+fn overlap(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
+    let (x0, y0) = (a[0].max(b[0]), a[1].max(b[1]));
+    let (x1, y1) = ((a[0] + a[2]).min(b[0] + b[2]), (a[1] + a[3]).min(b[1] + b[3]));
+    (x1 > x0 && y1 > y0).then_some([x0, y0, x1 - x0, y1 - y0])
+}
+
+/// A render pass on a colour and a depth target, clearing the colour (to `clear`) or keeping
+/// it, and clearing the depth.
+fn begin_scene_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    colour: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    clear: Option<wgpu::Color>,
+) -> wgpu::RenderPass<'e> {
+    let load = clear.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear);
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: colour,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
 }

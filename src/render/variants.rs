@@ -7,6 +7,7 @@
 
 use glam::{Vec3, Vec4Swizzles};
 
+use super::flat::Distortion;
 use super::{View, DEPTH_FORMAT};
 use crate::ambient::AmbientModel;
 use crate::optics::{FresnelModel, SpecularModel};
@@ -39,6 +40,14 @@ pub struct Features {
     pub choppy: bool,
     /// Foam on the surface.
     pub foam: bool,
+    /// Drawing a flat-water texture: +1 keeps only what is above the water plane (the
+    /// reflection, drawn by the mirrored camera), -1 only what is below it (the refraction);
+    /// 0 everything (every other pass).
+    pub clip: i8,
+    /// Under flat water the pool is lit by seed 000's fake caustics (the refraction texture).
+    pub flat_caustics: bool,
+    /// What the flat water's normal comes from (its plane and its fake caustics).
+    pub flat_distortion: Distortion,
 }
 
 impl Features {
@@ -56,14 +65,20 @@ impl Features {
             ambient: view.ambient.model,
             choppy: view.ambient.choppy(),
             foam: view.foam,
+            ..Self::default()
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
-    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`).
+    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `CLIP_SIDE`,
+    /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`).
     pub fn wgsl(&self) -> String {
-        format!(
+        let flat = format!(
+            "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
+            self.clip, self.flat_caustics, self.flat_distortion as u32
+        );
+        flat + &format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
@@ -253,6 +268,7 @@ impl ScenePipelines {
                         attributes: &wgpu::vertex_attr_array![0 => Float32x2],
                         stride: 8,
                         cull: None,
+                        front_face: wgpu::FrontFace::Ccw,
                         format: targets.caustics_format,
                         blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
                         write_mask,
@@ -262,6 +278,8 @@ impl ScenePipelines {
             })
             .collect();
         let layouts = [targets.water_layout, targets.textures_layout];
+        // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
+        let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
         let scene_pipeline =
             |label, module: &wgpu::ShaderModule, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
                 mesh_pipeline(
@@ -275,6 +293,7 @@ impl ScenePipelines {
                         attributes,
                         stride,
                         cull,
+                        front_face,
                         format: targets.format,
                         blend: None,
                         write_mask: wgpu::ColorWrites::ALL,
@@ -335,6 +354,8 @@ pub struct MeshPipeline<'a> {
     pub attributes: &'a [wgpu::VertexAttribute],
     pub stride: u64,
     pub cull: Option<wgpu::Face>,
+    /// The winding of front faces on screen (clockwise under a mirrored camera).
+    pub front_face: wgpu::FrontFace,
     pub format: wgpu::TextureFormat,
     pub blend: Option<wgpu::BlendState>,
     pub write_mask: wgpu::ColorWrites,
@@ -357,7 +378,7 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
                 attributes: p.attributes,
             })],
         },
-        primitive: wgpu::PrimitiveState { cull_mode: p.cull, ..Default::default() },
+        primitive: wgpu::PrimitiveState { cull_mode: p.cull, front_face: p.front_face, ..Default::default() },
         depth_stencil: p.depth.then(|| wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(true),

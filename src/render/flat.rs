@@ -1,0 +1,361 @@
+//! Flat water, the games' technique (seeds 000, 002, 003), drawn beside the ray tracer for
+//! comparison. The scene is drawn twice more into textures: from the camera mirrored in the
+//! water plane with everything under the plane clipped (the reflection), and from the camera
+//! itself with everything above it clipped (the refraction, dimmed by the straight path
+//! through the water). A flat plane at rest level then reads both at its own screen
+//! position, shifted by a distortion (a scrolled dUdV map, or the simulation's slopes), and
+//! blends them by Fresnel. Clipping is a discard behind a variant constant (`CLIP_SIDE`):
+//! clip distances are optional in WebGPU and absent on WebGL2.
+
+use std::collections::HashMap;
+
+use glam::{Mat4, Vec4};
+
+use super::variants::{mesh_pipeline, MeshPipeline, PipelineTargets};
+use super::{Features, DEPTH_FORMAT};
+use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::sim::SplitMix64;
+
+/// Texels per side of the dUdV map.
+pub const DUDV_SIZE: u32 = 128;
+/// Times the dUdV map repeats across the pool's width.
+pub const DUDV_TILES: f32 = 3.0;
+/// Surface slope the dUdV map's largest value stands for (its normals tilt up to atan of it).
+pub const DUDV_SLOPE: f32 = 0.15;
+/// Slope of the flat water's normal that shifts the textures by the whole `flat_strength`:
+/// the dUdV map's largest, and for the `ripples` distortion a clear ripple's (the simulation's
+/// ripples are gentler than the map's churn).
+pub const REFERENCE_SLOPE: f32 = DUDV_SLOPE;
+pub const RIPPLE_REFERENCE_SLOPE: f32 = 0.04;
+/// Metres of water path that the refraction texture's alpha 1 stands for (the pool's longest
+/// straight path is about 3 m).
+pub const PATH_SCALE: f32 = 4.0;
+/// Width (pixels) of the split view's divider line, and of the grip in its middle.
+pub const DIVIDER_LINE: u32 = 2;
+pub const DIVIDER_GRIP: (u32, u32) = (10, 48);
+
+/// How the water surface is drawn (the `render_mode` parameter).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum RenderMode {
+    #[default]
+    RayTraced = 0,
+    Flat = 1,
+    /// Flat left of the divider, ray-traced right of it.
+    Split = 2,
+}
+
+/// What shifts the flat water's texture lookups (the `flat_distortion` parameter).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Distortion {
+    #[default]
+    Dudv = 0,
+    /// The simulated surface's slopes (and the ambient waves').
+    Ripples = 1,
+}
+
+/// The light on the pool under flat water (the `flat_caustics` parameter).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FlatCaustics {
+    Off = 0,
+    /// Seed 000's highlight from the distortion's normal.
+    #[default]
+    Fake = 1,
+    /// The ray tracer's caustics map.
+    Real = 2,
+}
+
+impl RenderMode {
+    pub fn from_param(value: f32) -> Self {
+        [Self::RayTraced, Self::Flat, Self::Split][value.round().clamp(0.0, 2.0) as usize]
+    }
+}
+
+impl Distortion {
+    pub fn from_param(value: f32) -> Self {
+        if value.round() >= 1.0 {
+            Self::Ripples
+        } else {
+            Self::Dudv
+        }
+    }
+}
+
+impl FlatCaustics {
+    pub fn from_param(value: f32) -> Self {
+        [Self::Off, Self::Fake, Self::Real][value.round().clamp(0.0, 2.0) as usize]
+    }
+}
+
+/// The flat-water settings of a frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlatView {
+    pub mode: RenderMode,
+    /// The divider's place, a fraction of the width from the left (split mode).
+    pub split: f32,
+    pub distortion: Distortion,
+    /// Largest shift of the texture lookups, a fraction of the screen.
+    pub strength: f32,
+    /// How far the dUdV map has scrolled (tiles, in [0, 1)).
+    pub move_factor: f32,
+    /// Size of the reflection and refraction textures against the scene's (0.25-1).
+    pub resolution: f32,
+    pub caustics: FlatCaustics,
+    /// Water shallower than this along the view (m) is distorted less.
+    pub soft_edge: f32,
+    /// Height of the water plane (m): the rest level the floating bodies raise.
+    pub plane: f32,
+}
+
+impl FlatView {
+    /// The pixel column where the ray-traced part starts on a target `width` pixels wide
+    /// (`width` when all of it is flat).
+    pub fn divider(&self, width: u32) -> u32 {
+        match self.mode {
+            RenderMode::Split => ((self.split.clamp(0.0, 1.0) * width as f32).round() as u32).min(width),
+            _ => width,
+        }
+    }
+
+    /// The `flat` uniform: plane height, strength, scroll, soft edge.
+    pub fn uniform(&self) -> [f32; 4] {
+        [self.plane, self.strength, self.move_factor, self.soft_edge]
+    }
+}
+
+/// Reflection in the plane y = h: (x, y, z) -> (x, 2h - y, z). `view_proj * mirror(h)` is the
+/// mirrored camera; it puts a point of the plane at the same pixel as the camera does, so the
+/// water reads the reflection at its own screen position.
+pub fn mirror(h: f32) -> Mat4 {
+    Mat4::from_cols(Vec4::X, -Vec4::Y, Vec4::Z, Vec4::new(0.0, 2.0 * h, 0.0, 1.0))
+}
+
+/// The dUdV map: `size`² texels of a tiling height H(u, v) = Σ a sin(2π(m u + n v) + φ) of
+/// 24 waves with whole numbers (m, n) of periods across the tile (so its edges meet and its
+/// mean slope is 0), amplitudes falling as |k|^-1.5; red and green hold ∂H/∂u and ∂H/∂v
+/// scaled to [0, 1] (0.5 is flat; the largest slope is 0 or 1), blue H likewise.
+pub fn dudv_map(size: u32, seed: u64) -> Vec<[u8; 4]> {
+    let mut rng = SplitMix64(seed);
+    let mut waves = Vec::new();
+    while waves.len() < 24 {
+        let m = rng.range(-8.0, 9.0).floor();
+        let n = rng.range(-8.0, 9.0).floor();
+        let k = (m * m + n * n).sqrt();
+        if !(2.0..=8.0).contains(&k) {
+            continue;
+        }
+        waves.push((m, n, k.powf(-1.5), rng.range(0.0, std::f32::consts::TAU)));
+    }
+    let tau = std::f32::consts::TAU;
+    let fields: Vec<[f32; 3]> = (0..size * size)
+        .map(|i| {
+            let (u, v) = ((i % size) as f32 / size as f32, (i / size) as f32 / size as f32);
+            waves.iter().fold([0.0; 3], |acc, &(m, n, a, phase)| {
+                let theta = tau * (m * u + n * v) + phase;
+                let c = a * tau * theta.cos();
+                [acc[0] + c * m, acc[1] + c * n, acc[2] + a * theta.sin()]
+            })
+        })
+        .collect();
+    let peak = |c: usize| fields.iter().map(|f| f[c].abs()).fold(1e-9f32, f32::max);
+    let (slope, height) = (peak(0).max(peak(1)), peak(2));
+    let byte = |v: f32, scale: f32| ((v / scale * 0.5 + 0.5) * 255.0).round().clamp(0.0, 255.0) as u8;
+    fields.iter().map(|f| [byte(f[0], slope), byte(f[1], slope), byte(f[2], height), 255]).collect()
+}
+
+/// The dUdV map as a texture (RGBA8, linear, one level: it is read at level 0).
+pub fn dudv_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::TextureView {
+    let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+    let format = wgpu::TextureFormat::Rgba8Unorm;
+    let texture = gpu::texture_2d(device, "dudv map", DUDV_SIZE, DUDV_SIZE, 1, 1, format, usage);
+    queue.write_texture(
+        wgpu::TexelCopyTextureInfo {
+            texture: &texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect: wgpu::TextureAspect::All,
+        },
+        bytemuck::cast_slice(&dudv_map(DUDV_SIZE, 16)),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(DUDV_SIZE * 4), rows_per_image: None },
+        wgpu::Extent3d { width: DUDV_SIZE, height: DUDV_SIZE, depth_or_array_layers: 1 },
+    );
+    texture.create_view(&Default::default())
+}
+
+/// WGSL constants of the flat water, written ahead of every shader.
+pub fn wgsl_constants() -> String {
+    format!(
+        "const DUDV_TILES: f32 = {DUDV_TILES:?};\nconst DUDV_SLOPE: f32 = {DUDV_SLOPE:?};\n\
+         const FLAT_REFERENCE_SLOPE: f32 = {REFERENCE_SLOPE:?};\nconst RIPPLE_REFERENCE_SLOPE: f32 = {RIPPLE_REFERENCE_SLOPE:?};\nconst FLAT_PATH_SCALE: f32 = {PATH_SCALE:?};\n\
+         const FLAT_RIPPLES: u32 = {}u;\n",
+        Distortion::Ripples as u32
+    )
+}
+
+/// The reflection and refraction textures at one size, and the bind group the water reads
+/// them through (group 2 of the flat water's pipeline).
+pub struct FlatTargets {
+    pub reflection: wgpu::Texture,
+    pub reflection_view: wgpu::TextureView,
+    pub refraction_view: wgpu::TextureView,
+    pub depth: wgpu::TextureView,
+    pub size: (u32, u32),
+    pub group: wgpu::BindGroup,
+}
+
+/// The flat water's own resources: its textures, its pipelines per variant and the divider.
+pub struct FlatWater {
+    layout: wgpu::BindGroupLayout,
+    pub targets: Option<FlatTargets>,
+    pipelines: HashMap<Features, wgpu::RenderPipeline>,
+    divider: FullscreenPass,
+}
+
+impl FlatWater {
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
+        let vis = wgpu::ShaderStages::FRAGMENT;
+        let float = wgpu::TextureSampleType::Float { filterable: true };
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("flat water textures layout"),
+            entries: &[
+                gpu::texture_entry(0, vis, float, wgpu::TextureViewDimension::D2),
+                gpu::texture_entry(1, vis, float, wgpu::TextureViewDimension::D2),
+            ],
+        });
+        let divider = FullscreenPass::new(
+            device,
+            "divider",
+            &["@fragment\nfn fs_divider() -> @location(0) vec4<f32> { return vec4<f32>(0.92, 0.92, 0.92, 1.0); }\n"],
+            "fs_divider",
+            &[],
+            FullscreenTarget { format, blend: None, depth: None },
+        );
+        Self { layout, targets: None, pipelines: HashMap::new(), divider }
+    }
+
+    /// The targets at `size` pixels (made again when the size changes).
+    pub fn targets(&mut self, device: &wgpu::Device, format: wgpu::TextureFormat, size: (u32, u32)) -> &FlatTargets {
+        if self.targets.as_ref().map(|t| t.size) != Some(size) {
+            let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+            let colour = |label| {
+                gpu::texture_2d(device, label, size.0, size.1, 1, 1, format, usage | wgpu::TextureUsages::COPY_SRC)
+            };
+            let reflection = colour("flat water reflection");
+            let refraction = colour("flat water refraction");
+            let depth = gpu::texture_2d(device, "flat water depth", size.0, size.1, 1, 1, DEPTH_FORMAT, usage);
+            let reflection_view = reflection.create_view(&Default::default());
+            let refraction_view = refraction.create_view(&Default::default());
+            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("flat water textures"),
+                layout: &self.layout,
+                entries: &[
+                    wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&reflection_view) },
+                    wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&refraction_view) },
+                ],
+            });
+            self.targets = Some(FlatTargets {
+                reflection,
+                reflection_view,
+                refraction_view,
+                depth: depth.create_view(&Default::default()),
+                size,
+                group,
+            });
+        }
+        self.targets.as_ref().expect("just made")
+    }
+
+    /// Builds the flat water plane's pipeline for `features`, if not built yet.
+    pub fn prepare_pipeline(&mut self, device: &wgpu::Device, features: Features, targets: &PipelineTargets<'_>) {
+        let layout = &self.layout;
+        self.pipelines.entry(features).or_insert_with(|| {
+            let module = gpu::shader(
+                device,
+                "flat water",
+                &[&features.wgsl(), gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::FLAT_WATER],
+            );
+            mesh_pipeline(
+                device,
+                MeshPipeline {
+                    label: "flat water",
+                    module: &module,
+                    vertex_entry: "vs_flat",
+                    fragment_entry: "fs_flat",
+                    layouts: &[targets.water_layout, targets.textures_layout, layout],
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+                    stride: 8,
+                    cull: None,
+                    front_face: wgpu::FrontFace::Ccw,
+                    format: targets.format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                    depth: true,
+                },
+            )
+        });
+    }
+
+    /// The pipeline [`FlatWater::prepare_pipeline`] built for `features`.
+    pub fn pipeline(&self, features: Features) -> &wgpu::RenderPipeline {
+        &self.pipelines[&features]
+    }
+
+    /// Draws the divider at column `x` of `target` (`size` pixels): a line and a grip.
+    pub fn draw_divider(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        x: u32,
+    ) {
+        let rect = |w: u32, h: u32| {
+            let x0 = x.saturating_sub(w / 2).min(size.0.saturating_sub(w.min(size.0)));
+            let y0 = (size.1.saturating_sub(h)) / 2;
+            [x0, y0, w.min(size.0), h.min(size.1)]
+        };
+        self.divider.run_in_rect(encoder, target, &[], rect(DIVIDER_LINE, size.1));
+        self.divider.run_in_rect(encoder, target, &[], rect(DIVIDER_GRIP.0, DIVIDER_GRIP.1));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn the_mirrored_camera_puts_points_of_the_plane_where_the_camera_does() {
+        let h = 0.013;
+        let vp = Mat4::perspective_rh(0.8, 4.0 / 3.0, 0.01, 100.0)
+            * Mat4::look_at_rh(Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO, Vec3::Y);
+        let mirrored = vp * mirror(h);
+        let mut worst = 0.0f32;
+        for p in [Vec3::new(0.3, h, -0.2), Vec3::new(-0.9, h, 0.7), Vec3::new(0.0, h, 0.0)] {
+            let (a, b) = (vp * p.extend(1.0), mirrored * p.extend(1.0));
+            worst = worst.max((a - b).abs().max_element());
+        }
+        let q = mirror(h).transform_point3(Vec3::new(0.2, 0.5, -0.1));
+        println!("plane points' clip coordinates differ by {worst:e}; (0.2, 0.5, -0.1) -> {q}");
+        assert!(worst < 1e-6);
+        assert!((q - Vec3::new(0.2, 2.0 * h - 0.5, -0.1)).length() < 1e-6);
+    }
+
+    #[test]
+    fn the_dudv_map_tiles_and_does_not_drift() {
+        let size = 64;
+        let map = dudv_map(size, 16);
+        let at = |x: u32, y: u32| map[((y % size) * size + x % size) as usize];
+        let diff = |a: [u8; 4], b: [u8; 4]| (0..3).map(|c| (a[c] as i32 - b[c] as i32).abs()).max().unwrap();
+        let (mut seam, mut inside) = (0, 0);
+        for i in 0..size {
+            seam = seam.max(diff(at(size - 1, i), at(0, i))).max(diff(at(i, size - 1), at(i, 0)));
+            for j in 0..size - 1 {
+                inside = inside.max(diff(at(j, i), at(j + 1, i))).max(diff(at(i, j), at(i, j + 1)));
+            }
+        }
+        let mean = |c: usize| map.iter().map(|t| t[c] as f32 / 255.0 - 0.5).sum::<f32>() / map.len() as f32;
+        println!("largest step across the seam {seam}, inside {inside}; mean slopes {:.4}, {:.4}", mean(0), mean(1));
+        assert!(seam <= inside, "the map does not tile");
+        assert!(mean(0).abs() < 2.0 / 255.0 && mean(1).abs() < 2.0 / 255.0, "the map drifts");
+        assert!(map.iter().any(|t| t[0] == 0 || t[0] == 255), "the slopes use the full range");
+    }
+}
