@@ -18,7 +18,6 @@ pub mod render;
 pub mod scene;
 pub mod sim;
 pub mod textures;
-#[cfg(not(target_arch = "wasm32"))]
 pub mod timing;
 #[cfg(target_arch = "wasm32")]
 pub mod web;

@@ -5,7 +5,9 @@ use crate::demo::Stage;
 use crate::gpu::AsyncReadback;
 use crate::render::flat::RenderMode;
 
-/// The device features stage timing needs; request them where the adapter has them.
+/// The device features stage timing uses; request them where the adapter has them. With only
+/// `TIMESTAMP_QUERY` (WebGPU in browsers) each mark is an empty compute pass that writes the
+/// timestamp as it begins.
 pub const TIMESTAMP_FEATURES: wgpu::Features =
     wgpu::Features::TIMESTAMP_QUERY.union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS);
 
@@ -16,12 +18,14 @@ pub struct StageTimer {
     readback: AsyncReadback,
     period_ns: f32,
     latest: Option<[f64; 3]>,
+    /// Timestamps may be written between passes (else: by empty compute passes).
+    inside_encoders: bool,
 }
 
 impl StageTimer {
-    /// `None` when the device was made without [`TIMESTAMP_FEATURES`].
+    /// `None` when the device was made without `TIMESTAMP_QUERY`.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Option<Self> {
-        if !device.features().contains(TIMESTAMP_FEATURES) {
+        if !device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
             return None;
         }
         let queries = device.create_query_set(&wgpu::QuerySetDescriptor {
@@ -41,6 +45,7 @@ impl StageTimer {
             readback: AsyncReadback::new(device, "stage timestamps readback", 32),
             period_ns: queue.get_timestamp_period(),
             latest: None,
+            inside_encoders: device.features().contains(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS),
         })
     }
 
@@ -52,7 +57,18 @@ impl StageTimer {
             Stage::AfterCaustics => 2,
             Stage::AfterScene => 3,
         };
-        encoder.write_timestamp(&self.queries, index);
+        if self.inside_encoders {
+            encoder.write_timestamp(&self.queries, index);
+        } else {
+            encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("stage timestamp"),
+                timestamp_writes: Some(wgpu::ComputePassTimestampWrites {
+                    query_set: &self.queries,
+                    beginning_of_pass_write_index: Some(index),
+                    end_of_pass_write_index: None,
+                }),
+            });
+        }
     }
 
     /// After the frame's stages: takes a finished read, and copies this frame's timestamps

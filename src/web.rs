@@ -8,8 +8,10 @@ use std::sync::{Arc, Mutex};
 use wasm_bindgen::prelude::*;
 
 use crate::demo::{DemoOptions, Key, WaterDemo};
-use crate::params::{self, Control, PARAMS};
+use crate::params::{self, Control, ParamId, PARAMS};
+use crate::render::flat::RenderMode;
 use crate::sim::SimEngine;
+use crate::timing::{ModeCosts, StageTimer};
 
 /// Runs once when the module is instantiated: a panic goes to the console (with a stack)
 /// and to the page, as a `wavepool:panic` event whose detail is the message.
@@ -210,6 +212,10 @@ pub struct WebDemo {
     lost: Arc<Mutex<Option<String>>>,
     /// Frames submitted whose work the GPU has not finished yet.
     in_flight: Arc<AtomicU32>,
+    /// GPU time per stage, where the browser has timestamp queries.
+    timer: Option<StageTimer>,
+    /// Each render mode's drawing time, from the timer.
+    mode_costs: ModeCosts,
 }
 
 #[wasm_bindgen]
@@ -258,6 +264,8 @@ impl WebDemo {
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("wavepool"),
+                // GPU time per stage where the browser measures it (WebGPU's timestamp-query).
+                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
                 required_limits: wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
                 ..Default::default()
             })
@@ -303,13 +311,15 @@ impl WebDemo {
             surface,
             config,
             srgb_view,
-            device,
-            queue,
             backend,
             adapter: adapter.get_info().name,
             max_side,
             lost,
             in_flight: Arc::new(AtomicU32::new(0)),
+            timer: StageTimer::new(&device, &queue),
+            mode_costs: ModeCosts::default(),
+            device,
+            queue,
         })
     }
 
@@ -348,7 +358,25 @@ impl WebDemo {
         };
         let view =
             frame.texture.create_view(&wgpu::TextureViewDescriptor { format: self.srgb_view, ..Default::default() });
-        self.demo.frame(&self.device, &self.queue, &view, (width, height), dt.clamp(0.0, 1.0));
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        let (size, dt) = ((width, height), dt.clamp(0.0, 1.0));
+        match &mut self.timer {
+            Some(timer) => {
+                self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, dt, &mut |e, s| {
+                    timer.mark(e, s)
+                });
+                timer.finish(&mut encoder);
+                if let Some(stages) = timer.latest() {
+                    self.mode_costs.observe(RenderMode::from_param(self.demo.params.get(ParamId::RenderMode)), stages);
+                }
+            }
+            None => self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, dt, &mut |_, _| {}),
+        }
+        self.queue.submit([encoder.finish()]);
+        self.demo.after_submit();
+        if let Some(timer) = &self.timer {
+            timer.after_submit();
+        }
         self.queue.present(frame);
         self.in_flight.fetch_add(1, Ordering::AcqRel);
         let in_flight = self.in_flight.clone();
@@ -531,6 +559,13 @@ impl WebDemo {
         set(&o, "spherePosition", position(self.demo.sphere().map(|s| s.centre)));
         set(&o, "duckPosition", position(self.demo.duck().map(|p| p.position)));
         set(&o, "submergedVolume", self.demo.submerged_volume() as f64);
+        let costs = js_sys::Object::new();
+        for (mode, name) in
+            [(RenderMode::RayTraced, "raytraced"), (RenderMode::Flat, "flat"), (RenderMode::Split, "split")]
+        {
+            set(&costs, name, self.mode_costs.of(mode).map_or(JsValue::NULL, JsValue::from_f64));
+        }
+        set(&o, "gpuMs", if self.timer.is_some() { JsValue::from(costs) } else { JsValue::NULL });
         set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
         set(&o, "probeLatency", self.demo.probe_latency().map_or(JsValue::NULL, |l| JsValue::from_f64(l as f64)));
         o

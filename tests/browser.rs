@@ -894,6 +894,25 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
              return { split: window.demo.get('split'), control: Number(root.querySelector('[name=split]').value) };")
         .await;
     println!("{backend}: divider dragged: {after}");
+    // Each mode's cost, measured while it was shown: GPU time where WebGPU has timestamps
+    // (Chromium here does), frame intervals anyway, written under the mode's control.
+    let costs = browser
+        .js("return { gpu: window.demo.stats().gpuMs,
+                      text: document.querySelector('#pool').shadowRoot.querySelector('.costs').textContent };")
+        .await;
+    println!("{backend}: costs {costs}");
+    let text = costs["text"].as_str().unwrap_or("");
+    assert!(text.contains("Between frames: ray-traced") && !text.contains("flat –"), "{backend}: {text}");
+    if backend == "webgpu" {
+        for mode in ["raytraced", "flat", "split"] {
+            assert!(
+                costs["gpu"][mode].as_f64().is_some_and(|ms| ms > 0.0),
+                "{backend}: no GPU time for {mode}: {costs}"
+            );
+        }
+    } else {
+        assert!(costs["gpu"].is_null() && text.contains("does not measure"), "{backend}: {costs}");
+    }
     let split_now = after["split"].as_f64().unwrap();
     assert!((split_now - 0.75).abs() < 0.02, "{backend}: the divider is at {split_now}");
     assert!((after["control"].as_f64().unwrap() - split_now).abs() < 0.011, "{backend}: the control did not follow");

@@ -400,6 +400,9 @@ class Demo {
     this._waking = false;
     this._plot = null; // the Fresnel plot in the Optics group (fresnel-plot.js), with the controls
     this._plotAt = -Infinity; // when its view mark last moved (ms)
+    this._costs = null; // the render modes' costs, under the render_mode control
+    this._costsAt = -Infinity; // when they were last written (ms)
+    this._modeIntervals = [[], [], []]; // recent intervals between drawn frames per render mode (ms)
   }
 
   // ---- set-up -------------------------------------------------------------------------
@@ -598,6 +601,12 @@ class Demo {
       }
       groups.get(p.group).append(this._control(p));
     }
+    if (groups.has("Flat water")) {
+      // What each render mode costs, measured while it is shown, under its control.
+      this._costs = document.createElement("output");
+      this._costs.className = "costs";
+      groups.get("Flat water").querySelector("[name=render_mode]").closest(".row").after(this._costs);
+    }
     if (groups.has("Optics")) {
       // The Fresnel models' curves beside their select.
       this._plot = new FresnelPlot(fresnelCurve);
@@ -709,6 +718,34 @@ class Demo {
     return row;
   }
 
+  // Records a drawn frame's interval under the render mode shown, and twice a second writes
+  // each mode's cost: its GPU time where the browser measures it (stats().gpuMs), and the
+  // median interval between its frames.
+  _costsNote(time, interval) {
+    const mode = Math.round(this.get("render_mode"));
+    const list = this._modeIntervals[mode];
+    if (list) {
+      list.push(interval);
+      if (list.length > 60) list.shift();
+    }
+    if (!this._costs || time - this._costsAt < 500) return;
+    this._costsAt = time;
+    const s = this._core.stats();
+    const names = ["ray-traced", "flat", "split"];
+    const keys = ["raytraced", "flat", "split"];
+    const gpu = s.gpuMs
+      ? "GPU time drawing the water: " +
+        names.map((n, i) => `${n} ${s.gpuMs[keys[i]] === null ? "–" : s.gpuMs[keys[i]].toFixed(1) + " ms"}`).join(" · ")
+      : "GPU time: this browser does not measure it (no WebGPU timestamps)";
+    const between = names
+      .map((n, i) => {
+        const l = [...this._modeIntervals[i]].sort((a, b) => a - b);
+        return `${n} ${l.length ? l[Math.floor((l.length - 1) / 2)].toFixed(0) + " ms" : "–"}`;
+      })
+      .join(" · ");
+    this._costs.textContent = `${s.flatNote ? s.flatNote + " " : ""}${gpu}. Between frames: ${between}.`;
+  }
+
   // The plot's model and the angle at which the view's centre meets the water (the camera's
   // pitch is its elevation above the pool's middle: incidence = 90° - |pitch|).
   _updatePlot() {
@@ -814,6 +851,7 @@ class Demo {
       this._updatePlot();
     }
     if (this._frames.length === 0) this._runningSince = time;
+    else this._costsNote(time, time - this._frames[this._frames.length - 1]);
     this._frames.push(time);
     this._simTimes.push(this._core.simTime);
     // Drawn frames of the last 2 s, and the one before them (for the first interval).
