@@ -424,10 +424,12 @@ impl WaterDemo {
         }
     }
 
-    /// Whether a press at column `x` (pixels) grabs the split view's divider.
+    /// Whether a press at column `x` (pixels) grabs the split view's divider (shown only in
+    /// the split view with the camera above the water).
     pub fn over_divider(&self, x: f32) -> bool {
         RenderMode::from_param(self.params.get(ParamId::RenderMode)) == RenderMode::Split
             && (x - self.params.get(ParamId::Split) * self.viewport.x).abs() <= DIVIDER_GRAB_PX
+            && self.flat_water_drawn()
     }
 
     /// Pointer pressed at pixel (x, y): on the split view's divider moves it; on the sphere or the duck starts moving it, on the

@@ -132,6 +132,24 @@ pub fn texture_2d(
 }
 
 /// A render pass on one colour target and no depth, stored; `load` keeps or clears it first.
+/// Copies `data` (rows of texels, top row first, nothing between rows) into the whole of mip
+/// level `level` of a 2D texture.
+pub fn write_texture_2d(queue: &wgpu::Queue, texture: &wgpu::Texture, level: u32, data: &[u8]) {
+    let (width, height) = ((texture.width() >> level).max(1), (texture.height() >> level).max(1));
+    let texel = texture.format().block_copy_size(None).expect("colour format");
+    queue.write_texture(
+        wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: level,
+            origin: wgpu::Origin3d::ZERO,
+            aspect: wgpu::TextureAspect::All,
+        },
+        data,
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(width * texel), rows_per_image: None },
+        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+    );
+}
+
 pub fn colour_pass<'e>(
     encoder: &'e mut wgpu::CommandEncoder,
     label: &str,

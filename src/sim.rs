@@ -326,12 +326,7 @@ impl HeightField {
         }
         let zeros = vec![0u8; (self.size * self.size * 16) as usize];
         for texture in self.state.textures() {
-            queue.write_texture(
-                texture.as_image_copy(),
-                &zeros,
-                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(self.size * 16), rows_per_image: None },
-                texture.size(),
-            );
+            crate::gpu::write_texture_2d(queue, texture, 0, &zeros);
         }
     }
 
@@ -356,10 +351,5 @@ impl HeightField {
 /// `cells` is a buffer kept between frames.
 fn upload(queue: &wgpu::Queue, texture: &wgpu::Texture, water: &cpu::CpuHeightField, cells: &mut Vec<[f32; 4]>) {
     water.write_cells(cells);
-    queue.write_texture(
-        texture.as_image_copy(),
-        bytemuck::cast_slice(cells),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(water.size() * 16), rows_per_image: None },
-        texture.size(),
-    );
+    crate::gpu::write_texture_2d(queue, texture, 0, bytemuck::cast_slice(cells));
 }

@@ -108,18 +108,7 @@ pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::
         wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
     );
     for (level, data) in mips.iter().enumerate() {
-        let size = (TILE_TEXTURE_SIZE >> level).max(1);
-        queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &texture,
-                mip_level: level as u32,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            data,
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
-            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-        );
+        gpu::write_texture_2d(queue, &texture, level as u32, data);
     }
     texture
 }
@@ -139,17 +128,7 @@ pub fn create_fresnel_table(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu:
         wgpu::TextureFormat::R32Float,
         wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
     );
-    queue.write_texture(
-        wgpu::TexelCopyTextureInfo {
-            texture: &texture,
-            mip_level: 0,
-            origin: wgpu::Origin3d::ZERO,
-            aspect: wgpu::TextureAspect::All,
-        },
-        bytemuck::cast_slice(&crate::optics::fresnel_table()),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
-        wgpu::Extent3d { width: size, height: 2, depth_or_array_layers: 1 },
-    );
+    gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&crate::optics::fresnel_table()));
     texture
 }
 

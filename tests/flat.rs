@@ -24,6 +24,22 @@ fn pool(objects: f32) -> WaterDemo {
     demo
 }
 
+/// Flat water, undistorted and still, at full texture resolution, seen from low (20°) under a
+/// high sun (85°, so the sphere's shadow falls under it), with a ball of radius 0.15 m at
+/// `centre` (m).
+fn sphere_over_flat_water(centre: Vec3) -> WaterDemo {
+    let mut demo = pool(1.0);
+    demo.params.set(ParamId::Paused, 1.0);
+    demo.params.set(ParamId::SunElevation, 85.0);
+    demo.params.set(ParamId::RenderMode, 1.0);
+    demo.params.set(ParamId::FlatStrength, 0.0);
+    demo.params.set(ParamId::FlatResolution, 1.0);
+    demo.params.set(ParamId::SphereRadius, 0.15);
+    demo.camera.pitch = 20.0;
+    demo.set_sphere_centre(centre);
+    demo
+}
+
 /// The flat water's reflection texture as a frame.
 fn reflection(demo: &WaterDemo) -> Frame {
     let g = common::gpu();
@@ -82,19 +98,7 @@ fn split_at_half_equals_flat_on_the_left_and_raytraced_on_the_right() {
 
 #[test]
 fn the_sphere_above_the_water_appears_where_the_mirrored_camera_puts_it() {
-    // High sun (its shadow falls under the sphere), calm water, no distortion.
-    let setup = |height: f32| {
-        let mut demo = pool(1.0);
-        demo.params.set(ParamId::Paused, 1.0);
-        demo.params.set(ParamId::SunElevation, 85.0);
-        demo.params.set(ParamId::RenderMode, 1.0);
-        demo.params.set(ParamId::FlatStrength, 0.0);
-        demo.params.set(ParamId::FlatResolution, 1.0);
-        demo.params.set(ParamId::SphereRadius, 0.15);
-        demo.camera.pitch = 20.0;
-        demo.set_sphere_centre(Vec3::new(0.1, height, -0.1));
-        demo
-    };
+    let setup = |height: f32| sphere_over_flat_water(Vec3::new(0.1, height, -0.1));
     let mut above = setup(0.35);
     let frame = render(&mut above, W, H, 2, 1.0 / 60.0);
     let mirror_above = reflection(&above);
@@ -143,13 +147,7 @@ fn the_sphere_above_the_water_appears_where_the_mirrored_camera_puts_it() {
 #[test]
 fn geometry_under_the_water_never_appears_in_the_reflection() {
     let setup = |y: f32| {
-        let mut demo = pool(1.0);
-        demo.params.set(ParamId::Paused, 1.0);
-        demo.params.set(ParamId::RenderMode, 1.0);
-        demo.params.set(ParamId::FlatResolution, 1.0);
-        demo.params.set(ParamId::SphereRadius, 0.15);
-        demo.camera.pitch = 20.0;
-        demo.set_sphere_centre(Vec3::new(0.0, y, 0.0));
+        let mut demo = sphere_over_flat_water(Vec3::new(0.0, y, 0.0));
         render(&mut demo, W, H, 2, 1.0 / 60.0);
         reflection(&demo)
     };

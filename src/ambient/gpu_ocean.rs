@@ -103,17 +103,7 @@ impl GpuOcean {
         let fresh = self.uploaded.as_ref().is_some_and(|(h0, at)| *at == epoch && *h0 == ocean.h0);
         if !fresh {
             let texels = ocean.epoch_spectrum(epoch);
-            queue.write_texture(
-                wgpu::TexelCopyTextureInfo {
-                    texture: &self.spectrum,
-                    mip_level: 0,
-                    origin: wgpu::Origin3d::ZERO,
-                    aspect: wgpu::TextureAspect::All,
-                },
-                bytemuck::cast_slice(&texels),
-                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(self.size * 16), rows_per_image: None },
-                wgpu::Extent3d { width: self.size, height: self.size, depth_or_array_layers: 1 },
-            );
+            gpu::write_texture_2d(queue, &self.spectrum, 0, bytemuck::cast_slice(&texels));
             self.uploaded = Some((ocean.h0.clone(), epoch));
         }
         queue.write_buffer(&self.time, 0, bytemuck::cast_slice(&[0.0f32, 0.0, (t - epoch) as f32, 0.0]));

@@ -167,17 +167,7 @@ pub fn dudv_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture
     let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
     let format = wgpu::TextureFormat::Rgba8Unorm;
     let texture = gpu::texture_2d(device, "dudv map", DUDV_SIZE, DUDV_SIZE, 1, 1, format, usage);
-    queue.write_texture(
-        wgpu::TexelCopyTextureInfo {
-            texture: &texture,
-            mip_level: 0,
-            origin: wgpu::Origin3d::ZERO,
-            aspect: wgpu::TextureAspect::All,
-        },
-        bytemuck::cast_slice(&dudv_map(DUDV_SIZE, 16)),
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(DUDV_SIZE * 4), rows_per_image: None },
-        wgpu::Extent3d { width: DUDV_SIZE, height: DUDV_SIZE, depth_or_array_layers: 1 },
-    );
+    gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&dudv_map(DUDV_SIZE, 16)));
     texture.create_view(&Default::default())
 }
 

@@ -700,17 +700,7 @@ impl Renderer {
         }
         for (map, texels) in self.cpu_ambient.iter().zip(maps) {
             let Some(texels) = texels else { continue };
-            queue.write_texture(
-                wgpu::TexelCopyTextureInfo {
-                    texture: &map.0,
-                    mip_level: 0,
-                    origin: wgpu::Origin3d::ZERO,
-                    aspect: wgpu::TextureAspect::All,
-                },
-                bytemuck::cast_slice(texels),
-                wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 16), rows_per_image: None },
-                wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-            );
+            gpu::write_texture_2d(queue, &map.0, 0, bytemuck::cast_slice(texels));
         }
     }
 
@@ -730,34 +720,13 @@ impl Renderer {
             self.scene_textures.foam = foam_map(device, size);
             self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
         }
-        queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &self.scene_textures.foam.0,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            bytemuck::cast_slice(foam.amount()),
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
-            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-        );
+        gpu::write_texture_2d(queue, &self.scene_textures.foam.0, 0, bytemuck::cast_slice(foam.amount()));
     }
 
     /// Copies the ambient waves' spectrum image (`AmbientWaves::spectrum_image`) for the
     /// spectrum debug view.
     pub fn upload_spectrum(&self, queue: &wgpu::Queue, image: &[f32]) {
-        let size = SPECTRUM_IMAGE_SIZE as u32;
-        queue.write_texture(
-            wgpu::TexelCopyTextureInfo {
-                texture: &self.scene_textures.spectrum.0,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            bytemuck::cast_slice(image),
-            wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(size * 4), rows_per_image: None },
-            wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-        );
+        gpu::write_texture_2d(queue, &self.scene_textures.spectrum.0, 0, bytemuck::cast_slice(image));
     }
 
     /// Makes the caustics map `size` texels per side, with light per colour channel or not
@@ -995,17 +964,7 @@ impl Renderer {
             pass.set_scissor_rect(0, 0, reach, texture_size.1);
             pass.set_bind_group(0, Some(group), &[]);
             pass.set_bind_group(1, Some(&self.textures_group), &[]);
-            let pipelines = &self.variants[&features];
-            if view.sphere.is_some() {
-                pass.set_pipeline(&pipelines.sphere);
-                self.sphere_mesh.draw(&mut pass);
-            }
-            if view.duck.is_some() {
-                pass.set_pipeline(&pipelines.duck);
-                self.duck_mesh.draw(&mut pass);
-            }
-            pass.set_pipeline(&pipelines.pool);
-            self.pool_mesh.draw(&mut pass);
+            self.draw_solids(&mut pass, features, view);
             if features.clip > 0 {
                 self.sky.draw(&mut pass, &[group, &self.textures_group]);
             }
@@ -1076,17 +1035,24 @@ impl Renderer {
                 self.grid.draw(&mut pass);
             }
         }
+        self.draw_solids(&mut pass, features, view);
+        self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+    }
+
+    /// Draws the sphere and the duck (those the view has) and the pool with the pipelines of
+    /// `features`, front to back.
+    fn draw_solids(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        let pipelines = &self.variants[&features];
         if view.sphere.is_some() {
             pass.set_pipeline(&pipelines.sphere);
-            self.sphere_mesh.draw(&mut pass);
+            self.sphere_mesh.draw(pass);
         }
         if view.duck.is_some() {
             pass.set_pipeline(&pipelines.duck);
-            self.duck_mesh.draw(&mut pass);
+            self.duck_mesh.draw(pass);
         }
         pass.set_pipeline(&pipelines.pool);
-        self.pool_mesh.draw(&mut pass);
-        self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+        self.pool_mesh.draw(pass);
     }
 }
 
@@ -1101,7 +1067,7 @@ pub fn flat_shown(view: &View) -> Option<FlatView> {
 fn overlap(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
     let (x0, y0) = (a[0].max(b[0]), a[1].max(b[1]));
     let (x1, y1) = ((a[0] + a[2]).min(b[0] + b[2]), (a[1] + a[3]).min(b[1] + b[3]));
-    (x1 > x0 && y1 > y0).then_some([x0, y0, x1 - x0, y1 - y0])
+    (x1 > x0 && y1 > y0).then(|| [x0, y0, x1 - x0, y1 - y0])
 }
 
 /// A render pass on a colour and a depth target, clearing the colour (to `clear`) or keeping
