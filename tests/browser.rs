@@ -846,9 +846,10 @@ async fn the_ambient_select_switches_all_five_models_on_webgl2() {
 }
 
 /// Flat water in the page: the split view's halves are the flat and the ray-traced pictures,
-/// the divider drags, its control follows, no error.
+/// the divider drags, its control follows, no error. The page starts flat, so the flat
+/// picture owes nothing to a ray-traced frame drawn before it.
 async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
-    let query = format!("?backend={backend}&quality=1&objects=sphere&paused=1&flat_resolution=1");
+    let query = format!("?backend={backend}&quality=1&objects=sphere&paused=1&flat_resolution=1&render_mode=flat");
     let (browser, _server) = open_demo(graphics, &query, backend).await;
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
     let shot = |mode: u32| {
@@ -859,9 +860,11 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
             browser.screenshot().await
         }
     };
-    let traced = shot(0).await;
     let flat = shot(1).await;
     let split = shot(2).await;
+    let traced = shot(0).await;
+    // Back to the split view, to read its controls and drag its divider.
+    let split_again = shot(2).await;
     // Halves, leaving out the divider's grip in the middle.
     let half = rect.w / 2;
     let left = Rect { w: half - 8, ..rect };
@@ -871,17 +874,20 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
         changed_fraction(&split, &traced, right, 16),
         changed_fraction(&flat, &traced, rect, 16),
     );
+    let history = changed_fraction(&split_again, &split, rect, 16);
     let state = browser
         .js("return { error: document.querySelector('#pool').dataset.error || null, note: window.demo.stats().flatNote,
                       splitShown: !document.querySelector('#pool').shadowRoot.querySelector('[name=split]').closest('.row').hidden };")
         .await;
     println!(
         "{backend}: split vs flat on the left {:.2} % of pixels differ, vs ray-traced on the right {:.2} %; flat vs \
-         ray-traced {:.1} %; {state}",
+         ray-traced {:.1} %; split again after the ray-traced frame vs the first split {:.2} %; {state}",
         left_diff * 100.0,
         right_diff * 100.0,
-        modes * 100.0
+        modes * 100.0,
+        history * 100.0
     );
+    assert!(history < 0.02, "{backend}: the split picture depends on the modes drawn before it");
     assert!(state["error"].is_null() && state["note"].is_null() && state["splitShown"] == true, "{backend}: {state}");
     assert!(left_diff < 0.02 && right_diff < 0.02, "{backend}: the split halves are not the two modes");
     assert!(modes > 0.05, "{backend}: flat and ray-traced water look alike ({:.1} %)", modes * 100.0);

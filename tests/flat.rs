@@ -66,7 +66,11 @@ fn changed_centroid(a: &Frame, b: &Frame, threshold: u8) -> Option<Vec2> {
 
 #[test]
 fn split_at_half_equals_flat_on_the_left_and_raytraced_on_the_right() {
+    // Flat from the start, so that nothing a ray-traced frame leaves behind (its caustics
+    // map) can make the flat frame, and again after the others: a frame owes nothing to the
+    // modes drawn before it.
     let mut demo = pool(3.0);
+    demo.params.set(ParamId::RenderMode, 1.0);
     for d in random_drops(7, 6, 0.9, 0.05, 0.02) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);
     }
@@ -76,18 +80,21 @@ fn split_at_half_equals_flat_on_the_left_and_raytraced_on_the_right() {
         demo.params.set(ParamId::RenderMode, mode);
         render(&mut demo, W, H, 1, 1.0 / 60.0)
     };
-    let (traced, flat, split) = (frame(0.0), frame(1.0), frame(2.0));
+    let (flat, split, traced, flat_again) = (frame(1.0), frame(2.0), frame(0.0), frame(1.0));
+    let history = flat_again.changed_fraction(&flat, Rect::ALL, 0);
     // The divider is drawn over column W/2 (and its grip 5 px either side).
     let (left, right) = (Rect(0.0, 0.0, 0.48, 1.0), Rect(0.52, 0.0, 1.0, 1.0));
     let (left_diff, right_diff) = (split.changed_fraction(&flat, left, 0), split.changed_fraction(&traced, right, 0));
     let modes_differ = flat.changed_fraction(&traced, Rect::ALL, 8);
     println!(
         "split vs flat on the left: {:.4} % of pixels differ; vs ray-traced on the right: {:.4} %; flat vs ray-traced \
-         anywhere: {:.1} %",
+         anywhere: {:.1} %; flat after the other modes vs flat from the start: {:.4} %",
         left_diff * 100.0,
         right_diff * 100.0,
-        modes_differ * 100.0
+        modes_differ * 100.0,
+        history * 100.0
     );
+    assert_eq!(history, 0.0, "the flat frame depends on the modes drawn before it");
     assert_eq!(left_diff, 0.0, "the split frame's left half is not the flat frame");
     assert_eq!(right_diff, 0.0, "the split frame's right half is not the ray-traced frame");
     assert!(modes_differ > 0.05, "flat and ray-traced water look alike ({:.1} %)", modes_differ * 100.0);

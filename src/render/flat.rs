@@ -116,6 +116,20 @@ impl FlatView {
         }
     }
 
+    /// The variant everything on the flat side is drawn with (its two textures and, in the
+    /// frame, the plane and the solids seen past it): `base` with the pool lit by the flat
+    /// water's own light (real, fake or no caustics) instead of the ray tracer's choice, so
+    /// that what is seen directly under the water (through the cut-away side of the pool)
+    /// matches what the refraction texture shows.
+    pub fn lit_features(&self, base: Features) -> Features {
+        Features {
+            caustics: self.caustics == FlatCaustics::Real,
+            flat_caustics: self.caustics == FlatCaustics::Fake,
+            flat_distortion: self.distortion,
+            ..base
+        }
+    }
+
     /// The `flat` uniform: plane height, strength, scroll, soft edge.
     pub fn uniform(&self) -> [f32; 4] {
         [self.plane, self.strength, self.move_factor, self.soft_edge]

@@ -939,15 +939,8 @@ impl Renderer {
         } else {
             texture_size.0
         };
-        let base = Features::of(view);
-        let reflection = Features { clip: 1, ..base };
-        let refraction = Features {
-            clip: -1,
-            caustics: f.caustics == FlatCaustics::Real,
-            flat_caustics: f.caustics == FlatCaustics::Fake,
-            flat_distortion: f.distortion,
-            ..base
-        };
+        let lit = f.lit_features(Features::of(view));
+        let (reflection, refraction) = (Features { clip: 1, ..lit }, Features { clip: -1, ..lit });
         self.variant(device, reflection);
         self.variant(device, refraction);
         let targets = self.flat.targets(device, self.settings.target_format, texture_size);
@@ -988,21 +981,21 @@ impl Renderer {
         rect: [u32; 4],
     ) {
         let depth = self.depth_view(device, size).clone();
-        let features = Features::of(view);
+        // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
+        let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
         let regions = if flat.is_some() { None } else { variants::surface_regions(view, size) };
         self.variant(device, features);
         for (_, needs) in regions.iter().flatten() {
             self.variant(device, *needs);
         }
-        let flat_features = flat.map(|f| Features { flat_distortion: f.distortion, ..features });
-        if let Some(flat_features) = flat_features {
+        if flat.is_some() {
             let targets = PipelineTargets {
                 format: self.settings.target_format,
                 caustics_format: self.settings.caustics_format_for(features.dispersion).0,
                 water_layout: &self.water_layout,
                 textures_layout: &self.textures_layout,
             };
-            self.flat.prepare_pipeline(device, flat_features, &targets);
+            self.flat.prepare_pipeline(device, features, &targets);
         }
         let clear = (rect[0] == 0).then_some(wgpu::Color::BLACK);
         let mut pass = begin_scene_pass(encoder, "scene", target, &depth, clear);
@@ -1012,10 +1005,10 @@ impl Renderer {
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
         let [x, y, w, h] = rect;
         pass.set_scissor_rect(x, y, w, h);
-        match (flat_features, regions) {
-            (Some(flat_features), _) => {
+        match (flat, regions) {
+            (Some(_), _) => {
                 let group = &self.flat.targets.as_ref().expect("flat textures are drawn first").group;
-                pass.set_pipeline(self.flat.pipeline(flat_features));
+                pass.set_pipeline(self.flat.pipeline(features));
                 pass.set_bind_group(2, Some(group), &[]);
                 self.grid.draw(&mut pass);
             }
