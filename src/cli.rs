@@ -8,6 +8,7 @@ use std::time::Instant;
 use wavepool::demo::{DemoOptions, Stage, WaterDemo, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::{self, ParamId};
+use wavepool::presets;
 use wavepool::scene::HALF_WIDTH;
 use wavepool::sim::random_drops;
 use wavepool::timing::StageTimer;
@@ -16,13 +17,13 @@ const USAGE: &str = "\
 wavepool: interactive water, a desktop viewer and headless tools
 
 USAGE:
-  wavepool [--frames N --screenshot FILE.png] [--sim-size N] [--float auto|none] [--set NAME=VALUE]...
+  wavepool [--frames N --screenshot FILE.png] [--sim-size N] [--float auto|none] [--preset NAME] [--set NAME=VALUE]...
   wavepool render --out FILE.png [--width W] [--height H] [--frames N]
                   [--drops K] [--seed S] [--yaw DEG] [--pitch DEG] [--distance M]
                   [--sim-size N] [--surface-grid N] [--caustics-size N] [--float auto|none]
-                  [--set NAME=VALUE]...
+                  [--preset NAME] [--set NAME=VALUE]...
   wavepool bench  [--width W] [--height H] [--frames N] [--sim-size N] [--surface-grid N]
-                  [--caustics-size N] [--float auto|none] [--set NAME=VALUE]...
+                  [--caustics-size N] [--float auto|none] [--preset NAME] [--set NAME=VALUE]...
 
 (no command) opens the viewer window: the pool and a panel with every parameter. With
         --frames N it closes after N frames, with --screenshot it first saves the window.
@@ -31,7 +32,9 @@ render  simulates N frames of 1/60 s (K seeded random drops at the start) and wr
 bench   renders N frames (default 120) after a warm-up and prints one JSON object with the
         adapter, frame times and per-stage GPU times.
 
---set takes any parameter of the table, e.g. --set caustics=0 --set sun_elevation=30.
+--set takes any parameter of the table, by number or a choice's name, e.g. --set caustics=off
+        --set sun_elevation=30 --set render_mode=split. --preset NAME starts from a lesson
+        preset (listed last; the --set values come after it).
 --float none takes the path for devices without float render targets (water simulated on
 the CPU, 8-bit caustics map).
 Parameters:";
@@ -70,6 +73,8 @@ struct Options {
     caustics_size: u32,
     /// False with `--float none`: the path for devices without float render targets.
     float_targets: bool,
+    /// `--preset NAME`: applied before the `--set` values.
+    preset: Option<&'static presets::Preset>,
     sets: Vec<(String, f32)>,
 }
 
@@ -90,6 +95,7 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
         surface_grid: DemoOptions::default().surface_grid,
         caustics_size: DemoOptions::default().caustics_size,
         float_targets: true,
+        preset: None,
         sets: Vec::new(),
     };
     let mut it = args.iter();
@@ -130,8 +136,26 @@ fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
                     .ok_or_else(|| UsageError(format!("--set: expected NAME=VALUE, got '{value}'")))?;
                 let spec = params::find(name)
                     .ok_or_else(|| UsageError(params::ParamError::Unknown(name.to_owned()).to_string()))?;
-                let v: f32 = parse_number(flag, v, spec.min(), spec.max())?;
-                o.sets.push((name.to_owned(), v));
+                let value = spec.parse(v).ok_or_else(|| {
+                    let names = match spec.control {
+                        params::Control::Choice { names, .. } if !names.is_empty() => {
+                            format!(" or one of {}", names.join(", "))
+                        }
+                        _ => String::new(),
+                    };
+                    UsageError(format!("--set {name}: '{v}' is not a number{names}"))
+                })?;
+                if value < spec.min() || value > spec.max() {
+                    return Err(UsageError(format!("--set {name}: {v} is outside {}..={}", spec.min(), spec.max())));
+                }
+                o.sets.push((name.to_owned(), value));
+            }
+            "--preset" => {
+                let preset = presets::find(value).ok_or_else(|| {
+                    let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
+                    UsageError(format!("--preset: '{value}' is not one of {}", names.join(", ")))
+                })?;
+                o.preset = Some(preset);
             }
             other => return Err(UsageError(format!("unknown option '{other}'"))),
         }
@@ -151,6 +175,9 @@ fn make_demo(gpu: &HeadlessGpu, o: &Options) -> WaterDemo {
             float_targets: o.float_targets,
         },
     );
+    if let Some(preset) = o.preset {
+        preset.apply(&mut demo.params, &mut demo.camera);
+    }
     for (name, v) in &o.sets {
         demo.params.set_by_name(name, *v).expect("names checked while parsing");
     }
@@ -320,7 +347,8 @@ fn usage() -> String {
             }
         })
         .collect();
-    format!("{USAGE}\n{}\n", names.join("\n"))
+    let presets: Vec<String> = presets::PRESETS.iter().map(|p| format!("  {:<14} {}", p.name, p.label)).collect();
+    format!("{USAGE}\n{}\nPresets:\n{}\n", names.join("\n"), presets.join("\n"))
 }
 
 /// Flags of the desktop viewer (no command): `--frames N`, `--screenshot FILE.png`, and the
@@ -343,6 +371,7 @@ fn parse_viewer(args: &[String]) -> Result<crate::viewer::ViewerOptions, UsageEr
         frames: o.frames_given.then_some(o.frames),
         screenshot: o.screenshot.clone(),
         demo,
+        preset: o.preset,
         sets: o.sets.clone(),
     })
 }

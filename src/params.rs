@@ -106,6 +106,22 @@ impl ParamSpec {
         }
     }
 
+    /// A value as a user writes it (command line, URL): a number, one of a choice's names
+    /// (any case), or on/off/true/false for a toggle. `None` if it is none of those.
+    pub fn parse(&self, text: &str) -> Option<f32> {
+        let text = text.trim();
+        if let Control::Choice { values, names } = self.control {
+            if let Some(i) = names.iter().position(|n| n.eq_ignore_ascii_case(text)) {
+                return Some(values[i]);
+            }
+        }
+        match text.to_ascii_lowercase().as_str() {
+            "on" | "true" => Some(1.0),
+            "off" | "false" => Some(0.0),
+            _ => text.parse().ok(),
+        }
+    }
+
     /// The nearest valid value: clamped to the range; toggles snap to 0 or 1, choices to the
     /// nearest value; NaN gives the default.
     pub fn sanitise(&self, value: f32) -> f32 {
@@ -791,6 +807,25 @@ mod tests {
                 assert!(values.windows(2).all(|w| w[0] < w[1]), "{}: values not increasing", p.name);
                 assert!(values.contains(&p.default), "{}: default is not a choice", p.name);
             }
+        }
+    }
+
+    #[test]
+    fn values_are_read_as_numbers_choice_names_or_on_and_off() {
+        let mode = spec(ParamId::RenderMode);
+        let cases = [
+            (mode.parse("split"), Some(2.0)),
+            (mode.parse("Flat"), Some(1.0)),
+            (mode.parse("1"), Some(1.0)),
+            (mode.parse("curved"), None),
+            (spec(ParamId::Caustics).parse("off"), Some(0.0)),
+            (spec(ParamId::Caustics).parse("true"), Some(1.0)),
+            (spec(ParamId::WaveSpeed).parse(" 0.8 "), Some(0.8)),
+            (spec(ParamId::SimSize).parse("512"), Some(512.0)),
+        ];
+        println!("{cases:?}");
+        for (got, want) in cases {
+            assert_eq!(got, want);
         }
     }
 

@@ -2,6 +2,9 @@
 //! so a share link is a preset too. Chosen by `preset=` in the URL, a `<wave-pool preset>`
 //! attribute, `mount({ preset })` or the Preset select of the controls.
 
+use crate::camera::OrbitCamera;
+use crate::params::{Params, PARAMS};
+
 /// A named set of parameter values (by the parameter table's names) and a camera to start from.
 #[derive(Clone, Copy, Debug)]
 pub struct Preset {
@@ -119,6 +122,24 @@ pub const PRESETS: &[Preset] = &[
         camera: None,
     },
 ];
+
+impl Preset {
+    /// Starts over from this preset: every parameter but the display's (resolution, frame
+    /// budget) at its default, then the preset's values, and its view (or the default view).
+    pub fn apply(&self, params: &mut Params, camera: &mut OrbitCamera) {
+        for p in PARAMS.iter().filter(|p| p.group != "Display") {
+            params.reset(p.id);
+        }
+        for &(name, value) in self.values {
+            let _ = params.set_by_name(name, value);
+        }
+        let [yaw, pitch, distance] = self.camera.unwrap_or_else(|| {
+            let view = OrbitCamera::default();
+            [view.yaw, view.pitch, view.distance]
+        });
+        (camera.yaw, camera.pitch, camera.distance) = (yaw, pitch, distance);
+    }
+}
 
 /// The preset called `name`.
 pub fn find(name: &str) -> Option<&'static Preset> {

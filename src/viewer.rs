@@ -13,6 +13,7 @@ use eframe::egui;
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
 use wavepool::params::{choice_label, Control, ParamId, ParamSpec, PARAMS};
+use wavepool::presets::{Preset, PRESETS};
 use wavepool::render::flat::RenderMode;
 use wavepool::timing::{ModeCosts, StageTimer, TIMESTAMP_FEATURES};
 
@@ -28,6 +29,8 @@ pub struct ViewerOptions {
     pub screenshot: Option<PathBuf>,
     /// Starting options of the demo (simulation size, meshes).
     pub demo: DemoOptions,
+    /// A lesson preset to start from (before `sets`).
+    pub preset: Option<&'static Preset>,
     /// Starting parameter values by name (already checked against the table).
     pub sets: Vec<(String, f32)>,
 }
@@ -103,6 +106,9 @@ use eframe::egui_wgpu;
 impl Viewer {
     fn new(state: &egui_wgpu::RenderState, options: ViewerOptions, outcome: Outcome) -> Self {
         let mut demo = WaterDemo::new(&state.device, &state.queue, SCENE_FORMAT, options.demo);
+        if let Some(preset) = options.preset {
+            preset.apply(&mut demo.params, &mut demo.camera);
+        }
         for (name, value) in &options.sets {
             let _ = demo.params.set_by_name(name, *value);
         }
@@ -158,6 +164,23 @@ impl Viewer {
     fn panel(&mut self, ui: &mut egui::Ui) {
         ui.heading("wavepool");
         egui::ScrollArea::vertical().show(ui, |ui| {
+            // A lesson's starting state: its values and view, calm water (as the page's select).
+            let mut chosen: Option<&'static Preset> = None;
+            egui::ComboBox::from_label("Preset")
+                .selected_text("Lesson…")
+                .show_ui(ui, |ui| {
+                    for preset in PRESETS {
+                        if ui.selectable_label(false, preset.label).on_hover_text(preset.help).clicked() {
+                            chosen = Some(preset);
+                        }
+                    }
+                })
+                .response
+                .on_hover_text("Start over from a lesson's settings and view");
+            if let Some(preset) = chosen {
+                preset.apply(&mut self.demo.params, &mut self.demo.camera);
+                self.demo.reset(&self.render_state.queue);
+            }
             let mut groups: Vec<&str> = Vec::new();
             for p in PARAMS {
                 if !groups.contains(&p.group) {

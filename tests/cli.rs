@@ -28,6 +28,8 @@ fn bad_arguments_give_usage_and_exit_2() {
         (&["render", "--set", "gravity_well=1", "--out", "x.png"], "unknown parameter"),
         (&["render", "--set", "wave_speed=99", "--out", "x.png"], "outside"),
         (&["bench", "--sim-size", "300"], "power of two"),
+        (&["render", "--set", "render_mode=curved", "--out", "x.png"], "one of raytraced, flat, split"),
+        (&["render", "--preset", "stormy", "--out", "x.png"], "is not one of classic"),
     ];
     for (args, expected) in cases {
         let out = wavepool(args);
@@ -95,4 +97,37 @@ fn bench_prints_one_json_object() {
         assert!(v >= 0.0, "{json}");
     }
     assert!(json["stage_timing"].is_string());
+}
+
+#[test]
+fn a_choice_is_set_by_its_name_as_by_its_number_and_a_preset_is_a_starting_point() {
+    let dir = std::env::temp_dir().join(format!("wavepool-cli-names-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let frame = |name: &str, extra: &[&str]| {
+        let path = dir.join(name);
+        let mut args =
+            vec!["render", "--out", path.to_str().unwrap(), "--width", "96", "--height", "72", "--frames", "2"];
+        args.extend_from_slice(extra);
+        let out = wavepool(&args);
+        assert!(out.status.success(), "{extra:?}: {}", stderr(&out));
+        wavepool::headless::read_png(&path).expect("a readable PNG").2
+    };
+    let by_name = frame("name.png", &["--set", "render_mode=split", "--set", "caustics=off"]);
+    let by_number = frame("number.png", &["--set", "render_mode=2", "--set", "caustics=0"]);
+    let traced = frame("traced.png", &["--set", "caustics=0"]);
+    // The `flat` preset is the split view; a --set after it wins.
+    let preset = frame("preset.png", &["--preset", "flat"]);
+    let preset_traced = frame("preset-traced.png", &["--preset", "flat", "--set", "render_mode=raytraced"]);
+    let differ = |a: &[u8], b: &[u8]| a.iter().zip(b).filter(|(x, y)| x != y).count() as f64 / a.len() as f64;
+    println!(
+        "split by name vs by number: {:.4} % of bytes differ; split vs ray-traced {:.1} %; preset flat vs the same \
+         with render_mode=raytraced {:.1} %",
+        differ(&by_name, &by_number) * 100.0,
+        differ(&by_name, &traced) * 100.0,
+        differ(&preset, &preset_traced) * 100.0
+    );
+    assert_eq!(by_name, by_number, "a name sets another value than its number");
+    assert!(differ(&by_name, &traced) > 0.01, "render_mode=split changed nothing");
+    assert!(differ(&preset, &preset_traced) > 0.01, "--set after --preset did not win");
+    std::fs::remove_dir_all(&dir).ok();
 }
