@@ -1,11 +1,13 @@
 //! Simulation benchmarks (not tests): the CPU reference step at 256² against a memory
 //! bandwidth bound measured on the same machine for the same bytes, and the GPU step at
 //! 128² to 1024² on whatever adapter wgpu finds (lavapipe here). Run with
-//! `cargo bench --bench simulation`; prints one JSON object per measurement.
+//! `cargo bench --bench simulation`; prints one JSON object per measurement. First, what the
+//! floating bodies' ambient-wave probes cost the CPU per frame, two ways.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
+use wavepool::ambient::{AmbientModel, AmbientSettings, AmbientWaves};
 use wavepool::headless::HeadlessGpu;
 use wavepool::sim::cpu::CpuHeightField;
 use wavepool::sim::{random_drops, HeightField, WaveSettings};
@@ -103,7 +105,54 @@ fn gpu_steps(gpu: &HeadlessGpu) {
     }
 }
 
+/// What the floating bodies' ambient probes cost a frame (2 bodies x 8 points on the CPU, in
+/// wasm the same code): each model's surface summed wave by wave at every point (the
+/// reference, `AmbientWaves::sample`) against the surface made once per frame
+/// (`AmbientWaves::at`, then `sample` per point), both timed here in the same run.
+fn ambient_probes() {
+    let points: Vec<(f32, f32)> =
+        (0..16).map(|i| (0.4 * (i as f32 * 0.7).cos() - 0.2 * (i / 8) as f32, 0.4 * (i as f32 * 0.7).sin())).collect();
+    let cases = [
+        ("sines", AmbientSettings::default_for(AmbientModel::Sines)),
+        ("gerstner", AmbientSettings::default_for(AmbientModel::Gerstner)),
+        ("fft 64", AmbientSettings::default_for(AmbientModel::Fft)),
+        ("fft 128", AmbientSettings { fft_size: 128, ..AmbientSettings::default_for(AmbientModel::Fft) }),
+        (
+            "fft 128 choppiness 2",
+            AmbientSettings { fft_size: 128, choppiness: 2.0, ..AmbientSettings::default_for(AmbientModel::Fft) },
+        ),
+    ];
+    for (name, settings) in cases {
+        let waves = AmbientWaves::new(&settings);
+        let mut t = 3.0f64;
+        let per_point = time_per_call(Duration::from_secs(2), || {
+            t += 1.0 / 60.0;
+            for &(x, z) in &points {
+                black_box(waves.sample(x, z, t));
+            }
+        });
+        let once = time_per_call(Duration::from_secs(2), || {
+            t += 1.0 / 60.0;
+            let now = waves.at(t);
+            for &(x, z) in &points {
+                black_box(now.sample(x, z));
+            }
+        });
+        println!(
+            "{}",
+            serde_json::json!({
+                "what": "ambient probes per frame (16 points)",
+                "model": name,
+                "wave_by_wave_ms": per_point * 1e3,
+                "made_once_ms": once * 1e3,
+                "speed_up": per_point / once,
+            })
+        );
+    }
+}
+
 fn main() {
+    ambient_probes();
     cpu_step_against_bandwidth();
     match HeadlessGpu::new() {
         Ok(gpu) => gpu_steps(&gpu),

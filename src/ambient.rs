@@ -13,9 +13,10 @@
 pub mod gpu_ocean;
 pub mod ocean;
 
+use crate::params::{ParamId, Params};
 use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
-use ocean::Ocean;
+use ocean::{Ocean, OceanNow};
 
 /// Which ambient surface, from the `ambient` parameter.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -122,6 +123,29 @@ pub struct AmbientSettings {
     pub choppiness: f32,
 }
 
+impl AmbientSettings {
+    /// The settings the parameters hold.
+    pub fn from_params(params: &Params) -> Self {
+        Self {
+            model: AmbientModel::from_param(params.get(ParamId::Ambient)),
+            wind_speed: params.get(ParamId::WindSpeed),
+            wind_direction_deg: params.get(ParamId::WindDirection),
+            significant_height: params.get(ParamId::WaveHeight),
+            spread_deg: params.get(ParamId::WaveSpread),
+            steepness: params.get(ParamId::Steepness),
+            spectrum: Spectrum::from_param(params.get(ParamId::Spectrum)),
+            fft_size: params.get(ParamId::FftSize) as usize,
+            choppiness: params.get(ParamId::Choppiness),
+        }
+    }
+
+    /// `model` with every other setting at the parameter table's default (a light breeze:
+    /// 3 m/s, 1 cm significant height).
+    pub fn default_for(model: AmbientModel) -> Self {
+        Self { model, ..Self::from_params(&Params::default()) }
+    }
+}
+
 /// One wave of the surface. Sines: h = 2a(((sin(k·x + p) + 1)/2)^k − mean); modes:
 /// h = a cos(kx (x + W)) cos(kz (z + W)) cos(p); p advances by −ω t (sines) or ω t (modes).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,6 +168,25 @@ pub struct AmbientWaves {
     pub gerstner_c: f32,
     /// The FFT ocean's spectrum (model `Fft`).
     pub ocean: Option<Ocean>,
+}
+
+/// The ambient surface at one moment, to sample at many points (the floating bodies' probes,
+/// every frame): the waves' phases, or the FFT ocean's amplitudes, computed once
+/// ([`OceanNow`]). The same surface as [`AmbientWaves::sample`].
+pub struct AmbientNow<'a> {
+    waves: &'a AmbientWaves,
+    phases: Vec<f32>,
+    ocean: Option<OceanNow>,
+}
+
+impl AmbientNow<'_> {
+    /// Height (m) and slopes dh/dx, dh/dz at (x, z) (m).
+    pub fn sample(&self, x: f32, z: f32) -> [f32; 3] {
+        match &self.ocean {
+            Some(ocean) => ocean.sample(x, z),
+            None => self.waves.sum(&self.phases, x, z),
+        }
+    }
 }
 
 /// The Phillips spectrum's shape at wavevector (kx, kz) for wind `settings`, without its
@@ -289,15 +332,27 @@ impl AmbientWaves {
     /// time `t` (s). Same arithmetic as the shader's `ambient_at` (the FFT ocean: its waves
     /// summed one by one, of which the shader's map holds the samples).
     pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
-        if let Some(ocean) = &self.ocean {
-            return ocean.sample(x, z, t);
+        match &self.ocean {
+            Some(ocean) => ocean.sample(x, z, t),
+            None => self.sum(&self.phases(t), x, z),
         }
-        let phases = self.phases(t);
+    }
+
+    /// The surface at time `t` (s), to sample at many points: see [`AmbientNow`].
+    pub fn at(&self, t: f64) -> AmbientNow<'_> {
+        match &self.ocean {
+            Some(ocean) => AmbientNow { waves: self, phases: Vec::new(), ocean: Some(ocean.at(t)) },
+            None => AmbientNow { waves: self, phases: self.phases(t), ocean: None },
+        }
+    }
+
+    /// The sines', modes' or Gerstner waves' surface at (x, z) with each wave at `phases`.
+    fn sum(&self, phases: &[f32], x: f32, z: f32) -> [f32; 3] {
         if self.model == AmbientModel::Gerstner {
-            return gerstner(&self.waves, &phases, self.gerstner_c, x, z);
+            return gerstner(&self.waves, phases, self.gerstner_c, x, z);
         }
         let mut out = [0.0f32; 3];
-        for (w, &p) in self.waves.iter().zip(&phases) {
+        for (w, &p) in self.waves.iter().zip(phases) {
             let [h, dx, dz] = match self.model {
                 AmbientModel::Modes => standing(w.kx, w.kz, w.amplitude, p, x, z),
                 _ => sharp_sine(w.kx, w.kz, w.amplitude, p, x, z),
@@ -456,16 +511,33 @@ mod tests {
     use super::*;
 
     fn settings(model: AmbientModel) -> AmbientSettings {
-        AmbientSettings {
-            model,
-            wind_speed: 3.0,
-            wind_direction_deg: 30.0,
-            significant_height: 0.01,
-            spread_deg: 30.0,
-            steepness: 0.6,
-            spectrum: Spectrum::Phillips,
-            fft_size: 64,
-            choppiness: 0.0,
+        AmbientSettings::default_for(model)
+    }
+
+    #[test]
+    fn the_surface_made_once_per_frame_is_the_surface_summed_wave_by_wave() {
+        let cases = [
+            ("sines", settings(AmbientModel::Sines)),
+            ("modes", settings(AmbientModel::Modes)),
+            ("gerstner", settings(AmbientModel::Gerstner)),
+            ("fft 64", settings(AmbientModel::Fft)),
+            ("fft 128 choppy", AmbientSettings { fft_size: 128, choppiness: 2.0, ..settings(AmbientModel::Fft) }),
+        ];
+        for (name, s) in cases {
+            let waves = AmbientWaves::new(&s);
+            let (mut worst, mut largest) = (0.0f32, 0.0f32);
+            for t in [0.7, 1234.56] {
+                let now = waves.at(t);
+                for i in 0..200 {
+                    let (x, z) = (-0.99 + (i % 20) as f32 * 0.099, -0.99 + (i / 20) as f32 * 0.198);
+                    let (a, b) = (waves.sample(x, z, t), now.sample(x, z));
+                    largest = largest.max(a[0].abs());
+                    worst = worst.max((0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f32::max));
+                }
+            }
+            println!("{name}: largest height {largest:.2e} m, largest difference (height, slopes) {worst:.2e}");
+            assert!(largest > 1e-3, "{name}: no waves");
+            assert!(worst < 2e-6, "{name}: the per-frame surface differs by {worst:e}");
         }
     }
 

@@ -5,7 +5,7 @@
 use glam::{Quat, Vec2, Vec3};
 
 use crate::ambient::gpu_ocean::GpuOcean;
-use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves, Spectrum};
+use crate::ambient::{AmbientModel, AmbientSettings, AmbientWaves};
 use crate::camera::{self, OrbitCamera, Pick};
 use crate::duck;
 use crate::optics::{FresnelModel, SpecularModel};
@@ -526,24 +526,9 @@ impl WaterDemo {
         }
     }
 
-    /// The ambient waves' settings in the parameters.
-    fn ambient_settings_now(&self) -> AmbientSettings {
-        AmbientSettings {
-            model: AmbientModel::from_param(self.params.get(ParamId::Ambient)),
-            wind_speed: self.params.get(ParamId::WindSpeed),
-            wind_direction_deg: self.params.get(ParamId::WindDirection),
-            significant_height: self.params.get(ParamId::WaveHeight),
-            spread_deg: self.params.get(ParamId::WaveSpread),
-            steepness: self.params.get(ParamId::Steepness),
-            spectrum: Spectrum::from_param(self.params.get(ParamId::Spectrum)),
-            fft_size: self.params.get(ParamId::FftSize) as usize,
-            choppiness: self.params.get(ParamId::Choppiness),
-        }
-    }
-
     /// Remakes the ambient waves if their parameters changed.
     fn refresh_ambient(&mut self) {
-        let settings = self.ambient_settings_now();
+        let settings = AmbientSettings::from_params(&self.params);
         if settings != self.ambient_settings {
             self.ambient = AmbientWaves::new(&settings);
             self.ambient_settings = settings;
@@ -568,6 +553,8 @@ impl WaterDemo {
         let level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
         let mut planes = [WaterPlane::flat(level); 2];
         let t = self.sim_time();
+        // The ambient surface now, made once for both bodies' probes.
+        let mut ambient_now = None;
         if let Some(samples) = self.water.probes() {
             self.probe_latency = Some(frame.saturating_sub(samples.frame));
             for id in BodyId::ALL {
@@ -582,11 +569,12 @@ impl WaterDemo {
                         // makes itself (up to 0.3 m), which would average short ambient waves
                         // away or even turn them over (a 0.5 m wave on a 0.3 m ring).
                         let centre = points.iter().fold(Vec2::ZERO, |a, p| a + *p) / PROBES_PER_BODY as f32;
+                        let now = ambient_now.get_or_insert_with(|| self.ambient.at(t));
                         let ring: Vec<f32> = (0..PROBES_PER_BODY)
                             .map(|i| {
                                 let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
                                 let p = centre + AMBIENT_RING_RADIUS * Vec2::new(a.cos(), a.sin());
-                                self.ambient.sample(p.x, p.y, t)[0]
+                                now.sample(p.x, p.y)[0]
                             })
                             .collect();
                         let waves = WaterPlane::from_ring(&ring, AMBIENT_RING_RADIUS);

@@ -8,7 +8,7 @@ mod common;
 use common::render;
 use wavepool::ambient::gpu_ocean::GpuOcean;
 use wavepool::ambient::ocean::Ocean;
-use wavepool::ambient::{AmbientModel, AmbientSettings, Spectrum};
+use wavepool::ambient::{AmbientModel, AmbientSettings};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::params::ParamId;
 
@@ -162,17 +162,8 @@ fn the_height_and_normals_views_show_the_ambient_waves() {
 fn the_gpu_fft_matches_the_cpu_reference() {
     let g = common::gpu();
     for size in [64usize, 128] {
-        let settings = AmbientSettings {
-            model: AmbientModel::Fft,
-            wind_speed: 3.0,
-            wind_direction_deg: 30.0,
-            significant_height: 0.01,
-            spread_deg: 30.0,
-            steepness: 0.0,
-            spectrum: Spectrum::Phillips,
-            fft_size: size,
-            choppiness: 1.5,
-        };
+        let settings =
+            AmbientSettings { fft_size: size, choppiness: 1.5, ..AmbientSettings::default_for(AmbientModel::Fft) };
         let ocean = Ocean::new(&settings, size);
         let mut gpu_ocean = GpuOcean::new(&g.device, size as u32);
         for t in [2.3, 1234.56] {

@@ -8,17 +8,7 @@ use wavepool::ambient::{angular_frequency, AmbientModel, AmbientSettings, Ambien
 use wavepool::scene::{HALF_WIDTH, RIM};
 
 fn settings(model: AmbientModel) -> AmbientSettings {
-    AmbientSettings {
-        model,
-        wind_speed: 3.0,
-        wind_direction_deg: 30.0,
-        significant_height: 0.01,
-        spread_deg: 30.0,
-        steepness: 0.6,
-        spectrum: Spectrum::Phillips,
-        fft_size: 64,
-        choppiness: 0.0,
-    }
+    AmbientSettings::default_for(model)
 }
 
 /// The speed (m/s) at which the heights along +x move: the shift s that best matches

@@ -244,26 +244,113 @@ impl Ocean {
         out
     }
 
-    /// Height (m) and slopes at a point (x, z) (m), summed wave by wave (no grid): what the
-    /// floating bodies feel, and the tests' closed form. With choppiness, the rest point
+    /// Height (m) and slopes at a point (x, z) (m), summed wave by wave (no grid): the tests'
+    /// closed form (the floating bodies take the same sums through [`Ocean::at`]). With choppiness, the rest point
     /// carried to (x, z) is found first (the shader's `ocean_at` takes the same steps on its
     /// maps) and the slopes are J⁻¹∇₀h, J = I − λ ∂D/∂x₀.
     pub fn sample(&self, x: f32, z: f32, t: f64) -> [f32; 3] {
-        let lambda = self.choppiness;
-        if lambda <= 0.0 {
-            let f = self.fields_at(x, z, t);
-            return [f[0], f[1], f[2]];
+        choppy_surface(self.choppiness, |x0, z0| self.fields_at(x0, z0, t), x, z)
+    }
+
+    /// The waves at time `t` (s), to sample at many points: see [`OceanNow`].
+    pub fn at(&self, t: f64) -> OceanNow {
+        let n = self.size;
+        let waves = (0..n * n)
+            .filter(|&idx| self.h0[idx].iter().any(|v| *v != 0.0))
+            .map(|idx| {
+                let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+                let k = (kx * kx + kz * kz).sqrt();
+                NowWave {
+                    cell: [idx % n, idx / n],
+                    amplitude: self.amplitude(idx, t),
+                    k: [kx, kz, kx / k, kz / k, kx * kx / k, kx * kz / k, kz * kz / k],
+                }
+            })
+            .collect();
+        OceanNow { size: n, choppiness: self.choppiness, waves }
+    }
+}
+
+/// The choppy surface above (x, z) from the fields at rest points (`fields`, as
+/// [`Ocean::fields_at`]): Newton's method finds the rest point carried to (x, z), then the
+/// height there and the slopes J⁻¹∇₀h, J = I − λ ∂D/∂x₀ (the shader's `ocean_at` takes the same
+/// steps on its maps). Without choppiness, the fields at (x, z) themselves.
+fn choppy_surface(lambda: f32, fields: impl Fn(f32, f32) -> [f32; 8], x: f32, z: f32) -> [f32; 3] {
+    if lambda <= 0.0 {
+        let f = fields(x, z);
+        return [f[0], f[1], f[2]];
+    }
+    let jacobian = |f: &[f32; 8]| [1.0 - lambda * f[5], -lambda * f[6], 1.0 - lambda * f[7]];
+    let (mut x0, mut z0) = (x, z);
+    for _ in 0..CHOP_NEWTON_STEPS {
+        let f = fields(x0, z0);
+        let step = folded_solve(jacobian(&f), [x0 - lambda * f[3] - x, z0 - lambda * f[4] - z], CHOP_STEP_LIMIT);
+        (x0, z0) = (x0 - step[0], z0 - step[1]);
+    }
+    let f = fields(x0, z0);
+    let slope = folded_solve(jacobian(&f), [f[1], f[2]], CHOP_SLOPE_LIMIT);
+    [f[0], slope[0], slope[1]]
+}
+
+/// One wave of [`OceanNow`]: its lattice cell, h(k, t), and kx, kz, k̂x, k̂z, kx²/k, kx kz/k,
+/// kz²/k (rad/m), the factors of its eight fields.
+#[derive(Clone, Copy, Debug)]
+struct NowWave {
+    cell: [usize; 2],
+    amplitude: Complex,
+    k: [f32; 7],
+}
+
+/// The ocean at one moment, for sampling many points (the floating bodies' probes, every
+/// frame): each wave's h(k, t) computed once, and e^{ik·x} = e^{ikx x} e^{ikz z} taken from
+/// two tables of e^{i m (π/W) x} (the lattice's wavenumbers are whole multiples of π/W), so a
+/// point costs two table builds and a few products per wave instead of two sines and two
+/// cosines per wave. Same sums as [`Ocean::fields_at`] (the tests hold them together).
+#[derive(Clone, Debug)]
+pub struct OceanNow {
+    size: usize,
+    choppiness: f32,
+    waves: Vec<NowWave>,
+}
+
+impl OceanNow {
+    /// e^{i kx(i) x} for every lattice index i along an axis (m), built by repeated products in
+    /// f64 from e^{i (π/W) x}.
+    fn axis_table(&self, x: f32) -> Vec<Complex> {
+        let n = self.size;
+        let step = std::f64::consts::PI / HALF_WIDTH as f64 * x as f64;
+        let base = (step.cos(), step.sin());
+        let mut table = vec![[0.0f32; 2]; n];
+        let mut power = (1.0f64, 0.0f64);
+        for m in 0..=n / 2 {
+            table[m % n] = [power.0 as f32, power.1 as f32];
+            if m > 0 {
+                table[n - m] = [power.0 as f32, -power.1 as f32];
+            }
+            power = (power.0 * base.0 - power.1 * base.1, power.0 * base.1 + power.1 * base.0);
         }
-        let jacobian = |f: &[f32; 8]| [1.0 - lambda * f[5], -lambda * f[6], 1.0 - lambda * f[7]];
-        let (mut x0, mut z0) = (x, z);
-        for _ in 0..CHOP_NEWTON_STEPS {
-            let f = self.fields_at(x0, z0, t);
-            let step = folded_solve(jacobian(&f), [x0 - lambda * f[3] - x, z0 - lambda * f[4] - z], CHOP_STEP_LIMIT);
-            (x0, z0) = (x0 - step[0], z0 - step[1]);
+        table
+    }
+
+    /// Every field at a rest point (x, z), as [`Ocean::fields_at`].
+    pub fn fields_at(&self, x: f32, z: f32) -> [f32; 8] {
+        let (along_x, along_z) = (self.axis_table(x), self.axis_table(z));
+        let mut out = [0.0f32; 8];
+        for w in &self.waves {
+            let v = mul(w.amplitude, mul(along_x[w.cell[0]], along_z[w.cell[1]]));
+            let k = &w.k;
+            let terms =
+                [v[0], -k[0] * v[1], -k[1] * v[1], k[2] * v[1], k[3] * v[1], k[4] * v[0], k[5] * v[0], k[6] * v[0]];
+            for (o, t) in out.iter_mut().zip(terms) {
+                *o += t;
+            }
         }
-        let f = self.fields_at(x0, z0, t);
-        let slope = folded_solve(jacobian(&f), [f[1], f[2]], CHOP_SLOPE_LIMIT);
-        [f[0], slope[0], slope[1]]
+        out
+    }
+
+    /// Height (m) and slopes at (x, z) (m), as [`Ocean::sample`].
+    pub fn sample(&self, x: f32, z: f32) -> [f32; 3] {
+        choppy_surface(self.choppiness, |x0, z0| self.fields_at(x0, z0), x, z)
     }
 }
 
