@@ -81,6 +81,18 @@ pub fn texture_entry(
     }
 }
 
+/// A 2D float texture read texel by texel (`textureLoad`; 32-bit floats are not filterable).
+pub fn float_texture_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    let sample_type = wgpu::TextureSampleType::Float { filterable: false };
+    texture_entry(binding, visibility, sample_type, wgpu::TextureViewDimension::D2)
+}
+
+/// A 2D texture read through a filtering sampler.
+pub fn filtered_texture_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    let sample_type = wgpu::TextureSampleType::Float { filterable: true };
+    texture_entry(binding, visibility, sample_type, wgpu::TextureViewDimension::D2)
+}
+
 pub fn sampler_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,

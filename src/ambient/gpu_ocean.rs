@@ -40,15 +40,7 @@ impl GpuOcean {
         let vis = wgpu::ShaderStages::FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("ocean fft layout"),
-            entries: &[
-                gpu::uniform_entry(0, vis),
-                gpu::texture_entry(
-                    1,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-            ],
+            entries: &[gpu::uniform_entry(0, vis), gpu::float_texture_entry(1, vis)],
         });
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
         let spectrum = gpu::texture_2d(device, "ocean spectrum", size, size, 1, 1, FORMAT, usage);

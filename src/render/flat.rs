@@ -217,13 +217,9 @@ pub struct FlatWater {
 impl FlatWater {
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat) -> Self {
         let vis = wgpu::ShaderStages::FRAGMENT;
-        let float = wgpu::TextureSampleType::Float { filterable: true };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("flat water textures layout"),
-            entries: &[
-                gpu::texture_entry(0, vis, float, wgpu::TextureViewDimension::D2),
-                gpu::texture_entry(1, vis, float, wgpu::TextureViewDimension::D2),
-            ],
+            entries: &[gpu::filtered_texture_entry(0, vis), gpu::filtered_texture_entry(1, vis)],
         });
         let divider = FullscreenPass::new(
             device,

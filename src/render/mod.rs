@@ -309,15 +309,7 @@ impl Upscale {
         let vis = wgpu::ShaderStages::FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("upscale layout"),
-            entries: &[
-                gpu::texture_entry(
-                    0,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: true },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::sampler_entry(1, vis),
-            ],
+            entries: &[gpu::filtered_texture_entry(0, vis), gpu::sampler_entry(1, vis)],
         });
         let pass = FullscreenPass::new(
             device,
@@ -457,41 +449,16 @@ impl Renderer {
             label: Some("scene + water layout"),
             entries: &[
                 gpu::uniform_entry(0, vis),
-                gpu::texture_entry(
-                    1,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    2,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    3,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
+                gpu::float_texture_entry(1, vis),
+                gpu::float_texture_entry(2, vis),
+                gpu::float_texture_entry(3, vis),
             ],
         });
         let textures_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("scene textures layout"),
             entries: &[
-                gpu::texture_entry(
-                    0,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: true },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    1,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: true },
-                    wgpu::TextureViewDimension::D2,
-                ),
+                gpu::filtered_texture_entry(0, vis),
+                gpu::filtered_texture_entry(1, vis),
                 gpu::texture_entry(
                     2,
                     vis,
@@ -500,30 +467,10 @@ impl Renderer {
                 ),
                 gpu::sampler_entry(3, vis),
                 gpu::sampler_entry(4, vis),
-                gpu::texture_entry(
-                    5,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    6,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    7,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    8,
-                    vis,
-                    wgpu::TextureSampleType::Float { filterable: true },
-                    wgpu::TextureViewDimension::D2,
-                ),
+                gpu::float_texture_entry(5, vis),
+                gpu::float_texture_entry(6, vis),
+                gpu::float_texture_entry(7, vis),
+                gpu::filtered_texture_entry(8, vis),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());

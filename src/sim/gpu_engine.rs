@@ -57,12 +57,7 @@ impl MeanLevel {
     fn new(device: &wgpu::Device, state: &PingPong, size: u32) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("mean level layout"),
-            entries: &[gpu::texture_entry(
-                0,
-                wgpu::ShaderStages::FRAGMENT,
-                wgpu::TextureSampleType::Float { filterable: false },
-                wgpu::TextureViewDimension::D2,
-            )],
+            entries: &[gpu::float_texture_entry(0, wgpu::ShaderStages::FRAGMENT)],
         });
         let group = |view: &wgpu::TextureView| {
             device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -158,18 +153,8 @@ impl GpuSim {
             label: Some("sim layout"),
             entries: &[
                 gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT),
-                gpu::texture_entry(
-                    1,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
-                gpu::texture_entry(
-                    2,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::TextureSampleType::Float { filterable: false },
-                    wgpu::TextureViewDimension::D2,
-                ),
+                gpu::float_texture_entry(1, wgpu::ShaderStages::FRAGMENT),
+                gpu::float_texture_entry(2, wgpu::ShaderStages::FRAGMENT),
             ],
         });
         let uniforms = gpu::uniform_buffer(device, "sim uniforms", &SimUniforms::zeroed());
