@@ -1,8 +1,8 @@
 //! The demo in every engine a student may have, and on every screen: Firefox ESR under a
 //! virtual display (WebGL2 with its default settings; WebGPU turned on, on its software
 //! compositor) and WebKitGTK (WebGL2) reach the first frame, show a picture, make ripples under
-//! a drag, report no error and do not crash; the page fits 320, 380, 800 and 1280 px wide
-//! screens in Chromium and Firefox (no horizontal scroll, the pool within the first screen,
+//! a drag, draw the split view (flat water beside the ray tracer), report no error and do not
+//! crash; the page fits 320, 380, 800 and 1280 px wide screens in Chromium and Firefox (no horizontal scroll, the pool within the first screen,
 //! touch targets of 24 px, the controls' groups across the panel). Needs `dist/`.
 
 // One browser at a time, held across awaits: each test runs on its own thread and runtime.
@@ -76,6 +76,29 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     assert!(still < 0.01, "{engine:?}: {:.1}% of the band changed with no input", still * 100.0);
     assert!(changed > 0.1, "{engine:?}: only {:.1}% of the band changed after the drag", changed * 100.0);
 
+    // Flat water beside the ray tracer (the split view) draws here too: paused, the left half
+    // turns into the flat picture, the right half stays the ray-traced one.
+    browser.js("window.demo.set('paused', 1); return true;").await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let traced = browser.screenshot().await;
+    browser.js("window.demo.set('render_mode', 'split'); return true;").await;
+    tokio::time::sleep(Duration::from_millis(4000)).await;
+    let split = browser.screenshot().await;
+    let half = rect.w / 2;
+    let (left, right) = (Rect { w: half - 8, ..rect }, Rect { x: rect.x + half + 8, w: rect.w - half - 8, ..rect });
+    let (flat_changed, traced_changed) =
+        (changed_fraction(&traced, &split, left, 16), changed_fraction(&traced, &split, right, 16));
+    assert!(
+        flat_changed > 0.03,
+        "{engine:?}: the split view's flat half looks ray-traced ({:.1}%)",
+        flat_changed * 100.0
+    );
+    assert!(
+        traced_changed < 0.02,
+        "{engine:?}: the split view's ray-traced half changed ({:.1}%)",
+        traced_changed * 100.0
+    );
+
     // Still running 5 s later, no error shown or printed (Firefox prints the page's console).
     tokio::time::sleep(Duration::from_secs(5)).await;
     let later = browser
@@ -86,7 +109,8 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     assert!(errors.is_empty(), "{engine:?}: errors or a crash in the browser's output:\n{}", errors.join("\n"));
     println!(
         "{} on {backend}: ready in {took:?}, luma spread {spread:.1}, {:.1}% of the dragged band changed ({:.1}% idle), \
-         maxAbsHeight {:.4} m, {:.1} frames/s, canvas {} ({}), adapter '{}'",
+         maxAbsHeight {:.4} m, {:.1} frames/s, canvas {} ({}), adapter '{}'; split view: {:.1}% of the flat half \
+         changed, {:.2}% of the ray-traced half",
         engine.name(),
         changed * 100.0,
         still * 100.0,
@@ -94,7 +118,9 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
         later["s"]["fps"].as_f64().unwrap(),
         stats["canvasFormat"],
         later["s"]["renderScale"],
-        stats["adapter"].as_str().unwrap_or("")
+        stats["adapter"].as_str().unwrap_or(""),
+        flat_changed * 100.0,
+        traced_changed * 100.0
     );
     browser.close().await;
 }
