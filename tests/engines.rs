@@ -2,8 +2,9 @@
 //! virtual display (WebGL2 with its default settings; WebGPU turned on, on its software
 //! compositor) and WebKitGTK (WebGL2) reach the first frame, show a picture, make ripples under
 //! a drag, draw the split view (flat water beside the ray tracer), report no error and do not
-//! crash; the page fits 320, 380, 800 and 1280 px wide screens in Chromium and Firefox (no horizontal scroll, the pool within the first screen,
-//! touch targets of 24 px, the controls' groups across the panel). Needs `dist/`.
+//! crash; the page fits 320, 380, 800 and 1280 px wide screens in Chromium and Firefox (no
+//! horizontal scroll, the pool within the first screen, touch targets of 24 px, the controls'
+//! groups across the panel). Needs `dist/`.
 
 // One browser at a time, held across awaits: each test runs on its own thread and runtime.
 #![allow(clippy::await_holding_lock)]
