@@ -68,39 +68,68 @@ fn half_width() -> f32 { return scene.pool.x; }
 fn depth() -> f32 { return scene.pool.y; }
 fn rim() -> f32 { return scene.pool.z; }
 
-// Bilinear fetch of the simulation state at pool coordinates xz (m). Done by hand with
-// textureLoad so that 32-bit float state needs no filterable-float support.
-fn water_at(xz: vec2<f32>) -> vec4<f32> {
-    let n = i32(scene.water.x);
-    let p = (xz / half_width() * 0.5 + 0.5) * scene.water.x - 0.5;
+// The four texels around pool point xz (m) of an n x n map whose texels tile the pool, and the
+// weights between them. Bilinear lookups are done by hand with textureLoad, so that 32-bit
+// float maps need no filterable-float support.
+struct MapTaps {
+    i0: vec2<i32>,
+    i1: vec2<i32>,
+    f: vec2<f32>,
+};
+
+// Texel coordinates of xz on an n x n map (texel centres at whole numbers).
+fn map_point(xz: vec2<f32>, n: f32) -> vec2<f32> {
+    return (xz / half_width() * 0.5 + 0.5) * n - 0.5;
+}
+
+// Taps held at the map's edge (the simulation's state, the foam: nothing lies past the walls).
+fn clamped_taps(xz: vec2<f32>, n: vec2<i32>) -> MapTaps {
+    let p = map_point(xz, f32(n.x));
     let base = floor(p);
-    let f = p - base;
-    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), vec2<i32>(n - 1));
-    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), vec2<i32>(n - 1));
-    let a = textureLoad(water_state, vec2<i32>(i0.x, i0.y), 0);
-    let b = textureLoad(water_state, vec2<i32>(i1.x, i0.y), 0);
-    let c = textureLoad(water_state, vec2<i32>(i0.x, i1.y), 0);
-    let d = textureLoad(water_state, vec2<i32>(i1.x, i1.y), 0);
-    let simulated = mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), n - 1);
+    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), n - 1);
+    return MapTaps(i0, i1, p - base);
+}
+
+// Taps that wrap round (the FFT ocean's maps: its waves are periodic over the pool's width).
+fn wrapped_taps(xz: vec2<f32>, n: i32) -> MapTaps {
+    let p = map_point(xz, f32(n));
+    let base = floor(p);
+    let i0 = ((vec2<i32>(base) % n) + n) % n;
+    return MapTaps(i0, (i0 + 1) % n, p - base);
+}
+
+// The taps' texels a (i0), b (i1.x, i0.y), c (i0.x, i1.y), d (i1) blended by their weights.
+fn bilinear(t: MapTaps, a: vec4<f32>, b: vec4<f32>, c: vec4<f32>, d: vec4<f32>) -> vec4<f32> {
+    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
+}
+
+// The simulation state (height, velocity, slopes) at pool point xz (m), with the ambient waves.
+fn water_at(xz: vec2<f32>) -> vec4<f32> {
+    let t = clamped_taps(xz, vec2<i32>(i32(scene.water.x)));
+    let simulated = bilinear(
+        t,
+        textureLoad(water_state, t.i0, 0),
+        textureLoad(water_state, vec2<i32>(t.i1.x, t.i0.y), 0),
+        textureLoad(water_state, vec2<i32>(t.i0.x, t.i1.y), 0),
+        textureLoad(water_state, t.i1, 0)
+    );
     if (AMBIENT_MODEL != AMBIENT_NONE) {
         return with_ambient(simulated, xz);
     }
     return simulated;
 }
 
-// Foam amount at pool point xz (m): bilinear between cell centres, by hand (32-bit floats).
+// Foam amount at pool point xz (m).
 fn foam_at(xz: vec2<f32>) -> f32 {
-    let size = vec2<i32>(textureDimensions(foam_map));
-    let p = (xz / half_width() * 0.5 + 0.5) * vec2<f32>(size) - 0.5;
-    let base = floor(p);
-    let f = p - base;
-    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), size - 1);
-    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), size - 1);
-    let a = textureLoad(foam_map, vec2<i32>(i0.x, i0.y), 0).r;
-    let b = textureLoad(foam_map, vec2<i32>(i1.x, i0.y), 0).r;
-    let c = textureLoad(foam_map, vec2<i32>(i0.x, i1.y), 0).r;
-    let d = textureLoad(foam_map, vec2<i32>(i1.x, i1.y), 0).r;
-    return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+    let t = clamped_taps(xz, vec2<i32>(textureDimensions(foam_map)));
+    return bilinear(
+        t,
+        textureLoad(foam_map, t.i0, 0),
+        textureLoad(foam_map, vec2<i32>(t.i1.x, t.i0.y), 0),
+        textureLoad(foam_map, vec2<i32>(t.i0.x, t.i1.y), 0),
+        textureLoad(foam_map, t.i1, 0)
+    ).r;
 }
 
 // Foam over the surface colour at p: the amount as bubbly coverage (scattered bubbles where
@@ -146,37 +175,29 @@ fn ambient_at(xz: vec2<f32>) -> vec3<f32> {
     return sum;
 }
 
-// Where a bilinear lookup of the FFT ocean's maps reads at pool point xz: the four texels
-// around it (indices wrap: the lattice's waves are periodic over the pool's width) and the
-// weights.
-struct OceanTaps {
-    i0: vec2<i32>,
-    i1: vec2<i32>,
-    f: vec2<f32>,
-};
-
-fn ocean_taps(xz: vec2<f32>) -> OceanTaps {
-    let n = i32(textureDimensions(ambient_map).x);
-    let p = (xz / half_width() * 0.5 + 0.5) * f32(n) - 0.5;
-    let base = floor(p);
-    let i0 = ((vec2<i32>(base) % n) + n) % n;
-    return OceanTaps(i0, (i0 + 1) % n, p - base);
+// The FFT ocean's maps at taps from `ocean_taps`: height and slopes, and the displacement.
+fn ocean_taps(xz: vec2<f32>) -> MapTaps {
+    return wrapped_taps(xz, i32(textureDimensions(ambient_map).x));
 }
 
-fn ocean_surface(t: OceanTaps) -> vec4<f32> {
-    let a = textureLoad(ambient_map, t.i0, 0);
-    let b = textureLoad(ambient_map, vec2<i32>(t.i1.x, t.i0.y), 0);
-    let c = textureLoad(ambient_map, vec2<i32>(t.i0.x, t.i1.y), 0);
-    let d = textureLoad(ambient_map, t.i1, 0);
-    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
+fn ocean_surface(t: MapTaps) -> vec4<f32> {
+    return bilinear(
+        t,
+        textureLoad(ambient_map, t.i0, 0),
+        textureLoad(ambient_map, vec2<i32>(t.i1.x, t.i0.y), 0),
+        textureLoad(ambient_map, vec2<i32>(t.i0.x, t.i1.y), 0),
+        textureLoad(ambient_map, t.i1, 0)
+    );
 }
 
-fn ocean_displacement(t: OceanTaps) -> vec4<f32> {
-    let a = textureLoad(ambient_displacement, t.i0, 0);
-    let b = textureLoad(ambient_displacement, vec2<i32>(t.i1.x, t.i0.y), 0);
-    let c = textureLoad(ambient_displacement, vec2<i32>(t.i0.x, t.i1.y), 0);
-    let d = textureLoad(ambient_displacement, t.i1, 0);
-    return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
+fn ocean_displacement(t: MapTaps) -> vec4<f32> {
+    return bilinear(
+        t,
+        textureLoad(ambient_displacement, t.i0, 0),
+        textureLoad(ambient_displacement, vec2<i32>(t.i1.x, t.i0.y), 0),
+        textureLoad(ambient_displacement, vec2<i32>(t.i0.x, t.i1.y), 0),
+        textureLoad(ambient_displacement, t.i1, 0)
+    );
 }
 
 // J^-1 v for the choppy surface's Jacobian (xx, xz, zz), its length held to `limit` and its
