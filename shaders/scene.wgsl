@@ -99,21 +99,19 @@ fn wrapped_taps(xz: vec2<f32>, n: i32) -> MapTaps {
     return MapTaps(i0, (i0 + 1) % n, p - base);
 }
 
-// The taps' texels a (i0), b (i1.x, i0.y), c (i0.x, i1.y), d (i1) blended by their weights.
-fn bilinear(t: MapTaps, a: vec4<f32>, b: vec4<f32>, c: vec4<f32>, d: vec4<f32>) -> vec4<f32> {
+// The map's texels at the taps, blended by their weights.
+fn bilinear_load(map: texture_2d<f32>, t: MapTaps) -> vec4<f32> {
+    let a = textureLoad(map, t.i0, 0);
+    let b = textureLoad(map, vec2<i32>(t.i1.x, t.i0.y), 0);
+    let c = textureLoad(map, vec2<i32>(t.i0.x, t.i1.y), 0);
+    let d = textureLoad(map, t.i1, 0);
     return mix(mix(a, b, t.f.x), mix(c, d, t.f.x), t.f.y);
 }
 
 // The simulation state (height, velocity, slopes) at pool point xz (m), with the ambient waves.
 fn water_at(xz: vec2<f32>) -> vec4<f32> {
     let t = clamped_taps(xz, vec2<i32>(i32(scene.water.x)));
-    let simulated = bilinear(
-        t,
-        textureLoad(water_state, t.i0, 0),
-        textureLoad(water_state, vec2<i32>(t.i1.x, t.i0.y), 0),
-        textureLoad(water_state, vec2<i32>(t.i0.x, t.i1.y), 0),
-        textureLoad(water_state, t.i1, 0)
-    );
+    let simulated = bilinear_load(water_state, t);
     if (AMBIENT_MODEL != AMBIENT_NONE) {
         return with_ambient(simulated, xz);
     }
@@ -123,13 +121,7 @@ fn water_at(xz: vec2<f32>) -> vec4<f32> {
 // Foam amount at pool point xz (m).
 fn foam_at(xz: vec2<f32>) -> f32 {
     let t = clamped_taps(xz, vec2<i32>(textureDimensions(foam_map)));
-    return bilinear(
-        t,
-        textureLoad(foam_map, t.i0, 0),
-        textureLoad(foam_map, vec2<i32>(t.i1.x, t.i0.y), 0),
-        textureLoad(foam_map, vec2<i32>(t.i0.x, t.i1.y), 0),
-        textureLoad(foam_map, t.i1, 0)
-    ).r;
+    return bilinear_load(foam_map, t).r;
 }
 
 // Foam over the surface colour at p: the amount as bubbly coverage (scattered bubbles where
@@ -181,23 +173,11 @@ fn ocean_taps(xz: vec2<f32>) -> MapTaps {
 }
 
 fn ocean_surface(t: MapTaps) -> vec4<f32> {
-    return bilinear(
-        t,
-        textureLoad(ambient_map, t.i0, 0),
-        textureLoad(ambient_map, vec2<i32>(t.i1.x, t.i0.y), 0),
-        textureLoad(ambient_map, vec2<i32>(t.i0.x, t.i1.y), 0),
-        textureLoad(ambient_map, t.i1, 0)
-    );
+    return bilinear_load(ambient_map, t);
 }
 
 fn ocean_displacement(t: MapTaps) -> vec4<f32> {
-    return bilinear(
-        t,
-        textureLoad(ambient_displacement, t.i0, 0),
-        textureLoad(ambient_displacement, vec2<i32>(t.i1.x, t.i0.y), 0),
-        textureLoad(ambient_displacement, vec2<i32>(t.i0.x, t.i1.y), 0),
-        textureLoad(ambient_displacement, t.i1, 0)
-    );
+    return bilinear_load(ambient_displacement, t);
 }
 
 // J^-1 v for the choppy surface's Jacobian (xx, xz, zz), its length held to `limit` and its

@@ -866,9 +866,7 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
     // Back to the split view, to read its controls and drag its divider.
     let split_again = shot(2).await;
     // Halves, leaving out the divider's grip in the middle.
-    let half = rect.w / 2;
-    let left = Rect { w: half - 8, ..rect };
-    let right = Rect { x: rect.x + half + 8, w: rect.w - half - 8, ..rect };
+    let (left, right) = rect.halves(8);
     let (left_diff, right_diff, modes) = (
         changed_fraction(&split, &flat, left, 16),
         changed_fraction(&split, &traced, right, 16),

@@ -85,8 +85,7 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     browser.js("window.demo.set('render_mode', 'split'); return true;").await;
     tokio::time::sleep(Duration::from_millis(4000)).await;
     let split = browser.screenshot().await;
-    let half = rect.w / 2;
-    let (left, right) = (Rect { w: half - 8, ..rect }, Rect { x: rect.x + half + 8, w: rect.w - half - 8, ..rect });
+    let (left, right) = rect.halves(8);
     let (flat_changed, traced_changed) =
         (changed_fraction(&traced, &split, left, 16), changed_fraction(&traced, &split, right, 16));
     assert!(

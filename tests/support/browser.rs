@@ -884,6 +884,13 @@ impl Rect {
         Self { x: f("left").max(0.0) as u32, y: f("top").max(0.0) as u32, w: f("width") as u32, h: f("height") as u32 }
     }
 
+    /// The left and right halves, leaving out `gap` px either side of the middle (the split
+    /// view's divider and its grip).
+    pub fn halves(self, gap: u32) -> (Self, Self) {
+        let half = self.w / 2;
+        (Self { w: half - gap, ..self }, Self { x: self.x + half + gap, w: self.w - half - gap, ..self })
+    }
+
     /// A square of side `2 * half` around (cx, cy).
     pub fn around(cx: f64, cy: f64, half: u32) -> Self {
         Self { x: (cx as u32).saturating_sub(half), y: (cy as u32).saturating_sub(half), w: 2 * half, h: 2 * half }
