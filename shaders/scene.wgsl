@@ -32,6 +32,10 @@ struct Scene {
     ambient_waves: array<vec4<f32>, MAX_AMBIENT_WAVES>,
     flat: vec4<f32>,           // flat water (flat.rs): x plane height (m), y largest texture shift
                                // (fraction of the screen), z dUdV scroll (tiles), w soft edge (m)
+    sun_light: vec4<f32>,      // rgb the sun's light on a surface facing it (sky.rs, scene units);
+                               // w exposure factor 2^EV before the tone curve
+    sky_light: vec4<f32>,      // rgb the sky's light on a surface facing up (albedo factor);
+                               // w 1 with the deck around the pool, 0 cut-away
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -58,10 +62,15 @@ struct Scene {
 // 0 and 1 the largest, DUDV_SLOPE), tiling DUDV_TILES times across the pool.
 @group(1) @binding(8) var dudv_map: texture_2d<f32>;
 
-const AMBIENT: vec3<f32> = vec3<f32>(0.30, 0.36, 0.42);
-const SUN_COLOUR: vec3<f32> = vec3<f32>(1.0, 0.96, 0.88);
+// How far the sun's highlight is spread for the pixel being shaded (1: not at all; see
+// sun_specular); the water surface sets it from how much its normal varies within the pixel.
+var<private> specular_spread: f32 = 1.0;
 
-const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.62, 0.60, 0.56);
+// The sun's and the sky's light (sky.rs: Preetham's sky, the sun through the air).
+fn sun_light() -> vec3<f32> { return scene.sun_light.rgb; }
+fn sky_light() -> vec3<f32> { return scene.sky_light.rgb; }
+
+const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }
@@ -131,7 +140,7 @@ fn with_foam(colour: vec3<f32>, p: vec3<f32>, from_above: bool) -> vec3<f32> {
     let amount = foam_at(p.xz);
     let bubbles = 0.6 * value_noise(vec3<f32>(p.xz * 90.0, 0.0)) + 0.4 * value_noise(vec3<f32>(p.xz * 23.0, 3.7));
     let coverage = smoothstep(bubbles - 0.1, bubbles + 0.1, 1.4 * amount);
-    let lit = FOAM_ALBEDO * (AMBIENT + max(scene.sun.y, 0.0) * scene.sun.w * SUN_COLOUR);
+    let lit = FOAM_ALBEDO * (sky_light() + max(scene.sun.y, 0.0) * sun_light());
     return select(colour * (1.0 - 0.8 * coverage), mix(colour, lit, coverage), from_above);
 }
 
@@ -491,8 +500,8 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     if (HAS_DISPERSION && p.y < 0.0) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = AMBIENT * (1.0 - 0.9 * sphere_occlusion(p, n));
-        return albedo * (ambient + direct_rgb * scene.sun.w * SUN_COLOUR);
+        let ambient = sky_light() * (1.0 - 0.9 * sphere_occlusion(p, n));
+        return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
     if (p.y < 0.0) {
@@ -500,8 +509,8 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
     }
-    let ambient = AMBIENT * (1.0 - 0.9 * sphere_occlusion(p, n));
-    return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
+    let ambient = sky_light() * (1.0 - 0.9 * sphere_occlusion(p, n));
+    return albedo * (ambient + direct * sun_light());
 }
 
 // Distance (m) along a ray from inside the pool box to where it leaves it (the tile it
@@ -542,12 +551,25 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
     occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
     occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
-    let ambient = AMBIENT * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
-    return albedo * (ambient + direct * scene.sun.w * SUN_COLOUR);
+    let ambient = sky_light() * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
+    return albedo * (ambient + direct * sun_light());
 }
 
-fn sphere_colour(p: vec3<f32>) -> vec3<f32> {
-    return object_colour(p, normalize(p - scene.sphere.xyz), SPHERE_ALBEDO);
+// The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres of
+// the water line it is wet (darker paint, a stronger coat); above the water the coat mirrors
+// the sky and the sun by Schlick's Fresnel (r0 = 0.04, a lacquer's index of about 1.5).
+fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    let n = normalize(p - scene.sphere.xyz);
+    let above = p.y - water_at(p.xz).x;
+    let wet = 1.0 - smoothstep(0.0, 0.04, above);
+    var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet));
+    if (above > 0.0) {
+        let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
+        let r = reflect(dir, n);
+        let lit = objects_visibility(p + n * 0.01, scene.sun.xyz, 10.0);
+        colour += fresnel * (1.0 + wet) * (sky_colour(r) * mix(1.0, lit, step(0.0, dot(r, scene.sun.xyz))));
+    }
+    return colour;
 }
 
 // The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,
@@ -556,17 +578,17 @@ fn duck_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) ->
     var colour = object_colour(p, n, albedo);
     if (p.y >= 0.0) {
         let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 40.0);
-        colour += SUN_COLOUR * scene.sun.w * 0.35 * gloss;
+        colour += sun_light() * 0.35 * gloss;
     }
     return colour;
 }
 
-// The sky cubemap plus the sun's disk (the sun_size parameter across, 1.5 degrees by default,
+// The sky cubemap (radiance / SKY_RANGE) plus the sun's disk (the sun_size parameter across,
 // HDR so its reflections stay bright), dimmed where the cubemap's alpha says clouds cover it.
 fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
     let sky = textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0);
     let disk = smoothstep(scene.optics.y, scene.optics.z, dot(dir, scene.sun.xyz));
-    return sky.rgb + vec3<f32>(40.0, 36.0, 30.0) * disk * (1.0 - 0.8 * sky.a);
+    return sky.rgb * SKY_RANGE + sun_light() * SUN_DISK_RADIANCE * disk * (1.0 - 0.8 * sky.a);
 }
 
 // Specular reflection of the sun on water, sharper and brighter than the cubemap's disk
@@ -582,7 +604,10 @@ fn sun_specular(dir: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
         let half_vector = normalize(to_eye + scene.sun.xyz);
         lobe = select(lobe, max(dot(normal, half_vector), 0.0), dot(normal, normal) > 0.5);
     }
-    return SUN_COLOUR * scene.sun.w * 80.0 * pow(lobe, scene.optics.x);
+    // Toksvig: where the normals vary within the pixel the lobe widens (specular_spread < 1)
+    // and its peak falls so that the light it reflects stays the same, instead of sparkling.
+    let s = scene.optics.x * specular_spread;
+    return sun_light() * SUN_GLINT * (s + 2.0) / (scene.optics.x + 2.0) * pow(lobe, s);
 }
 
 // Fresnel reflectance by this variant's model (FRESNEL_MODEL; the formulas, their sources and
@@ -652,7 +677,7 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
         colour = duck_colour(origin + dir * t, duck.normal, duck.albedo, dir);
     } else if (ts < t) {
         t = ts;
-        colour = sphere_colour(origin + dir * t);
+        colour = sphere_colour(origin + dir * t, dir);
     } else {
         let hit = origin + dir * t;
         colour = pool_colour_at_hit(hit, lod);
@@ -679,7 +704,7 @@ fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, 
         return duck_colour(origin + dir * duck.t, duck.normal, duck.albedo, dir);
     }
     if (ts < t) {
-        return sphere_colour(origin + dir * ts);
+        return sphere_colour(origin + dir * ts, dir);
     }
     let hit = origin + dir * t;
     if (hit.y < rim() - 1.0e-3) {
@@ -688,13 +713,13 @@ fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, 
     return sky_colour(dir) + sun_specular(dir, normal);
 }
 
-// Final colour written to the target: linear up to 0.6, then a soft shoulder so bright
-// caustics and sun glints roll off instead of clipping; sRGB-encoded in the shader when
-// the target format does not do it in hardware (WebGPU canvases are plain 8-bit UNORM).
+// Final colour written to the target: scene light times the exposure through a filmic curve
+// (Narkowicz's fit of the ACES film response: a toe that keeps shade dark, a shoulder that
+// rolls bright caustics and glints off to white instead of clipping); sRGB-encoded in the
+// shader when the target format does not do it in hardware (WebGPU canvases are plain UNORM).
 fn tone_map(c: vec3<f32>) -> vec3<f32> {
-    let knee = 0.6;
-    let shoulder = knee + (1.0 - knee) * (1.0 - exp(-(c - knee) / (1.0 - knee)));
-    return select(c, shoulder, c > vec3<f32>(knee));
+    let x = c * scene.sun_light.w * EXPOSURE_SCALE;
+    return (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14);
 }
 
 // Debug values in [0, 1] per channel as the colour that displays as them (stored as v * 255):

@@ -16,5 +16,5 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
-    return seen_directly(sphere_colour(in.world), in.world);
+    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz)), in.world);
 }

@@ -40,6 +40,12 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
 @fragment
 fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @location(0) vec4<f32> {
     let n = select(-1.0, 1.0, from_above) * water_normal(water_at(in.world.xz));
+    // Toksvig's factor from the normal's spread over the pixel (a uniform spread over the
+    // screen derivatives has variance |dn|^2 / 12 per axis): the highlight widens where
+    // ripples are finer than pixels instead of sparkling from pixel to pixel.
+    let dnx = dpdx(n);
+    let dny = dpdy(n);
+    specular_spread = 1.0 / (1.0 + scene.optics.x * (dot(dnx, dnx) + dot(dny, dny)) / 24.0);
     let eta = select(IOR_WATER / IOR_AIR, IOR_AIR / IOR_WATER, from_above);
     let view = normalize(in.world - scene.eye.xyz);
     let reflected = reflect(view, n);

@@ -24,7 +24,7 @@ pub const DISTANCE_RANGE: (f32, f32) = (1.5, 12.0);
 
 impl Default for OrbitCamera {
     fn default() -> Self {
-        Self { yaw: -25.0, pitch: 32.0, distance: 4.2, target: Vec3::new(0.0, -0.3, 0.0), fov_y: 45.0 }
+        Self { yaw: -25.0, pitch: 34.0, distance: 3.4, target: Vec3::new(0.0, -0.3, 0.0), fov_y: 45.0 }
     }
 }
 
@@ -55,6 +55,15 @@ impl OrbitCamera {
             self.yaw = 0.0;
         }
         self.yaw = (self.yaw + 180.0).rem_euclid(360.0) - 180.0;
+    }
+
+    /// Raises the pitch as far as needed for the eye to be at least at `height` (m): the
+    /// ground the camera must not go under.
+    pub fn keep_eye_above(&mut self, height: f32) {
+        let lowest = ((height - self.target.y) / self.distance).clamp(-1.0, 1.0).asin().to_degrees();
+        if self.pitch < lowest {
+            self.pitch = lowest.min(PITCH_RANGE.1);
+        }
     }
 
     /// Rotates by a drag of (dx, dy) pixels.

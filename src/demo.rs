@@ -740,6 +740,8 @@ impl WaterDemo {
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
             flat: self.flat_view(),
+            exposure: self.params.get(ParamId::Exposure),
+            deck: self.params.get(ParamId::Setting).round() == 0.0,
         }
     }
 
@@ -826,6 +828,10 @@ impl WaterDemo {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
         self.set_viewport(size.0, size.1);
+        if self.params.get(ParamId::Setting).round() == 0.0 {
+            // The deck: the camera stays above the paving.
+            self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
+        }
         self.refresh_ambient();
         self.choose_render_scale(frame_time);
         self.step_governor.observe(frame_time);

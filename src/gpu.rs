@@ -26,6 +26,7 @@ pub mod wgsl {
     pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
     pub const AMBIENT_FFT: &str = include_str!("../shaders/ambient_fft.wgsl");
     pub const FLAT_WATER: &str = include_str!("../shaders/flat_water.wgsl");
+    pub const DECK: &str = include_str!("../shaders/deck.wgsl");
 }
 
 /// Constants the shaders share with the Rust side, written from the Rust values ahead of

@@ -17,6 +17,7 @@ pub mod quality;
 pub mod render;
 pub mod scene;
 pub mod sim;
+pub mod sky;
 pub mod textures;
 pub mod timing;
 #[cfg(target_arch = "wasm32")]

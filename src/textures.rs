@@ -4,6 +4,7 @@
 use glam::Vec3;
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::sky::Daylight;
 
 /// Tiles per metre along each axis (12.5 cm tiles).
 pub const TILES_PER_METRE: u32 = 8;
@@ -137,6 +138,21 @@ pub fn create_fresnel_table(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu:
 struct SkyFaceUniforms {
     sun: [f32; 4],
     face: [f32; 4],
+    /// Daylight::uniform: Perez rows for Y, x, y, their E, the zenith values.
+    perez: [[f32; 4]; 5],
+    sun_light: [f32; 4],
+}
+
+impl SkyFaceUniforms {
+    fn new(face: usize, daylight: &Daylight) -> Self {
+        let sun = daylight.sun;
+        Self {
+            sun: [sun.x, sun.y, sun.z, 0.0],
+            face: [face as f32, 0.0, 0.0, 0.0],
+            perez: daylight.uniform(),
+            sun_light: daylight.sun_light.extend(0.0).to_array(),
+        }
+    }
 }
 
 /// The sky cubemap and the passes that paint it.
@@ -147,6 +163,7 @@ pub struct SkyCube {
     face_groups: Vec<wgpu::BindGroup>,
     pass: FullscreenPass,
     painted_for: Option<Vec3>,
+    daylight: Daylight,
 }
 
 impl SkyCube {
@@ -181,7 +198,7 @@ impl SkyCube {
                 gpu::uniform_buffer(
                     device,
                     "sky face uniforms",
-                    &SkyFaceUniforms { sun: [0.0, 1.0, 0.0, 0.0], face: [face as f32, 0.0, 0.0, 0.0] },
+                    &SkyFaceUniforms::new(face, &Daylight::new(Vec3::Y)),
                 )
             })
             .collect();
@@ -198,12 +215,17 @@ impl SkyCube {
         let pass = FullscreenPass::new(
             device,
             "sky cube face",
-            &[gpu::wgsl::SKY_CUBE],
+            &[&Daylight::wgsl_constants(), gpu::wgsl::SKY_CUBE],
             "fs_sky_face",
             &[&layout],
             FullscreenTarget { format: SKY_FORMAT, blend: None, depth: None },
         );
-        Self { texture, face_views, face_uniforms, face_groups, pass, painted_for: None }
+        Self { texture, face_views, face_uniforms, face_groups, pass, painted_for: None, daylight: Daylight::new(Vec3::Y) }
+    }
+
+    /// The sky last painted: its sun's light and its ambient light.
+    pub fn daylight(&self) -> &Daylight {
+        &self.daylight
     }
 
     /// A cube view of the sky for sampling by direction.
@@ -221,8 +243,9 @@ impl SkyCube {
             return;
         }
         self.painted_for = Some(sun);
+        self.daylight = Daylight::new(sun);
         for face in 0..6 {
-            let u = SkyFaceUniforms { sun: [sun.x, sun.y, sun.z, 0.0], face: [face as f32, 0.0, 0.0, 0.0] };
+            let u = SkyFaceUniforms::new(face, &self.daylight);
             queue.write_buffer(&self.face_uniforms[face], 0, bytemuck::bytes_of(&u));
             self.pass.run(encoder, &self.face_views[face], &[&self.face_groups[face]]);
         }

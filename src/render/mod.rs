@@ -2,6 +2,7 @@
 //! surface (from above and from below) into any colour target.
 
 pub mod flat;
+mod deck;
 mod meshes;
 mod variants;
 
@@ -19,11 +20,10 @@ use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
 use flat::{FlatCaustics, FlatView, FlatWater};
 use meshes::{pool_box, unit_sphere, water_grid, Mesh};
+pub use deck::EYE_CLEARANCE;
 pub use variants::Features;
 use variants::{PipelineTargets, ScenePipelines};
 
-/// Sun irradiance scale on a surface facing it (linear units; ambient sky light is ~0.35).
-pub const SUN_STRENGTH: f32 = 0.8;
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// Caustics map: red = light, green = light with the sphere's shadow.
 pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
@@ -59,6 +59,10 @@ pub struct View {
     pub render_scale: f32,
     /// Flat water instead of (or beside) the ray-traced surface; `None`: ray-traced.
     pub flat: Option<FlatView>,
+    /// Photographic exposure before the tone curve (EV: +1 doubles the light).
+    pub exposure: f32,
+    /// The pool is sunk in a paved deck (else the classic's cut-away box in the open).
+    pub deck: bool,
 }
 
 /// The ambient waves as the shader takes them (see ambient.rs).
@@ -172,6 +176,8 @@ struct SceneUniforms {
     ambient_header: [f32; 4],
     ambient_waves: [[f32; 4]; MAX_AMBIENT_WAVES],
     flat: [f32; 4],
+    sun_light: [f32; 4],
+    sky_light: [f32; 4],
 }
 
 /// Renderer settings fixed at creation.
@@ -289,6 +295,7 @@ pub struct Renderer {
     /// The water surface, both sides in one draw.
     grid: Mesh,
     pool_mesh: Mesh,
+    deck_mesh: Mesh,
     sphere_mesh: Mesh,
     duck_mesh: Mesh,
     depth: Option<DepthBuffer>,
@@ -550,6 +557,10 @@ impl Renderer {
             debug_passes: HashMap::new(),
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
+            deck_mesh: {
+                let (vertices, indices) = deck::deck_ring();
+                Mesh::new(device, "deck", &vertices, &indices)
+            },
             sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
             duck_mesh: Mesh::new(device, "duck", &duck_vertices, &duck_indices),
             depth: None,
@@ -696,6 +707,8 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
+        self.sky_cube.update(queue, encoder, view.sun);
+        let daylight = *self.sky_cube.daylight();
         let sphere = view.sphere.map_or([0.0; 4], |s| [s.centre.x, s.centre.y, s.centre.z, s.radius]);
         let refracted = scene::refracted_sun(view.sun);
         let n = water.size() as f32;
@@ -703,7 +716,7 @@ impl Renderer {
             view_proj: view.view_proj.to_cols_array_2d(),
             inv_view_proj: view.view_proj.inverse().to_cols_array_2d(),
             eye: view.eye.extend(1.0).to_array(),
-            sun: [view.sun.x, view.sun.y, view.sun.z, SUN_STRENGTH],
+            sun: [view.sun.x, view.sun.y, view.sun.z, 0.0],
             refracted_sun: refracted.extend(0.0).to_array(),
             sphere,
             pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, 0.0],
@@ -733,6 +746,8 @@ impl Renderer {
             ambient_header: view.ambient.header,
             ambient_waves: view.ambient.waves,
             flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
+            sun_light: daylight.sun_light.extend(2f32.powf(view.exposure)).to_array(),
+            sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         if let Some(f) = flat_shown(view) {
@@ -750,7 +765,6 @@ impl Renderer {
             };
             queue.write_buffer(&self.mirror_uniforms, 0, bytemuck::bytes_of(&m));
         }
-        self.sky_cube.update(queue, encoder, view.sun);
     }
 
     /// Projects the water grid along the refracted sunlight into the caustics map.
@@ -904,6 +918,7 @@ impl Renderer {
             pass.set_scissor_rect(0, 0, reach, texture_size.1);
             pass.set_bind_group(0, Some(group), &[]);
             pass.set_bind_group(1, Some(&self.textures_group), &[]);
+            self.draw_deck(&mut pass, features, view);
             self.draw_solids(&mut pass, features, view);
             if features.clip > 0 {
                 self.sky.draw(&mut pass, &[group, &self.textures_group]);
@@ -952,6 +967,7 @@ impl Renderer {
         pass.set_bind_group(1, Some(&self.textures_group), &[]);
         let [x, y, w, h] = rect;
         pass.set_scissor_rect(x, y, w, h);
+        self.draw_deck(&mut pass, features, view);
         match (flat, regions) {
             (Some(_), _) => {
                 let group = &self.flat.targets.as_ref().expect("flat textures are drawn first").group;
@@ -977,6 +993,15 @@ impl Renderer {
         }
         self.draw_solids(&mut pass, features, view);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+    }
+
+    /// Draws the deck around the pool if the view has one. Drawn first: where it hides the
+    /// water's cut-away side, those costly fragments then fail the depth test.
+    fn draw_deck(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        if view.deck {
+            pass.set_pipeline(&self.variants[&features].deck);
+            self.deck_mesh.draw(pass);
+        }
     }
 
     /// Draws the sphere and the duck (those the view has) and the pool with the pipelines of

@@ -78,7 +78,7 @@ impl Features {
             "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
             self.clip, self.flat_caustics, self.flat_distortion as u32
         );
-        flat + &format!(
+        flat + &crate::sky::Daylight::wgsl_constants() + &super::deck::wgsl_constants() + &format!(
             "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
@@ -214,6 +214,8 @@ pub struct ScenePipelines {
     pub caustics: Vec<wgpu::RenderPipeline>,
     pub surface: wgpu::RenderPipeline,
     pub pool: wgpu::RenderPipeline,
+    /// The deck around the pool (the pool's shader types and its own fragment shader).
+    pub deck: wgpu::RenderPipeline,
     pub sphere: wgpu::RenderPipeline,
     pub duck: wgpu::RenderPipeline,
 }
@@ -319,6 +321,15 @@ impl ScenePipelines {
                 &module("pool", gpu::wgsl::POOL),
                 "vs_pool",
                 "fs_pool",
+                &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+                24,
+                back,
+            ),
+            deck: scene_pipeline(
+                "deck",
+                &module("deck", &[gpu::wgsl::POOL, gpu::wgsl::DECK].concat()),
+                "vs_deck",
+                "fs_deck",
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
                 24,
                 back,

@@ -1,0 +1,281 @@
+//! Look benchmark for issue 27 ("the picture must beat Evan Wallace's classic WebGL Water"):
+//! the figures of our default view and the classic's, in the same browser run at the same canvas
+//! size (tests/support/picture.rs defines them): colourfulness (Hasler and Süsstrunk), the
+//! standard deviation of Rec. 709 luma, the sparkle share (pixels more than 40/255 of luma off
+//! their 3x3 median) and the floor's caustic contrast (95th / 50th luma percentile).
+//!
+//! One headless Chromium with the WebGPU flags (which give WebGL2 too) and an 800x600 viewport
+//! loads our `/index.html?backend=B&quality=1&controls=0` for B = webgpu, then webgl2, then the
+//! classic `/classic/index.html` (WebGL1; served read-only from ../shared/anchors/webgl-water).
+//! Canvas size: the classic's canvas is the window less its help panel, 480x600 at (0, 0) in
+//! that viewport; ours is made the same by giving the page's `#pool` element that size at the
+//! same place before the demo mounts (an init script pins it: `position: fixed`, 480x600 px;
+//! an element with a height of its own is filled by the demo, see web/embed.js), with
+//! `quality=1` so the scene is drawn at the canvas's full resolution. Nothing is cropped: both
+//! canvases measure 480x600 (checked; a mismatch stops the run). Our play/fullscreen buttons and
+//! the stage's rounded corners are hidden before each screenshot, so only the picture counts.
+//! Each screenshot is of the viewport, cut to the canvas's rectangle.
+//!
+//! Three measurements per page, over the whole canvas:
+//! - `load`: the default view, 1 s after the page is running (ours: `data-ready`; the classic,
+//!   which has no ready signal: once its "Loading..." text is gone);
+//! - `ripples`: then four drops, each the page's own click drop (ours: `demo.addDrop(x, z)` at its
+//!   default radius and strength; the classic: `water.addDrop(x, z, 0.03, 0.01)`, what its mouse
+//!   makes), at the same pool points, and 1 s later;
+//! - `caustics`: the sun overhead, no objects, looking straight down, calm water, then one drop
+//!   in the middle and 0.5 s later; also the caustic contrast over the middle 40 % square of
+//!   the canvas (the pool's floor through the water). Ours: reloaded with `objects=none`,
+//!   `sun_elevation=90` (its maximum) and `camera=0,89,3.8` (pitch at its maximum; the eye
+//!   3.5 m above the water, as the classic's, whose distance is fixed, both 45° high), then
+//!   `demo.reset()` (calm water). The classic, in place: `angleX = -89.9` (straight down),
+//!   `renderer.lightDir = (0, 1, 0)`, the sphere moved to (10, 10, 10) (out of view, shadow and
+//!   reflections; `oldCenter` too, so moving it makes no wave), and both water textures cleared
+//!   (height, velocity and normal 0: calm).
+//!
+//! Run: `cargo bench --bench look` after building dist/ (`./scripts/serve` or
+//! `trunk build --release`; `WAVEPOOL_DIST` points elsewhere). Settings (environment):
+//! - `WAVEPOOL_LOOK_DIR` (`target/look/` in the crate): where the screenshots go, as
+//!   `ours-webgpu-load.png`, `ours-webgl2-ripples.png`, `classic-caustics.png`, ...;
+//! - `WAVEPOOL_LOOK_PAGES` (`webgpu webgl2 classic`): which pages, space-separated.
+//!
+//! Prints one JSON line per page and measurement (its figures, the canvas, the PNG's path),
+//! then one summary line per measurement with the figures of ours (webgpu), ours (webgl2) and
+//! the classic side by side.
+
+#[path = "../tests/support/picture.rs"]
+mod picture;
+#[path = "../tests/support/browser.rs"]
+mod support;
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use picture::{Image, PictureStats};
+use serde_json::{json, Value};
+use support::{canvas_rect_js, Browser, Graphics, Rect, Shot, StaticServer};
+
+/// The viewport (CSS px) and the canvas size both pages are measured at: the classic's canvas
+/// in that viewport.
+const VIEWPORT: (u32, u32) = (800, 600);
+const CANVAS: (u32, u32) = (480, 600);
+/// Longest wait for a page to run (SwiftShader compiles slowly).
+const READY_TIMEOUT: Duration = Duration::from_secs(180);
+/// From running to the `load` screenshot; from the drops to the `ripples` one.
+const LOAD_WAIT: Duration = Duration::from_secs(1);
+const RIPPLE_WAIT: Duration = Duration::from_secs(1);
+/// Calm water before the caustics drop, and from that drop to the screenshot.
+const CALM_WAIT: Duration = Duration::from_millis(500);
+const CAUSTIC_WAIT: Duration = Duration::from_millis(500);
+/// Where the `ripples` drops land (pool coordinates, m; the pool spans -1..1 in both pages).
+const DROPS: [(f64, f64); 4] = [(0.0, 0.0), (0.45, 0.3), (-0.5, -0.25), (0.25, -0.55)];
+/// Our camera looking down (yaw, pitch, distance): pitch at its maximum, the eye 3.5 m above the
+/// water (target 0.3 m below it) like the classic's.
+const OUR_TOP_VIEW: (f64, f64, f64) = (0.0, 89.0, 3.8);
+/// The floor rectangle of the caustic contrast: this share of the canvas's shorter side, centred.
+const FLOOR_SQUARE: f64 = 0.4;
+const MEASUREMENTS: [&str; 3] = ["load", "ripples", "caustics"];
+
+/// Pins our page's `#pool` to the classic canvas's place and size before the demo mounts (run
+/// by Chromium before each document's own scripts; the classic is left alone).
+const PIN_POOL_JS: &str = "(() => {
+  if (location.pathname.startsWith('/classic/')) return;
+  const pin = () => {
+    const pool = document.getElementById('pool');
+    if (!pool) return false;
+    Object.assign(pool.style, { position: 'fixed', left: '0', top: '0', margin: '0', width: '480px', height: '600px' });
+    return true;
+  };
+  if (pin()) return;
+  const watch = new MutationObserver(() => pin() && watch.disconnect());
+  watch.observe(document, { childList: true, subtree: true });
+})();";
+
+/// Hides our overlay buttons and the stage's rounded corners (over the canvas); returns our
+/// page's own figures.
+const TIDY_OURS_JS: &str = "const root = document.querySelector('#pool').shadowRoot;
+  root.querySelector('.stage').style.borderRadius = '0';
+  const overlay = root.querySelector('.overlay');
+  if (overlay) overlay.style.display = 'none';
+  const s = window.demo.stats();
+  return { backend: s.backend, renderScale: s.renderScale === undefined ? null : s.renderScale,
+           fps: s.fps, camera: window.demo.camera(), sunElevation: window.demo.get('sun_elevation'),
+           objects: window.demo.get('objects') };";
+
+const CLASSIC_CANVAS_JS: &str = "const c = document.querySelector('canvas'); const r = c.getBoundingClientRect();
+  return { left: r.left, top: r.top, width: r.width, height: r.height, size: [c.width, c.height] };";
+
+/// The classic, looking straight down with the sun overhead, the sphere away and calm water.
+const CLASSIC_TOP_VIEW_JS: &str = "angleX = -89.9;
+  renderer.lightDir = new GL.Vector(0, 1, 0);
+  window.center = window.oldCenter = new GL.Vector(10, 10, 10);
+  const calm = () => { gl.clearColor(0, 0, 0, 0); gl.clear(gl.COLOR_BUFFER_BIT); };
+  water.textureA.drawTo(calm);
+  water.textureB.drawTo(calm);
+  gl.clearColor(0, 0, 0, 1);
+  return { angleX, angleY, lightDir: [renderer.lightDir.x, renderer.lightDir.y, renderer.lightDir.z] };";
+
+/// One page and measurement: its name in the summary and its figures.
+struct Row {
+    page: String,
+    measurement: &'static str,
+    stats: PictureStats,
+}
+
+#[tokio::main(flavor = "current_thread")]
+async fn main() {
+    let dir = std::env::var_os("WAVEPOOL_LOOK_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("target/look"));
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("create {}: {e}", dir.display()));
+    let pages: Vec<String> = std::env::var("WAVEPOOL_LOOK_PAGES")
+        .unwrap_or_else(|_| "webgpu webgl2 classic".into())
+        .split_whitespace()
+        .map(str::to_owned)
+        .collect();
+    let server = StaticServer::start_with_classic(false);
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.add_init_script(PIN_POOL_JS).await;
+    let viewport = browser.set_viewport(VIEWPORT.0, VIEWPORT.1).await;
+    let agent = browser.js("return navigator.userAgent;").await;
+    println!("{}", json!({ "viewport": [viewport.0, viewport.1], "browser": agent, "dir": dir.display().to_string() }));
+    let mut rows = Vec::new();
+    for page in &pages {
+        match page.as_str() {
+            "webgpu" | "webgl2" => rows.extend(ours(&browser, &server, page, &dir).await),
+            "classic" => rows.extend(classic(&browser, &server, &dir).await),
+            other => panic!("WAVEPOOL_LOOK_PAGES: {other:?} is not webgpu, webgl2 or classic"),
+        }
+    }
+    browser.close().await;
+    for measurement in MEASUREMENTS {
+        let mut line = json!({ "summary": measurement });
+        for row in rows.iter().filter(|r| r.measurement == measurement) {
+            let s = row.stats.to_json();
+            line[&row.page] = json!({ "colourfulness": s["colourfulness"], "luma_std": s["luma_std"],
+                                      "sparkle_share": s["sparkle_share"], "caustic_contrast": s["caustic_contrast"] });
+        }
+        println!("{line}");
+    }
+}
+
+/// Our page on `backend`: the three measurements.
+async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Path) -> Vec<Row> {
+    let name = format!("ours-{backend}");
+    let base = format!("/index.html?backend={backend}&quality=1&controls=0");
+    let mut rows = Vec::new();
+
+    let info = load_ours(browser, server, &base, backend).await;
+    tokio::time::sleep(LOAD_WAIT).await;
+    rows.push(shoot(browser, &name, "load", &base, info, dir).await);
+
+    let drops: Vec<String> = DROPS.iter().map(|(x, z)| format!("d.addDrop({x}, {z});")).collect();
+    browser.js(&format!("const d = window.demo; {} return true;", drops.concat())).await;
+    tokio::time::sleep(RIPPLE_WAIT).await;
+    rows.push(shoot(browser, &name, "ripples", &base, Value::Null, dir).await);
+
+    let (yaw, pitch, distance) = OUR_TOP_VIEW;
+    let top = format!("{base}&objects=none&sun_elevation=90&camera={yaw},{pitch},{distance}");
+    load_ours(browser, server, &top, backend).await;
+    browser.js("window.demo.reset(); return true;").await;
+    tokio::time::sleep(CALM_WAIT).await;
+    browser.js("window.demo.addDrop(0, 0); return true;").await;
+    tokio::time::sleep(CAUSTIC_WAIT).await;
+    let info = browser.js(TIDY_OURS_JS).await;
+    rows.push(shoot(browser, &name, "caustics", &top, info, dir).await);
+    rows
+}
+
+/// Loads our page at `path`, waits until it runs on `backend`, tidies it (see `TIDY_OURS_JS`)
+/// and returns its own figures.
+async fn load_ours(browser: &Browser, server: &StaticServer, path: &str, backend: &str) -> Value {
+    browser.goto(&server.url(path)).await;
+    browser.wait_ready("#pool", READY_TIMEOUT).await;
+    assert!(browser.wait_for("window.demo", Duration::from_secs(10)).await, "{path}: no window.demo");
+    let info = browser.js(TIDY_OURS_JS).await;
+    assert_eq!(info["backend"], backend, "{path}: the page runs on another backend: {info}");
+    info
+}
+
+/// The classic: the three measurements.
+async fn classic(browser: &Browser, server: &StaticServer, dir: &Path) -> Vec<Row> {
+    let path = "/classic/index.html";
+    let mut rows = Vec::new();
+    browser.goto(&server.url(path)).await;
+    let running = "document.querySelector('canvas') && document.getElementById('loading').innerHTML === ''";
+    assert!(
+        browser.wait_for(running, READY_TIMEOUT).await,
+        "the classic did not start (is WebGL with float textures there?)"
+    );
+    tokio::time::sleep(LOAD_WAIT).await;
+    rows.push(shoot(browser, "classic", "load", path, Value::Null, dir).await);
+
+    let drops: Vec<String> = DROPS.iter().map(|(x, z)| format!("water.addDrop({x}, {z}, 0.03, 0.01);")).collect();
+    browser.js(&format!("{} return true;", drops.concat())).await;
+    tokio::time::sleep(RIPPLE_WAIT).await;
+    rows.push(shoot(browser, "classic", "ripples", path, Value::Null, dir).await);
+
+    let info = browser.js(CLASSIC_TOP_VIEW_JS).await;
+    tokio::time::sleep(CALM_WAIT).await;
+    browser.js("water.addDrop(0, 0, 0.03, 0.01); return true;").await;
+    tokio::time::sleep(CAUSTIC_WAIT).await;
+    rows.push(shoot(browser, "classic", "caustics", path, info, dir).await);
+    rows
+}
+
+/// Screenshots the page's canvas, saves it as `<page>-<measurement>.png`, computes its figures
+/// (with the caustic contrast for `caustics`) and prints them as one JSON line.
+async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &str, info: Value, dir: &Path) -> Row {
+    let canvas = if page == "classic" {
+        browser.js(CLASSIC_CANVAS_JS).await
+    } else {
+        let mut v = browser.js(&canvas_rect_js("#pool")).await;
+        v["size"] = browser
+            .js("const c = document.querySelector('#pool').shadowRoot.querySelector('canvas'); return [c.width, c.height];")
+            .await;
+        v
+    };
+    let rect = Rect::from_js(&canvas);
+    assert!(
+        (rect.w, rect.h) == CANVAS && canvas["size"] == json!([CANVAS.0, CANVAS.1]),
+        "{page}: the canvas is not {}x{} (CSS and backing pixels) as the comparison needs: {canvas}",
+        CANVAS.0,
+        CANVAS.1
+    );
+    let shot = browser.screenshot().await;
+    let (width, height, rgba) = crop(&shot, rect);
+    let file = dir.join(format!("{page}-{measurement}.png"));
+    save_png(&file, width, height, &rgba);
+    let img = Image::new(width, height, &rgba);
+    let mut stats = PictureStats::of(&img, img.full());
+    if measurement == "caustics" {
+        stats = stats.with_caustic_contrast(&img, picture::Rect::centred_square(width, height, FLOOR_SQUARE));
+    }
+    println!(
+        "{}",
+        json!({ "page": page, "measurement": measurement, "url": url, "canvas": [width, height],
+                "canvas_at": [rect.x, rect.y], "png": file.display().to_string(), "page_state": info,
+                "figures": stats.to_json() })
+    );
+    Row { page: page.replace('-', "_"), measurement, stats }
+}
+
+/// The pixels of `r` (clipped to the shot): width, height, RGBA8.
+fn crop(shot: &Shot, r: Rect) -> (u32, u32, Vec<u8>) {
+    let (x, y) = (r.x.min(shot.width), r.y.min(shot.height));
+    let (w, h) = (r.w.min(shot.width - x), r.h.min(shot.height - y));
+    let mut rgba = Vec::with_capacity(w as usize * h as usize * 4);
+    for row in y..y + h {
+        let start = (row as usize * shot.width as usize + x as usize) * 4;
+        rgba.extend_from_slice(&shot.rgba[start..start + w as usize * 4]);
+    }
+    (w, h, rgba)
+}
+
+fn save_png(path: &Path, width: u32, height: u32, rgba: &[u8]) {
+    let file = std::fs::File::create(path).unwrap_or_else(|e| panic!("create {}: {e}", path.display()));
+    let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().expect("PNG header");
+    writer.write_image_data(rgba).unwrap_or_else(|e| panic!("write {}: {e}", path.display()));
+}

@@ -1,0 +1,48 @@
+// The deck around the pool: coping stones along the opening and square paving slabs beyond,
+// lit by the sun (with the objects' shadows) and the sky, fading into the horizon's haze with
+// distance (aerial perspective: the air between adds the sky's colour and hides the ground).
+// Joints are filtered over the pixel's footprint, so far slabs blend instead of shimmering.
+
+// 1 inside a slab, 0 on a joint of `joint` m, averaged over the pixel's footprint.
+fn joints(uv: vec2<f32>, size: f32, joint: f32) -> f32 {
+    let cell = uv / size;
+    let width = max(fwidth(cell), vec2<f32>(1.0e-5));
+    let d = abs(fract(cell) - 0.5);           // 0.5 at the joint
+    let edge = 0.5 - 0.5 * joint / size;
+    let open = 1.0 - smoothstep(vec2<f32>(edge) - width, vec2<f32>(edge) + width, d);
+    // Wider than a joint per pixel: the average of slab and joint.
+    let far = 1.0 - joint / size;
+    return mix(open.x * open.y, far * far, clamp(max(width.x, width.y) * 4.0 - 1.0, 0.0, 1.0));
+}
+
+@vertex
+fn vs_deck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> PoolOut {
+    var out: PoolOut;
+    out.clip = scene.view_proj * vec4<f32>(position, 1.0);
+    out.world = position;
+    out.normal = normal;
+    return out;
+}
+
+@fragment
+fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {
+    let p = in.world;
+    let from_edge = max(abs(p.x), abs(p.z)) - half_width();
+    // Coping: pale stone blocks along the edge; slabs: warmer, each a little different.
+    let along = select(p.z, p.x, abs(p.z) > abs(p.x));
+    let coping = from_edge < COPING_WIDTH;
+    let slab_uv = p.xz + vec2<f32>(half_width() + COPING_WIDTH);
+    let id = floor(select(slab_uv / SLAB_SIZE, vec2<f32>(along / 0.5, 0.0), coping));
+    let tint = 0.92 + 0.16 * value_noise(vec3<f32>(id * 1.7, 0.3));
+    let grain = 0.94 + 0.12 * value_noise(vec3<f32>(p.xz * 9.0, 1.0));
+    let stone = select(vec3<f32>(0.40, 0.30, 0.22), vec3<f32>(0.50, 0.47, 0.42), coping) * tint * grain;
+    let joint = select(joints(slab_uv, SLAB_SIZE, 0.012), joints(vec2<f32>(along, 0.25), 0.5, 0.01), coping);
+    let albedo = stone * mix(0.55, 1.0, joint);
+    let sun = max(scene.sun.y, 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
+    // The open sky above the deck, less what the pool's opening hides near the edge.
+    let colour = albedo * (sky_light() + sun * sun_light());
+    let to_p = p - scene.eye.xyz;
+    let haze = 1.0 - exp(-length(to_p) / HAZE_DISTANCE * 0.69);
+    let horizon = sky_colour(normalize(vec3<f32>(to_p.x, 0.0, to_p.z) + vec3<f32>(0.0, 0.02, 0.0)));
+    return seen_directly(mix(colour, horizon, haze), p);
+}

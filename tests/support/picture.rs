@@ -1,0 +1,221 @@
+//! Figures of a picture for issue 27 (our picture against Evan Wallace's classic WebGL Water):
+//! pure functions on an RGBA8 image and a rectangle of it, no browser and no GPU. Used by the
+//! look benchmark (benches/look.rs); tested in tests/picture_stats.rs (`cargo test --test
+//! picture_stats`), not here: the benchmark compiles this file with `cfg(test)` but without
+//! its test functions, so a test module here would warn there.
+//!
+//! - colourfulness after Hasler and Süsstrunk (2003), on 0-255 values: rg = R - G,
+//!   yb = (R + G) / 2 - B, M = sqrt(σ_rg² + σ_yb²) + 0.3 sqrt(μ_rg² + μ_yb²) (σ: population
+//!   standard deviation; a grey picture gives 0, the paper calls about 33 "moderately
+//!   colourful", 59 "quite", 82 "highly");
+//! - luma: Rec. 709, 0.2126 R + 0.7152 G + 0.0722 B on 0-255; its standard deviation;
+//! - sparkle share: the share of pixels whose luma differs from the median of their 3x3
+//!   neighbourhood (the pixel and its 8 neighbours) by more than 40 (of 255), counted over the
+//!   rectangle's interior pixels (those whose neighbourhood lies inside it);
+//! - luma percentile ratio, e.g. the 95th over the 50th: the floor's caustic contrast.
+#![allow(dead_code)]
+
+use serde_json::{json, Value};
+
+/// An RGBA8 picture, rows top to bottom, 4 bytes a pixel (alpha is ignored).
+#[derive(Clone, Copy, Debug)]
+pub struct Image<'a> {
+    pub width: u32,
+    pub height: u32,
+    pub rgba: &'a [u8],
+}
+
+impl<'a> Image<'a> {
+    pub fn new(width: u32, height: u32, rgba: &'a [u8]) -> Self {
+        assert_eq!(rgba.len(), width as usize * height as usize * 4, "RGBA8 data of {width}x{height}");
+        Self { width, height, rgba }
+    }
+
+    /// The whole picture as a rectangle.
+    pub fn full(&self) -> Rect {
+        Rect { x: 0, y: 0, w: self.width, h: self.height }
+    }
+
+    /// (R, G, B) at (x, y), 0-255.
+    pub fn rgb(&self, x: u32, y: u32) -> [f64; 3] {
+        let i = (y as usize * self.width as usize + x as usize) * 4;
+        [self.rgba[i] as f64, self.rgba[i + 1] as f64, self.rgba[i + 2] as f64]
+    }
+
+    /// Rec. 709 luma at (x, y), 0-255.
+    pub fn luma(&self, x: u32, y: u32) -> f64 {
+        let [r, g, b] = self.rgb(x, y);
+        0.2126 * r + 0.7152 * g + 0.0722 * b
+    }
+
+    /// Lumas of a rectangle, row by row.
+    fn lumas(&self, r: Rect) -> Vec<f64> {
+        let r = r.within(self);
+        (r.y..r.y + r.h).flat_map(|y| (r.x..r.x + r.w).map(move |x| (x, y))).map(|(x, y)| self.luma(x, y)).collect()
+    }
+}
+
+/// A rectangle of pixels (left, top, width, height); clipped to the picture where used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rect {
+    pub x: u32,
+    pub y: u32,
+    pub w: u32,
+    pub h: u32,
+}
+
+impl Rect {
+    /// The square of side `fraction` of the shorter side of a `width` x `height` picture, in
+    /// its middle (0.4: "the middle 40 % square").
+    pub fn centred_square(width: u32, height: u32, fraction: f64) -> Self {
+        let side = ((width.min(height) as f64 * fraction).round() as u32).clamp(1, width.min(height).max(1));
+        Self { x: (width - side) / 2, y: (height - side) / 2, w: side, h: side }
+    }
+
+    /// This rectangle clipped to the picture.
+    fn within(self, img: &Image) -> Self {
+        let x = self.x.min(img.width);
+        let y = self.y.min(img.height);
+        Self { x, y, w: self.w.min(img.width - x), h: self.h.min(img.height - y) }
+    }
+
+    pub fn pixels(self) -> u64 {
+        self.w as u64 * self.h as u64
+    }
+}
+
+fn mean_and_std(values: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
+    let n = values.clone().count().max(1) as f64;
+    let mean = values.clone().sum::<f64>() / n;
+    let var = values.map(|v| (v - mean).powi(2)).sum::<f64>() / n;
+    (mean, var.sqrt())
+}
+
+/// Hasler and Süsstrunk's colourfulness M of the rectangle (0 for grey).
+pub fn colourfulness(img: &Image, r: Rect) -> f64 {
+    let r = r.within(img);
+    let pixels: Vec<[f64; 3]> =
+        (r.y..r.y + r.h).flat_map(|y| (r.x..r.x + r.w).map(move |x| (x, y))).map(|(x, y)| img.rgb(x, y)).collect();
+    let (mean_rg, std_rg) = mean_and_std(pixels.iter().map(|p| p[0] - p[1]));
+    let (mean_yb, std_yb) = mean_and_std(pixels.iter().map(|p| 0.5 * (p[0] + p[1]) - p[2]));
+    (std_rg.powi(2) + std_yb.powi(2)).sqrt() + 0.3 * (mean_rg.powi(2) + mean_yb.powi(2)).sqrt()
+}
+
+/// Mean and standard deviation of Rec. 709 luma (0-255) over the rectangle.
+pub fn luma_mean_std(img: &Image, r: Rect) -> (f64, f64) {
+    mean_and_std(img.lumas(r).into_iter())
+}
+
+/// Standard deviation of Rec. 709 luma (0-255) over the rectangle.
+pub fn luma_std(img: &Image, r: Rect) -> f64 {
+    luma_mean_std(img, r).1
+}
+
+/// Luma difference (0-255) from the 3x3 median beyond which a pixel counts as a sparkle.
+pub const SPARKLE_THRESHOLD: f64 = 40.0;
+
+/// Share of the rectangle's interior pixels whose luma differs from the median of their 3x3
+/// neighbourhood by more than [`SPARKLE_THRESHOLD`]; 0 for a rectangle without interior.
+pub fn sparkle_share(img: &Image, r: Rect) -> f64 {
+    let r = r.within(img);
+    if r.w < 3 || r.h < 3 {
+        return 0.0;
+    }
+    let lumas = img.lumas(r);
+    let at = |x: u32, y: u32| lumas[(y * r.w + x) as usize];
+    let mut sparkles = 0u64;
+    let mut window = [0.0f64; 9];
+    for y in 1..r.h - 1 {
+        for x in 1..r.w - 1 {
+            for (i, slot) in window.iter_mut().enumerate() {
+                *slot = at(x + i as u32 % 3 - 1, y + i as u32 / 3 - 1);
+            }
+            window.sort_unstable_by(f64::total_cmp);
+            if (at(x, y) - window[4]).abs() > SPARKLE_THRESHOLD {
+                sparkles += 1;
+            }
+        }
+    }
+    sparkles as f64 / ((r.w - 2) as u64 * (r.h - 2) as u64) as f64
+}
+
+/// The `p`th percentile (0-100) of sorted values, interpolated linearly between neighbouring
+/// ranks (as numpy's default); NaN for no values.
+fn percentile(sorted: &[f64], p: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let rank = (p.clamp(0.0, 100.0) / 100.0) * (sorted.len() - 1) as f64;
+    let (below, above) = (rank.floor() as usize, rank.ceil() as usize);
+    sorted[below] + (sorted[above] - sorted[below]) * (rank - below as f64)
+}
+
+/// The `p`th luma percentile (0-100) over the rectangle, 0-255.
+pub fn luma_percentile(img: &Image, r: Rect, p: f64) -> f64 {
+    let mut lumas = img.lumas(r);
+    lumas.sort_unstable_by(f64::total_cmp);
+    percentile(&lumas, p)
+}
+
+/// The `p_hi`th luma percentile over the `p_lo`th (e.g. 95, 50: the caustic contrast); infinite
+/// when the lower one is 0 and the upper is not, NaN when both are.
+pub fn luma_percentile_ratio(img: &Image, r: Rect, p_hi: f64, p_lo: f64) -> f64 {
+    let mut lumas = img.lumas(r);
+    lumas.sort_unstable_by(f64::total_cmp);
+    percentile(&lumas, p_hi) / percentile(&lumas, p_lo)
+}
+
+/// The figures of one picture (a rectangle of it), and optionally the caustic contrast of a
+/// floor rectangle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PictureStats {
+    /// The rectangle measured.
+    pub rect: Rect,
+    pub colourfulness: f64,
+    pub luma_mean: f64,
+    pub luma_std: f64,
+    pub sparkle_share: f64,
+    /// 95th / 50th luma percentile over `floor` (see [`PictureStats::with_caustic_contrast`]).
+    pub caustic_contrast: Option<f64>,
+    pub floor: Option<Rect>,
+}
+
+impl PictureStats {
+    /// Colourfulness, luma mean and standard deviation and sparkle share of `r`.
+    pub fn of(img: &Image, r: Rect) -> Self {
+        let r = r.within(img);
+        let (luma_mean, luma_std) = luma_mean_std(img, r);
+        Self {
+            rect: r,
+            colourfulness: colourfulness(img, r),
+            luma_mean,
+            luma_std,
+            sparkle_share: sparkle_share(img, r),
+            caustic_contrast: None,
+            floor: None,
+        }
+    }
+
+    /// Adds the caustic contrast (95th / 50th luma percentile) over `floor`.
+    pub fn with_caustic_contrast(mut self, img: &Image, floor: Rect) -> Self {
+        let floor = floor.within(img);
+        self.caustic_contrast = Some(luma_percentile_ratio(img, floor, 95.0, 50.0));
+        self.floor = Some(floor);
+        self
+    }
+
+    /// The figures as JSON, rounded to 4 significant decimals (non-finite ratios as null).
+    pub fn to_json(&self) -> Value {
+        let round = |x: f64| (x * 1e4).round() / 1e4;
+        let rect = |r: Rect| json!([r.x, r.y, r.w, r.h]);
+        json!({
+            "rect": rect(self.rect),
+            "colourfulness": round(self.colourfulness),
+            "luma_mean": round(self.luma_mean),
+            "luma_std": round(self.luma_std),
+            "sparkle_share": round(self.sparkle_share),
+            "caustic_contrast": self.caustic_contrast.filter(|c| c.is_finite()).map(round),
+            "floor_rect": self.floor.map(rect),
+        })
+    }
+}
