@@ -35,7 +35,7 @@ fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {
     let id = floor(select(slab_uv / SLAB_SIZE, vec2<f32>(along / 0.5, 0.0), coping));
     let tint = 0.92 + 0.16 * value_noise(vec3<f32>(id * 1.7, 0.3));
     let grain = 0.94 + 0.12 * value_noise(vec3<f32>(p.xz * 9.0, 1.0));
-    let stone = select(vec3<f32>(0.40, 0.30, 0.22), vec3<f32>(0.50, 0.47, 0.42), coping) * tint * grain;
+    let stone = select(vec3<f32>(0.11, 0.072, 0.048), vec3<f32>(0.58, 0.55, 0.50), coping) * tint * grain;
     let joint = select(joints(slab_uv, SLAB_SIZE, 0.012), joints(vec2<f32>(along, 0.25), 0.5, 0.01), coping);
     let albedo = stone * mix(0.55, 1.0, joint);
     let sun = max(scene.sun.y, 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);

@@ -65,12 +65,22 @@ struct Scene {
 // How far the sun's highlight is spread for the pixel being shaded (1: not at all; see
 // sun_specular); the water surface sets it from how much its normal varies within the pixel.
 var<private> specular_spread: f32 = 1.0;
+// Texels from the centre to each tap of the caustics lookup (caustics_at) for the pixel being
+// shaded: at least CAUSTICS_BLUR, more where the pixel covers more of the floor.
+var<private> caustics_spread: f32 = CAUSTICS_BLUR;
 
 // The sun's and the sky's light (sky.rs: Preetham's sky, the sun through the air).
 fn sun_light() -> vec3<f32> { return scene.sun_light.rgb; }
 fn sky_light() -> vec3<f32> { return scene.sky_light.rgb; }
 
+// The sky's light on a point at height y: under the water only what comes in through the
+// opening above and the surface (UNDERWATER_SKY of it), so the sun's caustics stand out.
+fn sky_light_at(y: f32) -> vec3<f32> {
+    return sky_light() * select(1.0, UNDERWATER_SKY, y < 0.0);
+}
+
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
+const CAUSTICS_BLUR: f32 = 0.6;  // texels from the centre to each tap, per axis
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }
@@ -310,6 +320,17 @@ fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(m.x * 0.5 + 0.5, 0.5 - m.y * 0.5);
 }
 
+// The caustics map at uv, blurred over about two texels (four bilinear taps) or the pixel's
+// footprint if larger (caustics_spread): lines focused into a single texel, or seen through
+// ripples that scatter neighbouring pixels' rays, would otherwise flicker from pixel to pixel.
+fn caustics_at(uv: vec2<f32>) -> vec4<f32> {
+    let o = caustics_spread / vec2<f32>(textureDimensions(caustics_map));
+    return 0.25 * (textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(o.x, o.y), 0.0)
+        + textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(-o.x, o.y), 0.0)
+        + textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(o.x, -o.y), 0.0)
+        + textureSampleLevel(caustics_map, clamp_sampler, uv - o, 0.0));
+}
+
 // 1 when the straight ray from the surface point p towards the sun clears the pool rim.
 fn rim_visibility(p: vec3<f32>) -> f32 {
     let s = scene.sun.xyz;
@@ -426,7 +447,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
         return 0.0;
     }
     if (HAS_CAUSTICS) {
-        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0) * scene.water.w;
+        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
         return select(c.r, c.g, with_sphere_shadow);
     }
     // Caustics off: a calm surface, with the same rim and sphere shadows.
@@ -457,7 +478,7 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
         if (!all(abs(entry) <= vec2<f32>(half_width()))) {
             return vec3<f32>(0.0);
         }
-        let c = textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), 0.0) * scene.water.w;
+        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
         return select(vec3<f32>(c.a), c.rgb, with_sphere_shadow);
     }
     return vec3<f32>(underwater_light(p, with_sphere_shadow));
@@ -500,7 +521,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     if (HAS_DISPERSION && p.y < 0.0) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = sky_light() * (1.0 - 0.9 * sphere_occlusion(p, n));
+        let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
@@ -509,7 +530,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
     }
-    let ambient = sky_light() * (1.0 - 0.9 * sphere_occlusion(p, n));
+    let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
 }
 
@@ -531,6 +552,9 @@ fn tile_lod(hit: vec3<f32>) -> f32 {
 
 // pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod.
 fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
+    // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
+    let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
+    caustics_spread = max(CAUSTICS_BLUR, 0.5 * footprint);
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
     return pool_colour(p, n, albedo);
@@ -551,7 +575,7 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
     occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
     occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
-    let ambient = sky_light() * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
+    let ambient = sky_light_at(p.y) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
     return albedo * (ambient + direct * sun_light());
 }
 
@@ -588,7 +612,10 @@ fn duck_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) ->
 fn sky_colour(dir: vec3<f32>) -> vec3<f32> {
     let sky = textureSampleLevel(sky_cube, clamp_sampler, dir, 0.0);
     let disk = smoothstep(scene.optics.y, scene.optics.z, dot(dir, scene.sun.xyz));
-    return sky.rgb * SKY_RANGE + sun_light() * SUN_DISK_RADIANCE * disk * (1.0 - 0.8 * sky.a);
+    // Seen in rippled water the disk is spread as the highlight is (specular_spread), so it
+    // does not sparkle from pixel to pixel.
+    let spread = specular_spread * specular_spread;
+    return sky.rgb * SKY_RANGE + sun_light() * SUN_DISK_RADIANCE * spread * disk * (1.0 - 0.8 * sky.a);
 }
 
 // Specular reflection of the sun on water, sharper and brighter than the cubemap's disk

@@ -451,7 +451,7 @@ pub const PARAMS: &[ParamSpec] = &[
         group: "Water colour",
         unit: "1/m",
         control: slider(0.0, 2.0, 0.005),
-        default: 0.9,
+        default: 1.2,
         help: "Beer-Lambert absorption of red light per metre of water: after d metres exp(-a d) of it is left.",
     },
     ParamSpec {
@@ -461,7 +461,7 @@ pub const PARAMS: &[ParamSpec] = &[
         group: "Water colour",
         unit: "1/m",
         control: slider(0.0, 2.0, 0.005),
-        default: 0.16,
+        default: 0.24,
         help: "Beer-Lambert absorption of green light per metre of water: after d metres exp(-a d) of it is left.",
     },
     ParamSpec {
@@ -471,7 +471,7 @@ pub const PARAMS: &[ParamSpec] = &[
         group: "Water colour",
         unit: "1/m",
         control: slider(0.0, 2.0, 0.005),
-        default: 0.07,
+        default: 0.10,
         help: "Beer-Lambert absorption of blue light per metre of water: after d metres exp(-a d) of it is left.",
     },
     ParamSpec {

@@ -17,6 +17,9 @@ pub const SUN_IRRADIANCE: f32 = 2.2;
 /// The sky's light on a horizontal surface relative to the sun's with the sun overhead: a
 /// clear sky gives about a fifth of a day's light.
 pub const SKY_TO_SUN: f32 = 0.2;
+/// Share of the sky's light that reaches points under the water (through the opening and the
+/// surface; the pool's walls hide the rest).
+pub const UNDERWATER_SKY: f32 = 0.45;
 /// Radiance of the sun's disk relative to SUN_IRRADIANCE (its highlight and reflections).
 pub const SUN_DISK_RADIANCE: f32 = 24.0;
 /// Peak of the sun's highlight on the water relative to the sun's light (its lobe is
@@ -165,7 +168,7 @@ impl Daylight {
     pub fn wgsl_constants() -> String {
         format!(
             "const SKY_RANGE: f32 = {SKY_RANGE:?};\nconst SUN_DISK_RADIANCE: f32 = {SUN_DISK_RADIANCE:?};\n\
-             const SUN_GLINT: f32 = {SUN_GLINT:?};\nconst EXPOSURE_SCALE: f32 = {EXPOSURE_SCALE:?};\n"
+             const UNDERWATER_SKY: f32 = {UNDERWATER_SKY:?};\nconst SUN_GLINT: f32 = {SUN_GLINT:?};\nconst EXPOSURE_SCALE: f32 = {EXPOSURE_SCALE:?};\n"
         )
     }
 }
