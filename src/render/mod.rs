@@ -30,9 +30,9 @@ pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
 /// Caustics map where float render targets are missing: 8-bit, holding light / [`CAUSTICS_8BIT_SCALE`].
 pub const CAUSTICS_FORMAT_8BIT: wgpu::TextureFormat = wgpu::TextureFormat::Rg8Unorm;
 /// Light (relative to a calm surface) that the 8-bit caustics map's 1.0 stands for: focused
-/// light up to 4x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
+/// light up to 6x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
 /// has flattened them by then anyway).
-pub const CAUSTICS_8BIT_SCALE: f32 = 4.0;
+pub const CAUSTICS_8BIT_SCALE: f32 = 6.0;
 
 /// Everything a frame's picture depends on besides the water state.
 #[derive(Clone, Copy, Debug)]
