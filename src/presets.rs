@@ -53,7 +53,15 @@ pub const PRESETS: &[Preset] = &[
         name: "fresnel",
         label: "Lesson: Fresnel reflectance",
         help: "Calm, empty water seen low across the pool, so the angle of incidence runs from about 50° near you to grazing at the far side: switch the Fresnel model and watch the reflection and the plot change.",
-        values: &[("objects", 0.0), ("fresnel", 0.0), ("damping", 1.0), ("drop_strength", 0.006), ("sun_elevation", 40.0)],
+        values: &[
+            ("objects", 0.0),
+            ("fresnel", 0.0),
+            ("damping", 1.0),
+            ("drop_strength", 0.006),
+            ("sun_elevation", 40.0),
+            // The cut-away box: from this low the deck's coping would hide the near water.
+            ("setting", 1.0),
+        ],
         camera: Some([-25.0, 14.0, 3.8]),
     },
     Preset {
@@ -111,15 +119,29 @@ pub const PRESETS: &[Preset] = &[
         label: "Lesson: water colour",
         help: "Green lake water: it absorbs red, green and blue faster than the pool's, and scatters a green-blue light of its own, so the deep end turns green instead of dark (turn the scattered light to 0 to see plain Beer-Lambert).",
         values: &[
-            ("absorption_red", 0.8),
-            ("absorption_green", 0.25),
-            ("absorption_blue", 0.35),
+            ("absorption_red", 1.6),
+            ("absorption_green", 0.35),
+            ("absorption_blue", 0.45),
             ("scatter_red", 0.02),
             ("scatter_green", 0.09),
             ("scatter_blue", 0.08),
             ("view_colour", 1.0),
         ],
         camera: None,
+    },
+    Preset {
+        name: "noon",
+        label: "Noon",
+        help: "The sun almost overhead: a deep blue sky, short shadows, the brightest caustics on the floor.",
+        values: &[("sun_elevation", 82.0), ("sun_azimuth", 30.0)],
+        camera: None,
+    },
+    Preset {
+        name: "evening",
+        label: "Evening",
+        help: "A low warm sun behind the pool: long shadows, the sky pale and golden towards the sun, the glitter of its light on the ripples coming towards you.",
+        values: &[("sun_elevation", 12.0), ("sun_azimuth", 150.0), ("exposure", 0.6)],
+        camera: Some([-30.0, 30.0, 3.6]),
     },
 ];
 

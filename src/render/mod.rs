@@ -1,8 +1,8 @@
 //! The renderer: caustics map, then one scene pass of sky, pool, sphere and the water
 //! surface (from above and from below) into any colour target.
 
-pub mod flat;
 mod deck;
+pub mod flat;
 mod meshes;
 mod variants;
 
@@ -18,9 +18,9 @@ use crate::scene::{self, Sphere};
 use crate::sim::foam::Foam;
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
+pub use deck::EYE_CLEARANCE;
 use flat::{FlatCaustics, FlatView, FlatWater};
 use meshes::{pool_box, unit_sphere, water_grid, Mesh};
-pub use deck::EYE_CLEARANCE;
 pub use variants::Features;
 use variants::{PipelineTargets, ScenePipelines};
 

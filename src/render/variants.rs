@@ -78,24 +78,26 @@ impl Features {
             "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
             self.clip, self.flat_caustics, self.flat_distortion as u32
         );
-        flat + &crate::sky::Daylight::wgsl_constants() + &super::deck::wgsl_constants() + &format!(
-            "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
+        flat + &crate::sky::Daylight::wgsl_constants()
+            + &super::deck::wgsl_constants()
+            + &format!(
+                "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
              const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n",
-            self.sphere,
-            self.duck,
-            self.caustics,
-            self.fresnel as u32,
-            self.specular as u32,
-            self.show_reflectance,
-            self.scattering,
-            self.view_colour,
-            self.dispersion,
-            self.ambient as u32,
-            self.choppy,
-            self.foam
-        )
+                self.sphere,
+                self.duck,
+                self.caustics,
+                self.fresnel as u32,
+                self.specular as u32,
+                self.show_reflectance,
+                self.scattering,
+                self.view_colour,
+                self.dispersion,
+                self.ambient as u32,
+                self.choppy,
+                self.foam
+            )
     }
 }
 
