@@ -46,12 +46,13 @@ fn the_viewer_window_shows_the_pool_and_the_panel() {
     let panel = stats(10, 250);
     let scene = stats(w / 2, w - 10);
     println!(
-        "panel luma mean {:.1} std {:.1}; scene luma mean {:.1} std {:.1} blue-red {:.1}",
-        panel.0, panel.1, scene.0, scene.1, scene.2
+        "panel luma mean {:.1} std {:.1} blue-red {:.1}; scene luma mean {:.1} std {:.1} blue-red {:.1}",
+        panel.0, panel.1, panel.2, scene.0, scene.1, scene.2
     );
     assert!(panel.1 > 3.0, "no text or widgets in the panel (luma std {:.1})", panel.1);
     assert!(scene.1 > 10.0, "the scene looks flat (luma std {:.1})", scene.1);
-    assert!((scene.0 - panel.0).abs() > 20.0, "scene and panel look alike: {panel:?} vs {scene:?}");
+    // egui's panel is neutral grey; the pool's water is blue against the deck's warm paving.
+    assert!((scene.2 - panel.2).abs() > 5.0, "scene and panel look alike: {panel:?} vs {scene:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
