@@ -1,5 +1,5 @@
 // The deck around the pool: coping stones along the opening and square paving slabs beyond,
-// lit by the sun (with the objects' shadows) and the sky, fading into the horizon's haze with
+// lit by the sun and the sky, fading into the horizon's haze with
 // distance (aerial perspective: the air between adds the sky's colour and hides the ground).
 // Joints are filtered over the pixel's footprint, so far slabs blend instead of shimmering.
 
@@ -33,16 +33,19 @@ fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {
     let coping = from_edge < COPING_WIDTH;
     let slab_uv = p.xz + vec2<f32>(half_width() + COPING_WIDTH);
     let id = floor(select(slab_uv / SLAB_SIZE, vec2<f32>(along / 0.5, 0.0), coping));
-    let tint = 0.92 + 0.16 * value_noise(vec3<f32>(id * 1.7, 0.3));
-    let grain = 0.94 + 0.12 * value_noise(vec3<f32>(p.xz * 9.0, 1.0));
-    let stone = select(vec3<f32>(0.11, 0.072, 0.048), vec3<f32>(0.58, 0.55, 0.50), coping) * tint * grain;
+    let tint = 0.9 + 0.2 * hash31(vec3<f32>(id, 0.3));
+    let stone = select(vec3<f32>(0.11, 0.072, 0.048), vec3<f32>(0.58, 0.55, 0.50), coping) * tint;
     let joint = select(joints(slab_uv, SLAB_SIZE, 0.012), joints(vec2<f32>(along, 0.25), 0.5, 0.01), coping);
     let albedo = stone * mix(0.55, 1.0, joint);
-    let sun = max(scene.sun.y, 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
-    // The open sky above the deck, less what the pool's opening hides near the edge.
-    let colour = albedo * (sky_light() + sun * sun_light());
+    // The open sky and the sun (the deck is above the water and its objects: no shadows cast on it).
+    let colour = albedo * (sky_light() + max(scene.sun.y, 0.0) * sun_light());
     let to_p = p - scene.eye.xyz;
     let haze = 1.0 - exp(-length(to_p) / HAZE_DISTANCE * 0.69);
     let horizon = sky_colour(normalize(vec3<f32>(to_p.x, 0.0, to_p.z) + vec3<f32>(0.0, 0.02, 0.0)));
-    return seen_directly(mix(colour, horizon, haze), p);
+    // Seen through air only (the camera stays above the deck); in the flat water's textures
+    // only the reflection holds it (it is above the plane), with alpha 0 as everything there.
+    if (CLIP_SIDE < 0) {
+        discard;
+    }
+    return vec4<f32>(finish(mix(colour, horizon, haze)).rgb, select(1.0, 0.0, CLIP_SIDE > 0));
 }

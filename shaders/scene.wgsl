@@ -579,21 +579,16 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     return albedo * (ambient + direct * sun_light());
 }
 
-// The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres of
-// the water line it is wet (darker paint, a stronger coat); above the water the coat mirrors
+// The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres above
+// the rest level it is wet (darker paint, a stronger coat); above the water the coat mirrors
 // the sky and the sun by Schlick's Fresnel (r0 = 0.04, a lacquer's index of about 1.5).
 fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     let n = normalize(p - scene.sphere.xyz);
-    let above = p.y - water_at(p.xz).x;
-    let wet = 1.0 - smoothstep(0.0, 0.04, above);
+    let wet = 1.0 - smoothstep(0.0, 0.04, p.y);
     var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet));
-    if (above > 0.0) {
-        let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
-        let r = reflect(dir, n);
-        let lit = objects_visibility(p + n * 0.01, scene.sun.xyz, 10.0);
-        colour += fresnel * (1.0 + wet) * (sky_colour(r) * mix(1.0, lit, step(0.0, dot(r, scene.sun.xyz))));
-    }
-    return colour;
+    let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
+    let coat = fresnel * (1.0 + wet) * sky_colour(reflect(dir, n));
+    return colour + select(vec3<f32>(0.0), coat, p.y > 0.0);
 }
 
 // The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,

@@ -31,26 +31,6 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
     return out;
 }
 
-// The water's state at xz with the simulated slopes averaged over the pixel's footprint (four
-// samples on a rotated grid across the screen derivatives dx, dy of xz, in m): ripples finer
-// than a pixel tilt it by their mean, not by a different tilt at each pixel (sparkle). The
-// ambient waves, smooth at this scale, are added once at the centre.
-fn water_over_pixel(xz: vec2<f32>, dx: vec2<f32>, dy: vec2<f32>) -> vec4<f32> {
-    let n = vec2<i32>(i32(scene.water.x));
-    let offsets = array<vec2<f32>, 4>(
-        vec2<f32>(-0.375, -0.125), vec2<f32>(0.125, -0.375), vec2<f32>(0.375, 0.125), vec2<f32>(-0.125, 0.375),
-    );
-    var sum = vec4<f32>(0.0);
-    for (var i = 0; i < 4; i++) {
-        sum += bilinear_load(water_state, clamped_taps(xz + offsets[i].x * dx + offsets[i].y * dy, n));
-    }
-    let state = sum * 0.25;
-    if (AMBIENT_MODEL != AMBIENT_NONE) {
-        return with_ambient(state, xz);
-    }
-    return state;
-}
-
 // One fragment shader for both sides, so the grid is drawn once. Front faces are the
 // surface seen from above: the reflected ray goes up into the air, the refracted one down
 // into the pool. Back faces are seen from below: the refracted ray leaves through Snell's
@@ -59,7 +39,7 @@ fn water_over_pixel(xz: vec2<f32>, dx: vec2<f32>, dy: vec2<f32>) -> vec4<f32> {
 // without branching on the side, so screen derivatives (tile_lod) stay in uniform control flow.
 @fragment
 fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @location(0) vec4<f32> {
-    let n = select(-1.0, 1.0, from_above) * water_normal(water_over_pixel(in.world.xz, dpdx(in.world.xz), dpdy(in.world.xz)));
+    let n = select(-1.0, 1.0, from_above) * water_normal(water_at(in.world.xz));
     // Toksvig's factor from the normal's spread over the pixel (a uniform spread over the
     // screen derivatives has variance |dn|^2 / 12 per axis): the highlight widens where
     // ripples are finer than pixels instead of sparkling from pixel to pixel.
