@@ -65,9 +65,9 @@ struct Scene {
 // How far the sun's highlight is spread for the pixel being shaded (1: not at all; see
 // sun_specular); the water surface sets it from how much its normal varies within the pixel.
 var<private> specular_spread: f32 = 1.0;
-// Texels from the centre to each tap of the caustics lookup (caustics_at) for the pixel being
-// shaded: at least CAUSTICS_BLUR, more where the pixel covers more of the floor.
-var<private> caustics_spread: f32 = CAUSTICS_BLUR;
+// Mip level of the caustics lookup (caustics_at) for the pixel being shaded: at least
+// CAUSTICS_MIN_LOD, more where the pixel covers more of the floor (set by pool_colour_at_hit).
+var<private> caustics_lod: f32 = CAUSTICS_MIN_LOD;
 
 // The sun's and the sky's light (sky.rs: Preetham's sky, the sun through the air).
 fn sun_light() -> vec3<f32> { return scene.sun_light.rgb; }
@@ -80,7 +80,6 @@ fn sky_light_at(y: f32) -> vec3<f32> {
 }
 
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
-const CAUSTICS_BLUR: f32 = 0.6;  // texels from the centre to each tap, per axis
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }
@@ -320,15 +319,11 @@ fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(m.x * 0.5 + 0.5, 0.5 - m.y * 0.5);
 }
 
-// The caustics map at uv, blurred over about two texels (four bilinear taps) or the pixel's
-// footprint if larger (caustics_spread): lines focused into a single texel, or seen through
-// ripples that scatter neighbouring pixels' rays, would otherwise flicker from pixel to pixel.
+// The caustics map at uv over the pixel's footprint on the floor (caustics_lod: at least
+// CAUSTICS_MIN_LOD, where lines focused into one texel are blended about two wide): one
+// trilinear fetch from its mip chain (render/caustics_mips.rs).
 fn caustics_at(uv: vec2<f32>) -> vec4<f32> {
-    let o = caustics_spread / vec2<f32>(textureDimensions(caustics_map));
-    return 0.25 * (textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(o.x, o.y), 0.0)
-        + textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(-o.x, o.y), 0.0)
-        + textureSampleLevel(caustics_map, clamp_sampler, uv + vec2<f32>(o.x, -o.y), 0.0)
-        + textureSampleLevel(caustics_map, clamp_sampler, uv - o, 0.0));
+    return textureSampleLevel(caustics_map, clamp_sampler, uv, caustics_lod);
 }
 
 // 1 when the straight ray from the surface point p towards the sun clears the pool rim.
@@ -554,7 +549,7 @@ fn tile_lod(hit: vec3<f32>) -> f32 {
 fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
     // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
     let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
-    caustics_spread = max(CAUSTICS_BLUR, 0.5 * footprint);
+    caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
     return pool_colour(p, n, albedo);

@@ -27,6 +27,7 @@ pub mod wgsl {
     pub const AMBIENT_FFT: &str = include_str!("../shaders/ambient_fft.wgsl");
     pub const FLAT_WATER: &str = include_str!("../shaders/flat_water.wgsl");
     pub const DECK: &str = include_str!("../shaders/deck.wgsl");
+    pub const CAUSTICS_MIP: &str = include_str!("../shaders/caustics_mip.wgsl");
 }
 
 /// Constants the shaders share with the Rust side, written from the Rust values ahead of

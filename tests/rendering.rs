@@ -188,7 +188,9 @@ fn the_no_float_path_renders_the_same_frame() {
     assert!(ripple_changed > 0.05, "the drops should show: {:.2}% changed", ripple_changed * 100.0);
     assert!(diff < 0.5, "no-float frame differs by {diff}/255 on average");
     assert!(changed < 0.01, "{:.2}% of pixels differ by more than 16/255", changed * 100.0);
-    assert!(diff < 0.1 * ripple_diff, "the no-float path is not much closer than a calm pool");
+    // Within a seventh of the ripples' own difference: the 8-bit map rounds the light to
+    // 1/255 of CAUSTICS_8BIT_SCALE at each of its mip levels, about 1/255 of the picture.
+    assert!(diff < 0.15 * ripple_diff, "the no-float path is not much closer than a calm pool");
 }
 
 /// The debug views show the simulation's textures where they belong: after one central drop,

@@ -1,6 +1,7 @@
 //! The renderer: caustics map, then one scene pass of sky, pool, sphere and the water
 //! surface (from above and from below) into any colour target.
 
+mod caustics_mips;
 mod deck;
 pub mod flat;
 mod meshes;
@@ -18,6 +19,7 @@ use crate::scene::{self, Sphere};
 use crate::sim::foam::Foam;
 use crate::sim::HeightField;
 use crate::textures::{self, SkyCube};
+use caustics_mips::CausticsMips;
 pub use deck::EYE_CLEARANCE;
 use flat::{FlatCaustics, FlatView, FlatWater};
 use meshes::{pool_box, unit_sphere, water_grid, Mesh};
@@ -30,9 +32,9 @@ pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
 /// Caustics map where float render targets are missing: 8-bit, holding light / [`CAUSTICS_8BIT_SCALE`].
 pub const CAUSTICS_FORMAT_8BIT: wgpu::TextureFormat = wgpu::TextureFormat::Rg8Unorm;
 /// Light (relative to a calm surface) that the 8-bit caustics map's 1.0 stands for: focused
-/// light up to 6x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
+/// light up to 10x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
 /// has flattened them by then anyway).
-pub const CAUSTICS_8BIT_SCALE: f32 = 6.0;
+pub const CAUSTICS_8BIT_SCALE: f32 = 10.0;
 
 /// Everything a frame's picture depends on besides the water state.
 #[derive(Clone, Copy, Debug)]
@@ -235,7 +237,8 @@ fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
 /// The caustics map and the water grid (see [`caustics_grid`]) drawn into it (its pipeline
 /// is one of the [`ScenePipelines`]).
 struct CausticsMap {
-    view: wgpu::TextureView,
+    /// The map and its mip chain.
+    mips: CausticsMips,
     /// Texels per side.
     size: u32,
     /// Whether `view` holds light per colour channel (dispersion; an RGBA map).
@@ -250,13 +253,7 @@ impl CausticsMap {
         let grid_size = caustics_grid(sim_size);
         let (grid_vertices, grid_indices) = water_grid(grid_size);
         let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
-        Self { view: Self::map(device, size, format), size, per_channel: false, grid, grid_size }
-    }
-
-    /// A map of `size` texels per side.
-    fn map(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat) -> wgpu::TextureView {
-        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-        gpu::texture_2d(device, "caustics map", size, size, 1, 1, format, usage).create_view(&Default::default())
+        Self { mips: CausticsMips::new(device, size, format), size, per_channel: false, grid, grid_size }
     }
 }
 
@@ -498,9 +495,15 @@ impl Renderer {
                 address_mode_w: address,
                 mag_filter: wgpu::FilterMode::Linear,
                 min_filter: wgpu::FilterMode::Linear,
-                // Nearest mip level: the level is chosen per pixel already (tile_lod), and
-                // trilinear filtering costs software rasterisers twice the texel reads.
-                mipmap_filter: wgpu::MipmapFilterMode::Nearest,
+                // Nearest mip level for the repeating tiles: the level is chosen per pixel
+                // already (tile_lod), and trilinear filtering costs software rasterisers twice
+                // the texel reads. Linear for the clamped maps: the caustics map is read
+                // between its levels (caustics_at), the others have one level.
+                mipmap_filter: if address == wgpu::AddressMode::Repeat {
+                    wgpu::MipmapFilterMode::Nearest
+                } else {
+                    wgpu::MipmapFilterMode::Linear
+                },
                 ..Default::default()
             })
         };
@@ -521,7 +524,7 @@ impl Renderer {
             clamp: sampler(wgpu::AddressMode::ClampToEdge),
             repeat: sampler(wgpu::AddressMode::Repeat),
         };
-        let textures_group = scene_textures.bind_group(device, &textures_layout, &caustics.view);
+        let textures_group = scene_textures.bind_group(device, &textures_layout, &caustics.mips.view);
 
         let layouts = [&water_layout, &textures_layout];
         let format = settings.target_format;
@@ -676,7 +679,8 @@ impl Renderer {
         let size = foam.size();
         if self.scene_textures.foam.0.width() != size {
             self.scene_textures.foam = foam_map(device, size);
-            self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
+            self.textures_group =
+                self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.mips.view);
         }
         gpu::write_texture_2d(queue, &self.scene_textures.foam.0, 0, bytemuck::cast_slice(foam.amount()));
     }
@@ -691,10 +695,11 @@ impl Renderer {
     /// (rebinding it), if it is not already.
     fn resize_caustics(&mut self, device: &wgpu::Device, size: u32, per_channel: bool) {
         if size != self.caustics.size || per_channel != self.caustics.per_channel {
-            self.caustics.view = CausticsMap::map(device, size, self.settings.caustics_format_for(per_channel).0);
+            self.caustics.mips = CausticsMips::new(device, size, self.settings.caustics_format_for(per_channel).0);
             self.caustics.size = size;
             self.caustics.per_channel = per_channel;
-            self.textures_group = self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.view);
+            self.textures_group =
+                self.scene_textures.bind_group(device, &self.textures_layout, &self.caustics.mips.view);
         }
     }
 
@@ -784,14 +789,20 @@ impl Renderer {
             return;
         }
         self.variant(device, features);
-        let mut pass =
-            gpu::colour_pass(encoder, "caustics", &self.caustics.view, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
+        let mut pass = gpu::colour_pass(
+            encoder,
+            "caustics",
+            &self.caustics.mips.target,
+            wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+        );
         pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
         // One draw, or with dispersion one per colour channel (each with its own index).
         for pipeline in &self.variants[&features].caustics {
             pass.set_pipeline(pipeline);
             self.caustics.grid.draw(&mut pass);
         }
+        drop(pass);
+        self.caustics.mips.encode(encoder);
     }
 
     fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {

@@ -80,6 +80,7 @@ impl Features {
         );
         flat + &crate::sky::Daylight::wgsl_constants()
             + &super::deck::wgsl_constants()
+            + &super::caustics_mips::CausticsMips::wgsl_constants()
             + &format!(
                 "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
