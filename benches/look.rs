@@ -37,6 +37,8 @@
 //! - `WAVEPOOL_LOOK_DIR` (`target/look/` in the crate): where the screenshots go, as
 //!   `ours-webgpu-load.png`, `ours-webgl2-ripples.png`, `classic-caustics.png`, ...;
 //! - `WAVEPOOL_LOOK_PAGES` (`webgpu webgl2 classic`): which pages, space-separated.
+//! - `WAVEPOOL_LOOK_QUERY`: extra options for our page, e.g. `&preset=evening` (the load and
+//!   ripple views take them; the caustics view too, before its own).
 //!
 //! Prints one JSON line per page and measurement (its figures, the canvas, the PNG's path),
 //! then one summary line per measurement with the figures of ours (webgpu), ours (webgl2) and
@@ -82,7 +84,7 @@ const PIN_POOL_JS: &str = "(() => {
   const pin = () => {
     const pool = document.getElementById('pool');
     if (!pool) return false;
-    Object.assign(pool.style, { position: 'fixed', left: '0', top: '0', margin: '0', width: '480px', height: '600px' });
+    Object.assign(pool.style, { position: 'fixed', left: '0', top: '0', margin: '0', width: '480px', height: '600px', zIndex: '1000' });
     return true;
   };
   if (pin()) return;
@@ -160,8 +162,10 @@ async fn main() {
 
 /// Our page on `backend`: the three measurements.
 async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Path) -> Vec<Row> {
-    let name = format!("ours-{backend}");
-    let base = format!("/index.html?backend={backend}&quality=1&controls=0");
+    // Extra options for our page (e.g. `&preset=evening`), named in the page's name too.
+    let extra = std::env::var("WAVEPOOL_LOOK_QUERY").unwrap_or_default();
+    let name = format!("ours-{backend}{}", extra.replace(['&', '='], "-"));
+    let base = format!("/index.html?backend={backend}&quality=1&controls=0{extra}");
     let mut rows = Vec::new();
 
     let info = load_ours(browser, server, &base, backend).await;

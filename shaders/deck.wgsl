@@ -34,7 +34,7 @@ fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {
     let slab_uv = p.xz + vec2<f32>(half_width() + COPING_WIDTH);
     let id = floor(select(slab_uv / SLAB_SIZE, vec2<f32>(along / 0.5, 0.0), coping));
     let tint = 0.9 + 0.2 * hash31(vec3<f32>(id, 0.3));
-    let stone = select(vec3<f32>(0.11, 0.072, 0.048), vec3<f32>(0.58, 0.55, 0.50), coping) * tint;
+    let stone = select(vec3<f32>(0.095, 0.062, 0.042), vec3<f32>(0.60, 0.57, 0.52), coping) * tint;
     let joint = select(joints(slab_uv, SLAB_SIZE, 0.012), joints(vec2<f32>(along, 0.25), 0.5, 0.01), coping);
     let albedo = stone * mix(0.55, 1.0, joint);
     // The open sky and the sun (the deck is above the water and its objects: no shadows cast on it).

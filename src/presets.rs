@@ -139,9 +139,9 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "evening",
         label: "Evening",
-        help: "A low warm sun behind the pool: long shadows, the sky pale and golden towards the sun, the glitter of its light on the ripples coming towards you.",
-        values: &[("sun_elevation", 12.0), ("sun_azimuth", 150.0), ("exposure", 0.6)],
-        camera: Some([-30.0, 30.0, 3.6]),
+        help: "A low warm sun from the side, the picture exposed for it: long shadows across the deck, the water dark where the rim shades it, the far wall lit by the sun's caustics.",
+        values: &[("sun_elevation", 20.0), ("sun_azimuth", -90.0), ("exposure", 1.8)],
+        camera: None,
     },
 ];
 
