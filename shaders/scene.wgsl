@@ -80,6 +80,9 @@ fn sky_light_at(y: f32) -> vec3<f32> {
 }
 
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
+// The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
+const SPHERE_GLOSS: f32 = 300.0;
+const SPHERE_SHINE: f32 = 60.0;
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }
@@ -582,7 +585,10 @@ fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     let wet = 1.0 - smoothstep(0.0, 0.04, p.y);
     var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet));
     let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
-    let coat = fresnel * (1.0 + wet) * sky_colour(reflect(dir, n));
+    let r = reflect(dir, n);
+    // The sky in the coat, and the sun's highlight on it (a glossy lobe, cos^SPHERE_GLOSS).
+    let highlight = sun_light() * SPHERE_SHINE * pow(max(dot(r, scene.sun.xyz), 0.0), SPHERE_GLOSS);
+    let coat = fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
     return colour + select(vec3<f32>(0.0), coat, p.y > 0.0);
 }
 
