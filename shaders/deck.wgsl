@@ -15,14 +15,7 @@ fn joints(uv: vec2<f32>, size: f32, joint: f32) -> f32 {
     return mix(open.x * open.y, far * far, clamp(max(width.x, width.y) * 4.0 - 1.0, 0.0, 1.0));
 }
 
-@vertex
-fn vs_deck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> PoolOut {
-    var out: PoolOut;
-    out.clip = scene.view_proj * vec4<f32>(position, 1.0);
-    out.world = position;
-    out.normal = normal;
-    return out;
-}
+// Its vertices go through the pool's vs_pool (pool.wgsl, joined ahead of this file).
 
 @fragment
 fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {

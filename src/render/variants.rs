@@ -331,7 +331,7 @@ impl ScenePipelines {
             deck: scene_pipeline(
                 "deck",
                 &module("deck", &[gpu::wgsl::POOL, gpu::wgsl::DECK].concat()),
-                "vs_deck",
+                "vs_pool",
                 "fs_deck",
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
                 24,
