@@ -741,8 +741,13 @@ impl WaterDemo {
             render_scale: self.render_scale,
             flat: self.flat_view(),
             exposure: self.params.get(ParamId::Exposure),
-            deck: self.params.get(ParamId::Setting).round() == 0.0,
+            deck: self.on_deck(),
         }
+    }
+
+    /// Whether the pool is sunk in the deck (`setting` deck) rather than the cut-away box.
+    fn on_deck(&self) -> bool {
+        self.params.get(ParamId::Setting).round() == 0.0
     }
 
     /// The flat water settings in the parameters (`None` when ray-traced).
@@ -828,8 +833,8 @@ impl WaterDemo {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
         self.set_viewport(size.0, size.1);
-        if self.params.get(ParamId::Setting).round() == 0.0 {
-            // The deck: the camera stays above the paving.
+        if self.on_deck() {
+            // The camera stays above the paving.
             self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
         }
         self.refresh_ambient();

@@ -109,29 +109,20 @@ fn air_mass(elevation: f32) -> f32 {
 
 impl Daylight {
     pub fn new(sun: Vec3) -> Self {
-        let sun = sun.normalize();
-        let theta_s = sun.y.clamp(-1.0, 1.0).acos().min(1.55);
-        let perez_c = coefficients(TURBIDITY);
-        let z = zenith_values(TURBIDITY, theta_s);
-        let mut zenith = [0.0; 3];
-        for i in 0..3 {
-            zenith[i] = z[i] / perez(&perez_c[i], 1.0, theta_s);
-        }
+        let mut sky = Self::unscaled(sun.normalize());
         // Sunlight through the air: Beer–Lambert over the air mass, white at the zenith.
-        let m = air_mass(sun.y.clamp(0.0, 1.0).asin());
-        let transmitted = Vec3::from(ZENITH_OPTICAL_DEPTH.map(|tau| (-tau * (m - 1.0)).exp()));
-        let sun_light = transmitted * SUN_IRRADIANCE;
-        let mut sky = Self { sun, perez: perez_c, zenith, sun_light, ambient: Vec3::ZERO };
+        let m = air_mass(sky.sun.y.clamp(0.0, 1.0).asin());
+        sky.sun_light = Vec3::from(ZENITH_OPTICAL_DEPTH.map(|tau| (-tau * (m - 1.0)).exp())) * SUN_IRRADIANCE;
         // Scale the sky's luminance so that, with the sun overhead, its light on the ground is
         // SKY_TO_SUN of the sun's; the same scale at every sun position (evenings darken).
-        let noon = Self::new_unscaled(Vec3::Y);
-        let scale = SKY_TO_SUN * SUN_IRRADIANCE / noon.irradiance_up().dot(Vec3::new(0.2126, 0.7152, 0.0722));
-        sky.zenith[0] *= scale;
+        let noon = Self::unscaled(Vec3::Y).irradiance_up().dot(Vec3::new(0.2126, 0.7152, 0.0722));
+        sky.zenith[0] *= SKY_TO_SUN * SUN_IRRADIANCE / noon;
         sky.ambient = sky.irradiance_up();
         sky
     }
 
-    fn new_unscaled(sun: Vec3) -> Self {
+    /// The sky for a unit vector towards the sun, its luminance in Preetham's kcd/m², no light yet.
+    fn unscaled(sun: Vec3) -> Self {
         let theta_s = sun.y.clamp(-1.0, 1.0).acos().min(1.55);
         let perez_c = coefficients(TURBIDITY);
         let z = zenith_values(TURBIDITY, theta_s);

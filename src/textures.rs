@@ -193,10 +193,9 @@ impl SkyCube {
                 })
             })
             .collect();
+        let daylight = Daylight::new(Vec3::Y);
         let face_uniforms: Vec<wgpu::Buffer> = (0..6)
-            .map(|face| {
-                gpu::uniform_buffer(device, "sky face uniforms", &SkyFaceUniforms::new(face, &Daylight::new(Vec3::Y)))
-            })
+            .map(|face| gpu::uniform_buffer(device, "sky face uniforms", &SkyFaceUniforms::new(face, &daylight)))
             .collect();
         let face_groups = face_uniforms
             .iter()
@@ -216,15 +215,7 @@ impl SkyCube {
             &[&layout],
             FullscreenTarget { format: SKY_FORMAT, blend: None, depth: None },
         );
-        Self {
-            texture,
-            face_views,
-            face_uniforms,
-            face_groups,
-            pass,
-            painted_for: None,
-            daylight: Daylight::new(Vec3::Y),
-        }
+        Self { texture, face_views, face_uniforms, face_groups, pass, painted_for: None, daylight }
     }
 
     /// The sky last painted: its sun's light and its ambient light.
