@@ -1,0 +1,272 @@
+//! The crate's layers (docs/ARCHITECTURE.md, "Layers"): every `crate::` path in `src/` outside
+//! test code may only name a module of its own layer or one below, and no modules may import
+//! each other round in a cycle. Reads the sources as text: no build of the modules involved.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+/// Bottom to top. A module may use modules of its own layer (without a cycle) and below.
+const LAYERS: &[(&str, &[&str])] = &[
+    ("util", &[]),
+    ("world", &["scene", "camera", "sky"]),
+    ("parameter types", &["params"]),
+    ("gpu plumbing", &["gpu", "timing"]),
+    ("simulation", &["sim"]),
+    ("features", &["physics", "optics", "ambient", "duck"]),
+    ("renderer", &["render", "textures"]),
+    ("app", &["demo", "presets", "quality"]),
+    ("shells", &["web", "headless", "viewer", "cli", "main"]),
+];
+
+/// Imports that still run against the table, (from, to): each is a known debt, and the test
+/// fails when one is paid off but still listed, so this list only shrinks.
+const KNOWN_VIOLATIONS: &[(&str, &str)] = &[
+    ("gpu", "ambient"),
+    ("gpu", "duck"),
+    ("gpu", "optics"),
+    ("gpu", "render"),
+    ("gpu", "sim"),
+    ("params", "ambient"),
+    ("params", "optics"),
+    ("timing", "demo"),
+    ("timing", "render"),
+];
+
+fn layer_of(module: &str) -> Option<usize> {
+    LAYERS.iter().position(|(_, modules)| modules.contains(&module))
+}
+
+/// Source text with comments, string and char literals blanked (line breaks kept, so line
+/// numbers stay true), and every item under `#[cfg(test)]` removed.
+fn code_only(source: &str) -> String {
+    let chars: Vec<char> = source.chars().collect();
+    let mut out = String::with_capacity(source.len());
+    let mut i = 0;
+    let blank = |c: char| if c == '\n' { '\n' } else { ' ' };
+    while i < chars.len() {
+        if chars[i] == '/' && peek(&chars, i + 1) == '/' {
+            while i < chars.len() && chars[i] != '\n' {
+                out.push(' ');
+                i += 1;
+            }
+        } else if chars[i] == '/' && peek(&chars, i + 1) == '*' {
+            while i < chars.len() && !(chars[i] == '*' && peek(&chars, i + 1) == '/') {
+                out.push(blank(chars[i]));
+                i += 1;
+            }
+            out.push_str("  ");
+            i += 2;
+        } else if chars[i] == 'r'
+            && (peek(&chars, i + 1) == '#' || peek(&chars, i + 1) == '"')
+            && !ident_char(chars.get(i.wrapping_sub(1)))
+        {
+            let hashes = (1..).take_while(|&n| peek(&chars, i + n) == '#').count();
+            if peek(&chars, i + hashes + 1) != '"' {
+                out.push(chars[i]);
+                i += 1;
+                continue;
+            }
+            i += hashes + 2;
+            let closes =
+                |at: usize| chars.get(at) == Some(&'"') && (1..=hashes).all(|n| chars.get(at + n) == Some(&'#'));
+            while i < chars.len() && !closes(i) {
+                out.push(blank(chars[i]));
+                i += 1;
+            }
+            i += hashes + 1;
+            out.push_str("\"\"");
+        } else if chars[i] == '"' {
+            i += 1;
+            while i < chars.len() && chars[i] != '"' {
+                if chars[i] == '\\' {
+                    out.push(' ');
+                    i += 1;
+                }
+                out.push(blank(chars[i]));
+                i += 1;
+            }
+            i += 1;
+            out.push_str("\"\"");
+        } else if chars[i] == '\''
+            && (peek(&chars, i + 2) == '\''
+                || (peek(&chars, i + 1) == '\\' && chars[i + 2..].iter().take(10).any(|&c| c == '\'')))
+        {
+            // A char literal ('x', '\n', '\u{..}'), not a lifetime.
+            let end = i + 1 + chars[i + 1..].iter().skip(1).position(|&c| c == '\'').unwrap() + 1;
+            out.push_str("' '");
+            i = end + 1;
+        } else {
+            out.push(chars[i]);
+            i += 1;
+        }
+    }
+    drop_test_items(&out)
+}
+
+fn peek(chars: &[char], at: usize) -> char {
+    chars.get(at).copied().unwrap_or('\0')
+}
+
+fn ident_char(c: Option<&char>) -> bool {
+    c.is_some_and(|c| c.is_alphanumeric() || *c == '_')
+}
+
+/// Blanks each item following `#[cfg(test)]`: up to its `;`, or its `{ … }` block.
+fn drop_test_items(code: &str) -> String {
+    let mut out: Vec<char> = code.chars().collect();
+    let marker: Vec<char> = "#[cfg(test)]".chars().collect();
+    let mut i = 0;
+    while i + marker.len() <= out.len() {
+        if out[i..i + marker.len()] != marker[..] {
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        let mut depth = 0;
+        while j < out.len() {
+            match out[j] {
+                '{' => depth += 1,
+                '}' => depth -= 1,
+                ';' if depth == 0 => break,
+                _ => {}
+            }
+            if out[j] == '}' && depth == 0 {
+                break;
+            }
+            j += 1;
+        }
+        let last = j.min(out.len() - 1);
+        for c in &mut out[i..=last] {
+            if *c != '\n' {
+                *c = ' ';
+            }
+        }
+        i = j;
+    }
+    out.into_iter().collect()
+}
+
+/// The first-level module names a `crate::` path (or group) names, with the byte offset of each.
+fn imported_modules(code: &str) -> Vec<(usize, String)> {
+    let mut found = Vec::new();
+    for (at, _) in code.match_indices("crate::") {
+        let rest = &code[at + "crate::".len()..];
+        if let Some(group) = rest.strip_prefix('{') {
+            // Names at the group's first level: `crate::{a::X, b::{Y, Z}, c}` gives a, b, c.
+            let mut depth = 0;
+            let end = group
+                .char_indices()
+                .find(|&(_, c)| {
+                    depth += (c == '{') as i32 - (c == '}') as i32;
+                    depth < 0
+                })
+                .map_or(group.len(), |(i, _)| i);
+            let mut depth = 0;
+            for segment in group[..end].split(|c| {
+                depth += (c == '{') as i32 - (c == '}') as i32;
+                c == ',' && depth == 0
+            }) {
+                found.push((at, leading_name(segment.trim_start())));
+            }
+        } else {
+            found.push((at, leading_name(rest)));
+        }
+    }
+    found.retain(|(_, name)| !name.is_empty() && name != "self");
+    found
+}
+
+fn leading_name(text: &str) -> String {
+    text.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect()
+}
+
+fn sources(dir: &Path, into: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            sources(&path, into);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            into.push(path);
+        }
+    }
+}
+
+/// One import of a module by another: (from, to) → first place it happens ("src/x.rs:12").
+fn module_imports() -> BTreeMap<(String, String), String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    files.sort();
+    let mut imports = BTreeMap::new();
+    for file in files {
+        let relative = file.strip_prefix(&src).unwrap();
+        let from = relative.iter().next().unwrap().to_string_lossy().trim_end_matches(".rs").to_string();
+        if from == "lib" {
+            continue;
+        }
+        let code = code_only(&std::fs::read_to_string(&file).unwrap());
+        for (at, to) in imported_modules(&code) {
+            if to != from {
+                let line = code[..at].matches('\n').count() + 1;
+                let place = format!("src/{}:{line}", relative.display());
+                imports.entry((from.clone(), to)).or_insert(place);
+            }
+        }
+    }
+    imports
+}
+
+#[test]
+fn every_import_runs_down_the_layer_table_and_no_modules_import_each_other() {
+    let imports = module_imports();
+    let mut problems = Vec::new();
+    let mut violations = BTreeSet::new();
+    for ((from, to), place) in &imports {
+        match (layer_of(from), layer_of(to)) {
+            (None, _) => problems.push(format!("{place}: module `{from}` is in no layer of the table")),
+            (_, None) => problems.push(format!("{place}: `{from}` imports `{to}`, which is in no layer of the table")),
+            (Some(a), Some(b)) if b > a => {
+                violations.insert((from.as_str(), to.as_str()));
+                if !KNOWN_VIOLATIONS.contains(&(from.as_str(), to.as_str())) {
+                    problems.push(format!(
+                        "{place}: `{from}` ({}) imports `{to}` ({}), a layer above it",
+                        LAYERS[a].0, LAYERS[b].0
+                    ));
+                }
+            }
+            _ => {}
+        }
+    }
+    for (from, to) in KNOWN_VIOLATIONS {
+        if !violations.contains(&(*from, *to)) {
+            problems.push(format!("`{from}` → `{to}` no longer runs upward: take it off KNOWN_VIOLATIONS"));
+        }
+    }
+    // Imports within one layer are allowed unless they close a cycle.
+    let sideways: Vec<(&str, &str)> = imports
+        .keys()
+        .map(|(a, b)| (a.as_str(), b.as_str()))
+        .filter(|(a, b)| layer_of(a).is_some() && layer_of(a) == layer_of(b))
+        .collect();
+    for &(from, to) in &sideways {
+        let mut reached = vec![to];
+        let mut i = 0;
+        while i < reached.len() {
+            let at = reached[i];
+            for &(a, b) in &sideways {
+                if a == at && !reached.contains(&b) {
+                    reached.push(b);
+                }
+            }
+            i += 1;
+        }
+        if reached.contains(&from) {
+            problems.push(format!(
+                "{}: `{from}` imports `{to}`, which leads back to `{from}`",
+                imports[&(from.into(), to.into())]
+            ));
+        }
+    }
+    println!("{} module imports, {} known upward imports left", imports.len(), violations.len());
+    assert!(problems.is_empty(), "layering problems:\n{}", problems.join("\n"));
+}
