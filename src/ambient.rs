@@ -476,7 +476,8 @@ fn standing(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f32; 3] {
     [c * u.cos() * v.cos(), -c * kx * u.sin() * v.cos(), -c * kz * u.cos() * v.sin()]
 }
 
-/// WGSL constants of this module, written ahead of every shader (see `gpu::shared_constants`).
+/// WGSL constants of this module, for the passes that use them (the scene's, see
+/// `render::shaders::scene_prelude`; the FFT's).
 pub fn wgsl_constants() -> String {
     format!(
         "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\

@@ -172,7 +172,7 @@ enum Drag {
 /// How near (pixels) to the split view's divider a press grabs it.
 pub const DIVIDER_GRAB_PX: f32 = 12.0;
 
-/// Stages of a frame, for timing.
+/// Stages of a frame, for timing: each is the index of its mark (`StageTimer::mark`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
     Start,

@@ -3,56 +3,20 @@
 
 use wgpu::util::DeviceExt;
 
-/// WGSL sources, kept in `shaders/`. Passes are assembled from shared parts because WGSL
-/// has no include.
+/// The WGSL parts every kind of pass may use; each feature keeps its own beside its code.
 pub mod wgsl {
-    pub const COMMON: &str = include_str!("../shaders/common.wgsl");
+    /// The full-screen triangle's vertex shader ([`super::FullscreenPass`] adds it).
     pub const FULLSCREEN: &str = include_str!("../shaders/fullscreen.wgsl");
-    pub const SCENE: &str = include_str!("../shaders/scene.wgsl");
-    pub const SKY: &str = include_str!("../shaders/sky.wgsl");
-    pub const SKY_CUBE: &str = include_str!("../shaders/sky_cube.wgsl");
-    pub const POOL: &str = include_str!("../shaders/pool.wgsl");
-    pub const SPHERE: &str = include_str!("../shaders/sphere.wgsl");
-    pub const DUCK: &str = include_str!("../shaders/duck.wgsl");
-    pub const WATER: &str = include_str!("../shaders/water.wgsl");
-    pub const CAUSTICS: &str = include_str!("../shaders/caustics.wgsl");
-    pub const SIM_SHARED: &str = include_str!("../shaders/sim_shared.wgsl");
-    pub const SIM_DROP: &str = include_str!("../shaders/sim_drop.wgsl");
-    pub const SIM_UPDATE: &str = include_str!("../shaders/sim_update.wgsl");
-    pub const SIM_NORMALS: &str = include_str!("../shaders/sim_normals.wgsl");
-    pub const DEBUG_VIEW: &str = include_str!("../shaders/debug_view.wgsl");
-    pub const SIM_RESAMPLE: &str = include_str!("../shaders/sim_resample.wgsl");
-    pub const SIM_MEAN: &str = include_str!("../shaders/sim_mean.wgsl");
-    pub const UPSCALE: &str = include_str!("../shaders/upscale.wgsl");
-    pub const AMBIENT_FFT: &str = include_str!("../shaders/ambient_fft.wgsl");
-    pub const FLAT_WATER: &str = include_str!("../shaders/flat_water.wgsl");
-    pub const DECK: &str = include_str!("../shaders/deck.wgsl");
-    pub const CAUSTICS_MIP: &str = include_str!("../shaders/caustics_mip.wgsl");
+    /// Maths and colour helpers without bindings: PI, sRGB conversions, hash and value noise.
+    pub const MATH: &str = include_str!("../shaders/math.wgsl");
 }
 
-/// Constants the shaders share with the Rust side, written from the Rust values ahead of
-/// every shader, so the two cannot disagree: the refractive index of water, the number of the
-/// duck's traced parts, the sizes of the uniform arrays the simulation fills, and the optical
-/// models' numbers (optics.rs).
-pub fn shared_constants() -> String {
-    use crate::{duck, scene, sim};
-    format!(
-        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\nconst MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n{}",
-        scene::IOR_WATER,
-        duck::TRACED_PARTS.len(),
-        sim::MAX_DROPS_PER_PASS,
-        sim::MAX_PUSH_STEPS * sim::MAX_HULL_MOVES * 8,
-        crate::optics::wgsl_constants() + &crate::ambient::wgsl_constants() + &crate::render::flat::wgsl_constants(),
-    )
-}
-
-/// Compiles a shader module from WGSL parts, concatenated in order after [`shared_constants`].
+/// Compiles a shader module from WGSL parts (constants written by Rust, then sources), joined
+/// in order: WGSL has no include, so a pass lists exactly the parts it uses.
 pub fn shader(device: &wgpu::Device, label: &str, parts: &[&str]) -> wgpu::ShaderModule {
-    let constants = shared_constants();
-    let source = std::iter::once(constants.as_str()).chain(parts.iter().copied()).collect::<Vec<_>>().join("\n");
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
+        source: wgpu::ShaderSource::Wgsl(parts.join("\n").into()),
     })
 }
 
@@ -213,7 +177,7 @@ impl FullscreenPass {
         layouts: &[&wgpu::BindGroupLayout],
         target: FullscreenTarget,
     ) -> Self {
-        let mut all = vec![wgsl::COMMON, wgsl::FULLSCREEN];
+        let mut all = vec![wgsl::FULLSCREEN];
         all.extend_from_slice(parts);
         let module = shader(device, label, &all);
         let layout = pipeline_layout(device, label, layouts);

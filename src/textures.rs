@@ -210,7 +210,7 @@ impl SkyCube {
         let pass = FullscreenPass::new(
             device,
             "sky cube face",
-            &[&Daylight::wgsl_constants(), gpu::wgsl::SKY_CUBE],
+            &[&Daylight::wgsl_constants(), gpu::wgsl::MATH, include_str!("../shaders/sky_cube.wgsl")],
             "fs_sky_face",
             &[&layout],
             FullscreenTarget { format: SKY_FORMAT, blend: None, depth: None },

@@ -1,9 +1,8 @@
-//! GPU time per stage of a frame (simulation, caustics, scene) from timestamp queries, read
-//! back without waiting (one to a few frames late), for the viewer's readout and the bench.
+//! GPU time per stage of a frame from timestamp queries at four marks (the frame's start, the
+//! end of each of its three stages: for the demo simulation, caustics, scene), read back
+//! without waiting (one to a few frames late), for the viewer's readout and the bench.
 
-use crate::demo::Stage;
 use crate::gpu::AsyncReadback;
-use crate::render::flat::RenderMode;
 
 /// The device features stage timing uses; request them where the adapter has them. With only
 /// `TIMESTAMP_QUERY` (WebGPU in browsers) each mark is an empty compute pass that writes the
@@ -11,7 +10,7 @@ use crate::render::flat::RenderMode;
 pub const TIMESTAMP_FEATURES: wgpu::Features =
     wgpu::Features::TIMESTAMP_QUERY.union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS);
 
-/// Timestamps at the [`Stage`] boundaries of a frame.
+/// Timestamps at the four marks of a frame.
 pub struct StageTimer {
     queries: wgpu::QuerySet,
     resolve: wgpu::Buffer,
@@ -49,14 +48,8 @@ impl StageTimer {
         })
     }
 
-    /// Writes the timestamp of `stage` (pass as the `mark` of `WaterDemo::encode_frame`).
-    pub fn mark(&self, encoder: &mut wgpu::CommandEncoder, stage: Stage) {
-        let index = match stage {
-            Stage::Start => 0,
-            Stage::AfterSimulation => 1,
-            Stage::AfterCaustics => 2,
-            Stage::AfterScene => 3,
-        };
+    /// Writes the timestamp of mark `index` (0…3; `WaterDemo::encode_frame`'s stages in order).
+    pub fn mark(&self, encoder: &mut wgpu::CommandEncoder, index: u32) {
         if self.inside_encoders {
             encoder.write_timestamp(&self.queries, index);
         } else {
@@ -98,41 +91,5 @@ impl StageTimer {
     /// Milliseconds of (simulation, caustics, scene) of a recent frame.
     pub fn latest(&self) -> Option<[f64; 3]> {
         self.latest
-    }
-}
-
-/// GPU time of drawing the water (the caustics and scene stages) per render mode, smoothed
-/// over recent frames and kept after switching away, so the panel can set the modes' costs
-/// side by side.
-#[derive(Clone, Debug, Default)]
-pub struct ModeCosts {
-    /// Milliseconds per [`RenderMode`] (ray-traced, flat, split), once measured.
-    ms: [Option<f64>; 3],
-}
-
-impl ModeCosts {
-    /// Takes a frame's stage times ([`StageTimer::latest`]) drawn in `mode`.
-    pub fn observe(&mut self, mode: RenderMode, stages: [f64; 3]) {
-        let drawing = stages[1] + stages[2];
-        let slot = &mut self.ms[mode as usize];
-        *slot = Some(slot.map_or(drawing, |old| 0.9 * old + 0.1 * drawing));
-    }
-
-    /// The smoothed milliseconds of `mode`, if it was drawn.
-    pub fn of(&self, mode: RenderMode) -> Option<f64> {
-        self.ms[mode as usize]
-    }
-
-    /// "ray-traced 6.2 ms · flat 2.4 ms · split –" (– : not drawn yet).
-    pub fn summary(&self) -> String {
-        [RenderMode::RayTraced, RenderMode::Flat, RenderMode::Split]
-            .iter()
-            .zip(["ray-traced", "flat", "split"])
-            .map(|(&mode, name)| match self.of(mode) {
-                Some(ms) => format!("{name} {ms:.1} ms"),
-                None => format!("{name} –"),
-            })
-            .collect::<Vec<_>>()
-            .join(" · ")
     }
 }

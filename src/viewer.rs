@@ -14,8 +14,9 @@ use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
 use wavepool::params::{choice_label, Control, ParamId, ParamSpec, PARAMS};
 use wavepool::presets::{Preset, PRESETS};
+use wavepool::render::flat::ModeCosts;
 use wavepool::render::flat::RenderMode;
-use wavepool::timing::{ModeCosts, StageTimer, TIMESTAMP_FEATURES};
+use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
 const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -416,7 +417,9 @@ impl eframe::App for Viewer {
             let dt = dt.min(0.25);
             match &mut self.timer {
                 Some(timer) => {
-                    self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |e, s| timer.mark(e, s));
+                    self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |e, s| {
+                        timer.mark(e, s as u32)
+                    });
                     timer.finish(&mut encoder);
                 }
                 None => self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |_, _| {}),

@@ -9,9 +9,10 @@ use wasm_bindgen::prelude::*;
 
 use crate::demo::{DemoOptions, Key, WaterDemo};
 use crate::params::{self, Control, ParamId, PARAMS};
+use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
 use crate::sim::SimEngine;
-use crate::timing::{ModeCosts, StageTimer};
+use crate::timing::StageTimer;
 
 /// Runs once when the module is instantiated: a panic goes to the console (with a stack)
 /// and to the page, as a `wavepool:panic` event whose detail is the message.
@@ -363,7 +364,7 @@ impl WebDemo {
         match &mut self.timer {
             Some(timer) => {
                 self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, dt, &mut |e, s| {
-                    timer.mark(e, s)
+                    timer.mark(e, s as u32)
                 });
                 timer.finish(&mut encoder);
                 if let Some(stages) = timer.latest() {

@@ -62,7 +62,7 @@ impl CausticsMips {
         let pass = FullscreenPass::new(
             device,
             "caustics mip",
-            &[gpu::wgsl::CAUSTICS_MIP],
+            &[include_str!("../../shaders/caustics_mip.wgsl")],
             "fs_caustics_mip",
             &[&layout],
             FullscreenTarget { format, blend: None, depth: None },

@@ -18,6 +18,9 @@ pub const HAZE_DISTANCE: f32 = 60.0;
 /// Clearance of the camera's eye above the deck (m): it never goes under the paving.
 pub const EYE_CLEARANCE: f32 = 0.15;
 
+/// The deck's fragment shader (its vertices go through the pool's `vs_pool`).
+pub const WGSL: &str = include_str!("../../shaders/deck.wgsl");
+
 /// The deck's WGSL constants.
 pub fn wgsl_constants() -> String {
     format!(

@@ -185,7 +185,7 @@ pub fn dudv_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture
     texture.create_view(&Default::default())
 }
 
-/// WGSL constants of the flat water, written ahead of every shader.
+/// WGSL constants of the flat water, for the scene's passes (`super::shaders::scene_prelude`).
 pub fn wgsl_constants() -> String {
     format!(
         "const DUDV_TILES: f32 = {DUDV_TILES:?};\nconst DUDV_SLOPE: f32 = {DUDV_SLOPE:?};\n\
@@ -271,7 +271,7 @@ impl FlatWater {
             let module = gpu::shader(
                 device,
                 "flat water",
-                &[&features.wgsl(), gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::FLAT_WATER],
+                &[&super::shaders::scene_prelude(features), include_str!("../../shaders/flat_water.wgsl")],
             );
             mesh_pipeline(
                 device,
@@ -357,5 +357,41 @@ mod tests {
         assert!(seam <= inside, "the map does not tile");
         assert!(mean(0).abs() < 2.0 / 255.0 && mean(1).abs() < 2.0 / 255.0, "the map drifts");
         assert!(map.iter().any(|t| t[0] == 0 || t[0] == 255), "the slopes use the full range");
+    }
+}
+
+/// GPU time of drawing the water (the caustics and scene stages) per render mode, smoothed
+/// over recent frames and kept after switching away, so the panel can set the modes' costs
+/// side by side.
+#[derive(Clone, Debug, Default)]
+pub struct ModeCosts {
+    /// Milliseconds per [`RenderMode`] (ray-traced, flat, split), once measured.
+    ms: [Option<f64>; 3],
+}
+
+impl ModeCosts {
+    /// Takes a frame's stage times ([`StageTimer::latest`]) drawn in `mode`.
+    pub fn observe(&mut self, mode: RenderMode, stages: [f64; 3]) {
+        let drawing = stages[1] + stages[2];
+        let slot = &mut self.ms[mode as usize];
+        *slot = Some(slot.map_or(drawing, |old| 0.9 * old + 0.1 * drawing));
+    }
+
+    /// The smoothed milliseconds of `mode`, if it was drawn.
+    pub fn of(&self, mode: RenderMode) -> Option<f64> {
+        self.ms[mode as usize]
+    }
+
+    /// "ray-traced 6.2 ms · flat 2.4 ms · split –" (– : not drawn yet).
+    pub fn summary(&self) -> String {
+        [RenderMode::RayTraced, RenderMode::Flat, RenderMode::Split]
+            .iter()
+            .zip(["ray-traced", "flat", "split"])
+            .map(|(&mode, name)| match self.of(mode) {
+                Some(ms) => format!("{name} {ms:.1} ms"),
+                None => format!("{name} –"),
+            })
+            .collect::<Vec<_>>()
+            .join(" · ")
     }
 }

@@ -5,6 +5,7 @@ mod caustics_mips;
 mod deck;
 pub mod flat;
 mod meshes;
+mod shaders;
 mod variants;
 
 use std::collections::HashMap;
@@ -318,7 +319,7 @@ impl Upscale {
         let pass = FullscreenPass::new(
             device,
             "upscale",
-            &[gpu::wgsl::UPSCALE],
+            &[include_str!("../../shaders/upscale.wgsl")],
             "fs_upscale",
             &[&layout],
             FullscreenTarget { format, blend: None, depth: None },
@@ -531,7 +532,7 @@ impl Renderer {
         let sky = FullscreenPass::new(
             device,
             "sky",
-            &[&Features::default().wgsl(), gpu::wgsl::SCENE, gpu::wgsl::SKY],
+            &[&shaders::scene_prelude(Features::default()), shaders::SKY],
             "fs_sky",
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
@@ -601,11 +602,11 @@ impl Renderer {
         let key = (texture, ambient.model, ambient.choppy());
         self.debug_passes.entry(key).or_insert_with(|| {
             let features = Features { ambient: ambient.model, choppy: ambient.choppy(), ..Features::default() };
-            let constants = format!("{}const DEBUG_TEXTURE: i32 = {};\n", features.wgsl(), texture as i32);
+            let constants = format!("const DEBUG_TEXTURE: i32 = {};\n", texture as i32);
             FullscreenPass::new(
                 device,
                 "debug view",
-                &[&constants, gpu::wgsl::SCENE, gpu::wgsl::DEBUG_VIEW],
+                &[&constants, &shaders::scene_prelude(features), shaders::DEBUG_VIEW],
                 "fs_debug",
                 &layouts,
                 FullscreenTarget { format, blend: None, depth: None },

@@ -8,6 +8,7 @@
 use glam::{Vec3, Vec4Swizzles};
 
 use super::flat::Distortion;
+use super::shaders;
 use super::{View, DEPTH_FORMAT};
 use crate::ambient::AmbientModel;
 use crate::optics::{FresnelModel, SpecularModel};
@@ -78,27 +79,24 @@ impl Features {
             "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
             self.clip, self.flat_caustics, self.flat_distortion as u32
         );
-        flat + &crate::sky::Daylight::wgsl_constants()
-            + &super::deck::wgsl_constants()
-            + &super::caustics_mips::CausticsMips::wgsl_constants()
-            + &format!(
-                "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
+        flat + &format!(
+            "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
              const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n",
-                self.sphere,
-                self.duck,
-                self.caustics,
-                self.fresnel as u32,
-                self.specular as u32,
-                self.show_reflectance,
-                self.scattering,
-                self.view_colour,
-                self.dispersion,
-                self.ambient as u32,
-                self.choppy,
-                self.foam
-            )
+            self.sphere,
+            self.duck,
+            self.caustics,
+            self.fresnel as u32,
+            self.specular as u32,
+            self.show_reflectance,
+            self.scattering,
+            self.view_colour,
+            self.dispersion,
+            self.ambient as u32,
+            self.choppy,
+            self.foam
+        )
     }
 }
 
@@ -236,8 +234,8 @@ pub struct PipelineTargets<'a> {
 
 impl ScenePipelines {
     pub fn new(device: &wgpu::Device, features: Features, targets: &PipelineTargets<'_>) -> Self {
-        let constants = features.wgsl();
-        let module = |label, part| gpu::shader(device, label, &[&constants, gpu::wgsl::COMMON, gpu::wgsl::SCENE, part]);
+        let prelude = shaders::scene_prelude(features);
+        let module = |label, part| gpu::shader(device, label, &[&prelude, part]);
         let additive = wgpu::BlendComponent {
             src_factor: wgpu::BlendFactor::One,
             dst_factor: wgpu::BlendFactor::One,
@@ -257,11 +255,8 @@ impl ScenePipelines {
             .iter()
             .map(|&(channel, write_mask)| {
                 let channel_constant = format!("const CAUSTICS_CHANNEL: i32 = {channel};\n");
-                let caustics_module = gpu::shader(
-                    device,
-                    "caustics",
-                    &[&constants, &channel_constant, gpu::wgsl::COMMON, gpu::wgsl::SCENE, gpu::wgsl::CAUSTICS],
-                );
+                let caustics_module =
+                    gpu::shader(device, "caustics", &[&channel_constant, &prelude, shaders::CAUSTICS]);
                 mesh_pipeline(
                     device,
                     MeshPipeline {
@@ -312,7 +307,7 @@ impl ScenePipelines {
             // Culling off: front faces are the surface seen from above, back faces from below.
             surface: scene_pipeline(
                 "water surface",
-                &module("water surface", gpu::wgsl::WATER),
+                &module("water surface", shaders::WATER),
                 "vs_surface",
                 "fs_surface",
                 &wgpu::vertex_attr_array![0 => Float32x2],
@@ -321,7 +316,7 @@ impl ScenePipelines {
             ),
             pool: scene_pipeline(
                 "pool",
-                &module("pool", gpu::wgsl::POOL),
+                &module("pool", shaders::POOL),
                 "vs_pool",
                 "fs_pool",
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
@@ -330,7 +325,7 @@ impl ScenePipelines {
             ),
             deck: scene_pipeline(
                 "deck",
-                &module("deck", &[gpu::wgsl::POOL, gpu::wgsl::DECK].concat()),
+                &module("deck", &[shaders::POOL, super::deck::WGSL].concat()),
                 "vs_pool",
                 "fs_deck",
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
@@ -339,7 +334,7 @@ impl ScenePipelines {
             ),
             sphere: scene_pipeline(
                 "sphere",
-                &module("sphere", gpu::wgsl::SPHERE),
+                &module("sphere", shaders::SPHERE),
                 "vs_sphere",
                 "fs_sphere",
                 &wgpu::vertex_attr_array![0 => Float32x3],
@@ -348,7 +343,7 @@ impl ScenePipelines {
             ),
             duck: scene_pipeline(
                 "duck",
-                &module("duck", gpu::wgsl::DUCK),
+                &module("duck", shaders::DUCK),
                 "vs_duck",
                 "fs_duck",
                 &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],

@@ -9,6 +9,25 @@ use super::plan::{StepPlan, MAX_DROPS_PER_PASS, MAX_HEIGHT, MAX_VELOCITY, SPONGE
 use super::{cpu, WaterLevel, STATE_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
+/// The simulation's WGSL: its uniforms (`SHARED`) and one file per pass.
+mod wgsl {
+    pub const SHARED: &str = include_str!("../../shaders/sim_shared.wgsl");
+    pub const DROP: &str = include_str!("../../shaders/sim_drop.wgsl");
+    pub const UPDATE: &str = include_str!("../../shaders/sim_update.wgsl");
+    pub const NORMALS: &str = include_str!("../../shaders/sim_normals.wgsl");
+    pub const RESAMPLE: &str = include_str!("../../shaders/sim_resample.wgsl");
+    pub const MEAN: &str = include_str!("../../shaders/sim_mean.wgsl");
+}
+
+/// The sizes of `SimUniforms`' arrays, for `sim_shared.wgsl`.
+fn wgsl_constants() -> String {
+    format!(
+        "const MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n",
+        MAX_DROPS_PER_PASS,
+        MAX_PUSH_STEPS * MAX_HULL_MOVES * 8
+    )
+}
+
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct SimUniforms {
@@ -81,7 +100,7 @@ impl MeanLevel {
             FullscreenPass::new(
                 device,
                 "sim water level",
-                &[gpu::wgsl::SIM_MEAN],
+                &[wgsl::MEAN],
                 entry,
                 &[&layout],
                 FullscreenTarget { format: LEVEL_FORMAT, blend: None, depth: None },
@@ -173,11 +192,12 @@ impl GpuSim {
                 ],
             })
         });
+        let constants = wgsl_constants();
         let pass = |label: &str, source: &str, entry: &str| {
             FullscreenPass::new(
                 device,
                 label,
-                &[gpu::wgsl::SIM_SHARED, source],
+                &[&constants, wgsl::SHARED, source],
                 entry,
                 &[&layout],
                 FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
@@ -200,7 +220,7 @@ impl GpuSim {
         let drop_pass = FullscreenPass::new(
             device,
             "sim drop",
-            &[gpu::wgsl::SIM_SHARED, gpu::wgsl::SIM_DROP],
+            &[&constants, gpu::wgsl::MATH, wgsl::SHARED, wgsl::DROP],
             "fs_drop",
             &[&layout, &step_layout],
             FullscreenTarget { format: STATE_FORMAT, blend: None, depth: None },
@@ -208,9 +228,9 @@ impl GpuSim {
         Self {
             drop_pass,
             step_groups,
-            update_pass: pass("sim update", gpu::wgsl::SIM_UPDATE, "fs_update"),
-            normals_pass: pass("sim normals", gpu::wgsl::SIM_NORMALS, "fs_normals"),
-            resample_pass: pass("sim resample", gpu::wgsl::SIM_RESAMPLE, "fs_resample"),
+            update_pass: pass("sim update", wgsl::UPDATE, "fs_update"),
+            normals_pass: pass("sim normals", wgsl::NORMALS, "fs_normals"),
+            resample_pass: pass("sim resample", wgsl::RESAMPLE, "fs_resample"),
             uniforms,
             layout,
             bind_groups,

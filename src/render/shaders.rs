@@ -1,0 +1,42 @@
+//! The scene's WGSL: the parts every scene pass (water, pool, deck, bodies, caustics, sky,
+//! flat water, debug view) is built from, and the constants they read from Rust, so the two
+//! cannot disagree.
+
+use super::variants::Features;
+use crate::gpu;
+
+pub const COMMON: &str = include_str!("../../shaders/common.wgsl");
+pub const SCENE: &str = include_str!("../../shaders/scene.wgsl");
+pub const SKY: &str = include_str!("../../shaders/sky.wgsl");
+pub const POOL: &str = include_str!("../../shaders/pool.wgsl");
+pub const SPHERE: &str = include_str!("../../shaders/sphere.wgsl");
+pub const DUCK: &str = include_str!("../../shaders/duck.wgsl");
+pub const WATER: &str = include_str!("../../shaders/water.wgsl");
+pub const CAUSTICS: &str = include_str!("../../shaders/caustics.wgsl");
+pub const DEBUG_VIEW: &str = include_str!("../../shaders/debug_view.wgsl");
+
+/// Everything a scene pass of `features` starts from: the variant's constants, the numbers of
+/// the features the scene shows (water's refractive index, the duck's traced parts, optics,
+/// ambient waves, flat water, sky, deck, caustics mips), and the shared WGSL (maths, ray
+/// helpers, the scene's bindings and shading). The pass adds its own file after it.
+pub fn scene_prelude(features: Features) -> String {
+    let numbers = format!(
+        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\n",
+        crate::scene::IOR_WATER,
+        crate::duck::TRACED_PARTS.len()
+    );
+    [
+        features.wgsl(),
+        numbers,
+        crate::optics::wgsl_constants(),
+        crate::ambient::wgsl_constants(),
+        super::flat::wgsl_constants(),
+        crate::sky::Daylight::wgsl_constants(),
+        super::deck::wgsl_constants(),
+        super::caustics_mips::CausticsMips::wgsl_constants(),
+        gpu::wgsl::MATH.to_owned(),
+        COMMON.to_owned(),
+        SCENE.to_owned(),
+    ]
+    .join("\n")
+}
