@@ -1,186 +1,248 @@
-//! The `wavepool` command line: headless rendering and benchmarks on any wgpu adapter
-//! (lavapipe in CI). Needs no display.
+//! The `wavepool` command line: the desktop viewer's flags, and headless rendering and
+//! benchmarks on any wgpu adapter (lavapipe in CI), which need no display. Flags are parsed by
+//! clap; every range comes from the table it belongs to (the parameter table, the creation
+//! options' specs, the camera's limits), so the command line cannot accept what the demo would
+//! clamp.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use wavepool::demo::{DemoOptions, Stage, WaterDemo, STEP_DT};
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use wavepool::camera::{DISTANCE_RANGE, PITCH_RANGE};
+use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
-use wavepool::params::{self, ParamId};
-use wavepool::presets;
+use wavepool::params::{self, ParamId, ParamSpec};
+use wavepool::presets::{self, Preset};
 use wavepool::scene::HALF_WIDTH;
 use wavepool::sim::random_drops;
 use wavepool::timing::StageTimer;
 
-const USAGE: &str = "\
-wavepool: interactive water, a desktop viewer and headless tools
+/// wavepool: interactive water, a desktop viewer and headless tools.
+///
+/// With no command it opens the viewer window: the pool and a panel with every parameter.
+#[derive(Parser, Debug)]
+#[command(name = "wavepool", args_conflicts_with_subcommands = true, after_help = parameter_list())]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    viewer: ViewerArgs,
+}
 
-USAGE:
-  wavepool [--frames N --screenshot FILE.png] [--sim-size N] [--float auto|none] [--preset NAME] [--set NAME=VALUE]...
-  wavepool render --out FILE.png [--width W] [--height H] [--frames N]
-                  [--drops K] [--seed S] [--yaw DEG] [--pitch DEG] [--distance M]
-                  [--sim-size N] [--surface-grid N] [--caustics-size N] [--float auto|none]
-                  [--preset NAME] [--set NAME=VALUE]...
-  wavepool bench  [--width W] [--height H] [--frames N] [--sim-size N] [--surface-grid N]
-                  [--caustics-size N] [--float auto|none] [--preset NAME] [--set NAME=VALUE]...
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Simulates N frames of 1/60 s (K seeded random drops at the start) and writes the last
+    /// frame as PNG.
+    #[command(after_help = parameter_list())]
+    Render(RenderArgs),
+    /// Renders N frames after a warm-up and prints one JSON object with the adapter, frame
+    /// times and per-stage GPU times.
+    #[command(after_help = parameter_list())]
+    Bench(BenchArgs),
+}
 
-(no command) opens the viewer window: the pool and a panel with every parameter. With
-        --frames N it closes after N frames, with --screenshot it first saves the window.
-render  simulates N frames of 1/60 s (K seeded random drops at the start) and writes the
-        last frame as PNG. Defaults: 800x600, 60 frames, 12 drops, seed 1.
-bench   renders N frames (default 120) after a warm-up and prints one JSON object with the
-        adapter, frame times and per-stage GPU times.
+/// The viewer's flags (no command).
+#[derive(Args, Debug)]
+struct ViewerArgs {
+    /// Close after N frames (with --screenshot, after saving the window).
+    #[arg(long, value_name = "N", value_parser = frames)]
+    frames: Option<u32>,
+    /// Save a PNG of the window after --frames N frames.
+    #[arg(long, value_name = "FILE.png", requires = "frames")]
+    screenshot: Option<PathBuf>,
+    /// Not for the viewer: `render --out` writes a file.
+    #[arg(long, hide = true)]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    start: StartArgs,
+}
 
---set takes any parameter of the table, by number or a choice's name, e.g. --set caustics=off
-        --set sun_elevation=30 --set render_mode=split. --preset NAME starts from a lesson
-        preset (listed last; the --set values come after it).
---float none takes the path for devices without float render targets (water simulated on
-the CPU, 8-bit caustics map).
-Parameters:";
+/// What every command starts the demo from: creation options, a preset, parameter values.
+#[derive(Args, Debug)]
+struct StartArgs {
+    /// Cells per side of the simulation grid (the `sim_size` parameter's choices).
+    #[arg(long, value_name = "N", value_parser = sim_size)]
+    sim_size: Option<u32>,
+    /// Quads per side of the water surface mesh.
+    #[arg(long, value_name = "N", value_parser = |s: &str| option_value(&DemoOptions::SPECS[0], s))]
+    surface_grid: Option<u32>,
+    /// Texels per side of the caustics map.
+    #[arg(long, value_name = "N", value_parser = |s: &str| option_value(&DemoOptions::SPECS[1], s))]
+    caustics_size: Option<u32>,
+    /// `none` takes the path for devices without float render targets (water simulated on
+    /// the CPU, 8-bit caustics map).
+    #[arg(long, value_name = "auto|none", value_parser = ["auto", "none"], default_value = "auto")]
+    float: String,
+    /// Start from a lesson preset (listed below); the --set values come after it.
+    #[arg(long, value_name = "NAME", value_parser = preset)]
+    preset: Option<&'static Preset>,
+    /// Any parameter of the table (listed below), by number or a choice's name, e.g.
+    /// --set caustics=off --set render_mode=split.
+    #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parameter_value)]
+    sets: Vec<(String, f32)>,
+}
 
-/// A usage error: message for stderr, exit code 2.
-struct UsageError(String);
+/// The picture `render` and `bench` draw.
+#[derive(Args, Debug)]
+struct FrameArgs {
+    /// Width of the image (pixels).
+    #[arg(long, value_name = "W", default_value = "800", value_parser = image_side)]
+    width: u32,
+    /// Height of the image (pixels).
+    #[arg(long, value_name = "H", default_value = "600", value_parser = image_side)]
+    height: u32,
+    #[command(flatten)]
+    start: StartArgs,
+}
 
-fn parse_number<T>(flag: &str, value: &str, lo: T, hi: T) -> Result<T, UsageError>
+#[derive(Args, Debug)]
+struct RenderArgs {
+    /// Where to write the PNG.
+    #[arg(long, value_name = "FILE.png")]
+    out: PathBuf,
+    /// Frames of 1/60 s to simulate before the picture.
+    #[arg(long, value_name = "N", default_value = "60", value_parser = frames)]
+    frames: u32,
+    /// Seeded random drops at the start.
+    #[arg(long, value_name = "K", default_value = "12", value_parser = |s: &str| number(s, 0u32, 100_000))]
+    drops: u32,
+    /// Seed of the drops.
+    #[arg(long, value_name = "S", default_value = "1", value_parser = |s: &str| number(s, 0u64, u64::MAX))]
+    seed: u64,
+    /// Camera yaw (degrees).
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, -360.0f32, 360.0))]
+    yaw: Option<f32>,
+    /// Camera pitch (degrees; negative looks up from under the water).
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, PITCH_RANGE.0, PITCH_RANGE.1))]
+    pitch: Option<f32>,
+    /// Camera distance from the pool's centre (m).
+    #[arg(long, value_name = "M", value_parser = |s: &str| number(s, DISTANCE_RANGE.0, DISTANCE_RANGE.1))]
+    distance: Option<f32>,
+    #[command(flatten)]
+    frame: FrameArgs,
+}
+
+#[derive(Args, Debug)]
+struct BenchArgs {
+    /// Frames to time after the warm-up.
+    #[arg(long, value_name = "N", default_value = "120", value_parser = frames)]
+    frames: u32,
+    #[command(flatten)]
+    frame: FrameArgs,
+}
+
+/// A number within `lo..=hi`, for clap's value parsers.
+fn number<T>(text: &str, lo: T, hi: T) -> Result<T, String>
 where
     T: std::str::FromStr + PartialOrd + std::fmt::Display + Copy,
 {
-    let v: T = value.parse().map_err(|_| UsageError(format!("{flag}: '{value}' is not a number")))?;
+    let v: T = text.parse().map_err(|_| format!("'{text}' is not a number"))?;
     if v < lo || v > hi {
-        return Err(UsageError(format!("{flag}: {value} is outside {lo}..={hi}")));
+        return Err(format!("{text} is outside {lo}..={hi}"));
     }
     Ok(v)
 }
 
-#[derive(Debug)]
-struct Options {
-    width: u32,
-    height: u32,
-    frames: u32,
-    drops: u32,
-    seed: u64,
-    out: Option<PathBuf>,
-    /// The viewer's `--screenshot FILE.png`.
-    screenshot: Option<PathBuf>,
-    /// Whether `--frames` was given (the viewer runs until closed without it).
-    frames_given: bool,
-    yaw: Option<f32>,
-    pitch: Option<f32>,
-    distance: Option<f32>,
-    sim_size: u32,
-    surface_grid: u32,
-    caustics_size: u32,
-    /// False with `--float none`: the path for devices without float render targets.
-    float_targets: bool,
-    /// `--preset NAME`: applied before the `--set` values.
-    preset: Option<&'static presets::Preset>,
-    sets: Vec<(String, f32)>,
+fn frames(text: &str) -> Result<u32, String> {
+    number(text, 1, 1_000_000)
 }
 
-fn parse(args: &[String], default_frames: u32) -> Result<Options, UsageError> {
-    let mut o = Options {
-        width: 800,
-        height: 600,
-        frames: default_frames,
-        drops: 12,
-        seed: 1,
-        out: None,
-        screenshot: None,
-        frames_given: false,
-        yaw: None,
-        pitch: None,
-        distance: None,
-        sim_size: 256,
-        surface_grid: DemoOptions::default().surface_grid,
-        caustics_size: DemoOptions::default().caustics_size,
-        float_targets: true,
-        preset: None,
-        sets: Vec::new(),
-    };
-    let mut it = args.iter();
-    while let Some(flag) = it.next() {
-        let value = it.next().ok_or_else(|| UsageError(format!("{flag} needs a value")))?;
-        match flag.as_str() {
-            "--width" => o.width = parse_number(flag, value, 16, 8192)?,
-            "--height" => o.height = parse_number(flag, value, 16, 8192)?,
-            "--frames" => {
-                o.frames = parse_number(flag, value, 1, 1_000_000)?;
-                o.frames_given = true;
-            }
-            "--screenshot" => o.screenshot = Some(PathBuf::from(value)),
-            "--drops" => o.drops = parse_number(flag, value, 0, 100_000)?,
-            "--seed" => o.seed = parse_number(flag, value, 0, u64::MAX)?,
-            "--out" => o.out = Some(PathBuf::from(value)),
-            "--yaw" => o.yaw = Some(parse_number(flag, value, -360.0, 360.0)?),
-            "--pitch" => o.pitch = Some(parse_number(flag, value, -89.0, 89.0)?),
-            "--distance" => o.distance = Some(parse_number(flag, value, 1.5, 12.0)?),
-            "--sim-size" => {
-                o.sim_size = parse_number(flag, value, 16, 2048)?;
-                if !o.sim_size.is_power_of_two() {
-                    return Err(UsageError(format!("--sim-size: {value} is not a power of two")));
-                }
-            }
-            "--surface-grid" => o.surface_grid = parse_number(flag, value, 8, 1024)?,
-            "--caustics-size" => o.caustics_size = parse_number(flag, value, 64, 4096)?,
-            "--float" => {
-                o.float_targets = match value.as_str() {
-                    "auto" => true,
-                    "none" => false,
-                    _ => return Err(UsageError(format!("--float: expected auto or none, got '{value}'"))),
-                }
-            }
-            "--set" => {
-                let (name, v) = value
-                    .split_once('=')
-                    .ok_or_else(|| UsageError(format!("--set: expected NAME=VALUE, got '{value}'")))?;
-                let spec = params::find(name)
-                    .ok_or_else(|| UsageError(params::ParamError::Unknown(name.to_owned()).to_string()))?;
-                let value = spec.parse(v).ok_or_else(|| {
-                    let names = match spec.control {
-                        params::Control::Choice { names, .. } if !names.is_empty() => {
-                            format!(" or one of {}", names.join(", "))
-                        }
-                        _ => String::new(),
-                    };
-                    UsageError(format!("--set {name}: '{v}' is not a number{names}"))
-                })?;
-                if value < spec.min() || value > spec.max() {
-                    return Err(UsageError(format!("--set {name}: {v} is outside {}..={}", spec.min(), spec.max())));
-                }
-                o.sets.push((name.to_owned(), value));
-            }
-            "--preset" => {
-                let preset = presets::find(value).ok_or_else(|| {
-                    let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
-                    UsageError(format!("--preset: '{value}' is not one of {}", names.join(", ")))
-                })?;
-                o.preset = Some(preset);
-            }
-            other => return Err(UsageError(format!("unknown option '{other}'"))),
+fn image_side(text: &str) -> Result<u32, String> {
+    number(text, 16, 8192)
+}
+
+fn option_value(spec: &OptionSpec, text: &str) -> Result<u32, String> {
+    number(text, spec.min, spec.max)
+}
+
+fn sim_size(text: &str) -> Result<u32, String> {
+    let spec = params::spec(ParamId::SimSize);
+    let v: f32 = text.parse().map_err(|_| format!("'{text}' is not a number"))?;
+    match spec.control {
+        params::Control::Choice { values, .. } if !values.contains(&v) => {
+            let list: Vec<String> = values.iter().map(|v| v.to_string()).collect();
+            Err(format!("{text} is not one of {}", list.join(", ")))
+        }
+        _ => Ok(v as u32),
+    }
+}
+
+fn preset(name: &str) -> Result<&'static Preset, String> {
+    presets::find(name).ok_or_else(|| {
+        let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
+        format!("'{name}' is not one of {}", names.join(", "))
+    })
+}
+
+/// `NAME=VALUE` of the parameter table, checked against the parameter's range or choices.
+fn parameter_value(text: &str) -> Result<(String, f32), String> {
+    let (name, v) = text.split_once('=').ok_or_else(|| format!("expected NAME=VALUE, got '{text}'"))?;
+    let spec = params::find(name).ok_or_else(|| params::ParamError::Unknown(name.to_owned()).to_string())?;
+    let value = spec.parse(v).ok_or_else(|| {
+        let names = match spec.control {
+            params::Control::Choice { names, .. } if !names.is_empty() => format!(" or one of {}", names.join(", ")),
+            _ => String::new(),
+        };
+        format!("{name}: '{v}' is not a number{names}")
+    })?;
+    if value < spec.min() || value > spec.max() {
+        return Err(format!("{name}: {v} is outside {}..={}", spec.min(), spec.max()));
+    }
+    Ok((name.to_owned(), value))
+}
+
+/// One parameter as the help lists it: name, range or choices, default, label.
+fn describe(p: &ParamSpec) -> String {
+    match p.control {
+        params::Control::Toggle => format!("  {:<16} 0 or 1, default {}  {}", p.name, p.default, p.label),
+        params::Control::Choice { values, names } => {
+            let list: Vec<String> = values
+                .iter()
+                .enumerate()
+                .map(|(i, v)| names.get(i).map_or(v.to_string(), |n| format!("{v}={n}")))
+                .collect();
+            format!("  {:<16} {} {}, default {}  {}", p.name, list.join("|"), p.unit, p.default, p.label)
+        }
+        params::Control::Slider { min, max, .. } => {
+            format!("  {:<16} {min}..{max} {}, default {}  {}", p.name, p.unit, p.default, p.label)
         }
     }
-    Ok(o)
 }
 
-fn make_demo(gpu: &HeadlessGpu, o: &Options) -> WaterDemo {
-    let mut demo = WaterDemo::new(
-        &gpu.device,
-        &gpu.queue,
-        OFFSCREEN_FORMAT,
+/// The help's tail: every parameter of the table and every preset.
+fn parameter_list() -> String {
+    let names: Vec<String> = params::PARAMS.iter().map(describe).collect();
+    let presets: Vec<String> = presets::PRESETS.iter().map(|p| format!("  {:<16} {}", p.name, p.label)).collect();
+    format!("Parameters (--set NAME=VALUE):\n{}\n\nPresets (--preset NAME):\n{}", names.join("\n"), presets.join("\n"))
+}
+
+impl StartArgs {
+    fn demo_options(&self) -> DemoOptions {
+        let defaults = DemoOptions::default();
         DemoOptions {
-            sim_size: o.sim_size,
-            surface_grid: o.surface_grid,
-            caustics_size: o.caustics_size,
-            float_targets: o.float_targets,
-        },
-    );
-    if let Some(preset) = o.preset {
-        preset.apply(&mut demo.params, &mut demo.camera);
+            sim_size: self.sim_size.unwrap_or(defaults.sim_size),
+            surface_grid: self.surface_grid.unwrap_or(defaults.surface_grid),
+            caustics_size: self.caustics_size.unwrap_or(defaults.caustics_size),
+            float_targets: self.float == "auto",
+        }
     }
-    for (name, v) in &o.sets {
-        demo.params.set_by_name(name, *v).expect("names checked while parsing");
+
+    fn make_demo(&self, gpu: &HeadlessGpu) -> WaterDemo {
+        let mut demo = WaterDemo::new(&gpu.device, &gpu.queue, OFFSCREEN_FORMAT, self.demo_options());
+        if let Some(preset) = self.preset {
+            preset.apply(&mut demo.params, &mut demo.camera);
+        }
+        for (name, v) in &self.sets {
+            demo.params.set_by_name(name, *v).expect("names checked while parsing");
+        }
+        demo
     }
+}
+
+fn render(o: &RenderArgs) -> Result<(), String> {
+    let gpu = HeadlessGpu::new()?;
+    let mut demo = o.frame.start.make_demo(&gpu);
     if let Some(y) = o.yaw {
         demo.camera.yaw = y;
     }
@@ -196,24 +258,16 @@ fn make_demo(gpu: &HeadlessGpu, o: &Options) -> WaterDemo {
     for d in random_drops(o.seed, o.drops, HALF_WIDTH, radius, strength) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);
     }
-    demo
-}
-
-fn render(o: &Options) -> Result<(), String> {
-    let out = o.out.as_ref().ok_or("render needs --out FILE.png")?;
-    let gpu = HeadlessGpu::new()?;
-    let mut demo = make_demo(&gpu, o);
-    let target = OffscreenTarget::new(&gpu.device, o.width, o.height);
+    let (width, height) = (o.frame.width, o.frame.height);
+    let target = OffscreenTarget::new(&gpu.device, width, height);
     for _ in 0..o.frames {
         demo.frame(&gpu.device, &gpu.queue, &target.view, target.size(), 1.0 / 60.0);
     }
     let rgba = target.read_rgba(&gpu.device, &gpu.queue);
-    write_png(out, o.width, o.height, &rgba)?;
+    write_png(&o.out, width, height, &rgba)?;
     eprintln!(
-        "wrote {} ({}x{}, {} frames, {:.2} s simulated) on {}",
-        out.display(),
-        o.width,
-        o.height,
+        "wrote {} ({width}x{height}, {} frames, {:.2} s simulated) on {}",
+        o.out.display(),
         o.frames,
         demo.sim_time(),
         gpu.describe()
@@ -221,187 +275,148 @@ fn render(o: &Options) -> Result<(), String> {
     Ok(())
 }
 
-fn percentile(sorted: &[f64], p: f64) -> f64 {
-    let i = ((sorted.len() - 1) as f64 * p).round() as usize;
-    sorted[i]
+/// What one timed frame gave: its wall-clock time and its stages' times (ms).
+struct FrameTimes {
+    frame_ms: f64,
+    stage_ms: Option<[f64; 3]>,
 }
 
-fn bench(o: &Options) -> Result<(), String> {
+/// Times a frame with GPU timestamps at the stage marks (read once the GPU is idle).
+fn time_with_timestamps(
+    gpu: &HeadlessGpu,
+    demo: &mut WaterDemo,
+    target: &OffscreenTarget,
+    timer: &mut StageTimer,
+) -> FrameTimes {
+    let start = Instant::now();
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    let dt = 1.0 / 60.0;
+    demo.encode_frame(&gpu.device, &gpu.queue, &mut encoder, &target.view, target.size(), dt, &mut |enc, stage| {
+        timer.mark(enc, stage as u32)
+    });
+    timer.finish(&mut encoder);
+    gpu.queue.submit([encoder.finish()]);
+    timer.after_submit();
+    let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+    let frame_ms = start.elapsed().as_secs_f64() * 1e3;
+    // The frame waited for the GPU, so its timestamps are ready now.
+    timer.collect();
+    FrameTimes { frame_ms, stage_ms: timer.latest() }
+}
+
+/// Times a frame without timestamps: each stage submitted and waited for on its own, timed on
+/// the CPU.
+fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &OffscreenTarget) -> FrameTimes {
+    let start = Instant::now();
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    let mut times = Vec::new();
+    let mut last = Instant::now();
+    let dt = 1.0 / 60.0;
+    demo.encode_frame(&gpu.device, &gpu.queue, &mut encoder, &target.view, target.size(), dt, &mut |enc, stage| {
+        if stage != Stage::Start {
+            let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
+            gpu.queue.submit([done.finish()]);
+            let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+            times.push(last.elapsed().as_secs_f64() * 1e3);
+        }
+        last = Instant::now();
+    });
+    gpu.queue.submit([encoder.finish()]);
+    let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+    FrameTimes { frame_ms: start.elapsed().as_secs_f64() * 1e3, stage_ms: Some([times[0], times[1], times[2]]) }
+}
+
+/// The value at fraction `p` of sorted `values`.
+fn percentile(values: &[f64], p: f64) -> f64 {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    sorted[((sorted.len() - 1) as f64 * p).round() as usize]
+}
+
+fn bench(o: &BenchArgs) -> Result<(), String> {
     let gpu = HeadlessGpu::new()?;
-    let mut demo = make_demo(&gpu, o);
-    let target = OffscreenTarget::new(&gpu.device, o.width, o.height);
+    let mut demo = o.frame.start.make_demo(&gpu);
+    let target = OffscreenTarget::new(&gpu.device, o.frame.width, o.frame.height);
     let mut timer = StageTimer::new(&gpu.device, &gpu.queue);
-    let wait = || gpu.device.poll(wgpu::PollType::wait_indefinitely()).map(|_| ()).map_err(|e| e.to_string());
     // Warm-up: pipelines compiled, caches filled, sky painted.
     for _ in 0..5 {
         demo.frame(&gpu.device, &gpu.queue, &target.view, target.size(), 1.0 / 60.0);
     }
-    wait()?;
-    let mut frame_ms = Vec::new();
-    let mut stage_ms: Vec<[f64; 3]> = Vec::new();
+    gpu.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
+    let mut frames = Vec::new();
     for i in 0..o.frames {
         if i % 30 == 0 {
             // Keep the water moving during long runs.
-            demo.add_drop(((i / 30) as f32 * 0.37).sin() * 0.6, ((i / 30) as f32 * 0.61).cos() * 0.6, 0.04, 0.012);
+            let k = (i / 30) as f32;
+            demo.add_drop((k * 0.37).sin() * 0.6, (k * 0.61).cos() * 0.6, 0.04, 0.012);
         }
-        let start = Instant::now();
-        match &mut timer {
-            Some(t) => {
-                let mut encoder = gpu.device.create_command_encoder(&Default::default());
-                demo.encode_frame(
-                    &gpu.device,
-                    &gpu.queue,
-                    &mut encoder,
-                    &target.view,
-                    target.size(),
-                    1.0 / 60.0,
-                    &mut |enc, stage| t.mark(enc, stage),
-                );
-                t.finish(&mut encoder);
-                gpu.queue.submit([encoder.finish()]);
-                t.after_submit();
-                wait()?;
-                frame_ms.push(start.elapsed().as_secs_f64() * 1e3);
-                // The frame waited for the GPU, so its timestamps are ready now.
-                t.collect();
-                stage_ms.extend(t.latest());
-            }
-            None => {
-                // No timestamps: submit each stage separately and time submit + wait on the CPU.
-                let mut encoder = gpu.device.create_command_encoder(&Default::default());
-                let mut times = Vec::new();
-                let mut last = Instant::now();
-                demo.encode_frame(
-                    &gpu.device,
-                    &gpu.queue,
-                    &mut encoder,
-                    &target.view,
-                    target.size(),
-                    1.0 / 60.0,
-                    &mut |enc, stage| {
-                        if stage != Stage::Start {
-                            let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
-                            gpu.queue.submit([done.finish()]);
-                            let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-                            times.push(last.elapsed().as_secs_f64() * 1e3);
-                        }
-                        last = Instant::now();
-                    },
-                );
-                gpu.queue.submit([encoder.finish()]);
-                wait()?;
-                frame_ms.push(start.elapsed().as_secs_f64() * 1e3);
-                stage_ms.push([times[0], times[1], times[2]]);
-            }
-        }
+        frames.push(match &mut timer {
+            Some(t) => time_with_timestamps(&gpu, &mut demo, &target, t),
+            None => time_with_cpu_clock(&gpu, &mut demo, &target),
+        });
     }
-    let mut sorted = frame_ms.clone();
-    sorted.sort_by(f64::total_cmp);
-    let median_stage = |k: usize| {
-        let mut v: Vec<f64> = stage_ms.iter().map(|s| s[k]).collect();
-        v.sort_by(f64::total_cmp);
-        percentile(&v, 0.5)
+    let frame_ms: Vec<f64> = frames.iter().map(|f| f.frame_ms).collect();
+    let stage = |k: usize| {
+        let v: Vec<f64> = frames.iter().filter_map(|f| f.stage_ms.map(|s| s[k])).collect();
+        if v.is_empty() {
+            f64::NAN
+        } else {
+            percentile(&v, 0.5)
+        }
     };
     let info = gpu.adapter.get_info();
-    let timing = if timer.is_some() {
-        "gpu timestamps between stages"
-    } else {
-        "cpu wall clock: each stage submitted and waited for separately"
-    };
-    println!(
-        "{{\"adapter\":{:?},\"backend\":\"{:?}\",\"width\":{},\"height\":{},\"frames\":{},\"sim_size\":{},\"steps_per_frame\":{},\
-\"frame_ms\":{{\"median\":{:.3},\"p95\":{:.3}}},\"stage_ms\":{{\"simulation\":{:.3},\"caustics\":{:.3},\"scene\":{:.3}}},\"stage_timing\":{:?},\
-\"frame_timing\":\"cpu wall clock from encode to GPU idle, one frame in flight\"}}",
-        info.name,
-        info.backend,
-        o.width,
-        o.height,
-        o.frames,
-        o.sim_size,
-        (1.0 / 60.0 / STEP_DT).round(),
-        percentile(&sorted, 0.5),
-        percentile(&sorted, 0.95),
-        median_stage(0),
-        median_stage(1),
-        median_stage(2),
-        timing
-    );
+    let round = |v: f64| (v * 1e3).round() / 1e3;
+    let report = serde_json::json!({
+        "adapter": info.name,
+        "backend": format!("{:?}", info.backend),
+        "width": o.frame.width,
+        "height": o.frame.height,
+        "frames": o.frames,
+        "sim_size": o.frame.start.demo_options().sim_size,
+        "steps_per_frame": (1.0 / 60.0 / STEP_DT).round(),
+        "frame_ms": { "median": round(percentile(&frame_ms, 0.5)), "p95": round(percentile(&frame_ms, 0.95)) },
+        "stage_ms": { "simulation": round(stage(0)), "caustics": round(stage(1)), "scene": round(stage(2)) },
+        "stage_timing": if timer.is_some() {
+            "gpu timestamps between stages"
+        } else {
+            "cpu wall clock: each stage submitted and waited for separately"
+        },
+        "frame_timing": "cpu wall clock from encode to GPU idle, one frame in flight",
+    });
+    println!("{report}");
     Ok(())
 }
 
-fn usage() -> String {
-    let names: Vec<String> = params::PARAMS
-        .iter()
-        .map(|p| match p.control {
-            params::Control::Toggle => format!("  {:<14} 0 or 1, default {}  {}", p.name, p.default, p.label),
-            params::Control::Choice { values, names } => {
-                let list: Vec<String> = values
-                    .iter()
-                    .enumerate()
-                    .map(|(i, v)| names.get(i).map_or(v.to_string(), |n| format!("{v}={n}")))
-                    .collect();
-                format!("  {:<14} {} {}, default {}  {}", p.name, list.join("|"), p.unit, p.default, p.label)
-            }
-            params::Control::Slider { min, max, .. } => {
-                format!("  {:<14} {min}..{max} {}, default {}  {}", p.name, p.unit, p.default, p.label)
-            }
-        })
-        .collect();
-    let presets: Vec<String> = presets::PRESETS.iter().map(|p| format!("  {:<14} {}", p.name, p.label)).collect();
-    format!("{USAGE}\n{}\nPresets:\n{}\n", names.join("\n"), presets.join("\n"))
-}
-
-/// Flags of the desktop viewer (no command): `--frames N`, `--screenshot FILE.png`, and the
-/// demo options `--sim-size`, `--surface-grid`, `--caustics-size`, `--float`, `--set`.
-fn parse_viewer(args: &[String]) -> Result<crate::viewer::ViewerOptions, UsageError> {
-    let o = parse(args, 0)?;
-    if o.out.is_some() {
-        return Err(UsageError("the viewer takes --screenshot FILE, not --out (that is for render)".into()));
-    }
-    let demo = DemoOptions {
-        sim_size: o.sim_size,
-        surface_grid: o.surface_grid,
-        caustics_size: o.caustics_size,
-        float_targets: o.float_targets,
-    };
-    if o.screenshot.is_some() && !o.frames_given {
-        return Err(UsageError("--screenshot needs --frames N".into()));
+fn viewer_options(args: ViewerArgs) -> Result<crate::viewer::ViewerOptions, clap::Error> {
+    if args.out.is_some() {
+        let message = "the viewer takes --screenshot FILE, not --out (that is for render)";
+        return Err(Cli::command().error(clap::error::ErrorKind::ArgumentConflict, message));
     }
     Ok(crate::viewer::ViewerOptions {
-        frames: o.frames_given.then_some(o.frames),
-        screenshot: o.screenshot.clone(),
-        demo,
-        preset: o.preset,
-        sets: o.sets.clone(),
+        frames: args.frames,
+        screenshot: args.screenshot,
+        demo: args.start.demo_options(),
+        preset: args.start.preset,
+        sets: args.start.sets,
     })
 }
 
 pub fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (command, rest) = match args.split_first() {
-        Some((c, rest)) if !c.starts_with("--") => (c.as_str(), rest),
-        _ => ("view", &args[..]),
-    };
-    if matches!(command, "-h" | "help") || args.iter().any(|a| a == "--help") {
-        print!("{}", usage());
-        return ExitCode::SUCCESS;
-    }
-    let result = match command {
-        "view" => parse_viewer(rest).map(crate::viewer::run),
-        "render" => parse(rest, 60).map(|o| render(&o)),
-        "bench" => parse(rest, 120).map(|o| bench(&o)),
-        other => Err(UsageError(format!("unknown command '{other}'"))),
+    // Usage errors print the message and the usage line and exit 2; --help exits 0.
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => match viewer_options(cli.viewer) {
+            Ok(options) => crate::viewer::run(options),
+            Err(e) => e.exit(),
+        },
+        Some(Command::Render(o)) => render(&o),
+        Some(Command::Bench(o)) => bench(&o),
     };
     match result {
-        Err(UsageError(msg)) => {
-            eprintln!("error: {msg}\n");
-            eprint!("{}", usage());
-            ExitCode::from(2)
-        }
-        Ok(Err(msg)) => {
+        Err(msg) => {
             eprintln!("error: {msg}");
             ExitCode::from(1)
         }
-        Ok(Ok(())) => ExitCode::SUCCESS,
+        Ok(()) => ExitCode::SUCCESS,
     }
 }

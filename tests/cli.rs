@@ -18,18 +18,22 @@ fn stderr(o: &Output) -> String {
 #[test]
 fn bad_arguments_give_usage_and_exit_2() {
     let cases: &[(&[&str], &str)] = &[
-        (&["--screenshot", "x.png"], "needs --frames"),
+        (&["--screenshot", "x.png"], "required arguments were not provided"),
         (&["--out", "x.png"], "not --out"),
-        (&["fly"], "unknown command"),
+        (&["fly"], "unrecognized subcommand"),
         (&["render", "--width", "abc", "--out", "x.png"], "not a number"),
         (&["render", "--frames", "0", "--out", "x.png"], "outside"),
-        (&["render", "--width"], "needs a value"),
-        (&["render", "--bogus", "1"], "unknown option"),
+        (&["render", "--width"], "a value is required"),
+        (&["render", "--bogus", "1"], "unexpected argument"),
         (&["render", "--set", "gravity_well=1", "--out", "x.png"], "unknown parameter"),
         (&["render", "--set", "wave_speed=99", "--out", "x.png"], "outside"),
-        (&["bench", "--sim-size", "300"], "power of two"),
+        (&["bench", "--sim-size", "300"], "is not one of 128, 256, 512, 1024"),
         (&["render", "--set", "render_mode=curved", "--out", "x.png"], "one of raytraced, flat, split"),
         (&["render", "--preset", "stormy", "--out", "x.png"], "is not one of classic"),
+        // Ranges come from the tables: the sim_size parameter's choices, the creation options.
+        (&["bench", "--sim-size", "2048"], "is not one of 128, 256, 512, 1024"),
+        (&["bench", "--surface-grid", "2000"], "outside 16..=512"),
+        (&["bench", "--caustics-size", "64"], "outside 128..=2048"),
     ];
     for (args, expected) in cases {
         let out = wavepool(args);
@@ -37,6 +41,18 @@ fn bad_arguments_give_usage_and_exit_2() {
         assert_eq!(out.status.code(), Some(2), "{args:?} exited {:?}: {err}", out.status);
         assert!(err.contains(expected), "{args:?}: expected '{expected}' in: {err}");
         assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    }
+}
+
+#[test]
+fn help_lists_every_parameter_and_preset_and_exits_0() {
+    for args in [&["--help"][..], &["render", "--help"], &["bench", "--help"]] {
+        let out = wavepool(args);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {}", stderr(&out));
+        for name in ["wave_speed", "sun_elevation", "render_mode", "flat_soft_edge", "classic", "evening"] {
+            assert!(text.contains(name), "{args:?}: no '{name}' in the help:\n{text}");
+        }
     }
 }
 
