@@ -1,0 +1,255 @@
+//! The scene's passes in the order a frame draws them: the picture (ray-traced, flat or
+//! split, at the view's render scale), the flat water's textures, the scene pass itself.
+
+use super::flat::{self, FlatView};
+use super::variants::{self, PipelineTargets};
+use super::{flat_shown, Features, Renderer, View};
+use crate::gpu;
+use crate::sim::HeightField;
+
+impl Renderer {
+    /// Draws sky, pool, sphere and water into `target` (of `size` pixels) at the view's
+    /// render scale, the split view's divider and the debug view over them.
+    pub fn encode_scene(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &View,
+        water: &HeightField,
+    ) {
+        let scale = view.render_scale.clamp(0.25, 1.0);
+        if scale < 1.0 {
+            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
+            let scaled = (scaled(size.0), scaled(size.1));
+            let image = self.upscale.image(device, self.settings.target_format, scaled);
+            self.draw_picture(device, encoder, &image, scaled, view, water);
+            self.upscale.run(encoder, target);
+        } else {
+            self.draw_picture(device, encoder, target, size, view, water);
+        }
+        if let Some(f) = flat_shown(view).filter(|f| f.mode == flat::RenderMode::Split) {
+            self.flat.draw_divider(encoder, target, size, f.divider(size.0));
+        }
+        if let Some(debug) = view.debug {
+            self.debug_pass(device, debug.texture, view.ambient);
+            let mut pass = gpu::colour_pass(encoder, "debug view", target, wgpu::LoadOp::Load);
+            let [x, y, w, h] = debug.viewport(size);
+            pass.set_viewport(x, y, w, h, 0.0, 1.0);
+            let water_group = &self.water_groups[water.state().current()];
+            self.debug_passes[&(debug.texture, view.ambient.model, view.ambient.choppy())]
+                .draw(&mut pass, &[water_group, &self.textures_group]);
+        }
+    }
+
+    /// The scene at `size` pixels: ray-traced, flat, or flat left of the divider and
+    /// ray-traced right of it (two passes on disjoint pixels, so each is shaded once).
+    pub(super) fn draw_picture(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &View,
+        water: &HeightField,
+    ) {
+        let Some(f) = flat_shown(view) else {
+            self.draw_scene(device, encoder, target, size, view, water, None, [0, 0, size.0, size.1]);
+            return;
+        };
+        let divider = f.divider(size.0);
+        if divider > 0 {
+            self.encode_flat_textures(device, encoder, view, water, size, &f);
+            self.draw_scene(device, encoder, target, size, view, water, Some(&f), [0, 0, divider, size.1]);
+        }
+        if divider < size.0 {
+            self.draw_scene(device, encoder, target, size, view, water, None, [divider, 0, size.0 - divider, size.1]);
+        }
+    }
+
+    /// The flat water's reflection texture (for tests: what the mirrored camera drew), once
+    /// flat water has been drawn.
+    #[doc(hidden)]
+    pub fn flat_reflection_texture(&self) -> Option<&wgpu::Texture> {
+        self.flat.targets.as_ref().map(|t| &t.reflection)
+    }
+
+    /// Draws the flat water's reflection (mirrored camera, above the plane, with the sky) and
+    /// refraction (below the plane) textures for a scene of `size` pixels. In a split view only
+    /// the columns the flat part can read: left of the divider plus the largest shift.
+    pub(super) fn encode_flat_textures(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        view: &View,
+        water: &HeightField,
+        size: (u32, u32),
+        f: &FlatView,
+    ) {
+        let resolution = f.resolution.clamp(0.25, 1.0);
+        let side = |s: u32| ((s as f32 * resolution).round() as u32).max(1);
+        let texture_size = (side(size.0), side(size.1));
+        let divider = f.divider(size.0);
+        let reach = if divider < size.0 {
+            let x = divider as f32 / size.0 as f32 + f.strength;
+            ((x * texture_size.0 as f32).ceil() as u32 + 2).min(texture_size.0)
+        } else {
+            texture_size.0
+        };
+        let lit = f.lit_features(Features::of(view));
+        let (reflection, refraction) = (Features { clip: 1, ..lit }, Features { clip: -1, ..lit });
+        self.variant(device, reflection);
+        self.variant(device, refraction);
+        let targets = self.flat.targets(device, self.settings.target_format, texture_size);
+        let (reflection_view, refraction_view, depth) =
+            (targets.reflection_view.clone(), targets.refraction_view.clone(), targets.depth.clone());
+        let current = water.state().current();
+        let passes = [
+            ("flat water reflection", &reflection_view, reflection, &self.mirror_groups[current]),
+            ("flat water refraction", &refraction_view, refraction, &self.water_groups[current]),
+        ];
+        for (label, colour, features, group) in passes {
+            // Cleared to alpha 0: "nothing here" for the water reading the refraction.
+            let mut pass = begin_scene_pass(encoder, label, colour, &depth, Some(wgpu::Color::TRANSPARENT));
+            pass.set_scissor_rect(0, 0, reach, texture_size.1);
+            pass.set_bind_group(0, Some(group), &[]);
+            pass.set_bind_group(1, Some(&self.textures_group), &[]);
+            self.draw_deck(&mut pass, features, view);
+            self.draw_solids(&mut pass, features, view);
+            if features.clip > 0 {
+                self.sky.draw(&mut pass, &[group, &self.textures_group]);
+            }
+        }
+    }
+
+    /// A scene pass over the pixels `rect` (x, y, width, height) of `target`: the water
+    /// surface (ray-traced, or flat with `flat`), objects and pool front to back (early depth
+    /// testing skips what the water and objects hide), then the sky where nothing else was
+    /// drawn. The pass starting at column 0 clears the target.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn draw_scene(
+        &mut self,
+        device: &wgpu::Device,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &View,
+        water: &HeightField,
+        flat: Option<&FlatView>,
+        rect: [u32; 4],
+    ) {
+        let depth = self.depth_view(device, size).clone();
+        // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
+        let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
+        let regions = if flat.is_some() { None } else { variants::surface_regions(view, size) };
+        self.variant(device, features);
+        for (_, needs) in regions.iter().flatten() {
+            self.variant(device, *needs);
+        }
+        if flat.is_some() {
+            let targets = PipelineTargets {
+                format: self.settings.target_format,
+                caustics_format: self.settings.caustics_format_for(features.dispersion).0,
+                water_layout: &self.water_layout,
+                textures_layout: &self.textures_layout,
+            };
+            self.flat.prepare_pipeline(device, features, &targets);
+        }
+        let clear = (rect[0] == 0).then_some(wgpu::Color::BLACK);
+        let mut pass = begin_scene_pass(encoder, "scene", target, &depth, clear);
+        let pipelines = &self.variants[&features];
+        let water_group = &self.water_groups[water.state().current()];
+        pass.set_bind_group(0, Some(water_group), &[]);
+        pass.set_bind_group(1, Some(&self.textures_group), &[]);
+        let [x, y, w, h] = rect;
+        pass.set_scissor_rect(x, y, w, h);
+        self.draw_deck(&mut pass, features, view);
+        match (flat, regions) {
+            (Some(_), _) => {
+                let group = &self.flat.targets.as_ref().expect("flat textures are drawn first").group;
+                pass.set_pipeline(self.flat.pipeline(features));
+                pass.set_bind_group(2, Some(group), &[]);
+                self.grid.draw(&mut pass);
+            }
+            // The objects are traced only where the water can show them (see surface_regions).
+            (None, Some(regions)) => {
+                for (region, needs) in regions {
+                    if let Some([x, y, w, h]) = overlap(region, rect) {
+                        pass.set_pipeline(&self.variants[&needs].surface);
+                        pass.set_scissor_rect(x, y, w, h);
+                        self.grid.draw(&mut pass);
+                    }
+                }
+                pass.set_scissor_rect(x, y, w, h);
+            }
+            (None, None) => {
+                pass.set_pipeline(&pipelines.surface);
+                self.grid.draw(&mut pass);
+            }
+        }
+        self.draw_solids(&mut pass, features, view);
+        self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+    }
+
+    /// Draws the deck around the pool if the view has one. Drawn first: where it hides the
+    /// water's cut-away side, those costly fragments then fail the depth test.
+    pub(super) fn draw_deck(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        if view.deck {
+            pass.set_pipeline(&self.variants[&features].deck);
+            self.deck_mesh.draw(pass);
+        }
+    }
+
+    /// Draws the sphere and the duck (those the view has) and the pool with the pipelines of
+    /// `features`, front to back.
+    pub(super) fn draw_solids(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        let pipelines = &self.variants[&features];
+        if view.sphere.is_some() {
+            pass.set_pipeline(&pipelines.sphere);
+            self.sphere_mesh.draw(pass);
+        }
+        if view.duck.is_some() {
+            pass.set_pipeline(&pipelines.duck);
+            self.duck_mesh.draw(pass);
+        }
+        pass.set_pipeline(&pipelines.pool);
+        self.pool_mesh.draw(pass);
+    }
+}
+
+/// The part two rectangles (x, y, width, height) share, if any.
+pub(super) fn overlap(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
+    let (x0, y0) = (a[0].max(b[0]), a[1].max(b[1]));
+    let (x1, y1) = ((a[0] + a[2]).min(b[0] + b[2]), (a[1] + a[3]).min(b[1] + b[3]));
+    (x1 > x0 && y1 > y0).then(|| [x0, y0, x1 - x0, y1 - y0])
+}
+
+/// A render pass on a colour and a depth target, clearing the colour (to `clear`) or keeping
+/// it, and clearing the depth.
+pub(super) fn begin_scene_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    colour: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    clear: Option<wgpu::Color>,
+) -> wgpu::RenderPass<'e> {
+    let load = clear.map_or(wgpu::LoadOp::Load, wgpu::LoadOp::Clear);
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: colour,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    })
+}

@@ -1,0 +1,86 @@
+//! What a frame's picture depends on besides the water state: the camera, the sun, the
+//! objects' poses, the optics and ambient waves as the shaders take them.
+
+use glam::{Mat4, Vec3};
+
+use super::flat::{self, FlatView};
+use super::DebugView;
+use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
+use crate::optics::{FresnelModel, SpecularModel};
+use crate::scene::Sphere;
+
+/// Everything a frame's picture depends on besides the water state.
+#[derive(Clone, Copy, Debug)]
+pub struct View {
+    pub view_proj: Mat4,
+    /// Eye position (m).
+    pub eye: Vec3,
+    /// Unit vector towards the sun.
+    pub sun: Vec3,
+    pub sphere: Option<Sphere>,
+    /// The rubber duck's pose, if it is in the pool.
+    pub duck: Option<crate::physics::Pose>,
+    pub caustics: bool,
+    /// The optical models and their parameters (optics.rs).
+    pub optics: Optics,
+    /// The ambient waves to add to the simulated surface, at this frame's simulated time.
+    pub ambient: AmbientView,
+    /// Foam is drawn on the surface (from the map [`Renderer::upload_foam`] filled).
+    pub foam: bool,
+    /// A view of the simulation's textures drawn over the scene, if any.
+    pub debug: Option<DebugView>,
+    /// Fraction of the target's width and height the scene is drawn at (0.5-1; below 1 it
+    /// is scaled up to the target).
+    pub render_scale: f32,
+    /// Flat water instead of (or beside) the ray-traced surface; `None`: ray-traced.
+    pub flat: Option<FlatView>,
+    /// Photographic exposure before the tone curve (EV: +1 doubles the light).
+    pub exposure: f32,
+    /// The pool is sunk in a paved deck (else the classic's cut-away box in the open).
+    pub deck: bool,
+}
+
+/// The ambient waves as the shader takes them (see ambient.rs).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct AmbientView {
+    pub model: AmbientModel,
+    /// Per wave (kx, kz in rad/m, amplitude in m, phase now).
+    pub waves: [[f32; 4]; MAX_AMBIENT_WAVES],
+    /// (waves, Gerstner's c, the FFT's choppiness, 0); see `AmbientWaves::uniform`.
+    pub header: [f32; 4],
+}
+
+impl AmbientView {
+    /// Whether the FFT ocean carries its water sideways (reads the displacement map).
+    pub fn choppy(&self) -> bool {
+        self.model == AmbientModel::Fft && self.header[2] > 0.0
+    }
+}
+
+/// How the water surface reflects (see optics.rs).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Optics {
+    pub fresnel: FresnelModel,
+    pub specular: SpecularModel,
+    /// Exponent of the sun highlight's cos^s.
+    pub shininess: f32,
+    /// Angular diameter of the sun's disk (degrees).
+    pub sun_size: f32,
+    /// The surface shows its Fresnel reflectance as grey instead of its colour (a debug view).
+    pub show_reflectance: bool,
+    /// Beer–Lambert absorption of the water per channel (1/m).
+    pub absorption: Vec3,
+    /// Light the water scatters towards the eye per channel (linear units); zero: none.
+    pub scatter: Vec3,
+    /// The scattered light is tinted by the path's angle (seed 002).
+    pub view_colour: bool,
+    /// Times the real spread of water's refractive index across colours (0: one index).
+    pub dispersion: f32,
+}
+
+/// The flat water settings if flat water is drawn this frame: flat or split mode with the
+/// camera above the plane (flat water is an above-water technique; under it the ray tracer
+/// draws everything).
+pub fn flat_shown(view: &View) -> Option<FlatView> {
+    view.flat.filter(|f| f.mode != flat::RenderMode::RayTraced && view.eye.y > f.plane)
+}
