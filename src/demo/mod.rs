@@ -1,0 +1,294 @@
+//! The platform-free core of the demo: parameters, camera, water, sphere and renderer, driven
+//! by a small input API (pointer in pixels, keys, frame time). The browser and native shells
+//! only forward events to it and hand it a target to draw into.
+
+mod bodies;
+mod input;
+mod options;
+mod view;
+
+use glam::{Vec2, Vec3};
+
+use crate::ambient::gpu_ocean::GpuOcean;
+use crate::ambient::{AmbientSettings, AmbientWaves};
+use crate::camera::OrbitCamera;
+use crate::params::{ParamId, Params};
+use crate::physics::{FloatingBody, Pose};
+use crate::quality::{ResolutionGovernor, StepGovernor};
+use crate::render::{DebugTexture, RenderSettings, Renderer};
+use crate::scene;
+use crate::sim::{FixedStep, HeightField, HullSlot, SimEngine, WaterLevel, WaveSettings};
+pub use bodies::BodyId;
+use bodies::START_SPHERE_CENTRE;
+use input::Drag;
+pub use input::{Key, DIVIDER_GRAB_PX};
+pub use options::{DemoOptions, OptionSpec};
+
+/// Fixed simulation steps per simulated second.
+pub const STEPS_PER_SECOND: u32 = 120;
+/// Simulated seconds per step.
+pub const STEP_DT: f32 = 1.0 / STEPS_PER_SECOND as f32;
+/// Slowest frame rate (frames/s) at which the water still keeps up with wall time.
+pub const REAL_TIME_DOWN_TO_FPS: u32 = 10;
+/// Most steps one frame may take: enough for a frame of 1/[`REAL_TIME_DOWN_TO_FPS`] s. A longer
+/// frame drops the rest, so below 10 frames/s the water runs in slow motion (simulated time
+/// per frame stays at 0.1 s) instead of each slow frame taking more steps and so getting
+/// slower still; the frame's cost is bounded by the scene plus this many steps. Where the
+/// steps themselves would push frames under 10 frames/s, fewer are allowed
+/// ([`StepGovernor`]).
+pub const MAX_STEPS_PER_FRAME: u32 = STEPS_PER_SECOND / REAL_TIME_DOWN_TO_FPS;
+
+/// Stages of a frame, for timing: each is the index of its mark (`StageTimer::mark`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    Start,
+    AfterSimulation,
+    AfterCaustics,
+    AfterScene,
+}
+
+pub struct WaterDemo {
+    pub params: Params,
+    /// The `sim_size` parameter value the water was last built or resampled for.
+    applied_sim_size: f32,
+    pub camera: OrbitCamera,
+    /// The sphere and the duck, indexed by [`BodyId`].
+    bodies: [FloatingBody; 2],
+    /// Each body's hull ellipsoids as the water last took them in (`None`: not in the pool).
+    pushed: [Option<Vec<HullSlot>>; 2],
+    /// Each body's submerged volume after the last step (m³).
+    submerged: [f32; 2],
+    /// Frames between the water heights the bodies last used and the frame using them.
+    probe_latency: Option<u64>,
+    water: HeightField,
+    renderer: Renderer,
+    clock: FixedStep,
+    viewport: Vec2,
+    drag: Drag,
+    /// Steps simulated so far.
+    steps_taken: u64,
+    /// Chooses the render scale when the `quality` parameter is auto.
+    governor: ResolutionGovernor,
+    /// How many steps a frame may take (at most [`MAX_STEPS_PER_FRAME`]).
+    step_governor: StepGovernor,
+    /// The render scale of the last frame drawn.
+    render_scale: f32,
+    /// The ambient waves of the current parameters, and the settings they were made for.
+    ambient: AmbientWaves,
+    ambient_settings: AmbientSettings,
+    /// Whether the FFT ocean is summed on the GPU (float render targets) or on the CPU.
+    ocean_on_gpu: bool,
+    /// The GPU's FFT passes, made when the FFT ocean is first drawn on the GPU path.
+    gpu_ocean: Option<GpuOcean>,
+    /// Whether the renderer holds the current ambient waves' spectrum image.
+    spectrum_shown: bool,
+}
+
+impl WaterDemo {
+    /// Creates the demo for colour targets of `target_format`.
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        target_format: wgpu::TextureFormat,
+        options: DemoOptions,
+    ) -> Self {
+        let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
+        let water = HeightField::new_on(device, options.sim_size, scene::HALF_WIDTH, engine);
+        let settings = RenderSettings {
+            target_format,
+            caustics_size: options.caustics_size,
+            surface_grid: options.surface_grid,
+            float_targets: options.float_targets,
+        };
+        let renderer = Renderer::new(device, queue, settings, &water);
+        let mut params = Params::default();
+        let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
+        let mut demo = Self {
+            params,
+            applied_sim_size,
+            camera: OrbitCamera::default(),
+            bodies: [FloatingBody::at(Pose::at(START_SPHERE_CENTRE)), FloatingBody::at(Pose::at(Vec3::ZERO))],
+            pushed: [None, None],
+            submerged: [0.0; 2],
+            probe_latency: None,
+            water,
+            renderer,
+            clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
+            viewport: Vec2::new(800.0, 600.0),
+            drag: Drag::None,
+            steps_taken: 0,
+            governor: ResolutionGovernor::default(),
+            step_governor: StepGovernor::new(MAX_STEPS_PER_FRAME, 1.0 / REAL_TIME_DOWN_TO_FPS as f32),
+            render_scale: 1.0,
+            ambient: AmbientWaves::new(&AmbientSettings::default()),
+            ambient_settings: AmbientSettings::default(),
+            ocean_on_gpu: options.float_targets,
+            gpu_ocean: None,
+            spectrum_shown: false,
+        };
+        demo.refresh_ambient();
+        demo.place_duck_at_start();
+        demo
+    }
+
+    pub fn water(&self) -> &HeightField {
+        &self.water
+    }
+
+    /// Simulated time so far (s).
+    pub fn sim_time(&self) -> f64 {
+        self.steps_taken as f64 / STEPS_PER_SECOND as f64
+    }
+
+    /// Fixed steps simulated so far.
+    pub fn steps_taken(&self) -> u64 {
+        self.steps_taken
+    }
+
+    /// Unit vector towards the sun.
+    pub fn sun(&self) -> Vec3 {
+        scene::sun_direction(self.params.get(ParamId::SunAzimuth), self.params.get(ParamId::SunElevation))
+    }
+
+    /// The ambient waves (heights in m at simulated time [`WaterDemo::sim_time`]).
+    pub fn ambient(&self) -> &AmbientWaves {
+        &self.ambient
+    }
+
+    /// The GPU's FFT ocean, once the FFT ocean has been drawn on the GPU path (for tests).
+    pub fn gpu_ocean(&self) -> Option<&GpuOcean> {
+        self.gpu_ocean.as_ref()
+    }
+
+    /// Flattens the water and puts the bodies back where they started, at rest.
+    pub fn reset(&mut self, queue: &wgpu::Queue) {
+        self.water.reset(queue);
+        self.bodies[BodyId::Sphere as usize] = FloatingBody::at(Pose::at(START_SPHERE_CENTRE));
+        self.place_duck_at_start();
+        self.pushed = [None, None];
+    }
+
+    /// Advances the water by `frame_time` seconds (in fixed steps) and draws into `target`
+    /// of `size` pixels, all in one submission.
+    pub fn frame(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        frame_time: f32,
+    ) {
+        let mut encoder = device.create_command_encoder(&Default::default());
+        self.encode_frame(device, queue, &mut encoder, target, size, frame_time, &mut |_, _| {});
+        queue.submit([encoder.finish()]);
+        self.after_submit();
+        // Never waits: only lets finished readbacks (water statistics, body probes) complete.
+        let _ = device.poll(wgpu::PollType::Poll);
+    }
+
+    /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts any
+    /// asynchronous read of the water statistics ([`WaterDemo::water_level`]) and the
+    /// objects' water samples not yet started (encode_frame starts them already).
+    pub fn after_submit(&self) {
+        self.water.after_submit();
+    }
+
+    /// Mean and largest |height| of the water (m), read back asynchronously, a frame or
+    /// two old; `None` before the first read has completed.
+    pub fn water_level(&self) -> Option<WaterLevel> {
+        self.water.level()
+    }
+
+    /// Simulates a frame (submitted at once, in a command buffer of its own) and records its
+    /// drawing into `encoder`; `mark` is called at each [`Stage`] boundary (for timestamps;
+    /// the first two in the simulation's encoder). Writes uniform buffers, so submit before
+    /// encoding another frame.
+    #[allow(clippy::too_many_arguments)]
+    pub fn encode_frame(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        frame_time: f32,
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
+    ) {
+        self.set_viewport(size.0, size.1);
+        if self.on_deck() {
+            // The camera stays above the paving.
+            self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
+        }
+        self.refresh_ambient();
+        self.choose_render_scale(frame_time);
+        self.step_governor.observe(frame_time);
+        self.clock.max_steps = self.step_governor.cap();
+        let steps = if self.params.flag(ParamId::Paused) {
+            self.clock.advance(0.0);
+            0
+        } else {
+            self.clock.advance(frame_time)
+        };
+        self.step_governor.took(steps);
+        self.steps_taken += steps as u64;
+        let pushes = self.step_bodies(steps);
+        // The simulation goes in a submission of its own, ahead of the drawing: the objects'
+        // water samples and the water statistics can then be mapped as soon as the water is
+        // done rather than after the whole frame, which keeps them a frame old even where
+        // drawing is slow (software rendering in a browser).
+        let mut sim_encoder = device.create_command_encoder(&Default::default());
+        let wanted_size = self.params.get(ParamId::SimSize);
+        if wanted_size != self.applied_sim_size {
+            self.applied_sim_size = wanted_size;
+            let frames = self.water.frames();
+            self.water = self.water.resampled(device, queue, &mut sim_encoder, wanted_size as u32);
+            self.water.set_frames(frames);
+            self.renderer.rebind_water(device, &self.water);
+        }
+        self.couple_water(pushes);
+        let settings = WaveSettings {
+            wave_speed: self.params.get(ParamId::WaveSpeed),
+            damping: self.params.get(ParamId::Damping),
+            absorbing_walls: self.params.flag(ParamId::AbsorbingWalls),
+        };
+        mark(&mut sim_encoder, Stage::Start);
+        let foam = self.params.flag(ParamId::Foam).then(|| self.params.get(ParamId::FoamDecay));
+        self.water.set_foam(foam);
+        self.water.encode(queue, &mut sim_encoder, steps, STEP_DT, settings);
+        mark(&mut sim_encoder, Stage::AfterSimulation);
+        queue.submit([sim_encoder.finish()]);
+        self.water.after_submit();
+        let view = self.view();
+        if let Some(foam) = self.water.foam() {
+            self.renderer.upload_foam(device, queue, foam);
+        }
+        if view.debug.is_some_and(|d| d.texture == DebugTexture::Spectrum) && !self.spectrum_shown {
+            self.renderer.upload_spectrum(queue, &self.ambient.spectrum_image());
+            self.spectrum_shown = true;
+        }
+        if let Some(ocean) = &self.ambient.ocean {
+            let t = self.sim_time();
+            if self.ocean_on_gpu {
+                let size = ocean.size as u32;
+                if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
+                    let made = GpuOcean::new(device, size);
+                    self.renderer.use_ambient_views(device, &self.water, [made.surface(), made.displacement()]);
+                    self.gpu_ocean = Some(made);
+                }
+                if let Some(gpu_ocean) = &mut self.gpu_ocean {
+                    gpu_ocean.encode(queue, encoder, ocean, t);
+                }
+            } else {
+                let surface = ocean.surface(t);
+                let displacement = (ocean.choppiness > 0.0).then(|| ocean.displacement(t));
+                let maps = [Some(&surface[..]), displacement.as_deref()];
+                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, maps);
+            }
+        }
+        self.renderer.prepare(queue, encoder, &view, &self.water);
+        self.renderer.encode_caustics(device, encoder, &view, &self.water);
+        mark(encoder, Stage::AfterCaustics);
+        self.renderer.encode_scene(device, encoder, target, size, &view, &self.water);
+        mark(encoder, Stage::AfterScene);
+    }
+}
