@@ -3,6 +3,8 @@
 //! 128² to 1024² on whatever adapter wgpu finds (lavapipe here). Run with
 //! `cargo bench --bench simulation`; prints one JSON object per measurement. First, what the
 //! floating bodies' ambient-wave probes cost the CPU per frame, two ways.
+// Tests read results back and wait for the GPU (clippy.toml: not in the frame path).
+#![allow(clippy::disallowed_methods)]
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};

@@ -436,6 +436,7 @@ impl AsyncReadback {
 /// Copies a whole 2-D texture (mip 0, layer 0) back to the CPU, rows unpadded.
 /// Blocking: for tests, the CLI and benchmarks, never for the frame path.
 #[cfg(not(target_arch = "wasm32"))]
+#[allow(clippy::disallowed_methods)]
 pub fn read_texture(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> Vec<u8> {
     let width = texture.width();
     let height = texture.height();

@@ -75,7 +75,8 @@ impl OffscreenTarget {
         (self.width, self.height)
     }
 
-    /// The frame as tightly packed RGBA8 (sRGB) rows, top row first.
+    /// The frame as tightly packed RGBA8 (sRGB) rows, top row first. Blocking: for tools.
+    #[allow(clippy::disallowed_methods)]
     pub fn read_rgba(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<u8> {
         gpu::read_texture(device, queue, &self.texture)
     }

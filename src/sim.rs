@@ -20,8 +20,8 @@ use coupling::merge_push_steps;
 use gpu_engine::GpuSim;
 
 pub use coupling::{
-    displaced_column, pool_area, BodyCoupling, CellRange, HullMove, HullSlot, ProbeSamples, DISPLACEMENT_DEPTH,
-    MAX_HULL_MOVES, MAX_PROBES, MAX_PUSH_STEPS, PUSH_MIN_MOVE, SHADOW_SIZE,
+    displaced_column, pool_area, BodyCoupling, CellRange, HullMove, HullSlot, ProbeSamples, CPU_COPY_SIZE,
+    DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PROBES, MAX_PUSH_STEPS, PUSH_MIN_MOVE,
 };
 pub use plan::{
     drop_mean, drop_shape, sponge_profile, substeps, Drop, FixedStep, StepPlan, WaveSettings, MAX_COURANT,
@@ -128,7 +128,7 @@ impl HeightField {
             match &mut self.engine {
                 Engine::Gpu(sim) => {
                     self.pending.push(drop);
-                    sim.shadow.add_drop(drop);
+                    sim.cpu_copy.add_drop(drop);
                 }
                 Engine::Cpu { water, .. } => water.add_drop(drop),
             }
@@ -172,9 +172,9 @@ impl HeightField {
         let mut plan = StepPlan::new(&mut self.pending, self.size, self.half_width, steps, dt, settings);
         plan.moves = coupling.moves;
         plan.rest_level = coupling.rest_level;
-        sim.shadow.advance_with(steps, dt, settings, plan.moves.clone(), plan.rest_level);
+        sim.cpu_copy.advance_with(steps, dt, settings, plan.moves.clone(), plan.rest_level);
         if !coupling.probes.is_empty() {
-            let heights = coupling.probes.iter().map(|p| sim.shadow.height_at(p.x, p.y)).collect();
+            let heights = coupling.probes.iter().map(|p| sim.cpu_copy.height_at(p.x, p.y)).collect();
             self.probes = Some(ProbeSamples { points: coupling.probes, heights, frame: self.frames });
         }
         sim.write_uniforms(queue, &plan, self.size, self.half_width);
@@ -203,11 +203,11 @@ impl HeightField {
     }
 
     /// Turns foam on (decay time in s) or off. Foam is integrated per step on the CPU field
-    /// of either engine (the GPU engine's shadow of the water, at most [`SHADOW_SIZE`] cells
+    /// of either engine (the GPU engine's CPU copy of the water, at most [`CPU_COPY_SIZE`] cells
     /// per side), the same code for both.
     pub fn set_foam(&mut self, decay_s: Option<f32>) {
         match &mut self.engine {
-            Engine::Gpu(sim) => sim.shadow.set_foam(decay_s),
+            Engine::Gpu(sim) => sim.cpu_copy.set_foam(decay_s),
             Engine::Cpu { water, .. } => water.set_foam(decay_s),
         }
     }
@@ -215,7 +215,7 @@ impl HeightField {
     /// The foam, when on (updated by [`HeightField::encode`]).
     pub fn foam(&self) -> Option<&foam::Foam> {
         match &self.engine {
-            Engine::Gpu(sim) => sim.shadow.foam(),
+            Engine::Gpu(sim) => sim.cpu_copy.foam(),
             Engine::Cpu { water, .. } => water.foam(),
         }
     }
@@ -237,7 +237,7 @@ impl HeightField {
 
     /// The heights at the bodies' probe points, sampled at the end of the last
     /// [`HeightField::encode`]: the water as the next frame starts from. Sampled on the CPU
-    /// (the CPU engine's own grid, or the GPU engine's [`SHADOW_SIZE`] shadow), so nothing is
+    /// (the CPU engine's own grid, or the GPU engine's [`CPU_COPY_SIZE`] copy), so nothing is
     /// ever read back from the GPU for them.
     pub fn probes(&self) -> Option<&ProbeSamples> {
         self.probes.as_ref()
@@ -266,7 +266,7 @@ impl HeightField {
                 *level = Some(water.level());
             }
             (Engine::Gpu(old), Engine::Gpu(sim)) => {
-                *sim.shadow = old.shadow.resampled(size.min(SHADOW_SIZE));
+                *sim.cpu_copy = old.cpu_copy.resampled(size.min(CPU_COPY_SIZE));
                 let from_old = device.create_bind_group(&wgpu::BindGroupDescriptor {
                     label: Some("sim resample source"),
                     layout: &sim.layout,
@@ -322,7 +322,7 @@ impl HeightField {
                 **water = cpu::CpuHeightField::new(self.size, self.half_width);
                 *level = None;
             }
-            Engine::Gpu(sim) => *sim.shadow = cpu::CpuHeightField::new(sim.shadow.size(), self.half_width),
+            Engine::Gpu(sim) => *sim.cpu_copy = cpu::CpuHeightField::new(sim.cpu_copy.size(), self.half_width),
         }
         let zeros = vec![0u8; (self.size * self.size * 16) as usize];
         for texture in self.state.textures() {
@@ -338,6 +338,7 @@ impl HeightField {
     /// Reads the current state back: `size * size` cells of (height, velocity, nx, nz),
     /// row by row along +z. Blocking; for tests and tools.
     #[cfg(not(target_arch = "wasm32"))]
+    #[allow(clippy::disallowed_methods)]
     pub fn read_state(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<[f32; 4]> {
         if let Engine::Cpu { water, .. } = &self.engine {
             return water.cells();

@@ -31,7 +31,7 @@ pub fn start() {
 }
 
 /// The creation options (`meshSize`, `causticsSize`) as an array of
-/// `{ name, label, min, max, default, choices }`, for mount() to check and document them.
+/// `{ name, label, min, max, default }`, for mount() to check and document them.
 #[wasm_bindgen(js_name = optionTable)]
 pub fn option_table() -> js_sys::Array {
     DemoOptions::SPECS
@@ -43,7 +43,6 @@ pub fn option_table() -> js_sys::Array {
             set(&object, "min", o.min);
             set(&object, "max", o.max);
             set(&object, "default", o.default);
-            set(&object, "choices", o.choices.iter().map(|&c| JsValue::from(c)).collect::<js_sys::Array>());
             JsValue::from(object)
         })
         .collect()
@@ -533,10 +532,9 @@ impl WebDemo {
     }
 
     /// `{ backend, adapter, canvasFormat, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
-    /// spherePosition, duckPosition, submergedVolume, probeLatency }`; the water statistics
-    /// are read back asynchronously and are a frame or two old; positions are [x, y, z] in m
-    /// or null when the object is not in the pool; probeLatency is how many frames old the
-    /// water heights the objects last floated on were (null before the first arrived).
+    /// spherePosition, duckPosition, submergedVolume }`; the water statistics are read back
+    /// asynchronously and are a frame or two old; positions are [x, y, z] in m or null when
+    /// the object is not in the pool.
     pub fn stats(&self) -> js_sys::Object {
         let o = js_sys::Object::new();
         let level = self.demo.water_level().unwrap_or_default();
@@ -568,7 +566,6 @@ impl WebDemo {
         }
         set(&o, "gpuMs", if self.timer.is_some() { JsValue::from(costs) } else { JsValue::NULL });
         set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
-        set(&o, "probeLatency", self.demo.probe_latency().map_or(JsValue::NULL, |l| JsValue::from_f64(l as f64)));
         o
     }
 }

@@ -1,5 +1,5 @@
 //! Foam (lavapipe in CI): a hard drop breaks and foams where it fell and nowhere else, a ball
-//! dropped into the pool splashes foam around it, both engines (the GPU engine's CPU shadow
+//! dropped into the pool splashes foam around it, both engines (the GPU engine's CPU copy
 //! and the CPU engine) foam by the same code to the same amounts, and the surface shows it as
 //! white, while with foam off nothing is integrated at all.
 
@@ -76,7 +76,7 @@ fn both_engines_foam_by_the_same_code_to_the_same_amounts() {
     let (gpu, cpu) = (run(true), run(false));
     let largest = gpu.iter().zip(&cpu).map(|(a, b)| (a - b).abs()).fold(0.0f32, f32::max);
     let total: f32 = gpu.iter().sum();
-    println!("foam of the GPU engine (its CPU shadow) and of the CPU engine: {} cells, sum {total:.2}, largest difference {largest:e}", gpu.len());
+    println!("foam of the GPU engine (its CPU copy) and of the CPU engine: {} cells, sum {total:.2}, largest difference {largest:e}", gpu.len());
     assert!(total > 1.0 && largest < 1e-5, "the engines foam differently ({largest})");
 }
 

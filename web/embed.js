@@ -146,10 +146,7 @@ function readOptions(options, table) {
       else warn(`float "${value}" is not auto or none; using auto`);
     } else if (created.has(key)) {
       const o = created.get(key);
-      const n = Math.round(clampNumber(key, value, o.min, o.max, o.default));
-      const c = o.choices;
-      out[key] = c.length ? c.reduce((a, b) => (Math.abs(b - n) < Math.abs(a - n) ? b : a)) : n;
-      if (out[key] !== n) warn(`${key} ${n} is not one of ${c.join(", ")}; using ${out[key]}`);
+      out[key] = Math.round(clampNumber(key, value, o.min, o.max, o.default));
     } else if (key === "controls" || key === "lazy") {
       out[key] = !(value === false || value === 0 || value === "0" || value === "false");
     } else if (key === "maxPixelRatio") {

@@ -20,7 +20,7 @@ pub struct DemoOptions {
 }
 
 /// One creation option as the shells show it (web mount options and URL, CLI flags): its
-/// name, range, default and, when only some values are allowed, those values.
+/// name, range and default; any integer in the range is allowed.
 #[derive(Clone, Copy, Debug)]
 pub struct OptionSpec {
     pub name: &'static str,
@@ -28,15 +28,12 @@ pub struct OptionSpec {
     pub min: u32,
     pub max: u32,
     pub default: u32,
-    /// Allowed values (empty: any integer in range).
-    pub choices: &'static [u32],
 }
 
 impl OptionSpec {
-    /// `value` clamped to the range and snapped to the nearest choice, if there are any.
+    /// `value` clamped to the range.
     pub fn clamp(&self, value: u32) -> u32 {
-        let v = value.clamp(self.min, self.max);
-        self.choices.iter().copied().min_by_key(|c| c.abs_diff(v)).unwrap_or(v)
+        value.clamp(self.min, self.max)
     }
 }
 
@@ -49,7 +46,6 @@ impl DemoOptions {
             min: 16,
             max: 512,
             default: 48,
-            choices: &[],
         },
         OptionSpec {
             name: "causticsSize",
@@ -57,7 +53,6 @@ impl DemoOptions {
             min: 128,
             max: 2048,
             default: 512,
-            choices: &[],
         },
     ];
 

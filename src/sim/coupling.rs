@@ -95,7 +95,7 @@ pub const MAX_PUSH_STEPS: usize = 4;
 /// (at most; a smaller grid keeps its own size). It gets the same drops, pushes and steps, so
 /// it holds the same waves at a resolution that still resolves everything a body of 0.2 m or
 /// more responds to, for about 0.1 ms per step.
-pub const SHADOW_SIZE: u32 = 128;
+pub const CPU_COPY_SIZE: u32 = 128;
 /// Most points the water is sampled at for the bodies each frame.
 pub const MAX_PROBES: usize = 16;
 /// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).

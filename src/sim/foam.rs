@@ -1,5 +1,5 @@
 //! Foam: white water where the surface breaks, integrated per fixed step on the CPU field
-//! (the GPU engine's shadow of the water, or the CPU engine itself), so both engines foam by
+//! (the GPU engine's CPU copy of the water, or the CPU engine itself), so both engines foam by
 //! the same code, and uploaded for the renderer once a frame. An amount per cell, 0 to 1:
 //!
 //! - crests that break: where the surface falls faster than a fraction of g

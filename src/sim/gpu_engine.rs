@@ -1,10 +1,10 @@
 //! The GPU engine: the drop, update, normals and resample passes with their uniforms, the
-//! mean level reduction and its asynchronous readback, and the CPU shadow of the water kept
+//! mean level reduction and its asynchronous readback, and the CPU copy of the water kept
 //! for the bodies.
 
 use bytemuck::Zeroable;
 
-use super::coupling::{DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PUSH_STEPS, SHADOW_SIZE};
+use super::coupling::{CPU_COPY_SIZE, DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PUSH_STEPS};
 use super::plan::{StepPlan, MAX_DROPS_PER_PASS, MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH};
 use super::{cpu, WaterLevel, STATE_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
@@ -53,8 +53,8 @@ pub(super) struct GpuSim {
     pub(super) normals_pass: FullscreenPass,
     pub(super) mean: MeanLevel,
     pub(super) probe: LevelProbe,
-    /// The water again, on the CPU at [`SHADOW_SIZE`], for the bodies' buoyancy.
-    pub(super) shadow: Box<cpu::CpuHeightField>,
+    /// The water again, on the CPU at [`CPU_COPY_SIZE`], for the bodies' buoyancy.
+    pub(super) cpu_copy: Box<cpu::CpuHeightField>,
 }
 
 /// Format of the level reduction textures: x mean height (m), y largest |height| (m).
@@ -236,7 +236,7 @@ impl GpuSim {
             bind_groups,
             mean,
             probe: LevelProbe::new(device),
-            shadow: Box::new(cpu::CpuHeightField::new(size.min(SHADOW_SIZE), half_width)),
+            cpu_copy: Box::new(cpu::CpuHeightField::new(size.min(CPU_COPY_SIZE), half_width)),
         }
     }
 
