@@ -12,8 +12,8 @@
 
 pub mod gpu_ocean;
 pub mod ocean;
+pub mod params;
 
-use crate::params::{ParamId, Params};
 use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
 use ocean::{Ocean, OceanNow};
@@ -124,25 +124,28 @@ pub struct AmbientSettings {
 }
 
 impl AmbientSettings {
-    /// The settings the parameters hold.
-    pub fn from_params(params: &Params) -> Self {
+    /// The settings from the values of this feature's parameters ([`params::PARAMS`]),
+    /// `value` giving each by its name.
+    pub fn from_values(value: impl Fn(&str) -> f32) -> Self {
         Self {
-            model: AmbientModel::from_param(params.get(ParamId::Ambient)),
-            wind_speed: params.get(ParamId::WindSpeed),
-            wind_direction_deg: params.get(ParamId::WindDirection),
-            significant_height: params.get(ParamId::WaveHeight),
-            spread_deg: params.get(ParamId::WaveSpread),
-            steepness: params.get(ParamId::Steepness),
-            spectrum: Spectrum::from_param(params.get(ParamId::Spectrum)),
-            fft_size: params.get(ParamId::FftSize) as usize,
-            choppiness: params.get(ParamId::Choppiness),
+            model: AmbientModel::from_param(value("ambient")),
+            wind_speed: value("wind_speed"),
+            wind_direction_deg: value("wind_direction"),
+            significant_height: value("wave_height"),
+            spread_deg: value("wave_spread"),
+            steepness: value("steepness"),
+            spectrum: Spectrum::from_param(value("spectrum")),
+            fft_size: value("fft_size") as usize,
+            choppiness: value("choppiness"),
         }
     }
 
-    /// `model` with every other setting at the parameter table's default (a light breeze:
-    /// 3 m/s, 1 cm significant height).
+    /// `model` with every other setting at its parameter's default (a light breeze: 3 m/s,
+    /// 1 cm significant height).
     pub fn default_for(model: AmbientModel) -> Self {
-        Self { model, ..Self::from_params(&Params::default()) }
+        let default =
+            |name: &str| params::PARAMS.iter().find(|p| p.name == name).expect("an ambient parameter").default;
+        Self { model, ..Self::from_values(default) }
     }
 }
 

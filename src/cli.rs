@@ -215,7 +215,7 @@ fn describe(p: &ParamSpec) -> String {
 
 /// The help's tail: every parameter of the table and every preset.
 fn parameter_list() -> String {
-    let names: Vec<String> = params::PARAMS.iter().map(describe).collect();
+    let names: Vec<String> = params::table().iter().map(|p| describe(p)).collect();
     let presets: Vec<String> = presets::PRESETS.iter().map(|p| format!("  {:<16} {}", p.name, p.label)).collect();
     format!("Parameters (--set NAME=VALUE):\n{}\n\nPresets (--preset NAME):\n{}", names.join("\n"), presets.join("\n"))
 }

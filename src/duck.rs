@@ -5,6 +5,7 @@
 
 use glam::Vec3;
 
+use crate::param_spec::{slider, ParamSpec};
 use crate::physics::{Ellipsoid, Shape};
 
 /// One piece of the duck: its ellipsoid and colour (linear RGB).
@@ -106,6 +107,17 @@ pub fn mesh() -> (Vec<DuckVertex>, Vec<u32>) {
     }
     (vertices, indices)
 }
+
+/// The duck's density. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "duck_density",
+    label: "Duck density",
+    group: "Objects",
+    unit: "kg/m³",
+    control: slider(100.0, 900.0, 10.0),
+    default: 300.0,
+    help: "Mass per volume of the rubber duck: the lighter, the higher it floats.",
+}];
 
 #[cfg(test)]
 mod tests {

@@ -10,6 +10,7 @@ pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
 pub mod optics;
+pub mod param_spec;
 pub mod params;
 pub mod physics;
 pub mod presets;

@@ -5,6 +5,7 @@
 //! its variant, so a model not chosen costs nothing), the page and the viewer plot them, and
 //! the tests hold the GPU's pixels to them.
 
+use crate::param_spec::{slider, Control, ParamSpec};
 use crate::scene::IOR_WATER;
 
 /// A Fresnel reflectance model. Each takes the cosine of the incidence angle; below the
@@ -216,6 +217,127 @@ pub fn wgsl_constants() -> String {
         GRAZING_TINT[2],
     )
 }
+
+/// The sun's disk. (The parameter table, `params::table`, lists them in this order.)
+pub const SUN_SIZE_PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "sun_size",
+    label: "Sun size",
+    group: "Light",
+    unit: "°",
+    control: slider(0.5, 5.0, 0.1),
+    default: crate::optics::DEFAULT_SUN_SIZE_DEG,
+    help: "Angular diameter of the sun's disk in the sky and in its reflections (the real sun: 0.5°).",
+}];
+
+/// How the surface reflects: the Fresnel and specular models, dispersion. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "fresnel",
+        label: "Fresnel model",
+        group: "Optics",
+        unit: "",
+        control: Control::Choice {
+            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0],
+            names: &["exact", "table", "schlick", "inverse_power", "clamped_power", "linear"],
+        },
+        default: 0.0,
+        help: "How much of the light the surface reflects at each angle: the exact Fresnel equations, the same from a lookup texture, Schlick's approximation, 1/(1+cos θ)^8, clamp((1-cos θ)^4, 0.05, 0.3) or 1-cos θ.",
+    },
+    ParamSpec {
+        name: "specular",
+        label: "Sun highlight",
+        group: "Optics",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0], names: &["phong", "blinn_phong"] },
+        default: 0.0,
+        help: "Shape of the sun's glint on the water: Phong (reflected ray against the sun) or Blinn-Phong (normal against the half vector), wider at the same shininess.",
+    },
+    ParamSpec {
+        name: "shininess",
+        label: "Shininess",
+        group: "Optics",
+        unit: "",
+        control: slider(100.0, 10000.0, 100.0),
+        default: 3000.0,
+        help: "Exponent s of the highlight's cos^s: higher is a smaller, sharper glint.",
+    },
+    ParamSpec {
+        name: "dispersion",
+        label: "Dispersion",
+        group: "Optics",
+        unit: "×",
+        control: slider(0.0, 20.0, 0.5),
+        default: 0.0,
+        help: "Red and blue light bend by their own refractive indices (water: 1.331 red, 1.335 green, 1.337 blue), this many times the real spread: coloured fringes at the caustics' edges and at the rim of Snell's window. 0: off.",
+    },
+];
+
+/// The water's colour: absorption and scattering per channel, the view's colour. (The parameter table, `params::table`, lists them in this order.)
+pub const WATER_COLOUR_PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "absorption_red",
+        label: "Absorption, red",
+        group: "Water colour",
+        unit: "1/m",
+        control: slider(0.0, 2.0, 0.005),
+        default: 1.2,
+        help: "Beer-Lambert absorption of red light per metre of water: after d metres exp(-a d) of it is left.",
+    },
+    ParamSpec {
+        name: "absorption_green",
+        label: "Absorption, green",
+        group: "Water colour",
+        unit: "1/m",
+        control: slider(0.0, 2.0, 0.005),
+        default: 0.24,
+        help: "Beer-Lambert absorption of green light per metre of water: after d metres exp(-a d) of it is left.",
+    },
+    ParamSpec {
+        name: "absorption_blue",
+        label: "Absorption, blue",
+        group: "Water colour",
+        unit: "1/m",
+        control: slider(0.0, 2.0, 0.005),
+        default: 0.10,
+        help: "Beer-Lambert absorption of blue light per metre of water: after d metres exp(-a d) of it is left.",
+    },
+    ParamSpec {
+        name: "scatter_red",
+        label: "Scattered light, red",
+        group: "Water colour",
+        unit: "",
+        control: slider(0.0, 0.5, 0.005),
+        default: 0.0,
+        help: "Light the water itself scatters towards you (red, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
+    },
+    ParamSpec {
+        name: "scatter_green",
+        label: "Scattered light, green",
+        group: "Water colour",
+        unit: "",
+        control: slider(0.0, 0.5, 0.005),
+        default: 0.0,
+        help: "Light the water itself scatters towards you (green, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
+    },
+    ParamSpec {
+        name: "scatter_blue",
+        label: "Scattered light, blue",
+        group: "Water colour",
+        unit: "",
+        control: slider(0.0, 0.5, 0.005),
+        default: 0.0,
+        help: "Light the water itself scatters towards you (blue, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
+    },
+    ParamSpec {
+        name: "view_colour",
+        label: "Colour by view angle",
+        group: "Water colour",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "The scattered light loses half its green along grazing paths and keeps it looking straight down, as seed 002 tints its water by the view angle (needs scattered light).",
+    },
+];
 
 #[cfg(test)]
 mod tests {

@@ -1,12 +1,32 @@
-//! The one table of user-facing parameters: name, label, group, unit, range, step and
-//! default. The HTML controls, the egui panel, URL options, the CLI and the tests all read
-//! it, so they cannot drift apart. Values are stored as `f32`; toggles are 0 or 1.
+//! The one table of user-facing parameters, assembled from the slices each feature declares
+//! next to its code (`param_spec::ParamSpec`), in the order the controls show them; the ids
+//! that name them; and `Params`, the current values. The HTML controls, the egui panel, URL
+//! options, the CLI and the tests all read this table, so they cannot drift apart.
 
 use std::fmt;
+use std::ops::Deref;
+use std::sync::OnceLock;
 
-/// Identifies a parameter; its discriminant is its index in [`PARAMS`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ParamId {
+pub use crate::param_spec::{choice_label, Control, ParamSpec};
+use crate::{ambient, duck, optics, physics, quality, render, sim, sky};
+
+/// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
+macro_rules! param_ids {
+    ($($id:ident),* $(,)?) => {
+        /// Identifies a parameter; its discriminant is its index in the [`table`].
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum ParamId {
+            $($id),*
+        }
+
+        impl ParamId {
+            /// Every id, in table order.
+            pub const ALL: &[ParamId] = &[$(ParamId::$id),*];
+        }
+    };
+}
+
+param_ids! {
     WaveSpeed,
     Damping,
     AbsorbingWalls,
@@ -61,679 +81,110 @@ pub enum ParamId {
     FlatSoftEdge,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Control {
-    Slider {
-        min: f32,
-        max: f32,
-        step: f32,
-    },
-    Toggle,
-    /// One of a few values, in increasing order; `names` (empty, or one per value) are what
-    /// controls show instead of the numbers.
-    Choice {
-        values: &'static [f32],
-        names: &'static [&'static str],
-    },
-}
+/// The features' slices in the order of the controls (groups stay together).
+const SLICES: &[&[ParamSpec]] = &[
+    sim::params::WATER,
+    sim::foam::PARAMS,
+    sim::params::DROPS,
+    sky::SUN_PARAMS,
+    optics::SUN_SIZE_PARAMS,
+    sky::EXPOSURE_PARAMS,
+    render::deck::PARAMS,
+    render::caustics::PARAMS,
+    ambient::params::PARAMS,
+    optics::PARAMS,
+    optics::WATER_COLOUR_PARAMS,
+    physics::BODY_PARAMS,
+    duck::PARAMS,
+    physics::GRAVITY_PARAMS,
+    sim::params::RUN,
+    render::debug_view::PARAMS,
+    quality::PARAMS,
+    render::flat::PARAMS,
+];
 
+/// A parameter of the table: its id and its spec (whose fields it derefs to).
 #[derive(Clone, Copy, Debug)]
-pub struct ParamSpec {
+pub struct Param {
     pub id: ParamId,
-    /// Stable machine name used in URLs, `set(name, value)` and the CLI.
-    pub name: &'static str,
-    pub label: &'static str,
-    pub group: &'static str,
-    /// Unit symbol shown after the value ("m/s", "1/s", "m", "°"), empty when unitless.
-    pub unit: &'static str,
-    pub control: Control,
-    pub default: f32,
-    pub help: &'static str,
+    pub spec: &'static ParamSpec,
 }
 
-impl ParamSpec {
-    pub fn min(&self) -> f32 {
-        match self.control {
-            Control::Slider { min, .. } => min,
-            Control::Toggle => 0.0,
-            Control::Choice { values, .. } => values[0],
-        }
+impl Deref for Param {
+    type Target = ParamSpec;
+    fn deref(&self) -> &ParamSpec {
+        self.spec
     }
+}
 
-    pub fn max(&self) -> f32 {
-        match self.control {
-            Control::Slider { max, .. } => max,
-            Control::Toggle => 1.0,
-            Control::Choice { values, .. } => values[values.len() - 1],
+/// Every parameter, in the order of [`ParamId`] (checked when the table is first made: each
+/// id's name in snake case is its spec's name).
+pub fn table() -> &'static [Param] {
+    static TABLE: OnceLock<Vec<Param>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let specs: Vec<&'static ParamSpec> = SLICES.iter().flat_map(|slice| slice.iter()).collect();
+        assert_eq!(specs.len(), ParamId::ALL.len(), "the slices and ParamId list different parameters");
+        let table: Vec<Param> = ParamId::ALL.iter().zip(specs).map(|(&id, spec)| Param { id, spec }).collect();
+        for p in &table {
+            assert_eq!(snake_case(&format!("{:?}", p.id)), p.name, "ParamId::{:?} is out of place", p.id);
         }
-    }
+        table
+    })
+}
 
-    /// A value as a user writes it (command line, URL): a number, one of a choice's names
-    /// (any case), or on/off/true/false for a toggle. `None` if it is none of those.
-    pub fn parse(&self, text: &str) -> Option<f32> {
-        let text = text.trim();
-        if let Control::Choice { values, names } = self.control {
-            if let Some(i) = names.iter().position(|n| n.eq_ignore_ascii_case(text)) {
-                return Some(values[i]);
-            }
+/// "WaveSpeed" → "wave_speed".
+fn snake_case(name: &str) -> String {
+    let mut out = String::new();
+    for (i, c) in name.chars().enumerate() {
+        if c.is_uppercase() && i > 0 {
+            out.push('_');
         }
-        match text.to_ascii_lowercase().as_str() {
-            "on" | "true" => Some(1.0),
-            "off" | "false" => Some(0.0),
-            _ => text.parse().ok(),
-        }
+        out.push(c.to_ascii_lowercase());
     }
-
-    /// The nearest valid value: clamped to the range; toggles snap to 0 or 1, choices to the
-    /// nearest value; NaN gives the default.
-    pub fn sanitise(&self, value: f32) -> f32 {
-        if value.is_nan() {
-            return self.default;
-        }
-        match self.control {
-            Control::Slider { min, max, .. } => value.clamp(min, max),
-            Control::Toggle => {
-                if value >= 0.5 {
-                    1.0
-                } else {
-                    0.0
-                }
-            }
-            Control::Choice { values, .. } => {
-                values.iter().copied().min_by(|a, b| (a - value).abs().total_cmp(&(b - value).abs())).unwrap_or(value)
-            }
-        }
-    }
+    out
 }
 
 /// Parameters that matter only for some values of another (a model's own settings): the
-/// controls show them only then. (parameter, the one it depends on, the values it needs)
-pub const SHOWN_WHEN: &[(ParamId, ParamId, &[f32])] = &[
-    (ParamId::WindSpeed, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
-    (ParamId::WindDirection, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
-    (ParamId::WaveHeight, ParamId::Ambient, &[1.0, 2.0, 3.0, 4.0]),
-    (ParamId::WaveSpread, ParamId::Ambient, &[1.0, 3.0, 4.0]),
-    (ParamId::Steepness, ParamId::Ambient, &[3.0]),
-    (ParamId::Spectrum, ParamId::Ambient, &[4.0]),
-    (ParamId::FftSize, ParamId::Ambient, &[4.0]),
-    (ParamId::Choppiness, ParamId::Ambient, &[4.0]),
-    (ParamId::Split, ParamId::RenderMode, &[2.0]),
-    (ParamId::FlatDistortion, ParamId::RenderMode, &[1.0, 2.0]),
-    (ParamId::FlatStrength, ParamId::RenderMode, &[1.0, 2.0]),
-    (ParamId::DudvSpeed, ParamId::RenderMode, &[1.0, 2.0]),
-    (ParamId::FlatResolution, ParamId::RenderMode, &[1.0, 2.0]),
-    (ParamId::FlatCaustics, ParamId::RenderMode, &[1.0, 2.0]),
-    (ParamId::FlatSoftEdge, ParamId::RenderMode, &[1.0, 2.0]),
+/// controls show them only then. (parameter, the one it depends on, the choices it needs)
+pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
+    (ParamId::WindSpeed, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
+    (ParamId::WindDirection, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
+    (ParamId::WaveHeight, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
+    (ParamId::WaveSpread, ParamId::Ambient, &["sines", "gerstner", "fft"]),
+    (ParamId::Steepness, ParamId::Ambient, &["gerstner"]),
+    (ParamId::Spectrum, ParamId::Ambient, &["fft"]),
+    (ParamId::FftSize, ParamId::Ambient, &["fft"]),
+    (ParamId::Choppiness, ParamId::Ambient, &["fft"]),
+    (ParamId::Split, ParamId::RenderMode, &["split"]),
+    (ParamId::FlatDistortion, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::FlatStrength, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::DudvSpeed, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::FlatResolution, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::FlatCaustics, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::FlatSoftEdge, ParamId::RenderMode, &["flat", "split"]),
 ];
 
 impl ParamId {
-    /// The parameter this one's control depends on, and the values that show it.
-    pub fn shown_when(self) -> Option<(ParamId, &'static [f32])> {
-        SHOWN_WHEN.iter().find(|(id, _, _)| *id == self).map(|&(_, on, values)| (on, values))
+    /// The spec of this parameter.
+    pub fn spec(self) -> &'static ParamSpec {
+        table()[self as usize].spec
     }
-}
 
-const fn slider(min: f32, max: f32, step: f32) -> Control {
-    Control::Slider { min, max, step }
-}
-
-pub const PARAMS: &[ParamSpec] = &[
-    ParamSpec {
-        id: ParamId::WaveSpeed,
-        name: "wave_speed",
-        label: "Wave speed",
-        group: "Water",
-        unit: "m/s",
-        control: slider(0.1, 2.0, 0.05),
-        default: 0.6,
-        help: "Speed c of ripples in the wave equation h_tt = c² ∇²h.",
-    },
-    ParamSpec {
-        id: ParamId::Damping,
-        name: "damping",
-        label: "Damping",
-        group: "Water",
-        unit: "1/s",
-        control: slider(0.0, 5.0, 0.05),
-        default: 0.5,
-        help: "Rate k at which waves lose energy (amplitude decays as exp(-k t / 2)).",
-    },
-    ParamSpec {
-        id: ParamId::AbsorbingWalls,
-        name: "absorbing_walls",
-        label: "Absorbing walls",
-        group: "Water",
-        unit: "",
-        control: Control::Toggle,
-        default: 0.0,
-        help: "Walls swallow waves in a damping layer along them instead of reflecting them.",
-    },
-    ParamSpec {
-        id: ParamId::Foam,
-        name: "foam",
-        label: "Foam",
-        group: "Water",
-        unit: "",
-        control: Control::Toggle,
-        default: 0.0,
-        help: "White water where crests fall faster than a quarter of g, where water runs up a wall, and where drops and bodies throw water about; it fades and spreads.",
-    },
-    ParamSpec {
-        id: ParamId::FoamDecay,
-        name: "foam_decay",
-        label: "Foam lifetime",
-        group: "Water",
-        unit: "s",
-        control: slider(0.3, 5.0, 0.1),
-        default: 1.5,
-        help: "Time constant tau of the foam's fading: after tau seconds 37 % of it is left.",
-    },
-    ParamSpec {
-        id: ParamId::DropRadius,
-        name: "drop_radius",
-        label: "Drop radius",
-        group: "Drops",
-        unit: "m",
-        control: slider(0.01, 0.3, 0.005),
-        default: 0.04,
-        help: "Radius of the cosine bump a click or drag adds.",
-    },
-    ParamSpec {
-        id: ParamId::DropStrength,
-        name: "drop_strength",
-        label: "Drop strength",
-        group: "Drops",
-        unit: "m",
-        control: slider(-0.05, 0.05, 0.001),
-        default: 0.012,
-        help: "Height of the bump at its centre (negative pushes the water down).",
-    },
-    ParamSpec {
-        id: ParamId::SunAzimuth,
-        name: "sun_azimuth",
-        label: "Sun azimuth",
-        group: "Light",
-        unit: "°",
-        control: slider(-180.0, 180.0, 1.0),
-        default: 35.0,
-        help: "Compass direction of the sun around the pool.",
-    },
-    ParamSpec {
-        id: ParamId::SunElevation,
-        name: "sun_elevation",
-        label: "Sun elevation",
-        group: "Light",
-        unit: "°",
-        control: slider(10.0, 90.0, 1.0),
-        default: 55.0,
-        help: "Height of the sun above the horizon.",
-    },
-    ParamSpec {
-        id: ParamId::SunSize,
-        name: "sun_size",
-        label: "Sun size",
-        group: "Light",
-        unit: "°",
-        control: slider(0.5, 5.0, 0.1),
-        default: crate::optics::DEFAULT_SUN_SIZE_DEG,
-        help: "Angular diameter of the sun's disk in the sky and in its reflections (the real sun: 0.5°).",
-    },
-    ParamSpec {
-        id: ParamId::Exposure,
-        name: "exposure",
-        label: "Exposure",
-        group: "Light",
-        unit: "EV",
-        control: slider(-2.0, 2.0, 0.1),
-        default: 0.0,
-        help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve).",
-    },
-    ParamSpec {
-        id: ParamId::Setting,
-        name: "setting",
-        label: "Setting",
-        group: "Light",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["deck", "cutaway"] },
-        default: 0.0,
-        help: "Where the pool is: sunk in a paved deck under the sky, or the classic's cut-away box, open at the near walls so you see the water's cross-section.",
-    },
-    ParamSpec {
-        id: ParamId::Caustics,
-        name: "caustics",
-        label: "Caustics",
-        group: "Light",
-        unit: "",
-        control: Control::Toggle,
-        default: 1.0,
-        help: "Light focused by the waves onto the floor, walls and sphere.",
-    },
-    ParamSpec {
-        id: ParamId::Ambient,
-        name: "ambient",
-        label: "Ambient waves",
-        group: "Ambient waves",
-        unit: "",
-        control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0],
-            names: &["none", "sines", "modes", "gerstner", "fft"],
-        },
-        default: 0.0,
-        help: "A surface that moves on its own under your ripples: none, a sum of sharp-crested travelling sines, the pool's own standing waves (modes) that meet every wall flat, Gerstner waves (the water moves in circles, crests sharpen), or an FFT ocean (thousands of waves from a spectrum).",
-    },
-    ParamSpec {
-        id: ParamId::WindSpeed,
-        name: "wind_speed",
-        label: "Wind speed",
-        group: "Ambient waves",
-        unit: "m/s",
-        control: slider(0.5, 10.0, 0.1),
-        default: 3.0,
-        help: "Wind of the Phillips spectrum the waves' amplitudes come from: stronger wind gives the longer waves more of the height.",
-    },
-    ParamSpec {
-        id: ParamId::WindDirection,
-        name: "wind_direction",
-        label: "Wind direction",
-        group: "Ambient waves",
-        unit: "°",
-        control: slider(-180.0, 180.0, 1.0),
-        default: 30.0,
-        help: "Direction the wind blows towards, from +x towards +z.",
-    },
-    ParamSpec {
-        id: ParamId::WaveHeight,
-        name: "wave_height",
-        label: "Wave height",
-        group: "Ambient waves",
-        unit: "m",
-        control: slider(0.0, 0.03, 0.001),
-        default: 0.01,
-        help: "Significant height H_s of the ambient waves: four times the surface's standard deviation.",
-    },
-    ParamSpec {
-        id: ParamId::WaveSpread,
-        name: "wave_spread",
-        label: "Spread of directions",
-        group: "Ambient waves",
-        unit: "°",
-        control: slider(0.0, 90.0, 1.0),
-        default: 30.0,
-        help: "How far (±) the travelling waves' directions stray from the wind's.",
-    },
-    ParamSpec {
-        id: ParamId::Steepness,
-        name: "steepness",
-        label: "Steepness Q",
-        group: "Ambient waves",
-        unit: "",
-        control: slider(0.0, crate::ambient::MAX_STEEPNESS, 0.05),
-        default: 0.6,
-        help: "Gerstner steepness: 0 gives plain sines; towards 1 the water gathers under sharp crests (at 1 they would become cusps).",
-    },
-    ParamSpec {
-        id: ParamId::Spectrum,
-        name: "spectrum",
-        label: "Spectrum",
-        group: "Ambient waves",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["phillips", "jonswap"] },
-        default: 0.0,
-        help: "The FFT ocean's wave spectrum: Phillips (Tessendorf's) or JONSWAP (measured seas of limited fetch, a sharper peak; here a 100 m fetch).",
-    },
-    ParamSpec {
-        id: ParamId::FftSize,
-        name: "fft_size",
-        label: "FFT grid",
-        group: "Ambient waves",
-        unit: "",
-        control: Control::Choice { values: &[64.0, 128.0], names: &[] },
-        default: 64.0,
-        help: "Waves per side of the FFT ocean's lattice: 128 adds ripples down to 6 cm.",
-    },
-    ParamSpec {
-        id: ParamId::Choppiness,
-        name: "choppiness",
-        label: "Choppiness",
-        group: "Ambient waves",
-        unit: "",
-        control: slider(0.0, crate::ambient::ocean::MAX_CHOPPINESS, 0.1),
-        default: 0.0,
-        help: "The FFT ocean's water also moves sideways, gathering under the crests (Tessendorf's choppy waves); 0 is the height field alone.",
-    },
-    ParamSpec {
-        id: ParamId::Fresnel,
-        name: "fresnel",
-        label: "Fresnel model",
-        group: "Optics",
-        unit: "",
-        control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0],
-            names: &["exact", "table", "schlick", "inverse_power", "clamped_power", "linear"],
-        },
-        default: 0.0,
-        help: "How much of the light the surface reflects at each angle: the exact Fresnel equations, the same from a lookup texture, Schlick's approximation, 1/(1+cos θ)^8, clamp((1-cos θ)^4, 0.05, 0.3) or 1-cos θ.",
-    },
-    ParamSpec {
-        id: ParamId::Specular,
-        name: "specular",
-        label: "Sun highlight",
-        group: "Optics",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["phong", "blinn_phong"] },
-        default: 0.0,
-        help: "Shape of the sun's glint on the water: Phong (reflected ray against the sun) or Blinn-Phong (normal against the half vector), wider at the same shininess.",
-    },
-    ParamSpec {
-        id: ParamId::Shininess,
-        name: "shininess",
-        label: "Shininess",
-        group: "Optics",
-        unit: "",
-        control: slider(100.0, 10000.0, 100.0),
-        default: 3000.0,
-        help: "Exponent s of the highlight's cos^s: higher is a smaller, sharper glint.",
-    },
-    ParamSpec {
-        id: ParamId::Dispersion,
-        name: "dispersion",
-        label: "Dispersion",
-        group: "Optics",
-        unit: "×",
-        control: slider(0.0, 20.0, 0.5),
-        default: 0.0,
-        help: "Red and blue light bend by their own refractive indices (water: 1.331 red, 1.335 green, 1.337 blue), this many times the real spread: coloured fringes at the caustics' edges and at the rim of Snell's window. 0: off.",
-    },
-    ParamSpec {
-        id: ParamId::AbsorptionRed,
-        name: "absorption_red",
-        label: "Absorption, red",
-        group: "Water colour",
-        unit: "1/m",
-        control: slider(0.0, 2.0, 0.005),
-        default: 1.2,
-        help: "Beer-Lambert absorption of red light per metre of water: after d metres exp(-a d) of it is left.",
-    },
-    ParamSpec {
-        id: ParamId::AbsorptionGreen,
-        name: "absorption_green",
-        label: "Absorption, green",
-        group: "Water colour",
-        unit: "1/m",
-        control: slider(0.0, 2.0, 0.005),
-        default: 0.24,
-        help: "Beer-Lambert absorption of green light per metre of water: after d metres exp(-a d) of it is left.",
-    },
-    ParamSpec {
-        id: ParamId::AbsorptionBlue,
-        name: "absorption_blue",
-        label: "Absorption, blue",
-        group: "Water colour",
-        unit: "1/m",
-        control: slider(0.0, 2.0, 0.005),
-        default: 0.10,
-        help: "Beer-Lambert absorption of blue light per metre of water: after d metres exp(-a d) of it is left.",
-    },
-    ParamSpec {
-        id: ParamId::ScatterRed,
-        name: "scatter_red",
-        label: "Scattered light, red",
-        group: "Water colour",
-        unit: "",
-        control: slider(0.0, 0.5, 0.005),
-        default: 0.0,
-        help: "Light the water itself scatters towards you (red, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
-    },
-    ParamSpec {
-        id: ParamId::ScatterGreen,
-        name: "scatter_green",
-        label: "Scattered light, green",
-        group: "Water colour",
-        unit: "",
-        control: slider(0.0, 0.5, 0.005),
-        default: 0.0,
-        help: "Light the water itself scatters towards you (green, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
-    },
-    ParamSpec {
-        id: ParamId::ScatterBlue,
-        name: "scatter_blue",
-        label: "Scattered light, blue",
-        group: "Water colour",
-        unit: "",
-        control: slider(0.0, 0.5, 0.005),
-        default: 0.0,
-        help: "Light the water itself scatters towards you (blue, linear units; the sky is about 0.5): it fills in what absorption takes, so deep water turns this colour instead of black. 0 in every channel: off.",
-    },
-    ParamSpec {
-        id: ParamId::ViewColour,
-        name: "view_colour",
-        label: "Colour by view angle",
-        group: "Water colour",
-        unit: "",
-        control: Control::Toggle,
-        default: 0.0,
-        help: "The scattered light loses half its green along grazing paths and keeps it looking straight down, as seed 002 tints its water by the view angle (needs scattered light).",
-    },
-    ParamSpec {
-        id: ParamId::Objects,
-        name: "objects",
-        label: "Objects",
-        group: "Objects",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0, 3.0], names: &["none", "sphere", "duck", "both"] },
-        default: 3.0,
-        help: "What floats in the pool: nothing, the sphere, a rubber duck, or both.",
-    },
-    ParamSpec {
-        id: ParamId::SphereRadius,
-        name: "sphere_radius",
-        label: "Sphere radius",
-        group: "Objects",
-        unit: "m",
-        control: slider(0.1, 0.4, 0.01),
-        default: 0.25,
-        help: "Radius of the sphere.",
-    },
-    ParamSpec {
-        id: ParamId::SphereDensity,
-        name: "sphere_density",
-        label: "Sphere density",
-        group: "Objects",
-        unit: "kg/m³",
-        control: slider(100.0, 2000.0, 10.0),
-        default: 600.0,
-        help: "Mass per volume; below water's 1000 kg/m³ the sphere floats.",
-    },
-    ParamSpec {
-        id: ParamId::DuckDensity,
-        name: "duck_density",
-        label: "Duck density",
-        group: "Objects",
-        unit: "kg/m³",
-        control: slider(100.0, 900.0, 10.0),
-        default: 300.0,
-        help: "Mass per volume of the rubber duck: the lighter, the higher it floats.",
-    },
-    ParamSpec {
-        id: ParamId::Gravity,
-        name: "gravity",
-        label: "Gravity",
-        group: "Objects",
-        unit: "",
-        control: Control::Toggle,
-        default: 1.0,
-        help: "Let the objects fall, float, bob and drift on the waves (G key); off, they stay where they are put.",
-    },
-    ParamSpec {
-        id: ParamId::SimSize,
-        name: "sim_size",
-        label: "Grid resolution",
-        group: "Simulation",
-        unit: "cells",
-        control: Control::Choice { values: &[128.0, 256.0, 512.0, 1024.0], names: &[] },
-        default: 256.0,
-        help: "Cells per side of the simulation grid; a change resamples the water, it does not reset it.",
-    },
-    ParamSpec {
-        id: ParamId::Paused,
-        name: "paused",
-        label: "Paused",
-        group: "Simulation",
-        unit: "",
-        control: Control::Toggle,
-        default: 0.0,
-        help: "Freeze the water (space bar).",
-    },
-    ParamSpec {
-        id: ParamId::DebugView,
-        name: "debug_view",
-        label: "Debug view",
-        group: "Debug",
-        unit: "",
-        control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0],
-            names: &["off", "height", "normals", "velocity", "caustics", "reflectance", "spectrum"],
-        },
-        default: 0.0,
-        help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map; or the water's Fresnel reflectance as grey (black 0, white 1); or the ambient waves' spectrum (amplitude per wavevector, log scale, k = 0 in the middle, rings at the 0.9 m and 0.2 m wavelengths).",
-    },
-    ParamSpec {
-        id: ParamId::DebugInset,
-        name: "debug_inset",
-        label: "Debug view as inset",
-        group: "Debug",
-        unit: "",
-        control: Control::Toggle,
-        default: 1.0,
-        help: "Show the debug view in a corner of the scene (on) or over all of it (off).",
-    },
-    ParamSpec {
-        id: ParamId::Quality,
-        name: "quality",
-        label: "Resolution",
-        group: "Display",
-        unit: "",
-        control: Control::Choice {
-            values: &[0.0, 0.5, 0.6, 0.7, 0.85, 1.0],
-            names: &["auto", "50%", "60%", "70%", "85%", "100%"],
-        },
-        default: 0.0,
-        help: "Scale of the scene's resolution: fixed, or auto (lowered in steps down to 50% while frames take longer than the frame budget, raised again when there is headroom).",
-    },
-    ParamSpec {
-        id: ParamId::FrameBudget,
-        name: "frame_budget",
-        label: "Frame budget",
-        group: "Display",
-        unit: "ms",
-        control: slider(10.0, 200.0, 1.0),
-        default: 33.0,
-        help: "Time a frame should take at most; with automatic resolution, slower frames lower the resolution.",
-    },
-    ParamSpec {
-        id: ParamId::RenderMode,
-        name: "render_mode",
-        label: "Water rendering",
-        group: "Flat water",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["raytraced", "flat", "split"] },
-        default: 0.0,
-        help: "How the water surface is drawn. raytraced: every pixel of the surface traces its reflected and refracted rays through the pool. flat: the games' technique (seeds 000, 002, 003): the scene is drawn twice more into textures, mirrored in the water plane (reflection) and clipped under it (refraction), and a flat plane blends the two by Fresnel, wobbled by a distortion instead of bent by the waves. It is an above-water technique: under water the ray tracer draws. split: flat on the left, ray-traced on the right of a divider you drag.",
-    },
-    ParamSpec {
-        id: ParamId::Split,
-        name: "split",
-        label: "Divider",
-        group: "Flat water",
-        unit: "",
-        control: slider(0.0, 1.0, 0.01),
-        default: 0.5,
-        help: "Where the divider stands, as a fraction of the width from the left: flat water to its left, ray-traced to its right. Drag the divider on the canvas to move it.",
-    },
-    ParamSpec {
-        id: ParamId::FlatDistortion,
-        name: "flat_distortion",
-        label: "Distortion",
-        group: "Flat water",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["dudv", "ripples"] },
-        default: 0.0,
-        help: "What wobbles the flat water's reflection and refraction: dudv, a tiling distortion map scrolled over time (seed 000's moveFactor; clicks make no ripples in it), or ripples, the simulation's own slopes (the same waves as the ray tracer, with faked optics).",
-    },
-    ParamSpec {
-        id: ParamId::FlatStrength,
-        name: "flat_strength",
-        label: "Distortion strength",
-        group: "Flat water",
-        unit: "",
-        control: slider(0.0, 0.08, 0.002),
-        default: 0.02,
-        help: "How far the reflection and refraction textures are shifted by the distortion, as a fraction of the screen (seed 000's waveStrength). It does not grow with the distance to what is seen, as real refraction does: a rim far above the water wobbles as much as the tiles under it.",
-    },
-    ParamSpec {
-        id: ParamId::DudvSpeed,
-        name: "dudv_speed",
-        label: "Distortion speed",
-        group: "Flat water",
-        unit: "1/s",
-        control: slider(0.0, 0.2, 0.005),
-        default: 0.03,
-        help: "Tiles of the dudv map scrolled per simulated second (it stops when the water is paused); with the dudv distortion.",
-    },
-    ParamSpec {
-        id: ParamId::FlatResolution,
-        name: "flat_resolution",
-        label: "Texture resolution",
-        group: "Flat water",
-        unit: "",
-        control: Control::Choice { values: &[0.25, 0.5, 0.75, 1.0], names: &["25%", "50%", "75%", "100%"] },
-        default: 0.5,
-        help: "Size of the reflection and refraction textures against the scene's: smaller is cheaper and blurrier.",
-    },
-    ParamSpec {
-        id: ParamId::FlatCaustics,
-        name: "flat_caustics",
-        label: "Caustics",
-        group: "Flat water",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["off", "fake", "real"] },
-        default: 1.0,
-        help: "Light on the pool under flat water: off (a calm surface's), fake (seed 000: a highlight where the distortion's normal would send the sun straight down; no focusing, no pass) or real (the ray tracer's caustics map, one more pass).",
-    },
-    ParamSpec {
-        id: ParamId::FlatSoftEdge,
-        name: "flat_soft_edge",
-        label: "Soft edge",
-        group: "Flat water",
-        unit: "m",
-        control: slider(0.0, 0.3, 0.01),
-        default: 0.1,
-        help: "Water shallower than this (along the view) is distorted less (seed 002), hiding the seam where the flat plane meets the walls; 0 shows the seam.",
-    },
-];
-
-/// The label a choice parameter shows for `value` (its name, or the number with its unit).
-pub fn choice_label(spec: &ParamSpec, value: f32) -> String {
-    if let Control::Choice { values, names } = spec.control {
-        if let Some(i) = values.iter().position(|&v| v == value) {
-            if let Some(name) = names.get(i) {
-                return (*name).to_owned();
-            }
-        }
-    }
-    if spec.unit.is_empty() {
-        format!("{value}")
-    } else {
-        format!("{value} {}", spec.unit)
+    /// The parameter this one's control depends on, and the values (of its choices) that
+    /// show it.
+    pub fn shown_when(self) -> Option<(ParamId, Vec<f32>)> {
+        let &(_, on, names) = SHOWN_WHEN.iter().find(|(id, _, _)| *id == self)?;
+        let values = names.iter().map(|n| on.spec().parse(n).expect("SHOWN_WHEN names a choice")).collect();
+        Some((on, values))
     }
 }
 
 pub fn spec(id: ParamId) -> &'static ParamSpec {
-    &PARAMS[id as usize]
+    id.spec()
 }
 
-pub fn find(name: &str) -> Option<&'static ParamSpec> {
-    PARAMS.iter().find(|p| p.name == name)
+pub fn find(name: &str) -> Option<&'static Param> {
+    table().iter().find(|p| p.name == name)
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -745,7 +196,7 @@ impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ParamError::Unknown(name) => {
-                let names: Vec<&str> = PARAMS.iter().map(|p| p.name).collect();
+                let names: Vec<&str> = table().iter().map(|p| p.name).collect();
                 write!(f, "unknown parameter '{name}'; known: {}", names.join(", "))
             }
         }
@@ -763,7 +214,7 @@ pub struct SetOutcome {
     pub clamped: bool,
 }
 
-/// Current values of every parameter in [`PARAMS`].
+/// Current values of every parameter of the [`table`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Params {
     values: Vec<f32>,
@@ -771,7 +222,7 @@ pub struct Params {
 
 impl Default for Params {
     fn default() -> Self {
-        Self { values: PARAMS.iter().map(|p| p.default).collect() }
+        Self { values: table().iter().map(|p| p.default).collect() }
     }
 }
 
@@ -793,12 +244,12 @@ impl Params {
     }
 
     pub fn get_by_name(&self, name: &str) -> Result<f32, ParamError> {
-        find(name).map(|s| self.get(s.id)).ok_or_else(|| ParamError::Unknown(name.to_owned()))
+        find(name).map(|p| self.get(p.id)).ok_or_else(|| ParamError::Unknown(name.to_owned()))
     }
 
     pub fn set_by_name(&mut self, name: &str, value: f32) -> Result<SetOutcome, ParamError> {
-        let spec = find(name).ok_or_else(|| ParamError::Unknown(name.to_owned()))?;
-        Ok(self.set(spec.id, value))
+        let param = find(name).ok_or_else(|| ParamError::Unknown(name.to_owned()))?;
+        Ok(self.set(param.id, value))
     }
 
     pub fn reset(&mut self, id: ParamId) {
@@ -823,7 +274,7 @@ mod tests {
         assert_eq!(choice_label(view, 0.0), "off");
         assert_eq!(choice_label(view, 4.0), "caustics");
         // Every choice parameter names all of its values or none.
-        for p in PARAMS {
+        for p in table() {
             if let Control::Choice { values, names } = p.control {
                 assert!(names.is_empty() || names.len() == values.len(), "{}: names do not match values", p.name);
                 assert!(values.windows(2).all(|w| w[0] < w[1]), "{}: values not increasing", p.name);
@@ -853,15 +304,15 @@ mod tests {
 
     #[test]
     fn table_is_indexed_by_id_and_defaults_are_in_range() {
-        for (i, p) in PARAMS.iter().enumerate() {
+        for (i, p) in table().iter().enumerate() {
             assert_eq!(p.id as usize, i, "{} out of place", p.name);
             assert_eq!(p.sanitise(p.default), p.default, "{} default out of range", p.name);
             assert!(p.min() < p.max());
         }
-        let mut names: Vec<_> = PARAMS.iter().map(|p| p.name).collect();
+        let mut names: Vec<_> = table().iter().map(|p| p.name).collect();
         names.sort();
         names.dedup();
-        assert_eq!(names.len(), PARAMS.len(), "parameter names must be unique");
+        assert_eq!(names.len(), table().len(), "parameter names must be unique");
     }
 
     #[test]

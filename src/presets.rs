@@ -3,7 +3,7 @@
 //! attribute, `mount({ preset })` or the Preset select of the controls.
 
 use crate::camera::OrbitCamera;
-use crate::params::{Params, PARAMS};
+use crate::params::{table, Params};
 
 /// A named set of parameter values (by the parameter table's names) and a camera to start from.
 #[derive(Clone, Copy, Debug)]
@@ -149,7 +149,7 @@ impl Preset {
     /// Starts over from this preset: every parameter but the display's (resolution, frame
     /// budget) at its default, then the preset's values, and its view (or the default view).
     pub fn apply(&self, params: &mut Params, camera: &mut OrbitCamera) {
-        for p in PARAMS.iter().filter(|p| p.group != "Display") {
+        for p in table().iter().filter(|p| p.group != "Display") {
             params.reset(p.id);
         }
         for &(name, value) in self.values {

@@ -4,6 +4,7 @@
 //! as many as keep the water in real time, unless the steps themselves push the frame rate
 //! under its floor). Pure bookkeeping; the renderer and the simulation do the work.
 
+use crate::param_spec::{slider, Control, ParamSpec};
 use std::collections::VecDeque;
 
 /// Render scales (fraction of the target's width and height) the automatic quality steps
@@ -188,6 +189,31 @@ impl StepGovernor {
         }
     }
 }
+
+/// The scene's resolution and the frame budget the automatic one keeps. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "quality",
+        label: "Resolution",
+        group: "Display",
+        unit: "",
+        control: Control::Choice {
+            values: &[0.0, 0.5, 0.6, 0.7, 0.85, 1.0],
+            names: &["auto", "50%", "60%", "70%", "85%", "100%"],
+        },
+        default: 0.0,
+        help: "Scale of the scene's resolution: fixed, or auto (lowered in steps down to 50% while frames take longer than the frame budget, raised again when there is headroom).",
+    },
+    ParamSpec {
+        name: "frame_budget",
+        label: "Frame budget",
+        group: "Display",
+        unit: "ms",
+        control: slider(10.0, 200.0, 1.0),
+        default: 33.0,
+        help: "Time a frame should take at most; with automatic resolution, slower frames lower the resolution.",
+    },
+];
 
 #[cfg(test)]
 mod tests {

@@ -13,6 +13,7 @@ mod coupling;
 pub mod cpu;
 pub mod foam;
 mod gpu_engine;
+pub mod params;
 mod plan;
 mod random;
 

@@ -7,6 +7,7 @@
 //! θ the view direction's angle from the zenith, γ its angle to the sun. Each of Y, x, y is its
 //! zenith value times F(θ, γ) / F(0, θ_s), with coefficients linear in the turbidity T.
 
+use crate::param_spec::{slider, ParamSpec};
 use glam::Vec3;
 
 /// Haze of the air (Preetham's turbidity: 2 a clear day, 6 a hazy one).
@@ -178,6 +179,39 @@ impl Daylight {
         )
     }
 }
+
+/// Where the sun is. (The parameter table, `params::table`, lists them in this order.)
+pub const SUN_PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "sun_azimuth",
+        label: "Sun azimuth",
+        group: "Light",
+        unit: "°",
+        control: slider(-180.0, 180.0, 1.0),
+        default: 35.0,
+        help: "Compass direction of the sun around the pool.",
+    },
+    ParamSpec {
+        name: "sun_elevation",
+        label: "Sun elevation",
+        group: "Light",
+        unit: "°",
+        control: slider(10.0, 90.0, 1.0),
+        default: 55.0,
+        help: "Height of the sun above the horizon.",
+    },
+];
+
+/// The picture's exposure before the tone curve. (The parameter table, `params::table`, lists them in this order.)
+pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "exposure",
+    label: "Exposure",
+    group: "Light",
+    unit: "EV",
+    control: slider(-2.0, 2.0, 0.1),
+    default: 0.0,
+    help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve).",
+}];
 
 #[cfg(test)]
 mod tests {

@@ -12,7 +12,7 @@ use eframe::egui;
 
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
-use wavepool::params::{choice_label, Control, ParamId, ParamSpec, PARAMS};
+use wavepool::params::{choice_label, table, Control, Param, ParamId};
 use wavepool::presets::{Preset, PRESETS};
 use wavepool::render::flat::ModeCosts;
 use wavepool::render::flat::RenderMode;
@@ -183,14 +183,14 @@ impl Viewer {
                 self.demo.reset(&self.render_state.queue);
             }
             let mut groups: Vec<&str> = Vec::new();
-            for p in PARAMS {
+            for p in table() {
                 if !groups.contains(&p.group) {
                     groups.push(p.group);
                 }
             }
             for group in groups {
                 egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
-                    for spec in PARAMS.iter().filter(|p| p.group == group) {
+                    for spec in table().iter().filter(|p| p.group == group) {
                         // A model's own settings only while that model is chosen.
                         let shown = spec.id.shown_when().is_none_or(|(on, values)| {
                             values.contains(&self.demo.params.get(on))
@@ -211,7 +211,7 @@ impl Viewer {
                     self.demo.reset(&self.render_state.queue);
                 }
                 if ui.button("Defaults").on_hover_text("Every parameter back to its default").clicked() {
-                    for p in PARAMS {
+                    for p in table() {
                         self.demo.params.reset(p.id);
                     }
                 }
@@ -243,7 +243,7 @@ impl Viewer {
         });
     }
 
-    fn control(&mut self, ui: &mut egui::Ui, spec: &ParamSpec) {
+    fn control(&mut self, ui: &mut egui::Ui, spec: &Param) {
         let mut value = self.demo.params.get(spec.id);
         ui.horizontal(|ui| {
             let changed = match spec.control {

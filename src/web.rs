@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex};
 use wasm_bindgen::prelude::*;
 
 use crate::demo::{DemoOptions, Key, WaterDemo};
-use crate::params::{self, Control, ParamId, PARAMS};
+use crate::params::{self, table, Control, ParamId};
 use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
 use crate::sim::SimEngine;
@@ -109,7 +109,7 @@ fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
 /// another parameter, else null).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
-    PARAMS
+    table()
         .iter()
         .map(|p| {
             let o = js_sys::Object::new();
@@ -132,7 +132,7 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "help", p.help);
             let shown_when = p.id.shown_when().map_or(JsValue::NULL, |(on, values)| {
                 let w = js_sys::Object::new();
-                set(&w, "param", PARAMS[on as usize].name);
+                set(&w, "param", on.spec().name);
                 set(&w, "values", values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
                 JsValue::from(w)
             });

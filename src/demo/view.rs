@@ -15,7 +15,8 @@ use crate::sim;
 impl WaterDemo {
     /// Remakes the ambient waves if their parameters changed.
     pub(super) fn refresh_ambient(&mut self) {
-        let settings = AmbientSettings::from_params(&self.params);
+        let settings =
+            AmbientSettings::from_values(|name| self.params.get_by_name(name).expect("an ambient parameter"));
         if settings != self.ambient_settings {
             self.ambient = AmbientWaves::new(&settings);
             self.ambient_settings = settings;

@@ -6,6 +6,7 @@ use super::flat::{self, FlatCaustics};
 use super::meshes::{water_grid, Mesh};
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
+use crate::param_spec::{Control, ParamSpec};
 use crate::sim::HeightField;
 
 /// Caustics map: red = light, green = light with the sphere's shadow.
@@ -100,3 +101,14 @@ impl Renderer {
         self.caustics.mips.encode(encoder);
     }
 }
+
+/// Caustics on or off. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "caustics",
+    label: "Caustics",
+    group: "Light",
+    unit: "",
+    control: Control::Toggle,
+    default: 1.0,
+    help: "Light focused by the waves onto the floor, walls and sphere.",
+}];

@@ -3,6 +3,7 @@
 
 use super::{shaders, AmbientView, Features, Renderer};
 use crate::gpu::{FullscreenPass, FullscreenTarget};
+use crate::param_spec::{Control, ParamSpec};
 
 /// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,3 +81,28 @@ impl Renderer {
         })
     }
 }
+
+/// Which inner texture the debug view shows, and where. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "debug_view",
+        label: "Debug view",
+        group: "Debug",
+        unit: "",
+        control: Control::Choice {
+            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0],
+            names: &["off", "height", "normals", "velocity", "caustics", "reflectance", "spectrum"],
+        },
+        default: 0.0,
+        help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map; or the water's Fresnel reflectance as grey (black 0, white 1); or the ambient waves' spectrum (amplitude per wavevector, log scale, k = 0 in the middle, rings at the 0.9 m and 0.2 m wavelengths).",
+    },
+    ParamSpec {
+        name: "debug_inset",
+        label: "Debug view as inset",
+        group: "Debug",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "Show the debug view in a corner of the scene (on) or over all of it (off).",
+    },
+];

@@ -5,6 +5,7 @@
 use glam::Vec3;
 
 use super::meshes::push_triangle;
+use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
 
 /// How far the deck reaches from the pool's centre (m): past any frame the camera can show.
@@ -45,3 +46,16 @@ pub fn deck_ring() -> (Vec<[f32; 6]>, Vec<u32>) {
     }
     (vertices, indices)
 }
+
+/// Where the pool is: in the deck or the cut-away box. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "setting",
+        label: "Setting",
+        group: "Light",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0], names: &["deck", "cutaway"] },
+        default: 0.0,
+        help: "Where the pool is: sunk in a paved deck under the sky, or the classic's cut-away box, open at the near walls so you see the water's cross-section.",
+    },
+];

@@ -14,6 +14,7 @@ use glam::{Mat4, Vec4};
 use super::variants::{mesh_pipeline, MeshPipeline, PipelineTargets};
 use super::{Features, DEPTH_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::param_spec::{slider, Control, ParamSpec};
 use crate::sim::SplitMix64;
 
 /// Texels per side of the dUdV map.
@@ -316,6 +317,82 @@ impl FlatWater {
         self.divider.run_in_rect(encoder, target, &[], rect(DIVIDER_GRIP.0, DIVIDER_GRIP.1));
     }
 }
+
+/// Flat water (the games' technique) and the split view. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "render_mode",
+        label: "Water rendering",
+        group: "Flat water",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["raytraced", "flat", "split"] },
+        default: 0.0,
+        help: "How the water surface is drawn. raytraced: every pixel of the surface traces its reflected and refracted rays through the pool. flat: the games' technique (seeds 000, 002, 003): the scene is drawn twice more into textures, mirrored in the water plane (reflection) and clipped under it (refraction), and a flat plane blends the two by Fresnel, wobbled by a distortion instead of bent by the waves. It is an above-water technique: under water the ray tracer draws. split: flat on the left, ray-traced on the right of a divider you drag.",
+    },
+    ParamSpec {
+        name: "split",
+        label: "Divider",
+        group: "Flat water",
+        unit: "",
+        control: slider(0.0, 1.0, 0.01),
+        default: 0.5,
+        help: "Where the divider stands, as a fraction of the width from the left: flat water to its left, ray-traced to its right. Drag the divider on the canvas to move it.",
+    },
+    ParamSpec {
+        name: "flat_distortion",
+        label: "Distortion",
+        group: "Flat water",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0], names: &["dudv", "ripples"] },
+        default: 0.0,
+        help: "What wobbles the flat water's reflection and refraction: dudv, a tiling distortion map scrolled over time (seed 000's moveFactor; clicks make no ripples in it), or ripples, the simulation's own slopes (the same waves as the ray tracer, with faked optics).",
+    },
+    ParamSpec {
+        name: "flat_strength",
+        label: "Distortion strength",
+        group: "Flat water",
+        unit: "",
+        control: slider(0.0, 0.08, 0.002),
+        default: 0.02,
+        help: "How far the reflection and refraction textures are shifted by the distortion, as a fraction of the screen (seed 000's waveStrength). It does not grow with the distance to what is seen, as real refraction does: a rim far above the water wobbles as much as the tiles under it.",
+    },
+    ParamSpec {
+        name: "dudv_speed",
+        label: "Distortion speed",
+        group: "Flat water",
+        unit: "1/s",
+        control: slider(0.0, 0.2, 0.005),
+        default: 0.03,
+        help: "Tiles of the dudv map scrolled per simulated second (it stops when the water is paused); with the dudv distortion.",
+    },
+    ParamSpec {
+        name: "flat_resolution",
+        label: "Texture resolution",
+        group: "Flat water",
+        unit: "",
+        control: Control::Choice { values: &[0.25, 0.5, 0.75, 1.0], names: &["25%", "50%", "75%", "100%"] },
+        default: 0.5,
+        help: "Size of the reflection and refraction textures against the scene's: smaller is cheaper and blurrier.",
+    },
+    ParamSpec {
+        name: "flat_caustics",
+        label: "Caustics",
+        group: "Flat water",
+        unit: "",
+        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["off", "fake", "real"] },
+        default: 1.0,
+        help: "Light on the pool under flat water: off (a calm surface's), fake (seed 000: a highlight where the distortion's normal would send the sun straight down; no focusing, no pass) or real (the ray tracer's caustics map, one more pass).",
+    },
+    ParamSpec {
+        name: "flat_soft_edge",
+        label: "Soft edge",
+        group: "Flat water",
+        unit: "m",
+        control: slider(0.0, 0.3, 0.01),
+        default: 0.1,
+        help: "Water shallower than this (along the view) is distorted less (seed 002), hiding the seam where the flat plane meets the walls; 0 shows the seam.",
+    },
+];
 
 #[cfg(test)]
 mod tests {

@@ -1,10 +1,10 @@
 //! The renderer: caustics map, then one scene pass of sky, pool, sphere and the water
 //! surface (from above and from below) into any colour target.
 
-mod caustics;
+pub(crate) mod caustics;
 mod caustics_mips;
-mod debug_view;
-mod deck;
+pub(crate) mod debug_view;
+pub(crate) mod deck;
 pub mod flat;
 mod meshes;
 mod passes;

@@ -10,6 +10,8 @@
 //! then decaying as exp(−t/τ) and spreading a little (diffusion that keeps the total).
 //! Units: metres, seconds.
 
+use crate::param_spec::{slider, Control, ParamSpec};
+
 /// Gravity (m/s²).
 const G: f32 = 9.81;
 /// Downward acceleration of a crest beyond which it breaks and foams: a quarter of g (a
@@ -157,6 +159,28 @@ impl Foam {
         self.amount.iter_mut().for_each(|a| *a = 0.0);
     }
 }
+
+/// Foam on or off and how long it lasts. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "foam",
+        label: "Foam",
+        group: "Water",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "White water where crests fall faster than a quarter of g, where water runs up a wall, and where drops and bodies throw water about; it fades and spreads.",
+    },
+    ParamSpec {
+        name: "foam_decay",
+        label: "Foam lifetime",
+        group: "Water",
+        unit: "s",
+        control: slider(0.3, 5.0, 0.1),
+        default: 1.5,
+        help: "Time constant tau of the foam's fading: after tau seconds 37 % of it is left.",
+    },
+];
 
 #[cfg(test)]
 mod tests {

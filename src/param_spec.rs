@@ -1,0 +1,109 @@
+//! What a user-facing parameter is: its machine name, label, group, unit, control (slider,
+//! toggle or choice), default and help. Each feature declares its own parameters with these
+//! (next to the constants their ranges come from); `params` assembles the one table the page,
+//! the viewer, the URL, the command line and the tests read. Values are `f32`; toggles 0 or 1.
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Control {
+    Slider {
+        min: f32,
+        max: f32,
+        step: f32,
+    },
+    Toggle,
+    /// One of a few values, in increasing order; `names` (empty, or one per value) are what
+    /// controls show instead of the numbers.
+    Choice {
+        values: &'static [f32],
+        names: &'static [&'static str],
+    },
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct ParamSpec {
+    /// Stable machine name used in URLs, `set(name, value)` and the CLI.
+    pub name: &'static str,
+    pub label: &'static str,
+    pub group: &'static str,
+    /// Unit symbol shown after the value ("m/s", "1/s", "m", "°"), empty when unitless.
+    pub unit: &'static str,
+    pub control: Control,
+    pub default: f32,
+    pub help: &'static str,
+}
+
+impl ParamSpec {
+    pub fn min(&self) -> f32 {
+        match self.control {
+            Control::Slider { min, .. } => min,
+            Control::Toggle => 0.0,
+            Control::Choice { values, .. } => values[0],
+        }
+    }
+
+    pub fn max(&self) -> f32 {
+        match self.control {
+            Control::Slider { max, .. } => max,
+            Control::Toggle => 1.0,
+            Control::Choice { values, .. } => values[values.len() - 1],
+        }
+    }
+
+    /// A value as a user writes it (command line, URL): a number, one of a choice's names
+    /// (any case), or on/off/true/false for a toggle. `None` if it is none of those.
+    pub fn parse(&self, text: &str) -> Option<f32> {
+        let text = text.trim();
+        if let Control::Choice { values, names } = self.control {
+            if let Some(i) = names.iter().position(|n| n.eq_ignore_ascii_case(text)) {
+                return Some(values[i]);
+            }
+        }
+        match text.to_ascii_lowercase().as_str() {
+            "on" | "true" => Some(1.0),
+            "off" | "false" => Some(0.0),
+            _ => text.parse().ok(),
+        }
+    }
+
+    /// The nearest valid value: clamped to the range; toggles snap to 0 or 1, choices to the
+    /// nearest value; NaN gives the default.
+    pub fn sanitise(&self, value: f32) -> f32 {
+        if value.is_nan() {
+            return self.default;
+        }
+        match self.control {
+            Control::Slider { min, max, .. } => value.clamp(min, max),
+            Control::Toggle => {
+                if value >= 0.5 {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
+            Control::Choice { values, .. } => {
+                values.iter().copied().min_by(|a, b| (a - value).abs().total_cmp(&(b - value).abs())).unwrap_or(value)
+            }
+        }
+    }
+}
+
+/// A slider from `min` to `max` in steps of `step`.
+pub const fn slider(min: f32, max: f32, step: f32) -> Control {
+    Control::Slider { min, max, step }
+}
+
+/// The label a choice parameter shows for `value` (its name, or the number with its unit).
+pub fn choice_label(spec: &ParamSpec, value: f32) -> String {
+    if let Control::Choice { values, names } = spec.control {
+        if let Some(i) = values.iter().position(|&v| v == value) {
+            if let Some(name) = names.get(i) {
+                return (*name).to_owned();
+            }
+        }
+    }
+    if spec.unit.is_empty() {
+        format!("{value}")
+    } else {
+        format!("{value} {}", spec.unit)
+    }
+}
