@@ -5,7 +5,7 @@
 //! where the floating bodies feel it; the simulation itself never sees it. Its time is
 //! simulated time, so pausing stops it and every frame rate gives the same surface.
 //!
-//! One set of formulas for both sides: the shader (`ambient_at` in scene.wgsl) evaluates the
+//! One set of formulas for both sides: the shader (`ambient_at` in scene_surface.wgsl) evaluates the
 //! waves from [`AmbientWaves::uniform`] (the FFT ocean from a map of its surface), the bodies
 //! and the tests from [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
 //! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
@@ -428,7 +428,7 @@ pub const MAX_STEEPNESS: f32 = 0.9;
 /// The Gerstner surface above the point (x, z): Newton's method finds the rest point x₀ that
 /// the waves carry to (x, z) (x₀ − D(x₀) = x, with D(x₀) = Σ b K sin θ, b = c a / k), then the
 /// height Σ a cos θ there and the slopes J⁻¹ ∇₀h, J = I − Σ b cos θ K Kᵀ the Jacobian of the
-/// motion (symmetric). Same steps as `gerstner_at` in scene.wgsl.
+/// motion (symmetric). Same steps as `gerstner_at` in scene_surface.wgsl.
 fn gerstner(waves: &[Wave], phases: &[f32], c: f32, x: f32, z: f32) -> [f32; 3] {
     // Per rest point: the displacement, the Jacobian (xx, xz, zz), height and gradient at rest.
     let at = |x0: f32, z0: f32| {

@@ -6,7 +6,15 @@ use super::variants::Features;
 use crate::gpu;
 
 pub const COMMON: &str = include_str!("../../shaders/common.wgsl");
-pub const SCENE: &str = include_str!("../../shaders/scene.wgsl");
+/// The scene's shared shading, in parts of one concept each (see `shaders/scene.wgsl`).
+pub const SCENE: [&str; 6] = [
+    include_str!("../../shaders/scene.wgsl"),
+    include_str!("../../shaders/scene_surface.wgsl"),
+    include_str!("../../shaders/scene_light.wgsl"),
+    include_str!("../../shaders/scene_bodies.wgsl"),
+    include_str!("../../shaders/scene_optics.wgsl"),
+    include_str!("../../shaders/scene_trace.wgsl"),
+];
 pub const SKY: &str = include_str!("../../shaders/sky.wgsl");
 pub const POOL: &str = include_str!("../../shaders/pool.wgsl");
 pub const SPHERE: &str = include_str!("../../shaders/sphere.wgsl");
@@ -36,7 +44,7 @@ pub fn scene_prelude(features: Features) -> String {
         super::caustics_mips::CausticsMips::wgsl_constants(),
         gpu::wgsl::MATH.to_owned(),
         COMMON.to_owned(),
-        SCENE.to_owned(),
+        SCENE.join("\n"),
     ]
     .join("\n")
 }

@@ -1,0 +1,155 @@
+// Light under the water: where sunlight entered the surface, the caustics map's light there,
+// the rim's and the bodies' shadows, the pool's tiles lit by it.
+
+// Where the flat-surface refracted sunbeam through p entered the water (xz, m): the
+// caustics map is indexed by this point.
+fn light_entry(p: vec3<f32>) -> vec2<f32> {
+    let r = scene.refracted_sun.xyz;
+    return p.xz - r.xz * (p.y / r.y);
+}
+
+fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
+    let m = entry / half_width();
+    return vec2<f32>(m.x * 0.5 + 0.5, 0.5 - m.y * 0.5);
+}
+
+// The caustics map at uv over the pixel's footprint on the floor (caustics_lod: at least
+// CAUSTICS_MIN_LOD, where lines focused into one texel are blended about two wide): one
+// trilinear fetch from its mip chain (render/caustics_mips.rs).
+fn caustics_at(uv: vec2<f32>) -> vec4<f32> {
+    return textureSampleLevel(caustics_map, clamp_sampler, uv, caustics_lod);
+}
+
+// 1 when the straight ray from the surface point p towards the sun clears the pool rim.
+fn rim_visibility(p: vec3<f32>) -> f32 {
+    let s = scene.sun.xyz;
+    let w = half_width();
+    let tx = (sign(s.x) * w - p.x) / select(s.x, 1.0e-6, abs(s.x) < 1.0e-6);
+    let tz = (sign(s.z) * w - p.z) / select(s.z, 1.0e-6, abs(s.z) < 1.0e-6);
+    let t = max(min(abs(tx), abs(tz)), 0.0);
+    let height = p.y + t * s.y;
+    return smoothstep(rim() - 0.02, rim() + 0.02, height);
+}
+
+
+// Sunlight reaching an underwater point p, relative to a flat calm surface (1 = calm).
+// with_sphere_shadow: whether the objects' shadows are included (not for the objects themselves).
+fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
+    let entry = light_entry(p);
+    let inside = all(abs(entry) <= vec2<f32>(half_width()));
+    if (!inside) {
+        return 0.0;
+    }
+    if (HAS_CAUSTICS) {
+        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
+        return select(c.r, c.g, with_sphere_shadow);
+    }
+    // Caustics off: a calm surface, with the same rim and sphere shadows.
+    let surface = vec3<f32>(entry.x, 0.0, entry.y);
+    var light = rim_visibility(surface);
+    if (FLAT_CAUSTICS) {
+        // Seed 000's fake caustics: follow the calm refracted sunbeam back up through the
+        // flat water's normal there; where it leaves towards the sun the floor is bright, where
+        // the normal tilts it away, darker. No focusing: a highlight pattern, not caustics.
+        let n = flat_normal(entry);
+        let to_source = refract(-scene.refracted_sun.xyz, -n, IOR_WATER / IOR_AIR);
+        light *= 0.6 + 0.9 * pow(max(dot(to_source, scene.sun.xyz), 0.0), 1500.0);
+    }
+    if (with_sphere_shadow && (HAS_SPHERE || HAS_DUCK)) {
+        let r = scene.refracted_sun.xyz;
+        light *= objects_visibility(surface, r, distance(surface, p));
+        light *= objects_visibility(surface, scene.sun.xyz, 10.0);
+    }
+    return light;
+}
+
+// Underwater light per colour channel. With dispersion the caustics map holds each channel's
+// own light (drawn with its own index of refraction, shadows included) and green's without
+// the objects' shadows in alpha; without, every channel has underwater_light's.
+fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
+    if (HAS_DISPERSION && HAS_CAUSTICS) {
+        let entry = light_entry(p);
+        if (!all(abs(entry) <= vec2<f32>(half_width()))) {
+            return vec3<f32>(0.0);
+        }
+        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
+        return select(vec3<f32>(c.a), c.rgb, with_sphere_shadow);
+    }
+    return vec3<f32>(underwater_light(p, with_sphere_shadow));
+}
+
+// Analytic ambient occlusion of a sphere seen from a point with normal n:
+// the sphere's projected solid angle, cos(theta) * (r / d)^2.
+fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let r = scene.sphere.w;
+    if (!HAS_SPHERE || r <= 0.0) {
+        return 0.0;
+    }
+    let to_centre = scene.sphere.xyz - p;
+    let d2 = dot(to_centre, to_centre);
+    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
+    return clamp(cos_t * r * r / d2, 0.0, 1.0);
+}
+
+// Inward normal of the pool face nearest to p (floor or one of the four walls).
+// Written with select rather than branches: it runs per pixel for two rays.
+fn pool_normal(p: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let dx = w - abs(p.x);
+    let dz = w - abs(p.z);
+    let dy = p.y + depth();
+    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
+    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
+}
+
+// Texture coordinates (m) of the tiles at p on the face with inward normal n.
+fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
+    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
+    return select(wall, p.xz, abs(n.y) > 0.5);
+}
+
+// Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
+// albedo, before any water attenuation between p and the viewer. Under the rest level the
+// sun arrives refracted, through the caustics; above it, directly.
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
+    if (HAS_DISPERSION && p.y < 0.0) {
+        // Each colour through its own caustics.
+        let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
+        let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
+        return albedo * (ambient + direct_rgb * sun_light());
+    }
+    var direct: f32;
+    if (p.y < 0.0) {
+        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
+    } else {
+        direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
+    }
+    let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
+    return albedo * (ambient + direct * sun_light());
+}
+
+// Distance (m) along a ray from inside the pool box to where it leaves it (the tile it
+// would hit, or the opening above the rim).
+fn pool_exit_distance(origin: vec3<f32>, dir: vec3<f32>) -> f32 {
+    let w = half_width();
+    let box = intersect_box(origin, dir, vec3<f32>(-w, -depth(), -w), vec3<f32>(w, rim(), w));
+    return max(box.y, 0.0);
+}
+
+// Mip level for the tiles seen at `hit` through this pixel, from how fast the tile
+// coordinates change across the screen. Call in uniform control flow (it uses derivatives).
+fn tile_lod(hit: vec3<f32>) -> f32 {
+    let uv = tile_uv(hit, pool_normal(hit));
+    let footprint = max(length(dpdx(uv)), length(dpdy(uv))) * f32(textureDimensions(tile_texture).x);
+    return clamp(log2(max(footprint, 1.0)), 0.0, 12.0);
+}
+
+// pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod.
+fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
+    // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
+    let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
+    caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
+    let n = pool_normal(p);
+    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
+    return pool_colour(p, n, albedo);
+}
