@@ -218,6 +218,42 @@ pub struct WebDemo {
     mode_costs: ModeCosts,
 }
 
+/// The browser's adapter for `surface` and a device on it (with timestamp queries where the
+/// browser measures GPU time), or a message a student can act on.
+async fn open_device(
+    instance: &wgpu::Instance,
+    surface: &wgpu::Surface<'_>,
+    backend: &str,
+) -> Result<(wgpu::Adapter, wgpu::Device, wgpu::Queue), JsError> {
+    let adapter = instance
+        .request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            compatible_surface: Some(surface),
+            ..Default::default()
+        })
+        .await
+        .map_err(|e| {
+            warn(&format!("wavepool: {backend} adapter request failed: {e}"));
+            JsError::new(match backend {
+                "webgpu" => {
+                    "the browser gave no WebGPU adapter (WebGPU may be turned off, or not offered for this GPU)"
+                }
+                _ => "the browser gave no WebGL2 context (graphics acceleration may be turned off)",
+            })
+        })?;
+    let (device, queue) = adapter
+        .request_device(&wgpu::DeviceDescriptor {
+            label: Some("wavepool"),
+            // GPU time per stage where the browser measures it (WebGPU's timestamp-query).
+            required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
+            required_limits: wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
+            ..Default::default()
+        })
+        .await
+        .map_err(|e| JsError::new(&format!("could not open the {backend} device ({e})")))?;
+    Ok((adapter, device, queue))
+}
+
 #[wasm_bindgen]
 impl WebDemo {
     /// Opens `backend` ("webgpu" or "webgl2") on `canvas` and builds the scene. Fails with a
@@ -245,32 +281,7 @@ impl WebDemo {
         let surface = instance
             .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
             .map_err(|e| JsError::new(&format!("the canvas refused a {backend} context ({e})")))?;
-        let adapter = instance
-            .request_adapter(&wgpu::RequestAdapterOptions {
-                power_preference: wgpu::PowerPreference::HighPerformance,
-                compatible_surface: Some(&surface),
-                ..Default::default()
-            })
-            .await
-            .map_err(|e| {
-                warn(&format!("wavepool: {backend} adapter request failed: {e}"));
-                JsError::new(match backend {
-                    "webgpu" => {
-                        "the browser gave no WebGPU adapter (WebGPU may be turned off, or not offered for this GPU)"
-                    }
-                    _ => "the browser gave no WebGL2 context (graphics acceleration may be turned off)",
-                })
-            })?;
-        let (device, queue) = adapter
-            .request_device(&wgpu::DeviceDescriptor {
-                label: Some("wavepool"),
-                // GPU time per stage where the browser measures it (WebGPU's timestamp-query).
-                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
-                required_limits: wgpu::Limits::downlevel_webgl2_defaults().using_resolution(adapter.limits()),
-                ..Default::default()
-            })
-            .await
-            .map_err(|e| JsError::new(&format!("could not open the {backend} device ({e})")))?;
+        let (adapter, device, queue) = open_device(&instance, &surface, backend).await?;
         let lost = Arc::new(Mutex::new(None));
         let flag = lost.clone();
         device.set_device_lost_callback(move |reason, message| {

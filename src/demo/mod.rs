@@ -199,6 +199,46 @@ impl WaterDemo {
         self.water.level()
     }
 
+    /// How many fixed steps this frame takes after `frame_time` (s) of wall time: none while
+    /// paused, at most what the step governor allows.
+    fn take_steps(&mut self, frame_time: f32) -> u32 {
+        self.step_governor.observe(frame_time);
+        self.clock.max_steps = self.step_governor.cap();
+        let steps = if self.params.flag(ParamId::Paused) {
+            self.clock.advance(0.0);
+            0
+        } else {
+            self.clock.advance(frame_time)
+        };
+        self.step_governor.took(steps);
+        self.steps_taken += steps as u64;
+        steps
+    }
+
+    /// The FFT ocean's maps for this frame: its passes on the GPU (recorded into `encoder`), or
+    /// its surface summed on the CPU and uploaded.
+    fn encode_ocean(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder) {
+        if let Some(ocean) = &self.ambient.ocean {
+            let t = self.sim_time();
+            if self.ocean_on_gpu {
+                let size = ocean.size as u32;
+                if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
+                    let made = GpuOcean::new(device, size);
+                    self.renderer.use_ambient_views(device, &self.water, [made.surface(), made.displacement()]);
+                    self.gpu_ocean = Some(made);
+                }
+                if let Some(gpu_ocean) = &mut self.gpu_ocean {
+                    gpu_ocean.encode(queue, encoder, ocean, t);
+                }
+            } else {
+                let surface = ocean.surface(t);
+                let displacement = (ocean.choppiness > 0.0).then(|| ocean.displacement(t));
+                let maps = [Some(&surface[..]), displacement.as_deref()];
+                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, maps);
+            }
+        }
+    }
+
     /// Simulates a frame (submitted at once, in a command buffer of its own) and records its
     /// drawing into `encoder`; `mark` is called at each [`Stage`] boundary (for timestamps;
     /// the first two in the simulation's encoder). Writes uniform buffers, so submit before
@@ -221,16 +261,7 @@ impl WaterDemo {
         }
         self.refresh_ambient();
         self.choose_render_scale(frame_time);
-        self.step_governor.observe(frame_time);
-        self.clock.max_steps = self.step_governor.cap();
-        let steps = if self.params.flag(ParamId::Paused) {
-            self.clock.advance(0.0);
-            0
-        } else {
-            self.clock.advance(frame_time)
-        };
-        self.step_governor.took(steps);
-        self.steps_taken += steps as u64;
+        let steps = self.take_steps(frame_time);
         let pushes = self.step_bodies(steps);
         // The simulation goes in a submission of its own, ahead of the drawing: the objects'
         // water samples and the water statistics can then be mapped as soon as the water is
@@ -266,25 +297,7 @@ impl WaterDemo {
             self.renderer.upload_spectrum(queue, &self.ambient.spectrum_image());
             self.spectrum_shown = true;
         }
-        if let Some(ocean) = &self.ambient.ocean {
-            let t = self.sim_time();
-            if self.ocean_on_gpu {
-                let size = ocean.size as u32;
-                if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
-                    let made = GpuOcean::new(device, size);
-                    self.renderer.use_ambient_views(device, &self.water, [made.surface(), made.displacement()]);
-                    self.gpu_ocean = Some(made);
-                }
-                if let Some(gpu_ocean) = &mut self.gpu_ocean {
-                    gpu_ocean.encode(queue, encoder, ocean, t);
-                }
-            } else {
-                let surface = ocean.surface(t);
-                let displacement = (ocean.choppiness > 0.0).then(|| ocean.displacement(t));
-                let maps = [Some(&surface[..]), displacement.as_deref()];
-                self.renderer.upload_ambient(device, queue, &self.water, ocean.size as u32, maps);
-            }
-        }
+        self.encode_ocean(device, queue, encoder);
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(device, encoder, &view, &self.water);
         mark(encoder, Stage::AfterCaustics);

@@ -236,47 +236,7 @@ impl ScenePipelines {
     pub fn new(device: &wgpu::Device, features: Features, targets: &PipelineTargets<'_>) -> Self {
         let prelude = shaders::scene_prelude(features);
         let module = |label, part| gpu::shader(device, label, &[&prelude, part]);
-        let additive = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
-        // CAUSTICS_CHANNEL: the colour whose index of refraction a draw uses (with dispersion).
-        let channels: &[(i32, wgpu::ColorWrites)] = if features.dispersion {
-            &[
-                (0, wgpu::ColorWrites::RED),
-                (1, wgpu::ColorWrites::GREEN.union(wgpu::ColorWrites::ALPHA)),
-                (2, wgpu::ColorWrites::BLUE),
-            ]
-        } else {
-            &[(1, wgpu::ColorWrites::ALL)]
-        };
-        let caustics = channels
-            .iter()
-            .map(|&(channel, write_mask)| {
-                let channel_constant = format!("const CAUSTICS_CHANNEL: i32 = {channel};\n");
-                let caustics_module =
-                    gpu::shader(device, "caustics", &[&channel_constant, &prelude, shaders::CAUSTICS]);
-                mesh_pipeline(
-                    device,
-                    MeshPipeline {
-                        label: "caustics",
-                        module: &caustics_module,
-                        vertex_entry: "vs_caustics",
-                        fragment_entry: "fs_caustics",
-                        layouts: &[targets.water_layout],
-                        attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-                        stride: 8,
-                        cull: None,
-                        front_face: wgpu::FrontFace::Ccw,
-                        format: targets.caustics_format,
-                        blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
-                        write_mask,
-                        depth: false,
-                    },
-                )
-            })
-            .collect();
+        let caustics = caustics_pipelines(device, features, targets, &prelude);
         let layouts = [targets.water_layout, targets.textures_layout];
         // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
         let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
@@ -352,6 +312,56 @@ impl ScenePipelines {
             ),
         }
     }
+}
+
+/// The caustics map's pipelines for `features`: one, or with dispersion one per colour channel
+/// (each refracting by its own index), adding their light into the map.
+fn caustics_pipelines(
+    device: &wgpu::Device,
+    features: Features,
+    targets: &PipelineTargets<'_>,
+    prelude: &str,
+) -> Vec<wgpu::RenderPipeline> {
+    let additive = wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::One,
+        operation: wgpu::BlendOperation::Add,
+    };
+    // CAUSTICS_CHANNEL: the colour whose index of refraction a draw uses (with dispersion).
+    let channels: &[(i32, wgpu::ColorWrites)] = if features.dispersion {
+        &[
+            (0, wgpu::ColorWrites::RED),
+            (1, wgpu::ColorWrites::GREEN.union(wgpu::ColorWrites::ALPHA)),
+            (2, wgpu::ColorWrites::BLUE),
+        ]
+    } else {
+        &[(1, wgpu::ColorWrites::ALL)]
+    };
+    channels
+        .iter()
+        .map(|&(channel, write_mask)| {
+            let channel_constant = format!("const CAUSTICS_CHANNEL: i32 = {channel};\n");
+            let caustics_module = gpu::shader(device, "caustics", &[&channel_constant, prelude, shaders::CAUSTICS]);
+            mesh_pipeline(
+                device,
+                MeshPipeline {
+                    label: "caustics",
+                    module: &caustics_module,
+                    vertex_entry: "vs_caustics",
+                    fragment_entry: "fs_caustics",
+                    layouts: &[targets.water_layout],
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+                    stride: 8,
+                    cull: None,
+                    front_face: wgpu::FrontFace::Ccw,
+                    format: targets.caustics_format,
+                    blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
+                    write_mask,
+                    depth: false,
+                },
+            )
+        })
+        .collect()
 }
 
 pub struct MeshPipeline<'a> {
