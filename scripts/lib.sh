@@ -105,6 +105,8 @@ build_web() {
     # The same page as one file that opens from disk and in sandboxed frames.
     command -v python3 >/dev/null 2>&1 || ensure_apt_packages python3
     python3 scripts/standalone.py dist || return 1
-    local wasm=dist/wavepool_bg.wasm js=dist/wavepool.js
-    echo "    wasm $(stat -c %s "$wasm") bytes ($(gzip -9c "$wasm" | wc -c) gzip), JS $(cat "$js" dist/embed.js | wc -c) bytes ($(cat "$js" dist/embed.js | gzip -9c | wc -c) gzip)"
+    local wasm=dist/wavepool_bg.wasm js
+    js=$(ls dist/*.js)
+    # shellcheck disable=SC2086
+    echo "    wasm $(stat -c %s "$wasm") bytes ($(gzip -9c "$wasm" | wc -c) gzip), JS $(cat $js | wc -c) bytes ($(cat $js | gzip -9c | wc -c) gzip)"
 }

@@ -6,7 +6,8 @@ Everything Trunk built goes inline: the page's stylesheet as a <style>, and one 
 holding the wasm module (gzip, then base 85 in an alphabet that needs no escaping in a JS
 string or a <script>: 5 characters per 4 bytes instead of base64's 5⅓; the browser gunzips it
 with DecompressionStream and instantiates it asynchronously), wasm-bindgen's JS (its exports turned into a closure's return
-value), our own modules that embed.js imports (likewise), embed.js (which sees WAVEPOOL_INLINE
+value), our own modules that embed.js imports, directly or through each other (each a closure
+whose value holds its exports, after the modules it imports), embed.js (which sees WAVEPOOL_INLINE
 and uses the inline wasm and a constructed stylesheet instead of the files next to it) and
 index.html's own page script.
 
@@ -62,13 +63,60 @@ def core_as_closure(bindgen_js):
     return f"(() => {{\n{body}\nreturn {{ init: __wbg_init, {names} }};\n}})()"
 
 
+IMPORT_LINE = re.compile(r'^import (?:(\w+)(?:, )?)?(?:\{ ([\w, ]+) \})? from "\./([\w-]+\.js)";\n', re.M)
+
+
+def without_imports(js, name):
+    """`js` with each import line turned into names taken from the module's closure (the core's
+    from WAVEPOOL_CORE), and the modules it imports."""
+    imported = []
+
+    def take(match):
+        default, names, module = match.groups()
+        parts = ([f"init: {default}"] if default else []) + (names.split(", ") if names else [])
+        if default and module != "wavepool.js":
+            fail(f"{name} imports a default export from {module}; only wavepool.js has one")
+        if module != "wavepool.js":
+            imported.append(module)
+        source = "WAVEPOOL_CORE" if module == "wavepool.js" else closure_name(module)
+        return f"const {{ {', '.join(parts)} }} = {source};\n"
+
+    return IMPORT_LINE.sub(take, js), imported
+
+
+def closure_name(module):
+    return "WAVEPOOL_" + re.sub(r"\W", "_", module[: -len(".js")]).upper()
+
+
 def module_as_closure(js, name):
-    """A small ES module of ours (no imports) as a closure returning its exports: `const { a, b } = (() => ...)();`."""
+    """One of our ES modules as a closure returning its exports: `const WAVEPOOL_X = (() => ...)();`."""
     names = re.findall(r"^export (?:const|let|function|async function|class) (\w+)", js, flags=re.M)
     body = re.sub(r"^export ", "", js, flags=re.M)
     if not names or re.search(r"^(import|export) ", body, flags=re.M):
-        fail(f"{name} no longer has the shape this script expects (exports, no imports)")
-    return f"const {{ {', '.join(names)} }} = (() => {{\n{body}\nreturn {{ {', '.join(names)} }};\n}})();"
+        fail(f"{name} no longer has the shape this script expects (exports, imports of ./x.js)")
+    return f"const {closure_name(name)} = (() => {{\n{body}\nreturn {{ {', '.join(names)} }};\n}})();"
+
+
+def own_modules_in_order(read, entry):
+    """Our modules reachable from `entry`'s imports, each after those it imports, as closures;
+    and `entry` itself with its imports taken from them."""
+    done, closures = set(), []
+
+    def visit(name, path):
+        if name in path:
+            fail(f"the modules import each other in a cycle: {' -> '.join([*path, name])}")
+        if name in done:
+            return
+        js, imports = without_imports(read(name), name)
+        for module in imports:
+            visit(module, [*path, name])
+        done.add(name)
+        closures.append(module_as_closure(js, name))
+
+    entry_js, imports = without_imports(read(entry), entry)
+    for module in imports:
+        visit(module, [entry])
+    return closures, re.sub(r"^export ", "", entry_js, flags=re.M)
 
 
 def main():
@@ -79,18 +127,9 @@ def main():
     wasm = (dist / "wavepool_bg.wasm").read_bytes()
     page = read("index.html")
 
-    embed = read("embed.js")
-    import_line = re.compile(r'^import init, \{ ([\w, ]+) \} from "\./wavepool\.js";$', re.M)
-    if not import_line.search(embed):
-        fail("embed.js no longer imports wavepool.js the way this script expects")
-    embed = import_line.sub(r"const { init, \1 } = WAVEPOOL_CORE;", embed)
-    # Our own small modules (context-budget.js, fresnel-plot.js): each becomes a closure ahead
-    # of embed.js, and its import line goes.
-    own_import = re.compile(r'^import \{ [\w, ]+ \} from "\./([\w-]+\.js)";\n', re.M)
-    own_modules = own_import.findall(embed)
-    if "context-budget.js" not in own_modules:
-        fail("embed.js no longer imports its own modules the way this script expects")
-    embed = own_import.sub("", embed)
+    own_modules, embed = own_modules_in_order(read, "embed.js")
+    if len(own_modules) < 3 or "WAVEPOOL_CORE" not in embed:
+        fail("embed.js no longer imports the core and its own modules the way this script expects")
 
     # index.html: its page script (minus the import, mount is in the same module now), its
     # body, its title; the stylesheet and Trunk's script tags are replaced by inline ones.
@@ -112,7 +151,7 @@ def main():
         [
             inline,
             "const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";",
-            *[module_as_closure(read(name), name) for name in own_modules],
+            *own_modules,
             embed,
             page_script,
         ]

@@ -1,0 +1,260 @@
+// The controls drawer under the pool (one control per parameter, grouped, with the presets
+// row, the Fresnel plot and the render modes' costs) and the overlay's play and fullscreen
+// buttons: methods of the demo (demo.js).
+
+import { fresnelCurve, presetTable } from "./wavepool.js";
+import { FresnelPlot } from "./fresnel-plot.js";
+import { formatValue, warn } from "./options.js";
+
+/** Below this width (CSS px) the controls start folded, so the pool comes first on a phone. */
+const NARROW_PX = 600;
+
+/** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
+const ICONS = {
+  play: "M8 5v14l11-7z",
+  pause: "M6 5h4v14H6zm8 0h4v14h-4z",
+  fullscreen: "M4 4h6v2H6v4H4zm10 0h6v6h-2V6h-4zM4 14h2v4h4v2H4zm14 0h2v6h-6v-2h4z",
+};
+
+/** An inline SVG icon (no font glyph that a system may lack, no style attribute). */
+function icon(path) {
+  const ns = "http://www.w3.org/2000/svg";
+  const svg = document.createElementNS(ns, "svg");
+  svg.setAttribute("viewBox", "0 0 24 24");
+  svg.setAttribute("aria-hidden", "true");
+  const shape = document.createElementNS(ns, "path");
+  shape.setAttribute("d", path);
+  shape.setAttribute("fill", "currentColor");
+  svg.append(shape);
+  return svg;
+}
+
+/** The demo's methods that build and refresh its controls. */
+export const controlMethods = {
+
+  _buildControls() {
+    // A drawer under the pool: open where there is room beside the groups, folded on a phone.
+    const drawer = document.createElement("details");
+    drawer.className = "controls";
+    drawer.open = this._element.clientWidth >= NARROW_PX;
+    const summary = document.createElement("summary");
+    summary.textContent = "Controls";
+    const panel = document.createElement("div");
+    panel.className = "panel";
+    drawer.append(summary, panel);
+    panel.append(this._presetRow());
+    const groups = new Map();
+    for (const p of this._table) {
+      if (!groups.has(p.group)) {
+        const fieldset = document.createElement("fieldset");
+        const legend = document.createElement("legend");
+        legend.textContent = p.group;
+        fieldset.append(legend);
+        groups.set(p.group, fieldset);
+        panel.append(fieldset);
+      }
+      groups.get(p.group).append(this._control(p));
+    }
+    if (groups.has("Flat water")) {
+      // What each render mode costs, measured while it is shown, under its control.
+      this._costs = document.createElement("output");
+      this._costs.className = "costs";
+      groups.get("Flat water").querySelector("[name=render_mode]").closest(".row").after(this._costs);
+    }
+    if (groups.has("Optics")) {
+      // The Fresnel models' curves beside their select.
+      this._plot = new FresnelPlot(fresnelCurve);
+      groups.get("Optics").append(this._plot.element);
+      this._updatePlot();
+    }
+    const buttons = document.createElement("div");
+    buttons.className = "buttons";
+    const button = (label, title, action) => {
+      const b = document.createElement("button");
+      b.type = "button";
+      b.textContent = label;
+      b.title = title;
+      b.addEventListener("click", action);
+      buttons.append(b);
+    };
+    button("Reset", "Back to how this page started: its parameters and view, calm water, the objects in place", () =>
+      this.reset(),
+    );
+    button("Defaults", "Set every parameter to its default", () => {
+      for (const p of this._table) this.set(p.name, p.default);
+    });
+    const said = document.createElement("output");
+    said.className = "said";
+    said.setAttribute("aria-live", "polite");
+    const copy = async (what, text) => {
+      try {
+        await navigator.clipboard.writeText(text);
+        said.textContent = `${what} copied.`;
+      } catch (_) {
+        said.textContent = text; // no clipboard here (an insecure page, a sandbox): shown to copy by hand
+      }
+    };
+    button("Share link", "Copy a link that opens this pool with these parameters and this view", () =>
+      copy("Link", this.shareLink()),
+    );
+    button("Copy embed code", "Copy an <iframe> that shows this pool, as it is now, in another page", () =>
+      copy("Embed code", this.embedCode()),
+    );
+    buttons.append(said);
+    panel.append(buttons);
+    this._root.append(drawer);
+  },
+
+  // The Preset select: a named starting state from the core's table.
+  _presetRow() {
+    const row = document.createElement("div");
+    row.className = "row preset";
+    const label = document.createElement("label");
+    label.htmlFor = `wavepool-${this._id}-preset`;
+    label.textContent = "Preset";
+    const select = document.createElement("select");
+    select.id = label.htmlFor;
+    select.append(new Option("choose…", ""));
+    for (const p of presetTable()) {
+      const option = new Option(p.label, p.name);
+      option.title = p.help;
+      select.append(option);
+    }
+    if (this._opts.preset) select.value = this._opts.preset.name;
+    select.addEventListener("change", () => select.value && this.applyPreset(select.value));
+    row.append(label, select);
+    return row;
+  },
+
+  _control(p) {
+    const row = document.createElement("div");
+    row.className = "row";
+    const inputId = `wavepool-${this._id}-${p.name}`;
+    const label = document.createElement("label");
+    label.htmlFor = inputId;
+    label.textContent = p.label;
+    label.title = p.help;
+    const input = document.createElement(p.kind === "choice" ? "select" : "input");
+    input.id = inputId;
+    input.name = p.name;
+    input.title = p.help;
+    const output = document.createElement("output");
+    output.htmlFor = inputId;
+    if (p.kind === "toggle") {
+      input.type = "checkbox";
+      input.addEventListener("change", () => this.set(p.name, input.checked ? 1 : 0));
+    } else if (p.kind === "choice") {
+      for (const v of p.choices) input.append(new Option(formatValue(p, v), String(v)));
+      input.addEventListener("change", () => this.set(p.name, Number(input.value)));
+    } else {
+      input.type = "range";
+      input.min = p.min;
+      input.max = p.max;
+      input.step = p.step;
+      input.addEventListener("input", () => this.set(p.name, Number(input.value)));
+    }
+    const update = () => {
+      const v = this.get(p.name);
+      if (p.kind === "toggle") input.checked = v >= 0.5;
+      else input.value = String(v);
+      output.textContent = formatValue(p, v);
+      input.setAttribute("aria-valuetext", output.textContent);
+      // A model's own settings show only while that model is chosen.
+      if (p.shownWhen) row.hidden = !p.shownWhen.values.includes(this.get(p.shownWhen.param));
+    };
+    this._controls.set(p.name, update);
+    if (p.shownWhen) {
+      const list = this._dependants.get(p.shownWhen.param) || [];
+      this._dependants.set(p.shownWhen.param, [...list, update]);
+    }
+    update();
+    row.append(label, input, output);
+    return row;
+  },
+
+  // Records a drawn frame's interval under the render mode shown, and twice a second writes
+  // each mode's cost: its GPU time where the browser measures it (stats().gpuMs), and the
+  // median interval between its frames.
+  _costsNote(time, interval) {
+    const mode = Math.round(this.get("render_mode"));
+    const list = this._modeIntervals[mode];
+    if (list) {
+      list.push(interval);
+      if (list.length > 60) list.shift();
+    }
+    if (!this._costs || time - this._costsAt < 500) return;
+    this._costsAt = time;
+    const s = this._core.stats();
+    const names = ["ray-traced", "flat", "split"];
+    const keys = ["raytraced", "flat", "split"];
+    const gpu = s.gpuMs
+      ? "GPU time drawing the water: " +
+        names.map((n, i) => `${n} ${s.gpuMs[keys[i]] === null ? "–" : s.gpuMs[keys[i]].toFixed(1) + " ms"}`).join(" · ")
+      : "GPU time: this browser does not measure it (no WebGPU timestamps)";
+    const between = names
+      .map((n, i) => {
+        const l = [...this._modeIntervals[i]].sort((a, b) => a - b);
+        return `${n} ${l.length ? l[Math.floor((l.length - 1) / 2)].toFixed(0) + " ms" : "–"}`;
+      })
+      .join(" · ");
+    this._costs.textContent = `${s.flatNote ? s.flatNote + " " : ""}${gpu}. Between frames: ${between}.`;
+  },
+
+  // The plot's model and the angle at which the view's centre meets the water (the camera's
+  // pitch is its elevation above the pool's middle: incidence = 90° - |pitch|).
+  _updatePlot() {
+    if (!this._plot) return;
+    this._plot.update(this.get("fresnel"), 90 - Math.abs(this.camera()[1]));
+  },
+
+  _refreshControls(name) {
+    if (!name || name === "fresnel") this._updatePlot();
+    if (name) {
+      const update = this._controls.get(name);
+      if (update) update();
+      for (const dependant of this._dependants.get(name) || []) dependant();
+    } else {
+      for (const update of this._controls.values()) update();
+    }
+    if (this._overlayUpdate) this._overlayUpdate();
+  },
+
+  // Buttons over the pool, there with or without the controls: play/pause (the `paused`
+  // parameter: a way to stop the motion, WCAG 2.2.2) and fullscreen (only where the page
+  // allows it: an iframe needs allow="fullscreen").
+  _buildOverlay() {
+    const bar = document.createElement("div");
+    bar.className = "overlay";
+    const play = document.createElement("button");
+    play.type = "button";
+    play.className = "play";
+    const playIcon = icon(ICONS.pause);
+    play.append(playIcon);
+    play.addEventListener("click", () => this.set("paused", this.get("paused") >= 0.5 ? 0 : 1));
+    bar.append(play);
+    if (document.fullscreenEnabled && this._element.requestFullscreen) {
+      const full = document.createElement("button");
+      full.type = "button";
+      full.className = "fullscreen";
+      full.append(icon(ICONS.fullscreen));
+      full.title = "Fullscreen (Esc leaves it)";
+      full.setAttribute("aria-label", "Fullscreen");
+      full.addEventListener("click", () =>
+        document.fullscreenElement === this._element
+          ? document.exitFullscreen()
+          : this._element.requestFullscreen().catch((e) => warn(`fullscreen refused: ${e.message || e}`)),
+      );
+      bar.append(full);
+    }
+    this._overlayUpdate = () => {
+      if (!this._core) return;
+      const paused = this.get("paused") >= 0.5;
+      playIcon.firstChild.setAttribute("d", paused ? ICONS.play : ICONS.pause);
+      play.setAttribute("aria-label", paused ? "Play" : "Pause");
+      play.title = paused ? "Play: start the water and the objects moving" : "Pause: stop the water and the objects";
+      play.setAttribute("aria-pressed", String(!paused));
+    };
+    this._overlayUpdate();
+    this._stage.append(bar);
+  }
+};

@@ -1,0 +1,364 @@
+// One mounted demo: its canvas and core (wasm-bindgen's WebDemo), start-up on the first
+// backend that works, messages, and the public API a page calls. Input, controls, the frame
+// loop and suspending are in their own modules, mixed into the class here.
+
+import { WebDemo, presetTable } from "./wavepool.js";
+import { contextsHeld, releaseContext } from "./context-budget.js";
+import { controlMethods } from "./controls.js";
+import { frameLoopMethods, frameStats } from "./frame-loop.js";
+import { inputMethods } from "./input.js";
+import { inline, live, memoryBytes } from "./loader.js";
+import { toNumber } from "./options.js";
+import { suspendMethods } from "./suspend.js";
+
+/** Least height (CSS px) the pool keeps when fitted into the first screen. */
+const MIN_FIT_PX = 180;
+
+/** The message shown when no backend started: what was tried, each one's reason, what to do. */
+function backendFailure(backend, failures) {
+  const name = { webgpu: "WebGPU", webgl2: "WebGL2" }[backend];
+  const reasons = failures.map((f) => `• ${f}`).join("\n");
+  if (name) {
+    return (
+      `This page asked for ${name} only (backend=${backend}), and this browser could not start it:\n` +
+      `${reasons}\nRemove backend=${backend} from the address or the options (or set backend=auto) ` +
+      "to let the demo choose a backend this browser has."
+    );
+  }
+  return (
+    "This browser could not start the water demo: neither WebGPU nor WebGL2 worked " +
+    `(graphics acceleration may be turned off in its settings).\n${reasons}`
+  );
+}
+
+export class Demo {
+  constructor(element, shadow, root, stage, message, id, started) {
+    this._element = element;
+    this._shadow = shadow;
+    this._root = root;
+    this._stage = stage;
+    this._message = message;
+    this._id = id;
+    this._started = started;
+    this._core = null;
+    this._canvas = null;
+    this._frame = 0; // requestAnimationFrame id
+    this._last = 0; // time of the last frame (ms)
+    this._frames = []; // times of the frames drawn in the last 2 s (ms), for stats()
+    this._simTimes = []; // the simulated time (s) after each of those frames
+    this._runningSince = null; // when the frame loop last started drawing (ms)
+    this._looping = false; // whether the frame loop runs (false once stopped, until started again)
+    this._userPaused = false;
+    this._visible = true;
+    this._onScreen = true;
+    this._dead = false;
+    this._restarts = 0; // devices recreated after a loss
+    this._lastRestart = -Infinity;
+    this._controls = new Map(); // parameter name -> update function
+    this._dependants = new Map(); // parameter name -> update functions of controls shown by its value
+    this._pointers = new Map(); // pointerId -> {x, y}
+    this._pinch = 0; // distance between two touching pointers (px), 0 when not pinching
+    this._firstFrameMs = null;
+    this._firstFrame = new Promise((resolve, reject) => {
+      this._firstFrameResolve = resolve;
+      this._firstFrameReject = reject;
+    });
+    this._firstFrame.catch(() => {});
+    this._cleanups = [];
+    // The page's context budget (context-budget.js).
+    this._near = false; // within its margin of the viewport
+    this._leftAt = 0; // when it last stopped being near (ms)
+    this._eager = false; // asks for a context even while far (lazy: false)
+    this._unwatch = null; // stops watching nearness
+    this._suspended = false; // gave its context up; shows `_still`, values in `_saved`
+    this._saved = null; // { params: [[name, value]], camera } while suspended
+    this._still = null; // the 2D canvas showing the last frame while suspended
+    this._waking = false;
+    this._plot = null; // the Fresnel plot in the Optics group (fresnel-plot.js), with the controls
+    this._plotAt = -Infinity; // when its view mark last moved (ms)
+    this._costs = null; // the render modes' costs, under the render_mode control
+    this._costsAt = -Infinity; // when they were last written (ms)
+    this._modeIntervals = [[], [], []]; // recent intervals between drawn frames per render mode (ms)
+  }
+
+  // ---- set-up -------------------------------------------------------------------------
+
+  async _start() {
+    const forced = this._opts.backend !== "auto";
+    const order = forced ? [this._opts.backend] : ["webgpu", "webgl2"];
+    const failures = [];
+    for (const backend of order) {
+      if (backend === "webgpu" && !navigator.gpu) {
+        failures.push("WebGPU: this browser does not offer it (navigator.gpu is missing)");
+        continue;
+      }
+      const canvas = this._makeCanvas();
+      // The grid starts at the sim_size parameter's value (resampled if it changes later).
+      const simSize = Number(this._opts.params.sim_size ?? this._table.find((p) => p.name === "sim_size").default);
+      const o = this._opts;
+      let core;
+      try {
+        core = await WebDemo.create(canvas, backend, simSize, o.meshSize, o.causticsSize, o.float !== "none");
+      } catch (error) {
+        canvas.remove();
+        failures.push(`${backend === "webgpu" ? "WebGPU" : "WebGL2"}: ${error.message || error}`);
+        continue;
+      }
+      [this._core, this._canvas] = [core, canvas];
+      if (this._dead) {
+        this._detachCore(); // destroyed while the context was being made
+        throw new Error("wavepool: the demo was destroyed while it started");
+      }
+      this._element.dataset.backend = backend;
+      this._listen();
+      return;
+    }
+    throw new Error(backendFailure(this._opts.backend, failures));
+  }
+
+  // Without a height of its own the pool takes the element's width at its aspect ratio, but
+  // no more height than the first screen has below the element's top (the whole viewport when
+  // it starts further down), so a visitor sees all of it; narrower then, centred.
+  _fitStage() {
+    const fit = () => {
+      const top = this._element.getBoundingClientRect().top + window.scrollY;
+      const below = top < window.innerHeight ? window.innerHeight - top - 8 : window.innerHeight;
+      const height = Math.max(MIN_FIT_PX, Math.min(window.innerHeight, below));
+      this._stage.style.maxWidth = `${Math.floor(height * this._opts.aspect)}px`;
+    };
+    fit();
+    this._fit = fit; // refitted on window resizes, from _listen (again after a device restart)
+  }
+
+  _makeCanvas() {
+    const canvas = document.createElement("canvas");
+    canvas.tabIndex = 0;
+    canvas.setAttribute("role", "application");
+    canvas.setAttribute(
+      "aria-label",
+      "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere " +
+        "to turn the camera. Keys: arrows turn, + and - zoom, Enter makes a drop in the middle, space " +
+        "pauses, G gravity, L light.",
+    );
+    this._stage.prepend(canvas);
+    this._sizeCanvas(canvas);
+    return canvas;
+  }
+
+  // Backing-store size from the displayed size, devicePixelRatio and the caps.
+  _sizeCanvas(canvas) {
+    const rect = canvas.getBoundingClientRect();
+    const ratio = Math.min(window.devicePixelRatio || 1, this._opts.maxPixelRatio);
+    let w = Math.max(1, Math.round(rect.width * ratio));
+    let h = Math.max(1, Math.round(rect.height * ratio));
+    const scale = Math.min(1, Math.sqrt(this._opts.maxPixels / (w * h)));
+    w = Math.max(1, Math.floor(w * scale));
+    h = Math.max(1, Math.floor(h * scale));
+    if (canvas.width !== w) canvas.width = w;
+    if (canvas.height !== h) canvas.height = h;
+  }
+
+  _status(text) {
+    this._message.hidden = !text;
+    this._message.textContent = text || "";
+    this._message.classList.remove("error");
+  }
+
+  _fail(text) {
+    if (this._dead) return;
+    this._dead = true;
+    if (this._frame) cancelAnimationFrame(this._frame);
+    this._frame = 0;
+    // A still picture of the pool (made by `wavepool render`; 7 KB, so the single file
+    // carries it too, as a data: URL) behind the message, so the box is not empty.
+    if (!this._stage.querySelector(".fallback")) {
+      const picture = new Image();
+      picture.className = "fallback";
+      picture.alt = "A still picture of the water pool (the live demo could not start here)";
+      picture.src = inline ? inline.picture : new URL("./no-gpu.webp", import.meta.url).href;
+      this._stage.prepend(picture);
+    }
+    this._message.hidden = false;
+    this._message.classList.add("error");
+    this._message.textContent = text;
+    this._element.dataset.error = "true";
+    console.error(`wavepool: ${text}`);
+    if (!this._core) releaseContext(this);
+    this._firstFrameReject(new Error(text));
+  }
+
+  _alive() {
+    if (this._suspended) {
+      throw new Error("wavepool: this demo is scrolled away and gave its GPU context to others; it goes on when it is near the viewport");
+    }
+    if (this._dead || !this._core) throw new Error("wavepool: this demo is not running (destroyed, failed or not started)");
+    return this._core;
+  }
+
+  /** While suspended: the saved [name, value] entry of a parameter. */
+  _savedParam(name) {
+    const entry = this._saved.params.find(([n]) => n === name);
+    if (!entry) throw new Error(`wavepool: unknown parameter "${name}"`);
+    return entry;
+  }
+
+  // ---- public API ---------------------------------------------------------------------
+
+  /** Adds a drop at pool coordinates x, z (m, -1..1) with radius (m) and strength (m). */
+  addDrop(x, z, radius = this.get("drop_radius"), strength = this.get("drop_strength")) {
+    this._alive().addDrop(Number(x), Number(z), Number(radius), Number(strength));
+  }
+
+  /** Sets a parameter; out-of-range values are clamped (console warning). Returns the value in effect. */
+  set(name, value) {
+    const spec = this._table && this._table.find((p) => p.name === String(name));
+    if (this._suspended) {
+      // Kept until it wakes; clamped then.
+      const entry = this._savedParam(String(name));
+      entry[1] = toNumber(value, spec);
+      this._refreshControls(String(name));
+      return entry[1];
+    }
+    const v = this._alive().set(String(name), toNumber(value, spec));
+    this._refreshControls(String(name));
+    return v;
+  }
+
+  /** A parameter's current value; throws for unknown names. */
+  get(name) {
+    if (this._suspended) return this._savedParam(String(name))[1];
+    return this._alive().get(String(name));
+  }
+
+  /** Where pool point (x, y, z) in m appears, in CSS pixels relative to the page's viewport; null when not visible. */
+  project(x, y, z) {
+    const p = this._alive().project(Number(x), Number(y), Number(z));
+    if (p.length < 2) return null;
+    const r = this._canvas.getBoundingClientRect();
+    return { x: r.left + (p[0] * r.width) / this._canvas.width, y: r.top + (p[1] * r.height) / this._canvas.height };
+  }
+
+  /** The parameter table. */
+  params() {
+    return this._table.map((p) => ({ ...p }));
+  }
+
+  /** Back to how the page started: its parameters and camera, calm water, the objects in place. */
+  reset() {
+    const core = this._alive();
+    for (const [name, value] of this._startState.params) core.set(name, value);
+    core.setCamera(...this._startState.camera);
+    core.reset();
+    this._refreshControls();
+  }
+
+  /** Starts over from a preset (by name): defaults, then its values and view; calm water. */
+  applyPreset(name) {
+    const core = this._alive();
+    const preset = presetTable().find((p) => p.name === String(name).toLowerCase());
+    if (!preset) throw new Error(`wavepool: no preset "${name}"; presets: ${presetTable().map((p) => p.name).join(", ")}`);
+    for (const p of this._table) if (p.group !== "Display") core.set(p.name, p.default);
+    for (const [n, v] of preset.values) core.set(n, v);
+    core.setCamera(...(preset.camera || this._defaultCamera));
+    core.reset();
+    this._refreshControls();
+  }
+
+  /** The query string of this demo as it is now: parameters that differ from the defaults, and the camera. */
+  _query() {
+    const query = new URLSearchParams();
+    for (const p of this._table) {
+      const v = this.get(p.name);
+      if (v === p.default) continue;
+      const i = p.kind === "choice" ? p.choices.indexOf(v) : -1;
+      query.set(p.name, i >= 0 && p.choiceNames[i] ? p.choiceNames[i] : String(v));
+    }
+    query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
+    return query.toString().replace(/%2C/g, ",");
+  }
+
+  /** A link that opens the demo's page with this demo's parameters and view. */
+  shareLink() {
+    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./index.html", import.meta.url).href;
+    return `${page}?${this._query()}`;
+  }
+
+  /** An <iframe> showing this demo as it is now (the pool alone, `embed.html`; the single file when this is it). */
+  embedCode() {
+    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./embed.html", import.meta.url).href;
+    return (
+      `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
+      `title="Interactive water pool (wavepool)"></iframe>`
+    );
+  }
+
+  /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
+  camera() {
+    if (this._suspended) return Array.from(this._saved.camera);
+    return Array.from(this._alive().camera());
+  }
+
+  /** Moves the camera; out-of-range values are clamped (console warning). */
+  setCamera(yaw, pitch, distance) {
+    if (this._suspended) this._saved.camera = [Number(yaw), Number(pitch), Number(distance)];
+    else this._alive().setCamera(Number(yaw), Number(pitch), Number(distance));
+  }
+
+  /** Stops the frame loop (and the water) until resume(). */
+  pause() {
+    this._userPaused = true;
+    this._run();
+  }
+
+  resume() {
+    this._userPaused = false;
+    this._run();
+  }
+
+  /** { fps, frameMs, longestFrameMs, firstFrameMs, restarts, backend, adapter, simSize, ... } (see the README) */
+  stats() {
+    if (this._suspended) {
+      // No context: what is known without one.
+      const { backend } = this._element.dataset;
+      return { suspended: true, fps: 0, backend, firstFrameMs: this._firstFrameMs, restarts: this._restarts, contextsOnPage: contextsHeld() };
+    }
+    const s = this._alive().stats();
+    s.suspended = false;
+    s.contextsOnPage = contextsHeld();
+    Object.assign(s, frameStats(this._frames, this._runningSince, performance.now()));
+    // Simulated seconds per wall second over the drawn frames of the window (1: real time).
+    const [t, sim, n] = [this._frames, this._simTimes, this._frames.length];
+    s.simSpeed = n > 1 && t[n - 1] > t[0] ? ((sim[n - 1] - sim[0]) * 1000) / (t[n - 1] - t[0]) : 0;
+    s.firstFrameMs = this._firstFrameMs;
+    s.wasmMemoryBytes = memoryBytes();
+    s.restarts = this._restarts;
+    return s;
+  }
+
+  /** The next frame as a PNG Blob. */
+  snapshot() {
+    const core = this._alive();
+    core.frame(0, this._canvas.width, this._canvas.height);
+    return new Promise((resolve, reject) =>
+      this._canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error("snapshot failed"))), "image/png"),
+    );
+  }
+
+  /** Stops the demo, frees its GPU resources and empties the element. */
+  destroy() {
+    this._detachCore();
+    this._dead = true;
+    live.delete(this);
+    releaseContext(this);
+    if (this._unwatch) this._unwatch();
+    // Only what is still this demo's (a newer mount in the same element keeps its own).
+    if (this._root.parentNode === this._shadow) {
+      this._shadow.replaceChildren();
+      delete this._element.dataset.backend;
+      delete this._element.dataset.ready;
+      delete this._element.dataset.suspended;
+    }
+  }
+}
+
+Object.assign(Demo.prototype, inputMethods, controlMethods, frameLoopMethods, suspendMethods);
