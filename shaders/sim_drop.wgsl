@@ -49,7 +49,7 @@ fn fs_drop(in: FullscreenOut) -> @location(0) vec4<f32> {
         s.x += drop.w * (0.5 - 0.5 * cos(PI * max(1.0 - d, 0.0)));
     }
     let moves = i32(sim.bodies.x);
-    let base = i32(push_step.index.x) * 24;
+    let base = i32(push_step.index.x) * STEP_HULL_SLOTS;
     for (var i = 0; i < moves; i++) {
         s.x += displaced_column(x, base + 8 * i + 4) - displaced_column(x, base + 8 * i);
     }

@@ -3,9 +3,9 @@
 //! browser and native shells drive.
 
 pub mod ambient;
+pub mod bodies;
 pub mod camera;
 pub mod demo;
-pub mod duck;
 pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;

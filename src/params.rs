@@ -8,7 +8,7 @@ use std::ops::Deref;
 use std::sync::OnceLock;
 
 pub use crate::param_spec::{choice_label, Control, ParamSpec};
-use crate::{ambient, duck, optics, physics, quality, render, sim, sky};
+use crate::{ambient, bodies, optics, physics, quality, render, sim, sky};
 
 /// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
 macro_rules! param_ids {
@@ -94,8 +94,9 @@ const SLICES: &[&[ParamSpec]] = &[
     ambient::params::PARAMS,
     optics::PARAMS,
     optics::WATER_COLOUR_PARAMS,
-    physics::BODY_PARAMS,
-    duck::PARAMS,
+    bodies::PARAMS,
+    bodies::sphere::PARAMS,
+    bodies::duck::PARAMS,
     physics::GRAVITY_PARAMS,
     sim::params::RUN,
     render::debug_view::PARAMS,

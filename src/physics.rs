@@ -7,7 +7,7 @@
 
 use glam::{Mat3, Quat, Vec2, Vec3};
 
-use crate::param_spec::{slider, Control, ParamSpec};
+use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
 
 /// Gravitational acceleration (m/s²).
@@ -340,37 +340,6 @@ pub fn separate(a: &mut FloatingBody, ra: f32, ma: f32, b: &mut FloatingBody, rb
         b.velocity += n * impulse * sb;
     }
 }
-
-/// Which bodies float in the pool, and the sphere's size and density. (The parameter table, `params::table`, lists them in this order.)
-pub const BODY_PARAMS: &[ParamSpec] = &[
-    ParamSpec {
-        name: "objects",
-        label: "Objects",
-        group: "Objects",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0, 3.0], names: &["none", "sphere", "duck", "both"] },
-        default: 3.0,
-        help: "What floats in the pool: nothing, the sphere, a rubber duck, or both.",
-    },
-    ParamSpec {
-        name: "sphere_radius",
-        label: "Sphere radius",
-        group: "Objects",
-        unit: "m",
-        control: slider(0.1, 0.4, 0.01),
-        default: 0.25,
-        help: "Radius of the sphere.",
-    },
-    ParamSpec {
-        name: "sphere_density",
-        label: "Sphere density",
-        group: "Objects",
-        unit: "kg/m³",
-        control: slider(100.0, 2000.0, 10.0),
-        default: 600.0,
-        help: "Mass per volume; below water's 1000 kg/m³ the sphere floats.",
-    },
-];
 
 /// Gravity on the bodies. (The parameter table, `params::table`, lists them in this order.)
 pub const GRAVITY_PARAMS: &[ParamSpec] = &[ParamSpec {

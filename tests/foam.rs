@@ -50,7 +50,7 @@ fn a_ball_dropped_into_the_pool_splashes_foam_around_it() {
     let mut demo = pool(true, true);
     demo.params.set(ParamId::Objects, 1.0);
     demo.params.set(ParamId::Gravity, 1.0);
-    demo.set_body_pose(BodyId::Sphere, Pose::at(Vec3::new(-0.2, 0.6, 0.1)));
+    demo.set_body_pose(BodyId::named("sphere").unwrap(), Pose::at(Vec3::new(-0.2, 0.6, 0.1)));
     render(&mut demo, W, H, 45, 1.0 / 60.0);
     let near = (0..16)
         .map(|k| {
@@ -135,7 +135,7 @@ fn a_sphere_dragged_through_the_surface_leaves_foam_behind_it() {
     demo.params.set(ParamId::Gravity, 0.0);
     for i in 0..=60 {
         let x = -0.6 + 1.2 * i as f32 / 60.0;
-        demo.set_body_pose(BodyId::Sphere, Pose::at(Vec3::new(x, 0.0, 0.0)));
+        demo.set_body_pose(BodyId::named("sphere").unwrap(), Pose::at(Vec3::new(x, 0.0, 0.0)));
         render(&mut demo, 32, 24, 1, 1.0 / 60.0);
     }
     let trail =

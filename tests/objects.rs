@@ -9,8 +9,8 @@
 mod common;
 
 use glam::{Quat, Vec2, Vec3};
+use wavepool::bodies::duck;
 use wavepool::demo::{BodyId, DemoOptions};
-use wavepool::duck;
 use wavepool::headless::OffscreenTarget;
 use wavepool::params::ParamId;
 use wavepool::physics::{Ellipsoid, Pose, Shape};
@@ -66,7 +66,7 @@ fn a_released_sphere_falls_enters_and_rests_at_its_floating_line() {
     let level = demo.submerged_volume() / pool_area(1.0);
     let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(0.2) }];
     let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0 }.floating_height(level);
-    let speed = demo.body(BodyId::Sphere).velocity.length();
+    let speed = demo.body(BodyId::named("sphere").unwrap()).velocity.length();
     println!(
         "sphere: lowest {lowest:.3} m, rests at {:.4} m (floating line {expected:.4} m, water level {level:.4} m), \
          speed {speed:.4} m/s, probe latency up to {latency} frames",
@@ -179,7 +179,7 @@ fn a_dropped_duck_floats_upright_at_its_waterline() {
     let mut demo = demo_with(DUCK, true);
     demo.params.set(ParamId::Gravity, 1.0);
     let tilted = Quat::from_rotation_x(0.6) * Quat::from_rotation_y(1.0);
-    demo.set_body_pose(BodyId::Duck, Pose { position: Vec3::new(-0.2, 0.3, 0.1), rotation: tilted });
+    demo.set_body_pose(BodyId::named("duck").unwrap(), Pose { position: Vec3::new(-0.2, 0.3, 0.1), rotation: tilted });
     run(&mut demo, 10 * 60, |_, _| {});
     let pose = demo.duck().unwrap();
     let up = pose.rotation * Vec3::Y;
@@ -220,7 +220,7 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
         demo.camera.pitch = 80.0;
         demo.camera.distance = 3.2;
         let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
-        demo.set_body_pose(BodyId::Duck, Pose::at(Vec3::new(0.25, y, 0.0)));
+        demo.set_body_pose(BodyId::named("duck").unwrap(), Pose::at(Vec3::new(0.25, y, 0.0)));
         let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
         (demo, frame)
     };
@@ -260,7 +260,7 @@ fn the_bodies_float_on_current_heights_without_waiting_on_the_gpu() {
             demo.add_drop(0.35, -0.3, 0.25, 0.04);
         }
         latencies.extend(demo.probe_latency());
-        heights.push(demo.body(BodyId::Duck).pose.position.y);
+        heights.push(demo.body(BodyId::named("duck").unwrap()).pose.position.y);
     });
     let spread =
         |h: &[f32]| h.iter().fold(f32::NEG_INFINITY, |a, &b| a.max(b)) - h.iter().fold(f32::INFINITY, |a, &b| a.min(b));

@@ -43,7 +43,8 @@ fn run_with(fps: f64, until: f64, objects: f32) -> (Vec<[f32; 4]>, [Vec3; 2]) {
     }
     assert!(drops.is_empty());
     assert!((demo.sim_time() - until).abs() < 1e-9, "{fps} fps stopped at {} s", demo.sim_time());
-    let bodies = [BodyId::Sphere, BodyId::Duck].map(|id| demo.body(id).pose.position);
+    let bodies =
+        [BodyId::named("sphere").unwrap(), BodyId::named("duck").unwrap()].map(|id| demo.body(id).pose.position);
     (demo.water().read_state(&g.device, &g.queue), bodies)
 }
 

@@ -3,10 +3,34 @@
 //! The same parts give the mesh drawn directly, the shapes the scene shader traces for
 //! reflections, refractions and shadows, and the hull its buoyancy comes from.
 
-use glam::Vec3;
+use glam::{Quat, Vec2, Vec3};
 
+use super::BodyKind;
 use crate::param_spec::{slider, ParamSpec};
-use crate::physics::{Ellipsoid, Shape};
+use crate::physics::{Ellipsoid, Pose, Shape};
+
+/// Where the duck starts (x, z in m; it starts at its floating height) and where it looks
+/// (turn about the vertical, radians; 0 is along +x).
+const START_XZ: Vec2 = Vec2::new(0.35, -0.3);
+const START_TURN: f32 = 2.4;
+
+pub const KIND: BodyKind = BodyKind {
+    name: "duck",
+    params: PARAMS,
+    hull_parts: HULL.len(),
+    hull: |_| HULL.to_vec(),
+    density: |v| v("duck_density"),
+    centre_of_mass: CENTRE_OF_MASS,
+    start: |v| Pose {
+        position: Vec3::new(START_XZ.x, shape(v("duck_density")).floating_height(0.0), START_XZ.y),
+        rotation: Quat::from_rotation_y(START_TURN),
+    },
+    probe_ring: |_| 0.3,
+    bump_radius: |_| 0.13,
+    pick: |pose, _, origin, dir| {
+        TRACED_PARTS.iter().filter_map(|p| p.shape.ray_hit(pose, origin, dir)).min_by(|a, b| a.total_cmp(b))
+    },
+};
 
 /// One piece of the duck: its ellipsoid and colour (linear RGB).
 #[derive(Clone, Copy, Debug)]

@@ -1,76 +1,68 @@
-//! The floating bodies (the sphere and the duck) in the demo: their start poses, hulls and
-//! densities from the parameters, their steps against the water and the water's answer.
+//! The floating bodies in the demo, one per kind of `bodies::KINDS`: placed at their starts,
+//! stepped against the water planes under them, kept apart, and the water's answer to them.
+//! Nothing here names a kind: what differs between kinds is in their table entries.
 
-use glam::{Quat, Vec2, Vec3};
+use glam::{Vec2, Vec3};
 
 use super::{Drag, WaterDemo, STEP_DT};
 use crate::ambient::AmbientModel;
-use crate::duck;
+use crate::bodies::{Body, BodyId, PROBES_PER_BODY};
 use crate::params::ParamId;
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::scene::{self, Sphere};
 use crate::sim::{self, BodyCoupling, HullMove, HullSlot};
 
-/// Where the sphere starts (m).
-pub(super) const START_SPHERE_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
-/// Where the duck starts (x, z in m; it starts at its floating height) and where it looks
-/// (turn about the vertical, radians; 0 is along +x).
-pub(super) const START_DUCK_XZ: Vec2 = Vec2::new(0.35, -0.3);
-pub(super) const START_DUCK_TURN: f32 = 2.4;
-/// Points on the ring around each body where the water is sampled for its buoyancy.
-pub(super) const PROBES_PER_BODY: usize = 8;
 /// Radius (m) of the ring on which a body feels the ambient waves (about the duck's and a
 /// small sphere's waterline).
-pub(super) const AMBIENT_RING_RADIUS: f32 = 0.05;
-
-/// The things that float in the pool.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BodyId {
-    Sphere = 0,
-    Duck = 1,
-}
-
-impl BodyId {
-    pub const ALL: [BodyId; 2] = [BodyId::Sphere, BodyId::Duck];
-}
+const AMBIENT_RING_RADIUS: f32 = 0.05;
 
 impl WaterDemo {
-    pub(super) fn place_duck_at_start(&mut self) {
-        let y = duck::shape(self.params.get(ParamId::DuckDensity)).floating_height(0.0);
-        let pose = Pose {
-            position: Vec3::new(START_DUCK_XZ.x, y, START_DUCK_XZ.y),
-            rotation: Quat::from_rotation_y(START_DUCK_TURN),
-        };
-        self.bodies[BodyId::Duck as usize] = FloatingBody::at(pose);
+    /// A parameter's value by name, for the body kinds' table entries.
+    fn value(&self, name: &str) -> f32 {
+        self.params.get_by_name(name).expect("a body kind reads its own parameters")
     }
 
-    /// Whether a body is in the pool (the `objects` parameter: none, sphere, duck, both).
+    /// Every body at its start, at rest, not yet felt by the water (its submerged volume
+    /// kept until the next step measures it again).
+    pub(super) fn place_bodies_at_start(&mut self) {
+        let value = |name: &str| self.value(name);
+        let bodies: Vec<Body> = BodyId::all()
+            .map(|id| Body {
+                submerged: self.bodies.get(id.0).map_or(0.0, |b| b.submerged),
+                ..Body::at((id.kind().start)(&value))
+            })
+            .collect();
+        self.bodies = bodies;
+    }
+
+    /// Whether a body is in the pool (its bit in the `objects` parameter).
     pub fn shows(&self, id: BodyId) -> bool {
         let objects = self.params.get(ParamId::Objects) as u32;
-        objects & (1 << id as u32) != 0
+        objects & id.bit() != 0
     }
 
-    /// The sphere, if shown.
+    /// The sphere as drawn, if shown.
     pub fn sphere(&self) -> Option<Sphere> {
-        self.shows(BodyId::Sphere).then(|| {
-            let mut s = Sphere { centre: self.bodies[0].pose.position, radius: self.params.get(ParamId::SphereRadius) };
-            s.clamp_to_pool();
-            s
-        })
+        let id = BodyId::named("sphere")?;
+        self.shows(id)
+            .then(|| crate::bodies::sphere::drawn(&self.bodies[id.0].motion.pose, self.value("sphere_radius")))
     }
 
     /// The duck's pose, if shown.
     pub fn duck(&self) -> Option<Pose> {
-        self.shows(BodyId::Duck).then_some(self.bodies[BodyId::Duck as usize].pose)
+        let id = BodyId::named("duck")?;
+        self.shows(id).then_some(self.bodies[id.0].motion.pose)
     }
 
     /// A body's motion (shown or not).
     pub fn body(&self, id: BodyId) -> &FloatingBody {
-        &self.bodies[id as usize]
+        &self.bodies[id.0].motion
     }
 
     pub fn set_sphere_centre(&mut self, centre: Vec3) {
-        self.set_body_pose(BodyId::Sphere, Pose::at(centre));
+        if let Some(id) = BodyId::named("sphere") {
+            self.set_body_pose(id, Pose::at(centre));
+        }
     }
 
     /// Puts a body somewhere (kept inside the pool) and stops it.
@@ -78,49 +70,13 @@ impl WaterDemo {
         if pose.position.is_finite() && pose.rotation.is_finite() {
             let mut pose = Pose { position: pose.position, rotation: pose.rotation.normalize() };
             physics::keep_in_pool(&mut pose, &self.hull(id));
-            self.bodies[id as usize] = FloatingBody::at(pose);
+            self.bodies[id.0].motion = FloatingBody::at(pose);
         }
     }
 
     /// A body's hull ellipsoids, in its own frame.
     pub(super) fn hull(&self, id: BodyId) -> Vec<Ellipsoid> {
-        match id {
-            BodyId::Sphere => {
-                vec![Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(self.params.get(ParamId::SphereRadius)) }]
-            }
-            BodyId::Duck => duck::HULL.to_vec(),
-        }
-    }
-
-    pub(super) fn density(&self, id: BodyId) -> f32 {
-        match id {
-            BodyId::Sphere => self.params.get(ParamId::SphereDensity),
-            BodyId::Duck => self.params.get(ParamId::DuckDensity),
-        }
-    }
-
-    pub(super) fn centre_of_mass(id: BodyId) -> Vec3 {
-        match id {
-            BodyId::Sphere => Vec3::ZERO,
-            BodyId::Duck => duck::CENTRE_OF_MASS,
-        }
-    }
-
-    /// Radius (m) of the ring around a body on which the water is sampled for it: just
-    /// outside its waterline, so the water it pushes up itself counts little.
-    pub(super) fn ring_radius(&self, id: BodyId) -> f32 {
-        match id {
-            BodyId::Sphere => self.params.get(ParamId::SphereRadius) * 1.1 + 0.02,
-            BodyId::Duck => 0.3,
-        }
-    }
-
-    /// Radius (m) of a ball standing in for a body when the two bump into each other.
-    pub(super) fn bump_radius(&self, id: BodyId) -> f32 {
-        match id {
-            BodyId::Sphere => self.params.get(ParamId::SphereRadius),
-            BodyId::Duck => 0.13,
-        }
+        (id.kind().hull)(&|name: &str| self.value(name))
     }
 
     /// Frames between the water heights the bodies last used and the frame that used them:
@@ -132,26 +88,26 @@ impl WaterDemo {
 
     /// Volume (m³) of the bodies under water after the last step.
     pub fn submerged_volume(&self) -> f32 {
-        BodyId::ALL.iter().filter(|&&id| self.shows(id)).map(|&id| self.submerged[id as usize]).sum()
+        BodyId::all().filter(|&id| self.shows(id)).map(|id| self.bodies[id.0].submerged).sum()
     }
 
     /// The water plane under each body from the newest probe heights plus the ambient waves
     /// there now (flat at the rest level before any probes have arrived).
-    pub(super) fn water_planes(&mut self) -> [WaterPlane; 2] {
+    pub(super) fn water_planes(&mut self) -> Vec<WaterPlane> {
         let frame = self.water.frames() + 1;
         let level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
-        let mut planes = [WaterPlane::flat(level); 2];
+        let mut planes = vec![WaterPlane::flat(level); self.bodies.len()];
         let t = self.sim_time();
-        // The ambient surface now, made once for both bodies' probes.
+        // The ambient surface now, made once for all bodies' probes.
         let mut ambient_now = None;
         if let Some(samples) = self.water.probes() {
             self.probe_latency = Some(frame.saturating_sub(samples.frame));
-            for id in BodyId::ALL {
-                let k = id as usize * PROBES_PER_BODY;
+            for id in BodyId::all() {
+                let k = id.0 * PROBES_PER_BODY;
                 if let Some(heights) = samples.heights.get(k..k + PROBES_PER_BODY) {
                     let points = &samples.points[k..k + PROBES_PER_BODY];
                     let radius = points[0].distance(points[PROBES_PER_BODY / 2]) / 2.0;
-                    planes[id as usize] = WaterPlane::from_ring(heights, radius);
+                    planes[id.0] = WaterPlane::from_ring(heights, radius);
                     if self.ambient.model != AmbientModel::None {
                         // The ambient waves on a ring of their own, at the body's waterline:
                         // the simulated water's ring keeps clear of the ripples the body
@@ -167,7 +123,7 @@ impl WaterDemo {
                             })
                             .collect();
                         let waves = WaterPlane::from_ring(&ring, AMBIENT_RING_RADIUS);
-                        planes[id as usize] = planes[id as usize].plus(waves);
+                        planes[id.0] = planes[id.0].plus(waves);
                     }
                 }
             }
@@ -176,8 +132,8 @@ impl WaterDemo {
     }
 
     /// Moves the bodies through `steps` fixed steps on the water planes under them; a body
-    /// held by the pointer stays put. The two bump off each other. Returns, per step, how the
-    /// bodies' hulls moved in it, to push the water by.
+    /// held by the pointer stays put. Every two in the pool bump off each other. Returns, per
+    /// step, how the bodies' hulls moved in it, to push the water by.
     pub(super) fn step_bodies(&mut self, steps: u32) -> Vec<Vec<HullMove>> {
         let planes = self.water_planes();
         let gravity = self.params.flag(ParamId::Gravity);
@@ -185,35 +141,41 @@ impl WaterDemo {
             Drag::Body { id, .. } => Some(id),
             _ => None,
         };
-        let hulls = [self.hull(BodyId::Sphere), self.hull(BodyId::Duck)];
-        let shapes = BodyId::ALL.map(|id| Shape {
-            hull: &hulls[id as usize],
-            centre_of_mass: Self::centre_of_mass(id),
-            density: self.density(id),
-        });
-        let both = self.shows(BodyId::Sphere) && self.shows(BodyId::Duck);
+        let value = |name: &str| self.value(name);
+        let hulls: Vec<Vec<Ellipsoid>> = BodyId::all().map(|id| (id.kind().hull)(&value)).collect();
+        let shapes: Vec<Shape> = BodyId::all()
+            .map(|id| Shape {
+                hull: &hulls[id.0],
+                centre_of_mass: id.kind().centre_of_mass,
+                density: (id.kind().density)(&value),
+            })
+            .collect();
+        let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value)).collect();
+        let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.shows(id)).collect();
         let mut pushes = Vec::with_capacity(steps as usize);
         for _ in 0..steps.max(1) {
-            for id in BodyId::ALL {
-                let k = id as usize;
-                let body = &mut self.bodies[k];
-                self.submerged[k] = if held == Some(id) || steps == 0 {
+            for id in BodyId::all() {
+                let (k, body) = (id.0, &mut self.bodies[id.0]);
+                body.submerged = if held == Some(id) || steps == 0 {
                     if held == Some(id) {
-                        body.hold();
+                        body.motion.hold();
                     }
-                    shapes[k].submerged(&body.pose, &planes[k]).0
+                    shapes[k].submerged(&body.motion.pose, &planes[k]).0
                 } else {
-                    body.step(&shapes[k], gravity, &planes[k], STEP_DT)
+                    body.motion.step(&shapes[k], gravity, &planes[k], STEP_DT)
                 };
             }
-            if both {
-                let mass = |id: BodyId| if held == Some(id) { f32::INFINITY } else { shapes[id as usize].mass() };
-                let (ms, md) = (mass(BodyId::Sphere), mass(BodyId::Duck));
-                let (rs, rd) = (self.bump_radius(BodyId::Sphere), self.bump_radius(BodyId::Duck));
-                let [sphere, duck] = &mut self.bodies;
-                physics::separate(sphere, rs, ms, duck, rd, md);
-                for (k, id) in BodyId::ALL.iter().enumerate() {
-                    physics::keep_in_pool(&mut self.bodies[k].pose, &hulls[*id as usize]);
+            if shown.len() > 1 {
+                let mass = |id: BodyId| if held == Some(id) { f32::INFINITY } else { shapes[id.0].mass() };
+                for (i, &a) in shown.iter().enumerate() {
+                    for &b in &shown[i + 1..] {
+                        let (first, second) = self.bodies.split_at_mut(b.0);
+                        let (a_motion, b_motion) = (&mut first[a.0].motion, &mut second[0].motion);
+                        physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
+                    }
+                }
+                for id in BodyId::all() {
+                    physics::keep_in_pool(&mut self.bodies[id.0].motion.pose, &hulls[id.0]);
                 }
             }
             if steps > 0 {
@@ -227,21 +189,20 @@ impl WaterDemo {
     /// A body that just appeared only records its place (the rest level accounts for it).
     pub(super) fn take_pushes(&mut self) -> Vec<HullMove> {
         let mut moves = Vec::new();
-        for id in BodyId::ALL {
-            let k = id as usize;
+        for id in BodyId::all() {
             if !self.shows(id) {
-                self.pushed[k] = None;
+                self.bodies[id.0].pushed = None;
                 continue;
             }
-            let pose = self.bodies[k].pose;
+            let pose = self.bodies[id.0].motion.pose;
             let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
-            if let Some(previous) = &self.pushed[k] {
+            if let Some(previous) = &self.bodies[id.0].pushed {
                 if !previous.iter().zip(&current).any(|(before, now)| now.moved_from(before)) {
                     continue;
                 }
                 moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
             }
-            self.pushed[k] = Some(current);
+            self.bodies[id.0].pushed = Some(current);
         }
         moves
     }
@@ -250,14 +211,13 @@ impl WaterDemo {
     /// (`pushes`), the rest level their submerged volume raises, and where to sample heights
     /// for the next frames.
     pub(super) fn couple_water(&mut self, pushes: Vec<Vec<HullMove>>) {
-        let mut probes = Vec::with_capacity(2 * PROBES_PER_BODY);
-        for id in BodyId::ALL {
-            let k = id as usize;
-            let pose = self.bodies[k].pose;
-            if self.shows(id) && self.pushed[k].is_none() {
-                self.pushed[k] = Some(self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
+        let mut probes = Vec::with_capacity(self.bodies.len() * PROBES_PER_BODY);
+        for id in BodyId::all() {
+            let pose = self.bodies[id.0].motion.pose;
+            if self.shows(id) && self.bodies[id.0].pushed.is_none() {
+                self.bodies[id.0].pushed = Some(self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
             }
-            let radius = self.ring_radius(id);
+            let radius = (id.kind().probe_ring)(&|name: &str| self.value(name));
             for i in 0..PROBES_PER_BODY {
                 let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
                 probes.push(Vec2::new(pose.position.x, pose.position.z) + radius * Vec2::new(a.cos(), a.sin()));

@@ -4,8 +4,7 @@
 use glam::{Vec2, Vec3};
 
 use super::{BodyId, WaterDemo};
-use crate::camera::{self, Pick};
-use crate::duck;
+use crate::camera::Pick;
 use crate::params::ParamId;
 use crate::physics::Pose;
 use crate::render::flat::RenderMode;
@@ -70,20 +69,15 @@ impl WaterDemo {
     /// The nearest body under pixel (x, y) and the point hit (m), if any.
     pub fn pick_body(&self, pixel: Vec2) -> Option<(BodyId, Vec3)> {
         let ray = self.camera.ray(pixel, self.viewport);
-        let sphere = self.sphere().and_then(|s| camera::ray_sphere(&ray, s.centre, s.radius));
-        let duck = self.duck().and_then(|pose| {
-            duck::TRACED_PARTS
-                .iter()
-                .filter_map(|p| p.shape.ray_hit(&pose, ray.origin, ray.dir))
-                .min_by(|a, b| a.total_cmp(b))
-        });
-        let hit = |t: f32| ray.origin + ray.dir * t;
-        match (sphere, duck) {
-            (Some(s), Some(d)) if d < s => Some((BodyId::Duck, hit(d))),
-            (Some(s), _) => Some((BodyId::Sphere, hit(s))),
-            (None, Some(d)) => Some((BodyId::Duck, hit(d))),
-            (None, None) => None,
+        let value = |name: &str| self.params.get_by_name(name).expect("a body kind reads its own parameters");
+        let mut nearest: Option<(BodyId, f32)> = None;
+        for id in BodyId::all().filter(|&id| self.shows(id)) {
+            let t = (id.kind().pick)(&self.body(id).pose, &value, ray.origin, ray.dir);
+            if let Some(t) = t.filter(|&t| nearest.is_none_or(|(_, best)| t < best)) {
+                nearest = Some((id, t));
+            }
         }
+        nearest.map(|(id, t)| (id, ray.origin + ray.dir * t))
     }
 
     /// Whether a press at column `x` (pixels) grabs the split view's divider (shown only in
@@ -103,7 +97,7 @@ impl WaterDemo {
             return;
         }
         if let Some((id, hit)) = self.pick_body(p) {
-            let centre = self.bodies[id as usize].pose.position;
+            let centre = self.bodies[id.0].motion.pose.position;
             let plane_normal = (self.camera.eye() - hit).normalize();
             self.drag = Drag::Body { id, offset: centre - hit, plane_normal, plane_point: hit };
             return;
@@ -152,7 +146,7 @@ impl WaterDemo {
                 if denom.abs() > 1e-5 {
                     let t = (plane_point - ray.origin).dot(plane_normal) / denom;
                     if t > 0.0 {
-                        let rotation = self.bodies[id as usize].pose.rotation;
+                        let rotation = self.bodies[id.0].motion.pose.rotation;
                         self.set_body_pose(id, Pose { position: ray.origin + ray.dir * t + offset, rotation });
                     }
                 }

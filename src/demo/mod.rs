@@ -11,15 +11,14 @@ use glam::{Vec2, Vec3};
 
 use crate::ambient::gpu_ocean::GpuOcean;
 use crate::ambient::{AmbientSettings, AmbientWaves};
+use crate::bodies::Body;
+pub use crate::bodies::BodyId;
 use crate::camera::OrbitCamera;
 use crate::params::{ParamId, Params};
-use crate::physics::{FloatingBody, Pose};
 use crate::quality::{ResolutionGovernor, StepGovernor};
 use crate::render::{DebugTexture, RenderSettings, Renderer};
 use crate::scene;
-use crate::sim::{FixedStep, HeightField, HullSlot, SimEngine, WaterLevel, WaveSettings};
-pub use bodies::BodyId;
-use bodies::START_SPHERE_CENTRE;
+use crate::sim::{FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
 use input::Drag;
 pub use input::{Key, DIVIDER_GRAB_PX};
 pub use options::{DemoOptions, OptionSpec};
@@ -52,12 +51,8 @@ pub struct WaterDemo {
     /// The `sim_size` parameter value the water was last built or resampled for.
     applied_sim_size: f32,
     pub camera: OrbitCamera,
-    /// The sphere and the duck, indexed by [`BodyId`].
-    bodies: [FloatingBody; 2],
-    /// Each body's hull ellipsoids as the water last took them in (`None`: not in the pool).
-    pushed: [Option<Vec<HullSlot>>; 2],
-    /// Each body's submerged volume after the last step (m³).
-    submerged: [f32; 2],
+    /// One body per kind of `bodies::KINDS`, indexed by [`BodyId`].
+    bodies: Vec<Body>,
     /// Frames between the water heights the bodies last used and the frame using them.
     probe_latency: Option<u64>,
     water: HeightField,
@@ -107,9 +102,7 @@ impl WaterDemo {
             params,
             applied_sim_size,
             camera: OrbitCamera::default(),
-            bodies: [FloatingBody::at(Pose::at(START_SPHERE_CENTRE)), FloatingBody::at(Pose::at(Vec3::ZERO))],
-            pushed: [None, None],
-            submerged: [0.0; 2],
+            bodies: Vec::new(),
             probe_latency: None,
             water,
             renderer,
@@ -127,7 +120,7 @@ impl WaterDemo {
             spectrum_shown: false,
         };
         demo.refresh_ambient();
-        demo.place_duck_at_start();
+        demo.place_bodies_at_start();
         demo
     }
 
@@ -163,9 +156,7 @@ impl WaterDemo {
     /// Flattens the water and puts the bodies back where they started, at rest.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.water.reset(queue);
-        self.bodies[BodyId::Sphere as usize] = FloatingBody::at(Pose::at(START_SPHERE_CENTRE));
-        self.place_duck_at_start();
-        self.pushed = [None, None];
+        self.place_bodies_at_start();
     }
 
     /// Advances the water by `frame_time` seconds (in fixed steps) and draws into `target`

@@ -18,7 +18,7 @@ mod view;
 use std::collections::HashMap;
 
 use crate::ambient::AmbientModel;
-use crate::duck;
+use crate::bodies::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::sim::HeightField;
 use crate::textures::SkyCube;

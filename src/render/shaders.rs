@@ -31,7 +31,7 @@ pub fn scene_prelude(features: Features) -> String {
     let numbers = format!(
         "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\n",
         crate::scene::IOR_WATER,
-        crate::duck::TRACED_PARTS.len()
+        crate::bodies::duck::TRACED_PARTS.len()
     );
     [
         features.wgsl(),

@@ -5,7 +5,7 @@ use glam::Mat4;
 
 use super::{flat, flat_shown, Renderer, View};
 use crate::ambient::MAX_AMBIENT_WAVES;
-use crate::duck;
+use crate::bodies::duck;
 use crate::optics;
 use crate::scene;
 use crate::sim::HeightField;

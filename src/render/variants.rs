@@ -11,8 +11,9 @@ use super::flat::Distortion;
 use super::shaders;
 use super::{View, DEPTH_FORMAT};
 use crate::ambient::AmbientModel;
+use crate::bodies::duck;
+use crate::gpu;
 use crate::optics::{FresnelModel, SpecularModel};
-use crate::{duck, gpu};
 
 /// What a frame shows that costs shader work: the shader constants of a variant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

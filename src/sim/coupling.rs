@@ -86,8 +86,9 @@ pub struct HullMove {
     pub to: HullSlot,
 }
 
-/// Most ellipsoid moves one step passes to the water (the sphere, and the duck's body and head).
-pub const MAX_HULL_MOVES: usize = 3;
+/// Most ellipsoid moves one step passes to the water: room for the hulls of every kind of
+/// body (`bodies::HULL_MOVES`, checked there; the drop pass loops over those passed only).
+pub const MAX_HULL_MOVES: usize = 8;
 /// Steps of one frame whose body moves are applied each before its own step (later steps' moves
 /// are added to the last), so that the water is pushed the same at any frame rate.
 pub const MAX_PUSH_STEPS: usize = 4;
@@ -96,8 +97,9 @@ pub const MAX_PUSH_STEPS: usize = 4;
 /// it holds the same waves at a resolution that still resolves everything a body of 0.2 m or
 /// more responds to, for about 0.1 ms per step.
 pub const CPU_COPY_SIZE: u32 = 128;
-/// Most points the water is sampled at for the bodies each frame.
-pub const MAX_PROBES: usize = 16;
+/// Most points the water is sampled at for the bodies each frame: room for a ring around a
+/// body of every kind (`bodies::PROBES_PER_BODY` each, checked there).
+pub const MAX_PROBES: usize = 48;
 /// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).
 pub const DISPLACEMENT_DEPTH: f32 = 0.1;
 /// Area of the pool's water surface (m²) for a half width of 1 m; scale by half width².

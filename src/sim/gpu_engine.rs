@@ -19,12 +19,14 @@ mod wgsl {
     pub const MEAN: &str = include_str!("../../shaders/sim_mean.wgsl");
 }
 
-/// The sizes of `SimUniforms`' arrays, for `sim_shared.wgsl`.
+/// The sizes of `SimUniforms`' arrays and one step's share of the hull slots, for
+/// `sim_shared.wgsl` and `sim_drop.wgsl`.
 fn wgsl_constants() -> String {
     format!(
-        "const MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\n",
+        "const MAX_DROPS: u32 = {};\nconst HULL_SLOTS: u32 = {};\nconst STEP_HULL_SLOTS: i32 = {};\n",
         MAX_DROPS_PER_PASS,
-        MAX_PUSH_STEPS * MAX_HULL_MOVES * 8
+        MAX_PUSH_STEPS * MAX_HULL_MOVES * 8,
+        MAX_HULL_MOVES * 8
     )
 }
 

@@ -1,0 +1,56 @@
+//! The sphere: one ball of paint under a clear coat, its radius and density parameters.
+
+use glam::Vec3;
+
+use super::BodyKind;
+use crate::param_spec::{slider, ParamSpec};
+use crate::physics::{Ellipsoid, Pose};
+use crate::scene::Sphere;
+
+/// Where the sphere starts (m).
+const START_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
+
+pub const KIND: BodyKind = BodyKind {
+    name: "sphere",
+    params: PARAMS,
+    hull_parts: 1,
+    hull: |v| vec![Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(v("sphere_radius")) }],
+    density: |v| v("sphere_density"),
+    centre_of_mass: Vec3::ZERO,
+    start: |_| Pose::at(START_CENTRE),
+    probe_ring: |v| v("sphere_radius") * 1.1 + 0.02,
+    bump_radius: |v| v("sphere_radius"),
+    pick: |pose, v, origin, dir| {
+        let s = drawn(pose, v("sphere_radius"));
+        crate::camera::ray_sphere(&crate::camera::Ray { origin, dir }, s.centre, s.radius)
+    },
+};
+
+/// The sphere as drawn for a body at `pose`: kept inside the pool box.
+pub fn drawn(pose: &Pose, radius: f32) -> Sphere {
+    let mut s = Sphere { centre: pose.position, radius };
+    s.clamp_to_pool();
+    s
+}
+
+/// The sphere's size and density. (The parameter table, `params::table`, lists them in this order.)
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "sphere_radius",
+        label: "Sphere radius",
+        group: "Objects",
+        unit: "m",
+        control: slider(0.1, 0.4, 0.01),
+        default: 0.25,
+        help: "Radius of the sphere.",
+    },
+    ParamSpec {
+        name: "sphere_density",
+        label: "Sphere density",
+        group: "Objects",
+        unit: "kg/m³",
+        control: slider(100.0, 2000.0, 10.0),
+        default: 600.0,
+        help: "Mass per volume; below water's 1000 kg/m³ the sphere floats.",
+    },
+];
