@@ -2,7 +2,7 @@
 // joined after it (render/shaders.rs): scene_surface (water sampling), scene_light (caustic
 // light, pool tiles), scene_bodies (the sphere and the duck), scene_optics (sky, highlight,
 // Fresnel, absorption) and scene_trace (rays through air or water, the displayed colour).
-// Compiled per feature set: HAS_SPHERE, HAS_DUCK, HAS_CAUSTICS, FRESNEL_MODEL, SPECULAR_MODEL and
+// Compiled per feature set: HAS_<BODY> per kind of body, HAS_CAUSTICS, FRESNEL_MODEL, SPECULAR_MODEL and
 // SHOW_REFLECTANCE are constants written ahead of this file (render/variants.rs), so the code
 // of what is not in the pool, or of a model not chosen, compiles away.
 
@@ -12,7 +12,6 @@ struct Scene {
     eye: vec4<f32>,            // xyz camera position (m)
     sun: vec4<f32>,            // xyz unit vector towards the sun; w sun strength
     refracted_sun: vec4<f32>,  // xyz unit direction sunlight travels after a flat surface (downwards)
-    sphere: vec4<f32>,         // xyz centre (m), w radius (m); radius 0 = no sphere
     pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
     water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
@@ -24,11 +23,6 @@ struct Scene {
     scatter: vec4<f32>,        // xyz light the water scatters towards the eye (linear units)
     ior: vec4<f32>,            // xyz water's refractive index for red, green, blue light (with
                                // dispersion; green is IOR_WATER), w the dispersion factor
-    duck_pose: mat4x4<f32>,    // the duck's frame: rotation in columns 0-2, position (m) in column 3
-    duck_bound: vec4<f32>,     // xyz centre (m) and w radius (m) of a ball holding the duck; 0 = no duck
-    // Per traced duck part (ellipsoid; see duck.rs): centre and semi-axes in the duck's frame (m),
-    // and linear colour.
-    duck_parts: array<vec4<f32>, 3 * DUCK_PARTS>,
     ambient_header: vec4<f32>, // x waves in ambient_waves, y Gerstner's c = Q / sum(a k)
     // Per ambient wave (ambient.rs): kx, kz (rad/m), amplitude (m), phase at this frame's time.
     ambient_waves: array<vec4<f32>, MAX_AMBIENT_WAVES>,
@@ -38,6 +32,8 @@ struct Scene {
                                // w exposure factor 2^EV before the tone curve
     sky_light: vec4<f32>,      // rgb the sky's light on a surface facing up (albedo factor);
                                // w 1 with the deck around the pool, 0 cut-away
+    // Each kind of body's share (bodies::wgsl: <NAME>_SLOT on; see its body_<name>.wgsl).
+    bodies: array<vec4<f32>, BODY_SLOTS>,
 };
 
 @group(0) @binding(0) var<uniform> scene: Scene;
@@ -81,10 +77,6 @@ fn sky_light_at(y: f32) -> vec3<f32> {
     return sky_light() * select(1.0, UNDERWATER_SKY, y < 0.0);
 }
 
-const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
-// The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
-const SPHERE_GLOSS: f32 = 300.0;
-const SPHERE_SHINE: f32 = 60.0;
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);
 
 fn half_width() -> f32 { return scene.pool.x; }

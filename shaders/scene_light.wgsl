@@ -55,7 +55,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
         let to_source = refract(-scene.refracted_sun.xyz, -n, IOR_WATER / IOR_AIR);
         light *= 0.6 + 0.9 * pow(max(dot(to_source, scene.sun.xyz), 0.0), 1500.0);
     }
-    if (with_sphere_shadow && (HAS_SPHERE || HAS_DUCK)) {
+    if (with_sphere_shadow && HAS_BODIES) {
         let r = scene.refracted_sun.xyz;
         light *= objects_visibility(surface, r, distance(surface, p));
         light *= objects_visibility(surface, scene.sun.xyz, 10.0);
@@ -78,36 +78,6 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
     return vec3<f32>(underwater_light(p, with_sphere_shadow));
 }
 
-// Analytic ambient occlusion of a sphere seen from a point with normal n:
-// the sphere's projected solid angle, cos(theta) * (r / d)^2.
-fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
-    let r = scene.sphere.w;
-    if (!HAS_SPHERE || r <= 0.0) {
-        return 0.0;
-    }
-    let to_centre = scene.sphere.xyz - p;
-    let d2 = dot(to_centre, to_centre);
-    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
-    return clamp(cos_t * r * r / d2, 0.0, 1.0);
-}
-
-// Inward normal of the pool face nearest to p (floor or one of the four walls).
-// Written with select rather than branches: it runs per pixel for two rays.
-fn pool_normal(p: vec3<f32>) -> vec3<f32> {
-    let w = half_width();
-    let dx = w - abs(p.x);
-    let dz = w - abs(p.z);
-    let dy = p.y + depth();
-    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
-    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
-}
-
-// Texture coordinates (m) of the tiles at p on the face with inward normal n.
-fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
-    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
-    return select(wall, p.xz, abs(n.y) > 0.5);
-}
-
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly.
@@ -115,7 +85,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     if (HAS_DISPERSION && p.y < 0.0) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
+        let ambient = sky_light_at(p.y) * (1.0 - 0.9 * bodies_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
@@ -124,7 +94,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
     }
-    let ambient = sky_light_at(p.y) * (1.0 - 0.9 * sphere_occlusion(p, n));
+    let ambient = sky_light_at(p.y) * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
 }
 

@@ -1,20 +1,16 @@
 // Tracing rays through water and air to what they hit, and the colour as displayed (tone
 // curve, sRGB).
 
-// What a ray starting in the water sees: the sphere or the pool's inside, dimmed by the
+// What a ray starting in the water sees: a body or the pool's inside, dimmed by the
 // water it crossed (Beer–Lambert). t_exit: pool_exit_distance of the ray; lod: tile mip
 // level (see tile_lod).
 fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     var t = t_exit;
     var colour: vec3<f32>;
-    let ts = hit_sphere(origin, dir);
-    let duck = intersect_duck(origin, dir);
-    if (duck.t < t && duck.t < ts) {
-        t = duck.t;
-        colour = duck_colour(origin + dir * t, duck.normal, duck.albedo, dir);
-    } else if (ts < t) {
-        t = ts;
-        colour = sphere_colour(origin + dir * t, dir);
+    let body = hit_bodies(origin, dir);
+    if (body.t < t) {
+        t = body.t;
+        colour = body_colour(body, origin + dir * t, dir);
     } else {
         let hit = origin + dir * t;
         colour = pool_colour_at_hit(hit, lod);
@@ -29,19 +25,15 @@ fn upward(dir: vec3<f32>) -> vec3<f32> {
     return normalize(vec3<f32>(dir.x, max(abs(dir.y), 1.0e-4), dir.z));
 }
 
-// What a ray starting at the surface and going up through air (see upward) sees: the
-// sphere, the pool walls above the water line, or the sky. normal: the surface normal the
+// What a ray starting at the surface and going up through air (see upward) sees: a body,
+// the pool walls above the water line, or the sky. normal: the surface normal the
 // ray was mirrored at (zero for a refracted ray; see sun_specular); t_exit:
 // pool_exit_distance of the ray; lod: tile mip level (see tile_lod).
 fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
-    let ts = hit_sphere(origin, dir);
     let t = t_exit;
-    let duck = intersect_duck(origin, dir);
-    if (duck.t < t && duck.t < ts) {
-        return duck_colour(origin + dir * duck.t, duck.normal, duck.albedo, dir);
-    }
-    if (ts < t) {
-        return sphere_colour(origin + dir * ts, dir);
+    let body = hit_bodies(origin, dir);
+    if (body.t < t) {
+        return body_colour(body, origin + dir * body.t, dir);
     }
     let hit = origin + dir * t;
     if (hit.y < rim() - 1.0e-3) {

@@ -21,6 +21,7 @@ pub mod sim;
 pub mod sky;
 pub mod textures;
 pub mod timing;
+pub mod util;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 /// Bottom to top. A module may use modules of its own layer (without a cycle) and below.
 const LAYERS: &[(&str, &[&str])] = &[
-    ("util", &[]),
+    ("util", &["util"]),
     ("world", &["scene", "camera"]),
     ("parameter types", &["param_spec"]),
     ("gpu plumbing", &["gpu", "timing"]),

@@ -3,9 +3,9 @@
 //! The same parts give the mesh drawn directly, the shapes the scene shader traces for
 //! reflections, refractions and shadows, and the hull its buoyancy comes from.
 
-use glam::{Quat, Vec2, Vec3};
+use glam::{Mat4, Quat, Vec2, Vec3};
 
-use super::BodyKind;
+use super::{BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
 use crate::physics::{Ellipsoid, Pose, Shape};
 
@@ -30,7 +30,34 @@ pub const KIND: BodyKind = BodyKind {
     pick: |pose, _, origin, dir| {
         TRACED_PARTS.iter().filter_map(|p| p.shape.ray_hit(pose, origin, dir)).min_by(|a, b| a.total_cmp(b))
     },
+    drawn: |pose, _| BodyView { pose: *pose, size: 0.0 },
+    bound: |_| bounding_radius(),
+    uniform_slots: 5 + 3 * TRACED_PARTS.len(),
+    uniform: write_uniform,
+    mesh: || {
+        let (vertices, indices) = mesh();
+        BodyMesh { vertices: bytemuck::cast_slice(&vertices).to_vec(), indices }
+    },
+    // Position and normal in the duck's frame, linear colour.
+    vertex: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
+    vertex_stride: 36,
+    wgsl: include_str!("../../shaders/body_duck.wgsl"),
+    wgsl_constants: || format!("const DUCK_PARTS: i32 = {};\n", TRACED_PARTS.len()),
 };
+
+/// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame (rotation
+/// and position), a ball holding it (radius 0: no duck), then per traced part its centre and
+/// semi-axes in the duck's frame (m) and its colour.
+fn write_uniform(body: Option<&BodyView>, out: &mut [[f32; 4]]) {
+    let frame = body.map_or(Mat4::IDENTITY, |b| Mat4::from_rotation_translation(b.pose.rotation, b.pose.position));
+    out[..4].copy_from_slice(&frame.to_cols_array_2d());
+    out[4] = body.map_or([0.0; 4], |b| b.pose.position.extend(bounding_radius()).to_array());
+    for (slots, part) in out[5..].chunks_mut(3).zip(&TRACED_PARTS) {
+        slots[0] = part.shape.centre.extend(0.0).to_array();
+        slots[1] = part.shape.radii.extend(0.0).to_array();
+        slots[2] = part.colour.extend(1.0).to_array();
+    }
+}
 
 /// One piece of the duck: its ellipsoid and colour (linear RGB).
 #[derive(Clone, Copy, Debug)]

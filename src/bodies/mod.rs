@@ -38,6 +38,39 @@ pub struct BodyKind {
     pub bump_radius: fn(Values) -> f32,
     /// Distance along a ray (origin, unit dir) to where it hits the body at `pose`, if it does.
     pub pick: fn(&Pose, Values, Vec3, Vec3) -> Option<f32>,
+    /// The body as the renderer draws it, from its pose and parameters.
+    pub drawn: fn(&Pose, Values) -> BodyView,
+    /// Radius (m) of a ball around the drawn body's position holding all of it.
+    pub bound: fn(&BodyView) -> f32,
+    /// Its share of the scene uniform's `bodies` array (vec4s).
+    pub uniform_slots: usize,
+    /// Writes its share (`uniform_slots` vec4s) for the drawn body, or for none in the pool.
+    pub uniform: fn(Option<&BodyView>, &mut [[f32; 4]]),
+    /// Its mesh, drawn with `vs_<name>` and `fs_<name>` of its WGSL.
+    pub mesh: fn() -> BodyMesh,
+    /// The mesh's vertex layout and stride (bytes).
+    pub vertex: &'static [wgpu::VertexAttribute],
+    pub vertex_stride: u64,
+    /// Its WGSL: `<name>_hit`, `<name>_light` (what it lets through along a segment),
+    /// `<name>_shade`, `<name>_occlusion` and the mesh's `vs_<name>`, `fs_<name>`; it reads its
+    /// uniform at `<NAME>_SLOT`.
+    pub wgsl: &'static str,
+    /// WGSL constants its code reads, written from Rust.
+    pub wgsl_constants: fn() -> String,
+}
+
+/// A body as the renderer draws it: where (its pose; the sphere's kept inside the pool) and
+/// its size parameter where it has one (m; 0 otherwise).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodyView {
+    pub pose: Pose,
+    pub size: f32,
+}
+
+/// A kind's mesh: vertex bytes (laid out as [`BodyKind::vertex`] says) and triangle indices.
+pub struct BodyMesh {
+    pub vertices: Vec<u8>,
+    pub indices: Vec<u32>,
 }
 
 /// Every kind, in the order of their bits in `objects` and of their parameters in the table.
@@ -59,6 +92,17 @@ pub const HULL_MOVES: usize = {
 
 // The simulation's capacity for the bodies' pushes and probes holds the table.
 const _: () = assert!(HULL_MOVES <= MAX_HULL_MOVES && KINDS.len() * PROBES_PER_BODY <= MAX_PROBES);
+
+/// Vec4s of the scene uniform's `bodies` array: every kind's share.
+pub const UNIFORM_SLOTS: usize = {
+    let mut n = 0;
+    let mut i = 0;
+    while i < KINDS.len() {
+        n += KINDS[i].uniform_slots;
+        i += 1;
+    }
+    n
+};
 
 /// A body in the pool: the index of its kind in [`KINDS`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -112,3 +156,51 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
     default: 3.0,
     help: "What floats in the pool: nothing, the sphere, a rubber duck, or both.",
 }];
+
+/// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
+/// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
+/// the code that asks every kind present: the nearest hit (`hit_bodies`), its colour
+/// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
+/// they take from a point (`bodies_occlusion`).
+pub fn wgsl(present: u32) -> String {
+    let mut out = format!(
+        "const BODY_SLOTS: u32 = {UNIFORM_SLOTS}u;\nconst HAS_BODIES: bool = {};\n",
+        present & ((1 << KINDS.len()) - 1) != 0
+    );
+    let mut slot = 0;
+    for (i, kind) in KINDS.iter().enumerate() {
+        let upper = kind.name.to_uppercase();
+        let has = present & (1 << i) != 0;
+        out += &format!(
+            "const HAS_{upper}: bool = {has};\nconst {upper}_SLOT: i32 = {slot};\nconst {upper}_KIND: i32 = {i};\n"
+        );
+        out += &(kind.wgsl_constants)();
+        out += kind.wgsl;
+        slot += kind.uniform_slots;
+    }
+    let each = |line: &dyn Fn(&str, &str) -> String| -> String {
+        KINDS.iter().map(|k| line(k.name, &k.name.to_uppercase())).collect()
+    };
+    out += "\nstruct BodyHit {\n    t: f32,\n    kind: i32,\n    normal: vec3<f32>,\n    albedo: vec3<f32>,\n};\n";
+    out += &format!(
+        "fn hit_bodies(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));\n{}    return best;\n}}\n",
+        each(&|name, upper| format!(
+            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo);\n        }}\n    }}\n"
+        ))
+    );
+    out += &format!(
+        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
+        each(&|name, upper| format!(
+            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir);\n    }}\n"
+        ))
+    );
+    out += &format!(
+        "fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {{\n    var light = 1.0;\n{}    return light;\n}}\n",
+        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        light *= {name}_light(p, dir, t_max);\n    }}\n"))
+    );
+    out += &format!(
+        "fn bodies_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {{\n    var o = 0.0;\n{}    return o;\n}}\n",
+        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        o += {name}_occlusion(p, n);\n    }}\n"))
+    );
+    out
+}

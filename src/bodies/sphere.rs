@@ -2,10 +2,11 @@
 
 use glam::Vec3;
 
-use super::BodyKind;
+use super::{BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
 use crate::physics::{Ellipsoid, Pose};
 use crate::scene::Sphere;
+use crate::util::unit_sphere;
 
 /// Where the sphere starts (m).
 const START_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
@@ -24,6 +25,23 @@ pub const KIND: BodyKind = BodyKind {
         let s = drawn(pose, v("sphere_radius"));
         crate::camera::ray_sphere(&crate::camera::Ray { origin, dir }, s.centre, s.radius)
     },
+    drawn: |pose, v| {
+        let s = drawn(pose, v("sphere_radius"));
+        BodyView { pose: Pose::at(s.centre), size: s.radius }
+    },
+    bound: |b| b.size,
+    uniform_slots: 1,
+    // Centre (m) and radius (m); radius 0: no sphere.
+    uniform: |b, out| out[0] = b.map_or([0.0; 4], |b| b.pose.position.extend(b.size).to_array()),
+    mesh: || {
+        let (vertices, indices) = unit_sphere(24, 48);
+        BodyMesh { vertices: bytemuck::cast_slice(&vertices).to_vec(), indices }
+    },
+    // A point on the unit sphere.
+    vertex: &wgpu::vertex_attr_array![0 => Float32x3],
+    vertex_stride: 12,
+    wgsl: include_str!("../../shaders/body_sphere.wgsl"),
+    wgsl_constants: String::new,
 };
 
 /// The sphere as drawn for a body at `pose`: kept inside the pool box.

@@ -6,7 +6,7 @@ use glam::{Vec2, Vec3};
 
 use super::{Drag, WaterDemo, STEP_DT};
 use crate::ambient::AmbientModel;
-use crate::bodies::{Body, BodyId, PROBES_PER_BODY};
+use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
 use crate::params::ParamId;
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::scene::{self, Sphere};
@@ -39,6 +39,15 @@ impl WaterDemo {
     pub fn shows(&self, id: BodyId) -> bool {
         let objects = self.params.get(ParamId::Objects) as u32;
         objects & id.bit() != 0
+    }
+
+    /// Every kind's body as the renderer draws it, if shown.
+    pub(super) fn drawn_bodies(&self) -> [Option<BodyView>; KINDS.len()] {
+        let value = |name: &str| self.value(name);
+        std::array::from_fn(|k| {
+            let id = BodyId(k);
+            self.shows(id).then(|| (id.kind().drawn)(&self.bodies[k].motion.pose, &value))
+        })
     }
 
     /// The sphere as drawn, if shown.

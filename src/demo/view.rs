@@ -47,8 +47,7 @@ impl WaterDemo {
             view_proj: self.camera.view_projection(self.viewport.x / self.viewport.y),
             eye: self.camera.eye(),
             sun: self.sun(),
-            sphere: self.sphere(),
-            duck: self.duck(),
+            bodies: self.drawn_bodies(),
             caustics: self.params.flag(ParamId::Caustics),
             optics: Optics {
                 fresnel: FresnelModel::from_param(self.params.get(ParamId::Fresnel)),

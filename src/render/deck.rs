@@ -4,9 +4,9 @@
 
 use glam::Vec3;
 
-use super::meshes::push_triangle;
 use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
+use crate::util::push_triangle;
 
 /// How far the deck reaches from the pool's centre (m): past any frame the camera can show.
 pub const DECK_EXTENT: f32 = 400.0;

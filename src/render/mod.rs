@@ -18,7 +18,6 @@ mod view;
 use std::collections::HashMap;
 
 use crate::ambient::AmbientModel;
-use crate::bodies::duck;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::sim::HeightField;
 use crate::textures::SkyCube;
@@ -27,7 +26,7 @@ pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS
 pub use debug_view::{DebugTexture, DebugView, REFLECTANCE_VIEW};
 pub use deck::EYE_CLEARANCE;
 use flat::FlatWater;
-use meshes::{pool_box, unit_sphere, water_grid, Mesh};
+use meshes::{pool_box, water_grid, Mesh};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
 use uniforms::SceneUniforms;
 use upscale::Upscale;
@@ -101,8 +100,8 @@ pub struct Renderer {
     grid: Mesh,
     pool_mesh: Mesh,
     deck_mesh: Mesh,
-    sphere_mesh: Mesh,
-    duck_mesh: Mesh,
+    /// Each kind of body's mesh, in the order of `bodies::KINDS`.
+    body_meshes: Vec<Mesh>,
     depth: Option<DepthBuffer>,
     upscale: Upscale,
 }
@@ -135,8 +134,6 @@ impl Renderer {
         );
         let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
-        let (sphere_vertices, sphere_indices) = unit_sphere(24, 48);
-        let (duck_vertices, duck_indices) = duck::mesh();
         Self {
             settings,
             uniforms,
@@ -161,8 +158,13 @@ impl Renderer {
                 let (vertices, indices) = deck::deck_ring();
                 Mesh::new(device, "deck", &vertices, &indices)
             },
-            sphere_mesh: Mesh::new(device, "sphere", &sphere_vertices, &sphere_indices),
-            duck_mesh: Mesh::new(device, "duck", &duck_vertices, &duck_indices),
+            body_meshes: crate::bodies::KINDS
+                .iter()
+                .map(|kind| {
+                    let mesh = (kind.mesh)();
+                    Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
+                })
+                .collect(),
             depth: None,
             upscale: Upscale::new(device, settings.target_format),
         }

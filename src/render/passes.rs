@@ -205,13 +205,11 @@ impl Renderer {
     /// `features`, front to back.
     pub(super) fn draw_solids(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
         let pipelines = &self.variants[&features];
-        if view.sphere.is_some() {
-            pass.set_pipeline(&pipelines.sphere);
-            self.sphere_mesh.draw(pass);
-        }
-        if view.duck.is_some() {
-            pass.set_pipeline(&pipelines.duck);
-            self.duck_mesh.draw(pass);
+        for (k, pipeline) in pipelines.bodies.iter().enumerate() {
+            if let (Some(pipeline), Some(_)) = (pipeline, &view.bodies[k]) {
+                pass.set_pipeline(pipeline);
+                self.body_meshes[k].draw(pass);
+            }
         }
         pass.set_pipeline(&pipelines.pool);
         self.pool_mesh.draw(pass);

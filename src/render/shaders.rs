@@ -17,22 +17,16 @@ pub const SCENE: [&str; 6] = [
 ];
 pub const SKY: &str = include_str!("../../shaders/sky.wgsl");
 pub const POOL: &str = include_str!("../../shaders/pool.wgsl");
-pub const SPHERE: &str = include_str!("../../shaders/sphere.wgsl");
-pub const DUCK: &str = include_str!("../../shaders/duck.wgsl");
 pub const WATER: &str = include_str!("../../shaders/water.wgsl");
 pub const CAUSTICS: &str = include_str!("../../shaders/caustics.wgsl");
 pub const DEBUG_VIEW: &str = include_str!("../../shaders/debug_view.wgsl");
 
 /// Everything a scene pass of `features` starts from: the variant's constants, the numbers of
-/// the features the scene shows (water's refractive index, the duck's traced parts, optics,
-/// ambient waves, flat water, sky, deck, caustics mips), and the shared WGSL (maths, ray
-/// helpers, the scene's bindings and shading). The pass adds its own file after it.
+/// the features the scene shows (water's refractive index, optics, ambient waves, flat water,
+/// sky, deck, caustics mips), the shared WGSL (maths, ray helpers, the scene's bindings and
+/// shading) and the bodies' (their kinds' code, and the code asking the kinds present). The pass adds its own file after it.
 pub fn scene_prelude(features: Features) -> String {
-    let numbers = format!(
-        "const IOR_WATER: f32 = {:?};\nconst DUCK_PARTS: i32 = {};\n",
-        crate::scene::IOR_WATER,
-        crate::bodies::duck::TRACED_PARTS.len()
-    );
+    let numbers = format!("const IOR_WATER: f32 = {:?};\n", crate::scene::IOR_WATER);
     [
         features.wgsl(),
         numbers,
@@ -45,6 +39,7 @@ pub fn scene_prelude(features: Features) -> String {
         gpu::wgsl::MATH.to_owned(),
         COMMON.to_owned(),
         SCENE.join("\n"),
+        crate::bodies::wgsl(features.bodies as u32),
     ]
     .join("\n")
 }

@@ -1,11 +1,9 @@
 //! The scene uniforms every scene pass reads (group 0, binding 0), written once per frame
 //! from the [`View`].
 
-use glam::Mat4;
-
 use super::{flat, flat_shown, Renderer, View};
 use crate::ambient::MAX_AMBIENT_WAVES;
-use crate::bodies::duck;
+use crate::bodies::{BodyId, UNIFORM_SLOTS};
 use crate::optics;
 use crate::scene;
 use crate::sim::HeightField;
@@ -18,7 +16,6 @@ pub(super) struct SceneUniforms {
     pub(super) eye: [f32; 4],
     pub(super) sun: [f32; 4],
     pub(super) refracted_sun: [f32; 4],
-    pub(super) sphere: [f32; 4],
     pub(super) pool: [f32; 4],
     pub(super) water: [f32; 4],
     pub(super) output: [f32; 4],
@@ -26,24 +23,22 @@ pub(super) struct SceneUniforms {
     pub(super) absorption: [f32; 4],
     pub(super) scatter: [f32; 4],
     pub(super) ior: [f32; 4],
-    pub(super) duck_pose: [[f32; 4]; 4],
-    pub(super) duck_bound: [f32; 4],
-    pub(super) duck_parts: [[f32; 4]; 3 * duck::TRACED_PARTS.len()],
     pub(super) ambient_header: [f32; 4],
     pub(super) ambient_waves: [[f32; 4]; MAX_AMBIENT_WAVES],
     pub(super) flat: [f32; 4],
     pub(super) sun_light: [f32; 4],
     pub(super) sky_light: [f32; 4],
+    pub(super) bodies: [[f32; 4]; UNIFORM_SLOTS],
 }
 
-/// The duck's traced parts as the scene shader takes them: per part its centre and semi-axes
-/// in the duck's frame (m), and its colour.
-pub(super) fn duck_parts() -> [[f32; 4]; 3 * duck::TRACED_PARTS.len()] {
-    let mut out = [[0.0; 4]; 3 * duck::TRACED_PARTS.len()];
-    for (slots, part) in out.chunks_mut(3).zip(&duck::TRACED_PARTS) {
-        slots[0] = part.shape.centre.extend(0.0).to_array();
-        slots[1] = part.shape.radii.extend(0.0).to_array();
-        slots[2] = part.colour.extend(1.0).to_array();
+/// Every kind's share of the uniform's `bodies` array, for the drawn bodies of `view`.
+fn bodies_uniform(view: &View) -> [[f32; 4]; UNIFORM_SLOTS] {
+    let mut out = [[0.0; 4]; UNIFORM_SLOTS];
+    let mut at = 0;
+    for id in BodyId::all() {
+        let kind = id.kind();
+        (kind.uniform)(view.bodies[id.0].as_ref(), &mut out[at..at + kind.uniform_slots]);
+        at += kind.uniform_slots;
     }
     out
 }
@@ -60,7 +55,6 @@ impl Renderer {
     ) {
         self.sky_cube.update(queue, encoder, view.sun);
         let daylight = *self.sky_cube.daylight();
-        let sphere = view.sphere.map_or([0.0; 4], |s| [s.centre.x, s.centre.y, s.centre.z, s.radius]);
         let refracted = scene::refracted_sun(view.sun);
         let n = water.size() as f32;
         let u = SceneUniforms {
@@ -69,7 +63,6 @@ impl Renderer {
             eye: view.eye.extend(1.0).to_array(),
             sun: [view.sun.x, view.sun.y, view.sun.z, 0.0],
             refracted_sun: refracted.extend(0.0).to_array(),
-            sphere,
             pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, 0.0],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
             output: [
@@ -88,17 +81,12 @@ impl Renderer {
                 let [r, g, b] = optics::channel_iors(view.optics.dispersion);
                 [r, g, b, view.optics.dispersion]
             },
-            duck_pose: view
-                .duck
-                .map_or(Mat4::IDENTITY, |p| Mat4::from_rotation_translation(p.rotation, p.position))
-                .to_cols_array_2d(),
-            duck_bound: view.duck.map_or([0.0; 4], |p| p.position.extend(duck::bounding_radius()).to_array()),
-            duck_parts: duck_parts(),
             ambient_header: view.ambient.header,
             ambient_waves: view.ambient.waves,
             flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
             sun_light: daylight.sun_light.extend(2f32.powf(view.exposure)).to_array(),
             sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
+            bodies: bodies_uniform(view),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
         if let Some(f) = flat_shown(view) {

@@ -11,17 +11,16 @@ use super::flat::Distortion;
 use super::shaders;
 use super::{View, DEPTH_FORMAT};
 use crate::ambient::AmbientModel;
-use crate::bodies::duck;
+use crate::bodies::BodyId;
 use crate::gpu;
 use crate::optics::{FresnelModel, SpecularModel};
 
 /// What a frame shows that costs shader work: the shader constants of a variant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Features {
-    /// The sphere is in the pool (traced in reflections and refractions, casts shadows).
-    pub sphere: bool,
-    /// The duck is in the pool.
-    pub duck: bool,
+    /// The kinds of body in the pool, bit `i` for `bodies::KINDS[i]` (traced in reflections
+    /// and refractions, casting shadows, drawn).
+    pub bodies: u8,
     /// Light under water comes from the caustics map (else from a calm surface).
     pub caustics: bool,
     /// The Fresnel reflectance model of the water surface.
@@ -55,8 +54,7 @@ pub struct Features {
 impl Features {
     pub fn of(view: &View) -> Self {
         Self {
-            sphere: view.sphere.is_some(),
-            duck: view.duck.is_some(),
+            bodies: BodyId::all().filter(|id| view.bodies[id.0].is_some()).map(|id| id.bit() as u8).sum(),
             caustics: view.caustics,
             fresnel: view.optics.fresnel,
             specular: view.optics.specular,
@@ -71,22 +69,20 @@ impl Features {
         }
     }
 
-    /// The WGSL constants that select this variant (`HAS_SPHERE`, `HAS_DUCK`, `HAS_CAUSTICS`,
+    /// The WGSL constants that select this variant (`HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
     /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `CLIP_SIDE`,
-    /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`).
+    /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`; the bodies' `HAS_<BODY>` are in `bodies::wgsl`).
     pub fn wgsl(&self) -> String {
         let flat = format!(
             "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
             self.clip, self.flat_caustics, self.flat_distortion as u32
         );
         flat + &format!(
-            "const HAS_SPHERE: bool = {};\nconst HAS_DUCK: bool = {};\nconst HAS_CAUSTICS: bool = {};\n\
+            "const HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
              const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n",
-            self.sphere,
-            self.duck,
             self.caustics,
             self.fresnel as u32,
             self.specular as u32,
@@ -113,7 +109,7 @@ const REGION_MAX_SHARE: f32 = 0.5;
 impl Features {
     /// The same without the objects.
     pub fn without_objects(self) -> Self {
-        Self { sphere: false, duck: false, ..self }
+        Self { bodies: 0, ..self }
     }
 }
 
@@ -128,8 +124,12 @@ pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], F
     let features = Features::of(view);
     let plain = features.without_objects();
     let mut bounds: Vec<(Vec3, f32, Features)> = Vec::new();
-    bounds.extend(view.sphere.map(|s| (s.centre, s.radius, Features { sphere: true, ..plain })));
-    bounds.extend(view.duck.map(|p| (p.position, duck::bounding_radius(), Features { duck: true, ..plain })));
+    for id in BodyId::all() {
+        if let Some(body) = &view.bodies[id.0] {
+            let with = Features { bodies: id.bit() as u8, ..plain };
+            bounds.push((body.pose.position, (id.kind().bound)(body), with));
+        }
+    }
     if bounds.is_empty() || view.eye.y < 0.0 {
         return None;
     }
@@ -186,11 +186,7 @@ fn partition(rects: &[([u32; 4], Features)], base: Features, size: (u32, u32)) -
             let needs = rects
                 .iter()
                 .filter(|(r, _)| cell[0] >= r[0] && cell[1] <= r[2] && band[0] >= r[1] && band[1] <= r[3])
-                .fold(base, |f, (_, with)| Features {
-                    sphere: f.sphere || with.sphere,
-                    duck: f.duck || with.duck,
-                    ..f
-                });
+                .fold(base, |f, (_, with)| Features { bodies: f.bodies | with.bodies, ..f });
             run = match run {
                 Some((x0, _, kind)) if kind == needs => Some((x0, cell[1], kind)),
                 Some((x0, x1, kind)) => {
@@ -218,8 +214,8 @@ pub struct ScenePipelines {
     pub pool: wgpu::RenderPipeline,
     /// The deck around the pool (the pool's shader types and its own fragment shader).
     pub deck: wgpu::RenderPipeline,
-    pub sphere: wgpu::RenderPipeline,
-    pub duck: wgpu::RenderPipeline,
+    /// Per kind of `bodies::KINDS`, its mesh's pipeline, if the kind is among the features'.
+    pub bodies: Vec<Option<wgpu::RenderPipeline>>,
 }
 
 /// Formats and layouts the scene's pipelines are built for (fixed for a renderer).
@@ -241,27 +237,32 @@ impl ScenePipelines {
         let layouts = [targets.water_layout, targets.textures_layout];
         // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
         let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
-        let scene_pipeline =
-            |label, module: &wgpu::ShaderModule, vs, fs, attributes: &[wgpu::VertexAttribute], stride, cull| {
-                mesh_pipeline(
-                    device,
-                    MeshPipeline {
-                        label,
-                        module,
-                        vertex_entry: vs,
-                        fragment_entry: fs,
-                        layouts: &layouts,
-                        attributes,
-                        stride,
-                        cull,
-                        front_face,
-                        format: targets.format,
-                        blend: None,
-                        write_mask: wgpu::ColorWrites::ALL,
-                        depth: true,
-                    },
-                )
-            };
+        let scene_pipeline = |label: &str,
+                              module: &wgpu::ShaderModule,
+                              vs: &str,
+                              fs: &str,
+                              attributes: &[wgpu::VertexAttribute],
+                              stride,
+                              cull| {
+            mesh_pipeline(
+                device,
+                MeshPipeline {
+                    label,
+                    module,
+                    vertex_entry: vs,
+                    fragment_entry: fs,
+                    layouts: &layouts,
+                    attributes,
+                    stride,
+                    cull,
+                    front_face,
+                    format: targets.format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                    depth: true,
+                },
+            )
+        };
         let back = Some(wgpu::Face::Back);
         Self {
             caustics,
@@ -293,24 +294,16 @@ impl ScenePipelines {
                 24,
                 back,
             ),
-            sphere: scene_pipeline(
-                "sphere",
-                &module("sphere", shaders::SPHERE),
-                "vs_sphere",
-                "fs_sphere",
-                &wgpu::vertex_attr_array![0 => Float32x3],
-                12,
-                back,
-            ),
-            duck: scene_pipeline(
-                "duck",
-                &module("duck", shaders::DUCK),
-                "vs_duck",
-                "fs_duck",
-                &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
-                36,
-                back,
-            ),
+            bodies: BodyId::all()
+                .map(|id| {
+                    (features.bodies & id.bit() as u8 != 0).then(|| {
+                        let kind = id.kind();
+                        let (vs, fs) = (format!("vs_{}", kind.name), format!("fs_{}", kind.name));
+                        let module = module(kind.name, "");
+                        scene_pipeline(kind.name, &module, &vs, &fs, kind.vertex, kind.vertex_stride, back)
+                    })
+                })
+                .collect(),
         }
     }
 }
@@ -426,11 +419,11 @@ mod tests {
     fn the_partition_covers_the_target_once_and_gives_each_part_the_objects_it_can_show() {
         let size = (800, 600);
         let base = Features { caustics: true, ..Features::default() };
-        let (sphere, duck) = (Features { sphere: true, ..base }, Features { duck: true, ..base });
+        let (sphere, duck) = (Features { bodies: 1, ..base }, Features { bodies: 2, ..base });
         let rects = [([100, 100, 300, 250], sphere), ([250, 200, 500, 400], duck)];
         let parts = partition(&rects, base, size);
         let area = |f: Features| parts.iter().filter(|p| p.1 == f).map(|p| p.0[2] * p.0[3]).sum::<u32>();
-        let both = Features { sphere: true, duck: true, ..base };
+        let both = Features { bodies: 3, ..base };
         println!(
             "{} rectangles: {} px plain, {} sphere, {} duck, {} both",
             parts.len(),

@@ -6,8 +6,8 @@ use glam::{Mat4, Vec3};
 use super::flat::{self, FlatView};
 use super::DebugView;
 use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
+use crate::bodies::{BodyView, KINDS};
 use crate::optics::{FresnelModel, SpecularModel};
-use crate::scene::Sphere;
 
 /// Everything a frame's picture depends on besides the water state.
 #[derive(Clone, Copy, Debug)]
@@ -17,9 +17,8 @@ pub struct View {
     pub eye: Vec3,
     /// Unit vector towards the sun.
     pub sun: Vec3,
-    pub sphere: Option<Sphere>,
-    /// The rubber duck's pose, if it is in the pool.
-    pub duck: Option<crate::physics::Pose>,
+    /// Each kind's body (in the order of `bodies::KINDS`) as drawn, if it is in the pool.
+    pub bodies: [Option<BodyView>; KINDS.len()],
     pub caustics: bool,
     /// The optical models and their parameters (optics.rs).
     pub optics: Optics,

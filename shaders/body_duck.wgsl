@@ -1,0 +1,108 @@
+// The rubber duck (bodies/duck.rs): its traced parts, ellipsoids in the duck's frame, hit and
+// shading the scene's rays, and its mesh drawn directly, turned and moved to its pose. Its
+// uniform (DUCK_SLOT on): the frame's rotation in slots 0-2, position in slot 3, a ball
+// holding it in slot 4 (radius 0: no duck), then per part centre, semi-axes and colour.
+
+fn duck_rotation() -> mat3x3<f32> {
+    return mat3x3<f32>(scene.bodies[DUCK_SLOT].xyz, scene.bodies[DUCK_SLOT + 1].xyz, scene.bodies[DUCK_SLOT + 2].xyz);
+}
+
+// Whether the segment origin + t dir, t in [0, t_max], comes near the duck at all.
+fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
+    let bound = scene.bodies[DUCK_SLOT + 4];
+    if (bound.w <= 0.0) {
+        return false;
+    }
+    let t = clamp(dot(bound.xyz - origin, dir), 0.0, t_max);
+    return distance(origin + dir * t, bound.xyz) < bound.w;
+}
+
+// Nearest hit of a ray with the duck. Each part is a unit ball stretched by its semi-axes, so
+// the ray is taken into the duck's frame and divided by them: there the hit is a ray-sphere
+// test with the same t, and the normal is the unit-ball point divided by the semi-axes.
+fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
+    var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
+    if (!near_duck(origin, dir, NO_HIT)) {
+        return hit;
+    }
+    let to_duck = transpose(duck_rotation());
+    let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
+    let d_duck = to_duck * dir;
+    for (var i = 0; i < DUCK_PARTS; i++) {
+        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+        let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+        let d = d_duck / radii;
+        let a = dot(d, d);
+        let b = dot(o, d);
+        let disc = b * b - a * (dot(o, o) - 1.0);
+        if (disc >= 0.0) {
+            let t = (-b - sqrt(disc)) / a;
+            if (t > 1.0e-4 && t < hit.t) {
+                hit.t = t;
+                hit.normal = normalize(duck_rotation() * ((o + d * t) / radii));
+                hit.albedo = scene.bodies[DUCK_SLOT + 5 + 3 * i + 2].rgb;
+            }
+        }
+    }
+    return hit;
+}
+
+// Light the duck lets through along a segment, like sphere_visibility: per part, how close
+// the segment passes to its centre in the part's unit-ball space.
+fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    if (!near_duck(origin, dir, t_max)) {
+        return 1.0;
+    }
+    let to_duck = transpose(duck_rotation());
+    let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
+    let d_duck = to_duck * dir;
+    var light = 1.0;
+    for (var i = 0; i < DUCK_PARTS; i++) {
+        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+        let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+        let d = d_duck / radii;
+        let t = clamp(-dot(o, d) / dot(d, d), 0.0, t_max);
+        light *= smoothstep(0.85, 1.1, length(o + d * t));
+    }
+    return light;
+}
+
+// Nothing for the pool's ambient light: the duck is small next to it.
+fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    return 0.0;
+}
+
+// The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,
+// seen along dir, where the sun reaches it directly.
+fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    var colour = object_colour(p, n, albedo);
+    if (p.y >= 0.0) {
+        let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 40.0);
+        colour += sun_light() * 0.35 * gloss;
+    }
+    return colour;
+}
+
+// The duck seen directly.
+struct DuckOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) colour: vec3<f32>,
+};
+
+@vertex
+fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) colour: vec3<f32>) -> DuckOut {
+    var out: DuckOut;
+    out.world = duck_rotation() * position + scene.bodies[DUCK_SLOT + 3].xyz;
+    out.normal = duck_rotation() * normal;
+    out.colour = colour;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
+    let view = normalize(in.world - scene.eye.xyz);
+    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view), in.world);
+}

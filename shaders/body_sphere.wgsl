@@ -1,0 +1,93 @@
+// The sphere (bodies/sphere.rs): a ball of paint under a clear coat. Traced in the scene's rays
+// (hit, the light it blocks, its colour, the ambient light it takes from the pool near it) and
+// drawn directly as a unit mesh scaled and moved to its centre.
+
+const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
+// The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
+const SPHERE_GLOSS: f32 = 300.0;
+const SPHERE_SHINE: f32 = 60.0;
+
+// The sphere's uniform: xyz centre (m), w radius (m).
+fn sphere_uniform() -> vec4<f32> {
+    return scene.bodies[SPHERE_SLOT];
+}
+
+// The sphere's hit for hit_bodies (its colour finds the normal itself).
+fn sphere_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
+    let u = sphere_uniform();
+    return ObjectHit(intersect_sphere(origin, dir, u.xyz, u.w), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
+}
+
+// Light the sphere lets through along a segment (see sphere_visibility).
+fn sphere_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    let u = sphere_uniform();
+    return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
+}
+
+fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    return sphere_colour(p, dir);
+}
+
+// The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres above
+// the rest level it is wet (darker paint, a stronger coat); above the water the coat mirrors
+// the sky and the sun by Schlick's Fresnel (r0 = 0.04, a lacquer's index of about 1.5).
+fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    let n = normalize(p - sphere_uniform().xyz);
+    let wet = 1.0 - smoothstep(0.0, 0.04, p.y);
+    var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet));
+    let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
+    let r = reflect(dir, n);
+    // The sky in the coat, and the sun's highlight on it (a glossy lobe, cos^SPHERE_GLOSS).
+    let highlight = sun_light() * SPHERE_SHINE * pow(max(dot(r, scene.sun.xyz), 0.0), SPHERE_GLOSS);
+    let coat = fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
+    return colour + select(vec3<f32>(0.0), coat, p.y > 0.0);
+}
+
+// Analytic ambient occlusion of a sphere seen from a point with normal n:
+// the sphere's projected solid angle, cos(theta) * (r / d)^2.
+fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let r = sphere_uniform().w;
+    if (r <= 0.0) {
+        return 0.0;
+    }
+    let to_centre = sphere_uniform().xyz - p;
+    let d2 = dot(to_centre, to_centre);
+    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
+    return clamp(cos_t * r * r / d2, 0.0, 1.0);
+}
+
+// Inward normal of the pool face nearest to p (floor or one of the four walls).
+// Written with select rather than branches: it runs per pixel for two rays.
+fn pool_normal(p: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let dx = w - abs(p.x);
+    let dz = w - abs(p.z);
+    let dy = p.y + depth();
+    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
+    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
+}
+
+// Texture coordinates (m) of the tiles at p on the face with inward normal n.
+fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
+    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
+    return select(wall, p.xz, abs(n.y) > 0.5);
+}
+
+// The sphere seen directly.
+struct SphereOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+};
+
+@vertex
+fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
+    var out: SphereOut;
+    out.world = sphere_uniform().xyz + unit * sphere_uniform().w;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
+    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz)), in.world);
+}
