@@ -50,12 +50,19 @@ impl ParamSpec {
     }
 
     /// A value as a user writes it (command line, URL): a number, one of a choice's names
-    /// (any case), or on/off/true/false for a toggle. `None` if it is none of those.
+    /// (any case) or several joined by commas (their values added: a set, as `objects`), or
+    /// on/off/true/false for a toggle. `None` if it is none of those.
     pub fn parse(&self, text: &str) -> Option<f32> {
         let text = text.trim();
         if let Control::Choice { values, names } = self.control {
-            if let Some(i) = names.iter().position(|n| n.eq_ignore_ascii_case(text)) {
-                return Some(values[i]);
+            let named = |text: &str| names.iter().position(|n| n.eq_ignore_ascii_case(text.trim())).map(|i| values[i]);
+            if let Some(v) = named(text) {
+                return Some(v);
+            }
+            // A set of choices ("sphere,duck") adds their values, if that is a choice too.
+            if text.contains(',') {
+                let sum = text.split(',').map(named).sum::<Option<f32>>()?;
+                return values.contains(&sum).then_some(sum);
             }
         }
         match text.to_ascii_lowercase().as_str() {

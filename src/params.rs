@@ -13,7 +13,8 @@ use crate::{ambient, bodies, optics, physics, quality, render, sim, sky};
 /// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
 macro_rules! param_ids {
     ($($id:ident),* $(,)?) => {
-        /// Identifies a parameter; its discriminant is its index in the [`table`].
+        /// Names a parameter the app reads by id (a body kind's own parameters are read by
+        /// name); its place in the [`table`] is found by its name in snake case.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ParamId {
             $($id),*
@@ -81,33 +82,38 @@ param_ids! {
     FlatSoftEdge,
 }
 
-/// The features' slices in the order of the controls (groups stay together).
-const SLICES: &[&[ParamSpec]] = &[
-    sim::params::WATER,
-    sim::foam::PARAMS,
-    sim::params::DROPS,
-    sky::SUN_PARAMS,
-    optics::SUN_SIZE_PARAMS,
-    sky::EXPOSURE_PARAMS,
-    render::deck::PARAMS,
-    render::caustics::PARAMS,
-    ambient::params::PARAMS,
-    optics::PARAMS,
-    optics::WATER_COLOUR_PARAMS,
-    bodies::PARAMS,
-    bodies::sphere::PARAMS,
-    bodies::duck::PARAMS,
-    physics::GRAVITY_PARAMS,
-    sim::params::RUN,
-    render::debug_view::PARAMS,
-    quality::PARAMS,
-    render::flat::PARAMS,
-];
+/// The features' slices in the order of the controls (groups stay together); the bodies'
+/// kinds each bring theirs after `objects`.
+fn slices() -> Vec<&'static [ParamSpec]> {
+    let mut slices = vec![
+        sim::params::WATER,
+        sim::foam::PARAMS,
+        sim::params::DROPS,
+        sky::SUN_PARAMS,
+        optics::SUN_SIZE_PARAMS,
+        sky::EXPOSURE_PARAMS,
+        render::deck::PARAMS,
+        render::caustics::PARAMS,
+        ambient::params::PARAMS,
+        optics::PARAMS,
+        optics::WATER_COLOUR_PARAMS,
+        bodies::PARAMS,
+    ];
+    slices.extend(bodies::KINDS.iter().map(|kind| kind.params));
+    slices.extend([
+        physics::GRAVITY_PARAMS,
+        sim::params::RUN,
+        render::debug_view::PARAMS,
+        quality::PARAMS,
+        render::flat::PARAMS,
+    ]);
+    slices
+}
 
-/// A parameter of the table: its id and its spec (whose fields it derefs to).
+/// A parameter of the table: its place in it and its spec (whose fields it derefs to).
 #[derive(Clone, Copy, Debug)]
 pub struct Param {
-    pub id: ParamId,
+    pub index: usize,
     pub spec: &'static ParamSpec,
 }
 
@@ -118,18 +124,12 @@ impl Deref for Param {
     }
 }
 
-/// Every parameter, in the order of [`ParamId`] (checked when the table is first made: each
-/// id's name in snake case is its spec's name).
+/// Every parameter, in the order the controls show them.
 pub fn table() -> &'static [Param] {
     static TABLE: OnceLock<Vec<Param>> = OnceLock::new();
     TABLE.get_or_init(|| {
-        let specs: Vec<&'static ParamSpec> = SLICES.iter().flat_map(|slice| slice.iter()).collect();
-        assert_eq!(specs.len(), ParamId::ALL.len(), "the slices and ParamId list different parameters");
-        let table: Vec<Param> = ParamId::ALL.iter().zip(specs).map(|(&id, spec)| Param { id, spec }).collect();
-        for p in &table {
-            assert_eq!(snake_case(&format!("{:?}", p.id)), p.name, "ParamId::{:?} is out of place", p.id);
-        }
-        table
+        let specs = slices().into_iter().flat_map(|slice| slice.iter());
+        specs.enumerate().map(|(index, spec)| Param { index, spec }).collect()
     })
 }
 
@@ -166,18 +166,34 @@ pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
 ];
 
 impl ParamId {
-    /// The spec of this parameter.
-    pub fn spec(self) -> &'static ParamSpec {
-        table()[self as usize].spec
+    /// Its place in the [`table`].
+    pub fn index(self) -> usize {
+        static PLACES: OnceLock<Vec<usize>> = OnceLock::new();
+        let places = PLACES.get_or_init(|| {
+            let place = |id: &ParamId| {
+                let name = snake_case(&format!("{id:?}"));
+                table()
+                    .iter()
+                    .position(|p| p.name == name)
+                    .unwrap_or_else(|| panic!("ParamId::{id:?}: no parameter {name}"))
+            };
+            ParamId::ALL.iter().map(place).collect()
+        });
+        places[self as usize]
     }
 
-    /// The parameter this one's control depends on, and the values (of its choices) that
-    /// show it.
-    pub fn shown_when(self) -> Option<(ParamId, Vec<f32>)> {
-        let &(_, on, names) = SHOWN_WHEN.iter().find(|(id, _, _)| *id == self)?;
-        let values = names.iter().map(|n| on.spec().parse(n).expect("SHOWN_WHEN names a choice")).collect();
-        Some((on, values))
+    /// The spec of this parameter.
+    pub fn spec(self) -> &'static ParamSpec {
+        table()[self.index()].spec
     }
+}
+
+/// The parameter whose control depends on `name`'s, and the values (of its choices) that show
+/// it; `None` for a control always shown.
+pub fn shown_when(name: &str) -> Option<(&'static str, Vec<f32>)> {
+    let &(_, on, names) = SHOWN_WHEN.iter().find(|(id, _, _)| id.spec().name == name)?;
+    let values = names.iter().map(|n| on.spec().parse(n).expect("SHOWN_WHEN names a choice")).collect();
+    Some((on.spec().name, values))
 }
 
 pub fn spec(id: ParamId) -> &'static ParamSpec {
@@ -229,7 +245,7 @@ impl Default for Params {
 
 impl Params {
     pub fn get(&self, id: ParamId) -> f32 {
-        self.values[id as usize]
+        self.values[id.index()]
     }
 
     pub fn flag(&self, id: ParamId) -> bool {
@@ -238,23 +254,37 @@ impl Params {
 
     /// Sets a value, clamping it into range.
     pub fn set(&mut self, id: ParamId, value: f32) -> SetOutcome {
-        let spec = spec(id);
-        let clean = spec.sanitise(value);
-        self.values[id as usize] = clean;
+        self.set_at(id.index(), value)
+    }
+
+    /// The value of the parameter at `index` in the [`table`].
+    pub fn get_at(&self, index: usize) -> f32 {
+        self.values[index]
+    }
+
+    /// Sets the parameter at `index` in the [`table`], clamping the value into its range.
+    pub fn set_at(&mut self, index: usize, value: f32) -> SetOutcome {
+        let clean = table()[index].sanitise(value);
+        self.values[index] = clean;
         SetOutcome { value: clean, clamped: clean != value }
     }
 
     pub fn get_by_name(&self, name: &str) -> Result<f32, ParamError> {
-        find(name).map(|p| self.get(p.id)).ok_or_else(|| ParamError::Unknown(name.to_owned()))
+        find(name).map(|p| self.values[p.index]).ok_or_else(|| ParamError::Unknown(name.to_owned()))
     }
 
     pub fn set_by_name(&mut self, name: &str, value: f32) -> Result<SetOutcome, ParamError> {
         let param = find(name).ok_or_else(|| ParamError::Unknown(name.to_owned()))?;
-        Ok(self.set(param.id, value))
+        Ok(self.set_at(param.index, value))
     }
 
     pub fn reset(&mut self, id: ParamId) {
-        self.values[id as usize] = spec(id).default;
+        self.reset_at(id.index());
+    }
+
+    /// Puts the parameter at `index` in the [`table`] back to its default.
+    pub fn reset_at(&mut self, index: usize) {
+        self.values[index] = table()[index].default;
     }
 }
 
@@ -296,6 +326,10 @@ mod tests {
             (spec(ParamId::Caustics).parse("true"), Some(1.0)),
             (spec(ParamId::WaveSpeed).parse(" 0.8 "), Some(0.8)),
             (spec(ParamId::SimSize).parse("512"), Some(512.0)),
+            (spec(ParamId::Objects).parse("sphere,duck"), Some(3.0)),
+            (spec(ParamId::Objects).parse("both"), Some(3.0)),
+            (spec(ParamId::Objects).parse("Duck, ball"), Some(6.0)),
+            (spec(ParamId::Objects).parse("ball,ball"), None),
         ];
         println!("{cases:?}");
         for (got, want) in cases {
@@ -305,8 +339,11 @@ mod tests {
 
     #[test]
     fn table_is_indexed_by_id_and_defaults_are_in_range() {
+        for &id in ParamId::ALL {
+            assert_eq!(snake_case(&format!("{id:?}")), id.spec().name);
+        }
         for (i, p) in table().iter().enumerate() {
-            assert_eq!(p.id as usize, i, "{} out of place", p.name);
+            assert_eq!(p.index, i, "{} out of place", p.name);
             assert_eq!(p.sanitise(p.default), p.default, "{} default out of range", p.name);
             assert!(p.min() < p.max());
         }

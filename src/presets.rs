@@ -150,7 +150,7 @@ impl Preset {
     /// budget) at its default, then the preset's values, and its view (or the default view).
     pub fn apply(&self, params: &mut Params, camera: &mut OrbitCamera) {
         for p in table().iter().filter(|p| p.group != "Display") {
-            params.reset(p.id);
+            params.reset_at(p.index);
         }
         for &(name, value) in self.values {
             let _ = params.set_by_name(name, value);

@@ -12,7 +12,7 @@ use eframe::egui;
 
 use wavepool::demo::{DemoOptions, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
-use wavepool::params::{choice_label, table, Control, Param, ParamId};
+use wavepool::params::{self, choice_label, table, Control, Param, ParamId};
 use wavepool::presets::{Preset, PRESETS};
 use wavepool::render::flat::ModeCosts;
 use wavepool::render::flat::RenderMode;
@@ -192,8 +192,8 @@ impl Viewer {
                 egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
                     for spec in table().iter().filter(|p| p.group == group) {
                         // A model's own settings only while that model is chosen.
-                        let shown = spec.id.shown_when().is_none_or(|(on, values)| {
-                            values.contains(&self.demo.params.get(on))
+                        let shown = params::shown_when(spec.name).is_none_or(|(on, values)| {
+                            values.contains(&self.demo.params.get_by_name(on).expect("a parameter of the table"))
                         });
                         if shown {
                             self.control(ui, spec);
@@ -212,7 +212,7 @@ impl Viewer {
                 }
                 if ui.button("Defaults").on_hover_text("Every parameter back to its default").clicked() {
                     for p in table() {
-                        self.demo.params.reset(p.id);
+                        self.demo.params.reset_at(p.index);
                     }
                 }
             });
@@ -244,7 +244,7 @@ impl Viewer {
     }
 
     fn control(&mut self, ui: &mut egui::Ui, spec: &Param) {
-        let mut value = self.demo.params.get(spec.id);
+        let mut value = self.demo.params.get_at(spec.index);
         ui.horizontal(|ui| {
             let changed = match spec.control {
                 Control::Slider { min, max, step } => {
@@ -278,15 +278,15 @@ impl Viewer {
                 }
             };
             if changed {
-                self.demo.params.set(spec.id, value);
+                self.demo.params.set_at(spec.index, value);
             }
-            let at_default = self.demo.params.get(spec.id) == spec.default;
+            let at_default = self.demo.params.get_at(spec.index) == spec.default;
             if ui
                 .add_enabled(!at_default, egui::Button::new("reset").small())
                 .on_hover_text("Reset to default")
                 .clicked()
             {
-                self.demo.params.reset(spec.id);
+                self.demo.params.reset_at(spec.index);
             }
         });
     }

@@ -7,6 +7,7 @@ use std::sync::{Arc, Mutex};
 
 use wasm_bindgen::prelude::*;
 
+use crate::bodies::BodyId;
 use crate::demo::{DemoOptions, Key, WaterDemo};
 use crate::params::{self, table, Control, ParamId};
 use crate::render::flat::ModeCosts;
@@ -130,9 +131,9 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "step", to_js_number(step));
             set(&o, "default", to_js_number(p.default));
             set(&o, "help", p.help);
-            let shown_when = p.id.shown_when().map_or(JsValue::NULL, |(on, values)| {
+            let shown_when = params::shown_when(p.name).map_or(JsValue::NULL, |(on, values)| {
                 let w = js_sys::Object::new();
-                set(&w, "param", on.spec().name);
+                set(&w, "param", on);
                 set(&w, "values", values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
                 JsValue::from(w)
             });
@@ -543,9 +544,9 @@ impl WebDemo {
     }
 
     /// `{ backend, adapter, canvasFormat, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
-    /// spherePosition, duckPosition, submergedVolume }`; the water statistics are read back
-    /// asynchronously and are a frame or two old; positions are [x, y, z] in m or null when
-    /// the object is not in the pool.
+    /// spherePosition, duckPosition, bodies, submergedVolume }`; the water statistics are read
+    /// back asynchronously and are a frame or two old; positions are [x, y, z] in m or null
+    /// when the object is not in the pool (`bodies`: every kind's, by its name).
     pub fn stats(&self) -> js_sys::Object {
         let o = js_sys::Object::new();
         let level = self.demo.water_level().unwrap_or_default();
@@ -568,6 +569,12 @@ impl WebDemo {
         };
         set(&o, "spherePosition", position(self.demo.sphere().map(|s| s.centre)));
         set(&o, "duckPosition", position(self.demo.duck().map(|p| p.position)));
+        let bodies = js_sys::Object::new();
+        for id in BodyId::all() {
+            let shown = self.demo.shows(id).then(|| self.demo.body(id).pose.position);
+            set(&bodies, id.kind().name, position(shown));
+        }
+        set(&o, "bodies", bodies);
         set(&o, "submergedVolume", self.demo.submerged_volume() as f64);
         let costs = js_sys::Object::new();
         for (mode, name) in

@@ -476,6 +476,25 @@ async fn objects_float(graphics: Graphics, backend: &str) {
     let without = yellow(&browser.screenshot().await);
     eprintln!("{backend}: duck at ({x:.0}, {y:.0}): {with_duck} yellow pixels, {without} without");
     assert!(with_duck > 60 && without == 0, "{backend}: duck not seen ({with_duck} yellow pixels, {without} without)");
+    // The beach ball, asked for in a set of names: it floats high, drawn in its red and orange gores.
+    browser.js("window.demo.set('objects', 'ball,duck');").await;
+    assert_eq!(browser.js("return window.demo.get('objects');").await, 6.0, "objects=ball,duck by names");
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let stats = browser.js("return window.demo.stats();").await;
+    let ball = &stats["bodies"]["ball"];
+    let height = ball[1].as_f64().expect("ball position");
+    let p = browser.js(&format!("return window.demo.project({}, {}, {});", ball[0], ball[1], ball[2])).await;
+    let (x, y) = (p["x"].as_f64().unwrap(), p["y"].as_f64().unwrap());
+    let gores = browser
+        .screenshot()
+        .await
+        .region(Rect::around(x, y, 20))
+        .iter()
+        .filter(|p| p[0] > 150 && p[2] < 80 && p[0] as i32 - p[2] as i32 > 100 && p[0] > p[1])
+        .count();
+    eprintln!("{backend}: ball at {height:.3} m, pixel ({x:.0}, {y:.0}): {gores} red or orange pixels");
+    assert!(height > 0.08, "{backend}: the ball does not float high: {stats}");
+    assert!(gores > 40, "{backend}: ball not seen ({gores} red or orange pixels)");
     browser.close().await;
 }
 

@@ -20,6 +20,7 @@ use wavepool::WaterDemo;
 const NONE: f32 = 0.0;
 const SPHERE: f32 = 1.0;
 const DUCK: f32 = 2.0;
+const BALL: f32 = 4.0;
 
 /// Runs `frames` frames of 1/60 s into a small target. After each frame the test waits for the
 /// GPU to finish, as a display's frame pacing would (the browser gives a frame per vsync), so
@@ -243,6 +244,74 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     );
     assert!(yellow_with > 200 && yellow_without == 0, "duck not seen: {yellow_with} / {yellow_without}");
     assert!(shadow < 0.75 * lit, "no shadow on the floor: {shadow} vs {lit}");
+}
+
+/// The third kind of body, added as one entry of the table of kinds: dropped in, the beach
+/// ball pushes the water, comes to rest high at its own waterline, and is drawn in its red and
+/// orange gores with a shadow on the floor.
+#[test]
+fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() {
+    let ball = BodyId::named("ball").expect("the ball is a kind of body");
+    let mut demo = demo_with(BALL, true);
+    demo.params.set(ParamId::Gravity, 1.0);
+    demo.set_body_pose(ball, Pose::at(Vec3::new(-0.2, 0.25, 0.1)));
+    let mut rough = 0.0f32;
+    run(&mut demo, 8 * 60, |demo, k| {
+        if k == 60 {
+            rough = heights(demo).iter().fold(0.0, |a, h| a.max(h.abs()));
+        }
+    });
+    let (radius, density) =
+        (demo.params.get_by_name("ball_radius").unwrap(), demo.params.get_by_name("ball_density").unwrap());
+    let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(radius) }];
+    let level = demo.submerged_volume() / pool_area(1.0);
+    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density }.floating_height(level);
+    let y = demo.body(ball).pose.position.y;
+    println!(
+        "ball: waves up to {:.1} mm a second after it fell in; rests at {y:.4} m (floating line {expected:.4} m)",
+        rough * 1e3
+    );
+    assert!(rough > 2e-3, "the ball did not push the water: {rough} m");
+    assert!((y - expected).abs() < 0.015, "floats at {y} m, expected {expected} m");
+    assert!(y > 0.4 * radius, "a beach ball floats high, its centre {y} m above the water");
+
+    let (w, h) = (320u32, 240u32);
+    let shot = |objects: f32| {
+        let mut demo = demo_with(objects, true);
+        demo.params.set(ParamId::Gravity, 0.0);
+        demo.params.set(ParamId::SunAzimuth, 90.0);
+        demo.params.set(ParamId::SunElevation, 50.0);
+        demo.camera.yaw = 0.0;
+        demo.camera.pitch = 80.0;
+        demo.camera.distance = 3.2;
+        demo.set_body_pose(ball, Pose::at(Vec3::new(0.2, y, 0.0)));
+        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+        (demo, frame)
+    };
+    let (demo, with) = shot(BALL);
+    let (_, without) = shot(NONE);
+    let size = Vec2::new(w as f32, h as f32);
+    let ball_px = demo.camera.project(demo.body(ball).pose.position, size).unwrap();
+    let gores = |frame: &common::Frame| {
+        let rect = common::Rect::around(ball_px.x, ball_px.y, frame, 0.08);
+        rect.pixels(frame)
+            .into_iter()
+            .filter(|&(x, y)| {
+                let [r, g, b] = frame.pixel(x, y);
+                // The red and orange gores (water and tiles are never this warm).
+                r > 0.55 && b < 0.3 && r - b > 0.4 && r > g
+            })
+            .count()
+    };
+    let r = wavepool::scene::refracted_sun(demo.sun());
+    let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::scene::DEPTH / r.y);
+    let shadow_px = demo.camera.project(floor, size).unwrap();
+    let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
+    let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
+    let (seen, unseen) = (gores(&with), gores(&without));
+    println!("ball at pixel {ball_px}: {seen} red or orange pixels (none: {unseen}); floor luma {shadow:.3} with it, {lit:.3} without");
+    assert!(seen > 60 && unseen == 0, "ball not seen: {seen} / {unseen}");
+    assert!(shadow < 0.8 * lit, "no shadow on the floor: {shadow} vs {lit}");
 }
 
 #[test]

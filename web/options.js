@@ -88,8 +88,11 @@ export function readOptions(options, table) {
 // objects), into a number for set(). `spec`: the parameter's table entry, if known.
 export function toNumber(value, spec) {
   if (spec && spec.kind === "choice" && typeof value === "string") {
-    const i = spec.choiceNames.indexOf(value.toLowerCase());
-    if (i >= 0) return spec.choices[i];
+    const named = (name) => spec.choices[spec.choiceNames.indexOf(name.trim().toLowerCase())];
+    if (named(value) !== undefined) return named(value);
+    // A set of choices ("ball,duck" for objects) adds their values, if that is a choice too.
+    const sum = value.split(",").reduce((total, name) => total + named(name), 0);
+    if (value.includes(",") && spec.choices.includes(sum)) return sum;
   }
   if (value === true || value === "true" || value === "on") return 1;
   if (value === false || value === "false" || value === "off") return 0;

@@ -3,6 +3,7 @@
 //! and its parameters. The demo keeps one [`Body`] per kind and loops over the table; the
 //! `objects` parameter says which are in the pool (bit `i` for kind `i`).
 
+pub mod ball;
 pub mod duck;
 pub mod sphere;
 
@@ -74,7 +75,7 @@ pub struct BodyMesh {
 }
 
 /// Every kind, in the order of their bits in `objects` and of their parameters in the table.
-pub const KINDS: [BodyKind; 2] = [sphere::KIND, duck::KIND];
+pub const KINDS: [BodyKind; 3] = [sphere::KIND, duck::KIND, ball::KIND];
 
 /// Points on the ring around each body where the water is sampled for its buoyancy.
 pub const PROBES_PER_BODY: usize = 8;
@@ -152,9 +153,12 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
     label: "Objects",
     group: "Objects",
     unit: "",
-    control: Control::Choice { values: &[0.0, 1.0, 2.0, 3.0], names: &["none", "sphere", "duck", "both"] },
+    control: Control::Choice {
+        values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0],
+        names: &["none", "sphere", "duck", "both", "ball", "sphere,ball", "duck,ball", "all"],
+    },
     default: 3.0,
-    help: "What floats in the pool: nothing, the sphere, a rubber duck, or both.",
+    help: "What floats in the pool: any of the sphere, a rubber duck and a beach ball (as a list, e.g. sphere,duck), all or none.",
 }];
 
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per

@@ -1,0 +1,88 @@
+// The beach ball (bodies/ball.rs): a sphere of thin plastic in six gores of colour around its
+// axis, with white caps, turned with its pose. Traced like the sphere (hit, the light it
+// blocks, the ambient light it takes from the pool near it) with a glossy plastic highlight;
+// drawn directly as a unit mesh scaled and moved to its centre. Uniform (BALL_SLOT on): centre
+// and radius (0: no ball), then the three columns of its rotation.
+
+const BALL_GORES: array<vec3<f32>, 6> = array<vec3<f32>, 6>(
+    vec3<f32>(0.80, 0.05, 0.04),
+    vec3<f32>(0.95, 0.92, 0.90),
+    vec3<f32>(0.98, 0.60, 0.02),
+    vec3<f32>(0.95, 0.92, 0.90),
+    vec3<f32>(0.04, 0.22, 0.75),
+    vec3<f32>(0.95, 0.92, 0.90),
+);
+const BALL_CAP: vec3<f32> = vec3<f32>(0.95, 0.92, 0.90);
+
+fn ball_uniform() -> vec4<f32> {
+    return scene.bodies[BALL_SLOT];
+}
+
+fn ball_turn() -> mat3x3<f32> {
+    return mat3x3<f32>(scene.bodies[BALL_SLOT + 1].xyz, scene.bodies[BALL_SLOT + 2].xyz, scene.bodies[BALL_SLOT + 3].xyz);
+}
+
+// The plastic's colour at outward normal n (world): its gore around the ball's own axis, or
+// the white cap near a pole.
+fn ball_albedo(n: vec3<f32>) -> vec3<f32> {
+    let local = transpose(ball_turn()) * n;
+    if (abs(local.y) > 0.9) {
+        return BALL_CAP;
+    }
+    let gore = i32(floor((atan2(local.z, local.x) / (2.0 * PI) + 0.5) * 6.0)) % 6;
+    return BALL_GORES[gore];
+}
+
+fn ball_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
+    let u = ball_uniform();
+    let t = intersect_sphere(origin, dir, u.xyz, u.w);
+    let n = normalize(origin + dir * min(t, 1.0e3) - u.xyz);
+    return ObjectHit(t, n, ball_albedo(n));
+}
+
+fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+    let u = ball_uniform();
+    return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
+}
+
+// Diffuse plastic plus a glossy highlight of the sun above the water.
+fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+    var colour = object_colour(p, n, albedo);
+    if (p.y >= 0.0) {
+        let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 80.0);
+        colour += sun_light() * 0.6 * gloss;
+    }
+    return colour;
+}
+
+// The ball's projected solid angle seen from p (as the sphere's): the ambient light it takes.
+fn ball_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let u = ball_uniform();
+    if (u.w <= 0.0) {
+        return 0.0;
+    }
+    let to_centre = u.xyz - p;
+    let d2 = dot(to_centre, to_centre);
+    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
+    return clamp(cos_t * u.w * u.w / d2, 0.0, 1.0);
+}
+
+struct BallOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+};
+
+@vertex
+fn vs_ball(@location(0) unit: vec3<f32>) -> BallOut {
+    var out: BallOut;
+    out.world = ball_uniform().xyz + unit * ball_uniform().w;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
+    let n = normalize(in.world - ball_uniform().xyz);
+    let view = normalize(in.world - scene.eye.xyz);
+    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view), in.world);
+}
