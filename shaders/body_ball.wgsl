@@ -55,16 +55,9 @@ fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> 
     return colour;
 }
 
-// The ball's projected solid angle seen from p (as the sphere's): the ambient light it takes.
+// The ambient light the ball takes from a point with normal n (sphere_occlusion_of).
 fn ball_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
-    let u = ball_uniform();
-    if (u.w <= 0.0) {
-        return 0.0;
-    }
-    let to_centre = u.xyz - p;
-    let d2 = dot(to_centre, to_centre);
-    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
-    return clamp(cos_t * u.w * u.w / d2, 0.0, 1.0);
+    return sphere_occlusion_of(p, n, ball_uniform());
 }
 
 struct BallOut {

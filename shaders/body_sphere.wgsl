@@ -43,34 +43,9 @@ fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
     return colour + select(vec3<f32>(0.0), coat, p.y > 0.0);
 }
 
-// Analytic ambient occlusion of a sphere seen from a point with normal n:
-// the sphere's projected solid angle, cos(theta) * (r / d)^2.
+// The ambient light the sphere takes from a point with normal n (sphere_occlusion_of).
 fn sphere_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
-    let r = sphere_uniform().w;
-    if (r <= 0.0) {
-        return 0.0;
-    }
-    let to_centre = sphere_uniform().xyz - p;
-    let d2 = dot(to_centre, to_centre);
-    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
-    return clamp(cos_t * r * r / d2, 0.0, 1.0);
-}
-
-// Inward normal of the pool face nearest to p (floor or one of the four walls).
-// Written with select rather than branches: it runs per pixel for two rays.
-fn pool_normal(p: vec3<f32>) -> vec3<f32> {
-    let w = half_width();
-    let dx = w - abs(p.x);
-    let dz = w - abs(p.z);
-    let dy = p.y + depth();
-    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
-    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
-}
-
-// Texture coordinates (m) of the tiles at p on the face with inward normal n.
-fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
-    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
-    return select(wall, p.xz, abs(n.y) > 0.5);
+    return sphere_occlusion_of(p, n, sphere_uniform());
 }
 
 // The sphere seen directly.

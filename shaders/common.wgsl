@@ -77,3 +77,16 @@ fn water_path(a: vec3<f32>, b: vec3<f32>, half_width: f32, depth: f32) -> f32 {
     let t1 = min(t.y, len);
     return max(t1 - t0, 0.0);
 }
+
+// Analytic ambient occlusion of a ball (xyz centre, w radius; radius 0: none) seen from p with
+// normal n: its projected solid angle, cos(theta) * (r / d)^2.
+fn sphere_occlusion_of(p: vec3<f32>, n: vec3<f32>, ball: vec4<f32>) -> f32 {
+    let r = ball.w;
+    if (r <= 0.0) {
+        return 0.0;
+    }
+    let to_centre = ball.xyz - p;
+    let d2 = dot(to_centre, to_centre);
+    let cos_t = max(dot(n, to_centre * inverseSqrt(d2)), 0.0);
+    return clamp(cos_t * r * r / d2, 0.0, 1.0);
+}

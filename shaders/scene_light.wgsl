@@ -78,6 +78,23 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
     return vec3<f32>(underwater_light(p, with_sphere_shadow));
 }
 
+// Inward normal of the pool face nearest to p (floor or one of the four walls).
+// Written with select rather than branches: it runs per pixel for two rays.
+fn pool_normal(p: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let dx = w - abs(p.x);
+    let dz = w - abs(p.z);
+    let dy = p.y + depth();
+    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
+    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
+}
+
+// Texture coordinates (m) of the tiles at p on the face with inward normal n.
+fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
+    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
+    return select(wall, p.xz, abs(n.y) > 0.5);
+}
+
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly.

@@ -195,6 +195,21 @@ fn a_dropped_duck_floats_upright_at_its_waterline() {
     assert!((pose.position.y - expected).abs() < 0.015, "floats at {} m, expected {expected} m", pose.position.y);
 }
 
+/// A `w` x `h` frame from nearly straight above, the sun from the side at 50°, with `objects`
+/// held still where `place` puts them.
+fn top_view(objects: f32, w: u32, h: u32, place: impl Fn(&mut WaterDemo)) -> (WaterDemo, common::Frame) {
+    let mut demo = demo_with(objects, true);
+    demo.params.set(ParamId::Gravity, 0.0);
+    demo.params.set(ParamId::SunAzimuth, 90.0);
+    demo.params.set(ParamId::SunElevation, 50.0);
+    demo.camera.yaw = 0.0;
+    demo.camera.pitch = 80.0;
+    demo.camera.distance = 3.2;
+    place(&mut demo);
+    let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+    (demo, frame)
+}
+
 /// Counts duck-yellow pixels in a square around pixel `p`.
 fn yellow_pixels(frame: &common::Frame, p: Vec2, half: u32) -> u32 {
     let mut count = 0;
@@ -213,17 +228,10 @@ fn yellow_pixels(frame: &common::Frame, p: Vec2, half: u32) -> u32 {
 fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     let (w, h) = (320u32, 240u32);
     let shot = |objects: f32| {
-        let mut demo = demo_with(objects, true);
-        demo.params.set(ParamId::Gravity, 0.0);
-        demo.params.set(ParamId::SunAzimuth, 90.0);
-        demo.params.set(ParamId::SunElevation, 50.0);
-        demo.camera.yaw = 0.0;
-        demo.camera.pitch = 80.0;
-        demo.camera.distance = 3.2;
-        let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
-        demo.set_body_pose(BodyId::named("duck").unwrap(), Pose::at(Vec3::new(0.25, y, 0.0)));
-        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
-        (demo, frame)
+        top_view(objects, w, h, |demo| {
+            let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
+            demo.set_body_pose(BodyId::named("duck").unwrap(), Pose::at(Vec3::new(0.25, y, 0.0)));
+        })
     };
     let (demo, with) = shot(DUCK);
     let (_, without) = shot(NONE);
@@ -276,18 +284,8 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     assert!(y > 0.4 * radius, "a beach ball floats high, its centre {y} m above the water");
 
     let (w, h) = (320u32, 240u32);
-    let shot = |objects: f32| {
-        let mut demo = demo_with(objects, true);
-        demo.params.set(ParamId::Gravity, 0.0);
-        demo.params.set(ParamId::SunAzimuth, 90.0);
-        demo.params.set(ParamId::SunElevation, 50.0);
-        demo.camera.yaw = 0.0;
-        demo.camera.pitch = 80.0;
-        demo.camera.distance = 3.2;
-        demo.set_body_pose(ball, Pose::at(Vec3::new(0.2, y, 0.0)));
-        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
-        (demo, frame)
-    };
+    let shot =
+        |objects: f32| top_view(objects, w, h, |demo| demo.set_body_pose(ball, Pose::at(Vec3::new(0.2, y, 0.0))));
     let (demo, with) = shot(BALL);
     let (_, without) = shot(NONE);
     let size = Vec2::new(w as f32, h as f32);
