@@ -23,7 +23,12 @@ export const inputMethods = {
       this._visible = !document.hidden;
       this._run();
     });
+    this._listenPointers(canvas);
+    this._listenKeys(canvas);
+  },
 
+  // Drags (one pointer), pinches (two) and the wheel on the canvas.
+  _listenPointers(canvas) {
     // Pointer position in backing pixels.
     const at = (e) => {
       const r = canvas.getBoundingClientRect();
@@ -80,7 +85,10 @@ export const inputMethods = {
       },
       { passive: false },
     );
-    // Keys act only while the canvas has focus, so the host page keeps its shortcuts.
+  },
+
+  // Keys act only while the canvas has focus, so the host page keeps its shortcuts.
+  _listenKeys(canvas) {
     this._on(canvas, "keydown", (e) => {
       if (e.ctrlKey || e.metaKey || e.altKey) return;
       const turn = { ArrowLeft: [-12, 0], ArrowRight: [12, 0], ArrowUp: [0, -12], ArrowDown: [0, 12] }[e.key];

@@ -7,6 +7,15 @@ use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::sim::HeightField;
 
+/// A picture to draw: its colour target and size (pixels), the view and the water.
+#[derive(Clone, Copy)]
+pub(super) struct Picture<'a> {
+    target: &'a wgpu::TextureView,
+    size: (u32, u32),
+    view: &'a View,
+    water: &'a HeightField,
+}
+
 impl Renderer {
     /// Draws sky, pool, sphere and water into `target` (of `size` pixels) at the view's
     /// render scale, the split view's divider and the debug view over them.
@@ -24,10 +33,10 @@ impl Renderer {
             let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
             let scaled = (scaled(size.0), scaled(size.1));
             let image = self.upscale.image(device, self.settings.target_format, scaled);
-            self.draw_picture(device, encoder, &image, scaled, view, water);
+            self.draw_picture(device, encoder, Picture { target: &image, size: scaled, view, water });
             self.upscale.run(encoder, target);
         } else {
-            self.draw_picture(device, encoder, target, size, view, water);
+            self.draw_picture(device, encoder, Picture { target, size, view, water });
         }
         if let Some(f) = flat_shown(view).filter(|f| f.mode == flat::RenderMode::Split) {
             self.flat.draw_divider(encoder, target, size, f.divider(size.0));
@@ -49,22 +58,20 @@ impl Renderer {
         &mut self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
-        view: &View,
-        water: &HeightField,
+        picture: Picture<'_>,
     ) {
-        let Some(f) = flat_shown(view) else {
-            self.draw_scene(device, encoder, target, size, view, water, None, [0, 0, size.0, size.1]);
+        let size = picture.size;
+        let Some(f) = flat_shown(picture.view) else {
+            self.draw_scene(device, encoder, picture, None, [0, 0, size.0, size.1]);
             return;
         };
         let divider = f.divider(size.0);
         if divider > 0 {
-            self.encode_flat_textures(device, encoder, view, water, size, &f);
-            self.draw_scene(device, encoder, target, size, view, water, Some(&f), [0, 0, divider, size.1]);
+            self.encode_flat_textures(device, encoder, picture.view, picture.water, size, &f);
+            self.draw_scene(device, encoder, picture, Some(&f), [0, 0, divider, size.1]);
         }
         if divider < size.0 {
-            self.draw_scene(device, encoder, target, size, view, water, None, [divider, 0, size.0 - divider, size.1]);
+            self.draw_scene(device, encoder, picture, None, [divider, 0, size.0 - divider, size.1]);
         }
     }
 
@@ -127,18 +134,15 @@ impl Renderer {
     /// surface (ray-traced, or flat with `flat`), objects and pool front to back (early depth
     /// testing skips what the water and objects hide), then the sky where nothing else was
     /// drawn. The pass starting at column 0 clears the target.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn draw_scene(
         &mut self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
-        view: &View,
-        water: &HeightField,
+        picture: Picture<'_>,
         flat: Option<&FlatView>,
         rect: [u32; 4],
     ) {
+        let Picture { target, size, view, water } = picture;
         let depth = self.depth_view(device, size).clone();
         // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
         let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
