@@ -6,7 +6,6 @@ use glam::{Mat3, Vec3};
 use super::{BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
 use crate::physics::{Ellipsoid, Pose, Shape};
-use crate::scene::Sphere;
 use crate::util::unit_sphere;
 
 /// Where the ball starts (x, z in m; it starts at its floating height).
@@ -29,11 +28,11 @@ pub const KIND: BodyKind = BodyKind {
     probe_ring: |v| v("ball_radius") * 2.0 + 0.05,
     bump_radius: |v| v("ball_radius"),
     pick: |pose, v, origin, dir| {
-        let s = drawn_ball(pose, v("ball_radius"));
+        let s = super::sphere::drawn(pose, v("ball_radius"));
         crate::camera::ray_sphere(&crate::camera::Ray { origin, dir }, s.centre, s.radius)
     },
     drawn: |pose, v| {
-        let s = drawn_ball(pose, v("ball_radius"));
+        let s = super::sphere::drawn(pose, v("ball_radius"));
         BodyView { pose: Pose { position: s.centre, rotation: pose.rotation }, size: s.radius }
     },
     bound: |b| b.size,
@@ -56,13 +55,6 @@ pub const KIND: BodyKind = BodyKind {
     wgsl: include_str!("../../shaders/body_ball.wgsl"),
     wgsl_constants: String::new,
 };
-
-/// The ball as drawn for a body at `pose`: kept inside the pool box.
-fn drawn_ball(pose: &Pose, radius: f32) -> Sphere {
-    let mut s = Sphere { centre: pose.position, radius };
-    s.clamp_to_pool();
-    s
-}
 
 /// The ball's size and density. (The parameter table, `params::table`, lists them in this order.)
 pub const PARAMS: &[ParamSpec] = &[

@@ -44,7 +44,8 @@ pub const KIND: BodyKind = BodyKind {
     wgsl_constants: String::new,
 };
 
-/// The sphere as drawn for a body at `pose`: kept inside the pool box.
+/// A ball of `radius` as drawn for a body at `pose`: kept inside the pool box (the sphere's and
+/// the beach ball's).
 pub fn drawn(pose: &Pose, radius: f32) -> Sphere {
     let mut s = Sphere { centre: pose.position, radius };
     s.clamp_to_pool();
