@@ -98,6 +98,25 @@ ensure_web_toolchain() {
     cargo fetch --locked >/dev/null
 }
 
+# The course hosts the browser tests put the pool in, pinned: reveal.js and axe-core from npm,
+# MkDocs Material from PyPI in a virtual environment of its own (a few seconds each, once).
+ensure_host_tools() {
+    local dir="${XDG_CACHE_HOME:-$HOME/.cache}/wavepool"
+    if [ ! -f "$dir/hosts/node_modules/reveal.js/package.json" ] \
+        || ! grep -q '"version": "6.0.2"' "$dir/hosts/node_modules/reveal.js/package.json" \
+        || ! grep -q '"version": "4.14.1"' "$dir/hosts/node_modules/axe-core/package.json" 2>/dev/null; then
+        echo "==> installing reveal.js 6.0.2 and axe-core 4.14.1 (npm)"
+        mkdir -p "$dir/hosts"
+        npm install --prefix "$dir/hosts" --no-audit --no-fund --silent reveal.js@6.0.2 axe-core@4.14.1 >/dev/null
+    fi
+    if ! "$dir/mkdocs/bin/pip" show mkdocs-material 2>/dev/null | grep -qx "Version: 9.8.2"; then
+        echo "==> installing MkDocs Material 9.8.2 (PyPI, in $dir/mkdocs)"
+        command -v python3 >/dev/null 2>&1 || ensure_apt_packages python3
+        python3 -m venv "$dir/mkdocs" 2>/dev/null || { ensure_apt_packages python3-venv; python3 -m venv "$dir/mkdocs"; }
+        "$dir/mkdocs/bin/pip" install --quiet mkdocs-material==9.8.2
+    fi
+}
+
 # Builds the browser demo into dist/ with Trunk (release, wasm-opt -Oz), offline.
 build_web() {
     echo "==> building the browser demo (trunk build --release)"

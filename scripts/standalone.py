@@ -19,6 +19,7 @@ import gzip
 import json
 import re
 import sys
+import urllib.parse
 from pathlib import Path
 
 # The single file must stay small enough to mail or upload to a learning platform.
@@ -140,8 +141,10 @@ def main():
     page_script = re.sub(r'^\s*import \{ mount \} from "\./embed\.js";\s*$', "", page_script, flags=re.M)
     body = re.search(r"<body>(.*?)<script", page, flags=re.S)
     title = re.search(r"<title>(.*?)</title>", page, flags=re.S)
-    if not body or not title:
-        fail("index.html has no <body> or <title> where expected")
+    description = re.search(r'<meta name="description"[^>]*>', page)
+    if not body or not title or not description:
+        fail("index.html has no <body>, <title> or description where expected")
+    icon = "data:image/svg+xml," + urllib.parse.quote(read("favicon.svg").strip())
 
     zipped = gzip.compress(wasm, compresslevel=9, mtime=0)
     packed = base85(zipped)
@@ -162,7 +165,8 @@ def main():
   <meta charset="utf-8">
   <meta name="viewport" content="width=device-width, initial-scale=1">
   <title>{title.group(1)}</title>
-  <link rel="icon" href="data:,">
+  {description.group(0)}
+  <link rel="icon" href="{icon}">
   <style>
 {read("page.css")}
   </style>

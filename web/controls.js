@@ -6,9 +6,6 @@ import { fresnelCurve, presetTable } from "./wavepool.js";
 import { FresnelPlot } from "./fresnel-plot.js";
 import { formatValue, warn } from "./options.js";
 
-/** Below this width (CSS px) the controls start folded, so the pool comes first on a phone. */
-const NARROW_PX = 600;
-
 /** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
 const ICONS = {
   play: "M8 5v14l11-7z",
@@ -36,12 +33,16 @@ export const controlMethods = {
     // A drawer under the pool: open where there is room beside the groups, folded on a phone.
     const drawer = document.createElement("details");
     drawer.className = "controls";
-    drawer.open = this._element.clientWidth >= NARROW_PX;
+    drawer.open = true; // measured open, then folded where it would not fit (layout.js)
     const summary = document.createElement("summary");
     summary.textContent = "Controls";
     const panel = document.createElement("div");
     panel.className = "panel";
     drawer.append(summary, panel);
+    // The one live region of the controls: what a button or the Preset select did.
+    this._said = document.createElement("p");
+    this._said.className = "said";
+    this._said.setAttribute("role", "status");
     panel.append(this._presetRow());
     const groups = new Map();
     for (const p of this._table) {
@@ -57,7 +58,9 @@ export const controlMethods = {
     }
     if (groups.has("Flat water")) {
       // What each render mode costs, measured while it is shown, under its control.
-      this._costs = document.createElement("output");
+      // Not a live region: the figures change twice a second, which a screen reader would
+      // keep announcing.
+      this._costs = document.createElement("p");
       this._costs.className = "costs";
       groups.get("Flat water").querySelector("[name=render_mode]").closest(".row").after(this._costs);
     }
@@ -83,9 +86,7 @@ export const controlMethods = {
     button("Defaults", "Set every parameter to its default", () => {
       for (const p of this._table) this.set(p.name, p.default);
     });
-    const said = document.createElement("output");
-    said.className = "said";
-    said.setAttribute("aria-live", "polite");
+    const said = this._said;
     const copy = async (what, text) => {
       try {
         await navigator.clipboard.writeText(text);
@@ -103,6 +104,9 @@ export const controlMethods = {
     buttons.append(said);
     panel.append(buttons);
     this._root.append(drawer);
+    drawer.open = this._drawerStartsOpen(drawer);
+    drawer.addEventListener("toggle", () => this._fit());
+    this._fit();
   },
 
   // The Preset select: a named starting state from the core's table.
@@ -121,7 +125,27 @@ export const controlMethods = {
       select.append(option);
     }
     if (this._opts.preset) select.value = this._opts.preset.name;
-    select.addEventListener("change", () => select.value && this.applyPreset(select.value));
+    // A preset starts the demo over, so it applies on a choice made (a click in the list, or
+    // Enter), not while the arrow keys browse the closed select.
+    let browsing = false;
+    const apply = () => {
+      browsing = false;
+      if (select.value) this.applyPreset(select.value);
+      this._say(select.value ? `Preset ${select.selectedOptions[0].textContent} applied.` : "");
+    };
+    select.addEventListener("keydown", (e) => {
+      if (e.key === "Enter") {
+        e.preventDefault();
+        apply();
+      } else if (e.key.startsWith("Arrow") || ["Home", "End", "PageUp", "PageDown"].includes(e.key) || e.key.length === 1) {
+        browsing = e.key !== " ";
+      }
+    });
+    select.addEventListener("pointerdown", () => (browsing = false));
+    select.addEventListener("change", () => {
+      if (!browsing) apply();
+      else this._say(`Press Enter to apply the preset ${select.selectedOptions[0].textContent}.`);
+    });
     row.append(label, select);
     return row;
   },
@@ -138,8 +162,11 @@ export const controlMethods = {
     input.id = inputId;
     input.name = p.name;
     input.title = p.help;
+    // The value as text, for the eye: the control itself tells assistive technology (a
+    // slider's aria-valuetext, a select's option, a checkbox's state), so this is not read.
     const output = document.createElement("output");
     output.htmlFor = inputId;
+    output.setAttribute("aria-hidden", "true");
     if (p.kind === "toggle") {
       input.type = "checkbox";
       input.addEventListener("change", () => this.set(p.name, input.checked ? 1 : 0));
@@ -158,7 +185,7 @@ export const controlMethods = {
       if (p.kind === "toggle") input.checked = v >= 0.5;
       else input.value = String(v);
       output.textContent = formatValue(p, v);
-      input.setAttribute("aria-valuetext", output.textContent);
+      if (input.type === "range") input.setAttribute("aria-valuetext", output.textContent);
       // A model's own settings show only while that model is chosen.
       if (p.shownWhen) row.hidden = !p.shownWhen.values.includes(this.get(p.shownWhen.param));
     };
@@ -205,6 +232,11 @@ export const controlMethods = {
   _updatePlot() {
     if (!this._plot) return;
     this._plot.update(this.get("fresnel"), 90 - Math.abs(this.camera()[1]));
+  },
+
+  /** Says `text` in the controls' live region (shown under the buttons). */
+  _say(text) {
+    if (this._said) this._said.textContent = text;
   },
 
   _refreshControls(name) {

@@ -7,12 +7,11 @@ import { contextsHeld, releaseContext } from "./context-budget.js";
 import { controlMethods } from "./controls.js";
 import { frameLoopMethods, frameStats } from "./frame-loop.js";
 import { inputMethods } from "./input.js";
+import { keepKeys } from "./keys.js";
+import { layoutMethods } from "./layout.js";
 import { inline, live, memoryBytes } from "./loader.js";
 import { toNumber } from "./options.js";
 import { suspendMethods } from "./suspend.js";
-
-/** Least height (CSS px) the pool keeps when fitted into the first screen. */
-const MIN_FIT_PX = 180;
 
 /** The message shown when no backend started: what was tried, each one's reason, what to do. */
 function backendFailure(backend, failures) {
@@ -79,6 +78,14 @@ export class Demo {
     this._costs = null; // the render modes' costs, under the render_mode control
     this._costsAt = -Infinity; // when they were last written (ms)
     this._modeIntervals = [[], [], []]; // recent intervals between drawn frames per render mode (ms)
+    // Sizing (layout.js).
+    this._fills = false; // the element has a height of its own, which the pool fills
+    this._aspect = 4 / 3; // width / height of the picture otherwise
+    this._box = undefined; // the box it fits in (null: the page scrolls; undefined: not looked for yet)
+    this._fitObserver = null;
+    this._onWindowResize = null;
+    // Keys the pool uses stay in it (keys.js).
+    this._unkeepKeys = keepKeys(shadow);
   }
 
   // ---- set-up -------------------------------------------------------------------------
@@ -114,20 +121,6 @@ export class Demo {
       return;
     }
     throw new Error(backendFailure(this._opts.backend, failures));
-  }
-
-  // Without a height of its own the pool takes the element's width at its aspect ratio, but
-  // no more height than the first screen has below the element's top (the whole viewport when
-  // it starts further down), so a visitor sees all of it; narrower then, centred.
-  _fitStage() {
-    const fit = () => {
-      const top = this._element.getBoundingClientRect().top + window.scrollY;
-      const below = top < window.innerHeight ? window.innerHeight - top - 8 : window.innerHeight;
-      const height = Math.max(MIN_FIT_PX, Math.min(window.innerHeight, below));
-      this._stage.style.maxWidth = `${Math.floor(height * this._opts.aspect)}px`;
-    };
-    fit();
-    this._fit = fit; // refitted on window resizes, from _listen (again after a device restart)
   }
 
   _makeCanvas() {
@@ -351,6 +344,8 @@ export class Demo {
     live.delete(this);
     releaseContext(this);
     if (this._unwatch) this._unwatch();
+    this._stopFitting();
+    this._unkeepKeys();
     // Only what is still this demo's (a newer mount in the same element keeps its own).
     if (this._root.parentNode === this._shadow) {
       this._shadow.replaceChildren();
@@ -361,4 +356,4 @@ export class Demo {
   }
 }
 
-Object.assign(Demo.prototype, inputMethods, controlMethods, frameLoopMethods, suspendMethods);
+Object.assign(Demo.prototype, inputMethods, layoutMethods, controlMethods, frameLoopMethods, suspendMethods);

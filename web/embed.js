@@ -7,7 +7,7 @@ import { paramTable, presetTable } from "./wavepool.js";
 import { acquireContext, watchNear } from "./context-budget.js";
 import { Demo } from "./demo.js";
 import { inline, live, loadCore } from "./loader.js";
-import { optionName, readOptions } from "./options.js";
+import { optionName, readAspect, readOptions } from "./options.js";
 
 /** The presets: named starting states, each parameter values and maybe a camera. */
 export async function presets() {
@@ -62,6 +62,13 @@ export async function mount(element, options = {}) {
   const id = ++instances;
 
   const handle = new Demo(element, shadow, root, stage, message, id, started);
+  handle._fills = fillsElement;
+  handle._aspect = readAspect(options);
+  if (!fillsElement) {
+    // The pool's space at once, before the core loads: nothing below it moves when it starts.
+    stage.style.aspectRatio = String(handle._aspect);
+    handle._fitStage();
+  }
   live.add(handle);
   pending.set(element, handle);
   try {
@@ -71,10 +78,6 @@ export async function mount(element, options = {}) {
     const opts = readOptions(options, table);
     handle._table = table;
     handle._opts = opts;
-    if (!fillsElement) {
-      stage.style.aspectRatio = String(opts.aspect);
-      handle._fitStage();
-    }
     // A GPU context only when near the viewport (lazy) and one of the page's few is free.
     handle._eager = !opts.lazy;
     handle._unwatch = watchNear(element, (near) => handle._nearChanged(near));

@@ -55,8 +55,18 @@ export const frameLoopMethods = {
       this._run();
       return;
     }
+    if (this._element.checkVisibility && !this._element.checkVisibility({ opacityProperty: true, visibilityProperty: true })) {
+      // Hidden by its page while still in the viewport (a deck's other slides at opacity 0):
+      // no frame and no simulated time until it shows again, looked at every animation frame.
+      this._last = 0;
+      this._run();
+      return;
+    }
     const dt = this._last ? Math.min(0.25, (time - this._last) / 1000) : 1 / 60;
     this._last = time;
+    // The backing store follows the canvas's size on screen, transforms included (a slide
+    // deck scaling its slides, its overview), which no resize observer reports.
+    this._sizeCanvas(this._canvas);
     try {
       this._core.frame(dt, this._canvas.width, this._canvas.height);
     } catch (error) {

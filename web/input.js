@@ -9,12 +9,12 @@ export const inputMethods = {
   },
 
   _listen() {
-    if (this._fit) this._on(window, "resize", this._fit);
     const canvas = this._canvas;
     const resize = new ResizeObserver(() => this._sizeCanvas(canvas));
     resize.observe(canvas);
     const onScreen = new IntersectionObserver((entries) => {
       this._onScreen = entries[entries.length - 1].isIntersecting;
+      if (this._onScreen) this._fit(); // shown (a slide come up): its room may be new
       this._run();
     });
     onScreen.observe(this._element);

@@ -18,6 +18,13 @@ export const DEFAULT_OPTIONS = Object.freeze({
   lazy: true, // start when scrolled near the viewport (false: at once); see context-budget.js
 });
 
+/** The `aspect` option (width / height) as mount() reads it before the core has loaded, so the
+ * pool's space is reserved at once; readOptions() warns about a bad value. */
+export function readAspect(options) {
+  const v = Number(options && options.aspect);
+  return Number.isFinite(v) && v >= 0.25 && v <= 4 ? v : DEFAULT_OPTIONS.aspect;
+}
+
 export function warn(message) {
   console.warn(`wavepool: ${message}`);
 }

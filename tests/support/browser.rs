@@ -91,6 +91,8 @@ fn content_type(path: &Path) -> &'static str {
         Some("css") => "text/css",
         Some("wasm") => "application/wasm",
         Some("svg") => "image/svg+xml",
+        Some("json") => "application/json",
+        Some("woff2") => "font/woff2",
         Some("png") => "image/png",
         Some("jpg" | "jpeg") => "image/jpeg",
         _ => "application/octet-stream",
@@ -107,7 +109,14 @@ pub struct StaticServer {
 
 impl StaticServer {
     pub fn start() -> Self {
-        Self::start_serving(None, false)
+        Self::start_serving(None, false, Vec::new())
+    }
+
+    /// Also serves each folder under its URL prefix (`("/hosts/", dir)`: `/hosts/a.js` is
+    /// `dir/a.js`), ahead of `dist/`.
+    pub fn start_with_mounts(mounts: Vec<(&str, PathBuf)>) -> Self {
+        let mounts = mounts.into_iter().map(|(prefix, dir)| (prefix.to_owned(), dir)).collect();
+        Self::start_serving(None, false, mounts)
     }
 
     /// Also serves the classic WebGL Water (`classic_dir()`, read-only) at `/classic/`;
@@ -116,21 +125,24 @@ impl StaticServer {
     /// runs before the page's own in any engine (the way to inject it where DevTools is not
     /// there: Firefox, WebKit).
     pub fn start_with_classic(count_frames: bool) -> Self {
-        Self::start_serving(Some(classic_dir()), count_frames)
+        Self::start_serving(Some(classic_dir()), count_frames, Vec::new())
     }
 
-    fn start_serving(classic: Option<PathBuf>, count_frames: bool) -> Self {
+    fn start_serving(classic: Option<PathBuf>, count_frames: bool, mounts: Vec<(String, PathBuf)>) -> Self {
         let dist = dist_dir();
         let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
         let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
         let port = listener.local_addr().expect("address").port();
         let requests = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
         let log = requests.clone();
+        let served = mounts;
         std::thread::spawn(move || {
             for stream in listener.incoming().flatten() {
                 let (dist, pages, classic, log) = (dist.clone(), pages.clone(), classic.clone(), log.clone());
+                let mounts = served.clone();
                 std::thread::spawn(move || {
-                    if let Some(path) = serve(stream, &dist, &pages, classic.as_deref(), count_frames) {
+                    let folders = Folders { dist: &dist, pages: &pages, classic: classic.as_deref(), mounts: &mounts };
+                    if let Some(path) = serve(stream, &folders, count_frames) {
                         log.lock().unwrap_or_else(|e| e.into_inner()).push(path);
                     }
                 });
@@ -157,14 +169,37 @@ fn with_first_script(html: &[u8], script: &str) -> Vec<u8> {
     format!("{}{tag}{}", &text[..at], &text[at..]).into_bytes()
 }
 
+/// What the test server serves: `dist/` at `/`, `tests/pages/` at `/test/`, the classic at
+/// `/classic/` (when given) and further folders under their prefixes.
+struct Folders<'a> {
+    dist: &'a Path,
+    pages: &'a Path,
+    classic: Option<&'a Path>,
+    mounts: &'a [(String, PathBuf)],
+}
+
+impl Folders<'_> {
+    /// The file a request's path names.
+    fn file(&self, path: &str) -> PathBuf {
+        for (prefix, dir) in self.mounts {
+            if let Some(rest) = path.strip_prefix(prefix.as_str()) {
+                let file = dir.join(rest);
+                return if file.is_dir() { file.join("index.html") } else { file };
+            }
+        }
+        if let (Some(dir), Some(rest)) = (self.classic, path.strip_prefix("/classic/")) {
+            return dir.join(if rest.is_empty() { "index.html" } else { rest });
+        }
+        match path.strip_prefix("/test/") {
+            Some(rest) => self.pages.join(rest),
+            None if path == "/" => self.dist.join("index.html"),
+            None => self.dist.join(path.trim_start_matches('/')),
+        }
+    }
+}
+
 /// Answers one request; returns the path (with its query) it asked for.
-fn serve(
-    mut stream: TcpStream,
-    dist: &Path,
-    pages: &Path,
-    classic: Option<&Path>,
-    count_frames: bool,
-) -> Option<String> {
+fn serve(mut stream: TcpStream, folders: &Folders, count_frames: bool) -> Option<String> {
     let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
     let mut request = String::new();
     if reader.read_line(&mut request).is_err() {
@@ -178,17 +213,7 @@ fn serve(
     }
     let target = request.split_whitespace().nth(1).unwrap_or("/");
     let path = target.split('?').next().unwrap_or("/");
-    let classic_file = match (classic, path.strip_prefix("/classic/")) {
-        (Some(dir), Some("")) => Some(dir.join("index.html")),
-        (Some(dir), Some(rest)) => Some(dir.join(rest)),
-        _ => None,
-    };
-    let file = match (classic_file, path.strip_prefix("/test/")) {
-        (Some(file), _) => file,
-        (None, Some(rest)) => pages.join(rest),
-        (None, None) if path == "/" => dist.join("index.html"),
-        (None, None) => dist.join(path.trim_start_matches('/')),
-    };
+    let file = folders.file(path);
     let safe = !path.contains("..");
     let response = match std::fs::read(&file) {
         Ok(body) if safe => {
@@ -904,4 +929,39 @@ pub fn canvas_rect_js(selector: &str) -> String {
          const r = c.getBoundingClientRect();
          return {{ left: r.left, top: r.top, width: r.width, height: r.height }};"
     )
+}
+
+/// Where `./scripts/test` installs the course hosts the tests put the pool in
+/// (`ensure_host_tools` in scripts/lib.sh): `$XDG_CACHE_HOME/wavepool` or `~/.cache/wavepool`.
+fn host_tools_dir() -> PathBuf {
+    std::env::var_os("XDG_CACHE_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cache")))
+        .expect("HOME or XDG_CACHE_HOME")
+        .join("wavepool")
+}
+
+/// The npm packages of the host tests (reveal.js and axe-core, pinned in scripts/lib.sh).
+pub fn host_packages() -> PathBuf {
+    let dir = host_tools_dir().join("hosts/node_modules");
+    for package in ["reveal.js/dist/reveal.js", "axe-core/axe.min.js"] {
+        assert!(
+            dir.join(package).is_file(),
+            "{} is missing: the course-host tests need reveal.js and axe-core from npm \
+             (./scripts/test installs them)",
+            dir.join(package).display()
+        );
+    }
+    dir
+}
+
+/// The `mkdocs` command of the MkDocs Material install the host tests build a site with.
+pub fn mkdocs() -> PathBuf {
+    let bin = host_tools_dir().join("mkdocs/bin/mkdocs");
+    assert!(
+        bin.is_file(),
+        "{} is missing: the course-host tests build a MkDocs Material site (./scripts/test installs it)",
+        bin.display()
+    );
+    bin
 }
