@@ -95,6 +95,13 @@ fn assert_fits(fit: &Value, when: &str) -> (u64, u64) {
     (backing[0].as_u64().unwrap(), backing[1].as_u64().unwrap())
 }
 
+/// Keeps a screenshot as `$WAVEPOOL_SHOTS/<name>.png` when that folder is given (to look at).
+async fn keep_shot(browser: &Browser, name: &str) {
+    if let Ok(dir) = std::env::var("WAVEPOOL_SHOTS") {
+        std::fs::write(format!("{dir}/{name}.png"), browser.client.screenshot().await.expect("screenshot")).unwrap();
+    }
+}
+
 /// Simulated time of the pool (s).
 async fn sim_time(browser: &Browser) -> f64 {
     browser.js("return document.getElementById('pool').demo._core.simTime;").await.as_f64().unwrap_or(-1.0)
@@ -209,9 +216,7 @@ async fn a_pool_on_a_slide_keeps_its_keys_fits_the_slide_and_pauses_off_it() {
     let resumed = format!("document.getElementById('pool').demo._core.simTime > {t1} + 0.1");
     assert!(browser.wait_for(&resumed, READY).await, "the pool did not run again on its slide");
     let shot = browser.screenshot().await;
-    if let Ok(dir) = std::env::var("WAVEPOOL_SHOTS") {
-        std::fs::write(format!("{dir}/deck.png"), browser.client.screenshot().await.unwrap()).unwrap();
-    }
+    keep_shot(&browser, "deck").await;
     let spread = shot.luma_spread(Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await));
     println!("back on its slide: luma spread of the pool {spread:.1}");
     assert!(spread > 15.0, "the pool shows no picture back on its slide (luma spread {spread:.1})");
@@ -332,6 +337,7 @@ async fn the_pages_have_no_accessibility_violation_a_visible_focus_ring_and_no_l
             "{page}: the page shifted by {} while the pool started",
             load["shift"]
         );
+        keep_shot(&browser, &format!("page-{}", page.len())).await;
         let violations = axe_violations(&browser).await;
         println!("{page}: {} axe-core violations", violations.len());
         found.extend(violations.into_iter().map(|(id, n)| format!("{page}: {id} ({n} nodes)")));
@@ -345,11 +351,96 @@ async fn the_pages_have_no_accessibility_violation_a_visible_focus_ring_and_no_l
     let plain = browser.screenshot().await;
     browser.js("document.querySelector('#pool').shadowRoot.querySelector('canvas').focus(); return true;").await;
     let focused = browser.screenshot().await;
-    if let Ok(dir) = std::env::var("WAVEPOOL_SHOTS") {
-        std::fs::write(format!("{dir}/focus.png"), browser.client.screenshot().await.unwrap()).unwrap();
-    }
+    keep_shot(&browser, "focus").await;
     let share = ring_contrast_share(&focused, &plain, &canvas);
     println!("focus ring: {:.0} % of the edge points stand out at 3:1 or more", share * 100.0);
     assert!(share >= 0.99, "the focus ring does not stand out from the picture: {:.0} % of points", share * 100.0);
     browser.close().await;
+}
+
+/// Writes a MkDocs Material course site (instant navigation on: `site_url` set to where the
+/// test serves it) with the pool on two of its four pages and the built demo in its files, and
+/// builds it into `site`.
+fn build_course_site(root: &std::path::Path, site_url: &str) -> std::path::PathBuf {
+    let docs = root.join("docs");
+    let files = docs.join("wavepool");
+    std::fs::create_dir_all(&files).unwrap();
+    for entry in std::fs::read_dir(support::dist_dir()).unwrap().flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let kept = [".js", ".wasm", ".css", ".webp", ".svg"].iter().any(|e| name.ends_with(e));
+        if kept && !name.ends_with(".html") {
+            std::fs::copy(entry.path(), files.join(&name)).unwrap();
+        }
+    }
+    let pages = [
+        ("index.md", "# Water\n\nA course about water. Next: [the pool](pool.md).\n"),
+        ("pool.md", "# The pool\n\nClick the water.\n\n<wave-pool quality=\"0.5\"></wave-pool>\n\nNext: [waves](waves.md).\n"),
+        ("waves.md", "# Waves\n\nNo pool on this page. Back to [the pool](pool.md), on to [more](more.md).\n"),
+        ("more.md", "# More\n\nAnother pool.\n\n<wave-pool quality=\"0.5\" objects=\"duck\"></wave-pool>\n\nBack to [waves](waves.md).\n"),
+    ];
+    for (name, text) in pages {
+        std::fs::write(docs.join(name), text).unwrap();
+    }
+    let config = format!(
+        "site_name: Water course\nsite_url: {site_url}\ntheme:\n  name: material\n  features:\n    - navigation.instant\n\
+         extra_javascript:\n  - path: wavepool/embed.js\n    type: module\n\
+         nav:\n  - index.md\n  - pool.md\n  - waves.md\n  - more.md\n"
+    );
+    std::fs::write(root.join("mkdocs.yml"), config).unwrap();
+    let site = root.join("site");
+    let out = std::process::Command::new(support::mkdocs())
+        .args(["build", "--quiet", "--site-dir"])
+        .arg(&site)
+        .current_dir(root)
+        .output()
+        .expect("run mkdocs");
+    assert!(out.status.success(), "mkdocs build failed: {}", String::from_utf8_lossy(&out.stderr));
+    site
+}
+
+/// A MkDocs Material site with instant navigation: four visits to its two pool pages by
+/// clicking its links (the page is never reloaded), each pool ready every time, and the GPU
+/// contexts back to 0 each time a page with a pool is left.
+#[tokio::test]
+async fn a_docs_site_with_instant_navigation_starts_the_pool_on_every_visit_and_frees_it_on_leaving() {
+    let _g = serial();
+    let root = std::env::temp_dir().join(format!("wavepool-mkdocs-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&root);
+    let site_dir = root.join("site");
+    let server = StaticServer::start_with_mounts(vec![("/site/", site_dir.clone())]);
+    let built = build_course_site(&root, &server.url("/site/"));
+    assert_eq!(built, site_dir);
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.add_init_script(include_str!("pages/gpu_contexts.js")).await;
+    browser.goto(&server.url("/site/")).await;
+    browser.js("window.__sameDocument = true; return true;").await;
+    let click = |href: &str| format!("document.querySelector('article a[href$=\"{href}\"]').click(); return true;");
+    let route = [("pool/", "waves/"), ("more/", "waves/"), ("pool/", "waves/"), ("more/", "waves/")];
+    let mut ready = Vec::new();
+    browser.js(&click("pool/")).await;
+    for (visit, (page, away)) in route.iter().enumerate() {
+        if visit > 0 {
+            browser.js(&click(page)).await;
+        }
+        let path = format!("location.pathname.endsWith('/{page}')");
+        assert!(browser.wait_for(&path, Duration::from_secs(20)).await, "visit {}: {page} did not open", visit + 1);
+        let took = browser.wait_ready("article wave-pool", READY).await;
+        let live = browser.js("return window.__gpuLive();").await;
+        println!("visit {} to {page}: ready in {:.1} s, contexts {live}", visit + 1, took.as_secs_f64());
+        assert_eq!(live, 1, "visit {}: one pool, {live} contexts", visit + 1);
+        ready.push(took);
+        keep_shot(&browser, &format!("docs-{}", visit + 1)).await;
+        browser.js(&click(away)).await;
+        let freed = "window.__gpuLive() === 0 && !document.querySelector('article wave-pool')";
+        assert!(
+            browser.wait_for(freed, Duration::from_secs(20)).await,
+            "leaving {page}: its context was not given back"
+        );
+    }
+    let same = browser.js("return window.__sameDocument === true;").await;
+    assert_eq!(same, true, "the site reloaded the page: instant navigation was not used");
+    let made = browser.js("return window.__gpu;").await;
+    println!("contexts made and given back over the visits: {made}");
+    browser.close().await;
+    let _ = std::fs::remove_dir_all(&root);
 }
