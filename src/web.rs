@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex};
 use wasm_bindgen::prelude::*;
 
 use crate::bodies::BodyId;
-use crate::demo::{DemoOptions, Key, WaterDemo};
+use crate::demo::{DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS};
 use crate::params::{self, table, Control, ParamId};
 use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
@@ -217,6 +217,10 @@ pub struct WebDemo {
     timer: Option<StageTimer>,
     /// Each render mode's drawing time, from the timer.
     mode_costs: ModeCosts,
+    /// The sizes this device is held to (a software rasteriser's), if any.
+    caps: Option<SizeCaps>,
+    /// What the caps reduced: (option or parameter name, asked, given), for the page to say.
+    reduced: Vec<(&'static str, u32, u32)>,
 }
 
 /// The browser's adapter for `surface` and a device on it (with timestamp queries where the
@@ -317,6 +321,16 @@ impl WebDemo {
         let mut options = DemoOptions::clamped(sim_size, surface_grid, caustics_size);
         options.caustics_size = options.caustics_size.min(max_side);
         options.float_targets = allow_float && float_targets(&adapter);
+        // Without a GPU (the browser's software rasteriser) the largest sizes would take
+        // seconds a frame and can get the page given up: held to what software affords.
+        let caps = (adapter.get_info().device_type == wgpu::DeviceType::Cpu).then_some(SOFTWARE_CAPS);
+        let mut reduced = Vec::new();
+        if let Some(caps) = caps {
+            (options, reduced) = options.capped(caps);
+            for (name, asked, given) in &reduced {
+                warn(&format!("wavepool: {name} {asked} reduced to {given}: this device draws without a GPU"));
+            }
+        }
         let demo = WaterDemo::new(&device, &queue, srgb_view.unwrap_or(format), options);
         Ok(WebDemo {
             demo,
@@ -330,6 +344,8 @@ impl WebDemo {
             in_flight: Arc::new(AtomicU32::new(0)),
             timer: StageTimer::new(&device, &queue),
             mode_costs: ModeCosts::default(),
+            caps,
+            reduced,
             device,
             queue,
         })
@@ -411,6 +427,19 @@ impl WebDemo {
     /// Sets a parameter by name; an out-of-range value is clamped with a console warning.
     /// Returns the value now in effect. Unknown names are an error listing the known ones.
     pub fn set(&mut self, name: &str, value: f64) -> Result<f64, JsError> {
+        let sim_name = params::spec(ParamId::SimSize).name;
+        let value = match self.caps {
+            Some(caps) if name == sim_name && value > caps.sim_size as f64 => {
+                warn(&format!(
+                    "wavepool: {name} {value} reduced to {}: this device draws without a GPU",
+                    caps.sim_size
+                ));
+                self.reduced.retain(|r| r.0 != sim_name);
+                self.reduced.push((sim_name, value as u32, caps.sim_size));
+                caps.sim_size as f64
+            }
+            _ => value,
+        };
         let out = self.demo.params.set_by_name(name, value as f32).map_err(|e| JsError::new(&e.to_string()))?;
         if out.clamped {
             let spec = params::find(name).expect("known");
@@ -544,7 +573,8 @@ impl WebDemo {
     }
 
     /// `{ backend, adapter, canvasFormat, simSize, simEngine, simTime, meanLevel, maxAbsHeight, width, height,
-    /// spherePosition, duckPosition, bodies, submergedVolume }`; the water statistics are read
+    /// spherePosition, duckPosition, bodies, submergedVolume, reduced }` (`reduced`: sizes held
+    /// to what this device affords, `{ name, asked, given }`); the water statistics are read
     /// back asynchronously and are a frame or two old; positions are [x, y, z] in m or null
     /// when the object is not in the pool (`bodies`: every kind's, by its name).
     pub fn stats(&self) -> js_sys::Object {
@@ -584,6 +614,18 @@ impl WebDemo {
         }
         set(&o, "gpuMs", if self.timer.is_some() { JsValue::from(costs) } else { JsValue::NULL });
         set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
+        let reduced: js_sys::Array = self
+            .reduced
+            .iter()
+            .map(|&(name, asked, given)| {
+                let r = js_sys::Object::new();
+                set(&r, "name", name);
+                set(&r, "asked", asked);
+                set(&r, "given", given);
+                JsValue::from(r)
+            })
+            .collect();
+        set(&o, "reduced", reduced);
         o
     }
 }

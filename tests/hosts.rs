@@ -356,6 +356,25 @@ async fn the_pages_have_no_accessibility_violation_a_visible_focus_ring_and_no_l
     println!("focus ring: {:.0} % of the edge points stand out at 3:1 or more", share * 100.0);
     assert!(share >= 0.99, "the focus ring does not stand out from the picture: {:.0} % of points", share * 100.0);
     browser.close().await;
+
+    // On WebGL2 (no WebGPU in the browser): the start-up's shift and tasks.
+    let browser = Browser::open(Graphics::WebGl2Only).await;
+    browser.add_init_script(LOAD_WATCH_JS).await;
+    browser.goto(&server.url("/?quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let load = browser.js("return window.__load;").await;
+    println!(
+        "/?quality=0.5 on WebGL2: layout shift {:.3}, longest task {:.0} ms, total blocking time {:.0} ms",
+        load["shift"].as_f64().unwrap(),
+        load["longest"].as_f64().unwrap(),
+        load["blocking"].as_f64().unwrap()
+    );
+    assert!(
+        load["shift"].as_f64().unwrap() <= 0.05,
+        "WebGL2: the page shifted by {} while the pool started",
+        load["shift"]
+    );
+    browser.close().await;
 }
 
 /// Writes a MkDocs Material course site (instant navigation on: `site_url` set to where the

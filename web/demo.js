@@ -30,6 +30,9 @@ function backendFailure(backend, failures) {
   );
 }
 
+/** How long a notice stays over the picture (ms). */
+const NOTICE_MS = 12000;
+
 export class Demo {
   constructor(element, shadow, root, stage, message, id, started) {
     this._element = element;
@@ -155,6 +158,36 @@ export class Demo {
     this._message.hidden = !text;
     this._message.textContent = text || "";
     this._message.classList.remove("error");
+  }
+
+  /** A notice over the picture's corner that goes after a while (a size reduced, a mode
+   * changed for the device's sake); a status, so screen readers say it once. */
+  _notice(text) {
+    let notice = this._stage.querySelector(".notice");
+    if (!notice) {
+      notice = document.createElement("p");
+      notice.className = "notice";
+      notice.setAttribute("role", "status");
+      notice.addEventListener("click", () => (notice.hidden = true));
+      this._stage.append(notice);
+    }
+    // Shown with the notices still up, each on its own line.
+    if (notice.hidden) notice.replaceChildren();
+    const line = document.createElement("span");
+    line.textContent = text;
+    notice.append(line);
+    notice.hidden = false;
+    console.warn(`wavepool: ${text}`);
+    clearTimeout(this._noticeTimer);
+    this._noticeTimer = setTimeout(() => (notice.hidden = true), NOTICE_MS);
+  }
+
+  /** Says which sizes the core held to what this device affords, if any. */
+  _noticeReduced() {
+    const reduced = this._core.stats().reduced;
+    if (!reduced.length) return;
+    const list = reduced.map((r) => `${r.name} ${r.asked} → ${r.given}`).join(", ");
+    this._notice(`This browser draws without a GPU, so the largest sizes are reduced to keep it responsive: ${list}.`);
   }
 
   _fail(text) {

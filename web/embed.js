@@ -95,6 +95,7 @@ export async function mount(element, options = {}) {
     }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.camera) handle._core.setCamera(...opts.camera);
+    handle._noticeReduced();
     // What "Reset" returns to: this page's own start, not the table's defaults.
     handle._startState = { params: table.map((p) => [p.name, handle.get(p.name)]), camera: handle._core.camera() };
     handle._buildOverlay();

@@ -3,6 +3,10 @@
 
 /** Frame statistics are over this window up to now (ms). */
 const STATS_WINDOW_MS = 2000;
+/** Drawn frames this far apart (ms), RESCUE_FRAMES in a row, make the demo do less work:
+ * a device that slow freezes the page and may get it given up by the browser. */
+const RESCUE_MS = 1000;
+const RESCUE_FRAMES = 3;
 
 /**
  * Drawn frames over the last STATS_WINDOW_MS up to `now` (ms): `fps` (frames drawn in the
@@ -59,6 +63,8 @@ export const frameLoopMethods = {
       // Hidden by its page while still in the viewport (a deck's other slides at opacity 0):
       // no frame and no simulated time until it shows again, looked at every animation frame.
       this._last = 0;
+      this._frames.length = 0; // the time hidden is no interval between drawn frames
+      this._simTimes.length = 0;
       this._run();
       return;
     }
@@ -84,7 +90,11 @@ export const frameLoopMethods = {
       this._updatePlot();
     }
     if (this._frames.length === 0) this._runningSince = time;
-    else this._costsNote(time, time - this._frames[this._frames.length - 1]);
+    else {
+      const interval = time - this._frames[this._frames.length - 1];
+      this._costsNote(time, interval);
+      this._rescue(interval);
+    }
     this._frames.push(time);
     this._simTimes.push(this._core.simTime);
     // Drawn frames of the last 2 s, and the one before them (for the first interval).
@@ -111,6 +121,25 @@ export const frameLoopMethods = {
       requestAnimationFrame(whenShown);
     }
     this._run();
+  },
+
+  // Frames over a second apart, several in a row: first the resolution goes automatic, then
+  // the simulation grid halves (down to its smallest), each with a notice.
+  _rescue(interval) {
+    this._slowFrames = interval > RESCUE_MS ? (this._slowFrames || 0) + 1 : 0;
+    if (this._slowFrames < RESCUE_FRAMES) return;
+    this._slowFrames = 0;
+    if (this.get("quality") !== 0) {
+      this.set("quality", 0);
+      this._notice("Frames took over a second here: the resolution is now automatic.");
+      return;
+    }
+    const size = this.get("sim_size");
+    const smallest = Math.min(...this._table.find((p) => p.name === "sim_size").choices);
+    if (size > smallest) {
+      const given = this.set("sim_size", size / 2);
+      this._notice(`Frames took over a second here: the simulation grid is reduced to ${given} cells.`);
+    }
   },
 
   // Shortest interval between drawn frames (ms) under the maxFps option; a few ms short of

@@ -21,7 +21,7 @@ use crate::scene;
 use crate::sim::{FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
 use input::Drag;
 pub use input::{Key, DIVIDER_GRAB_PX};
-pub use options::{DemoOptions, OptionSpec};
+pub use options::{DemoOptions, OptionSpec, SizeCaps, SOFTWARE_CAPS};
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;

@@ -69,6 +69,43 @@ impl DemoOptions {
     }
 }
 
+/// The largest sizes a device is asked to draw and simulate with (cells, quads, texels per
+/// side).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SizeCaps {
+    pub sim_size: u32,
+    pub surface_grid: u32,
+    pub caustics_size: u32,
+}
+
+/// What a software rasteriser (no GPU: SwiftShader in a browser, llvmpipe) is given at most in
+/// a page: twice the defaults per side. The largest options (1024 cells, 512 quads, 2048
+/// texels) took 7.6 s a frame on SwiftShader beside a second browser, long enough for the
+/// browser to give the page up; at these caps a frame takes under a second.
+pub const SOFTWARE_CAPS: SizeCaps = SizeCaps { sim_size: 512, surface_grid: 128, caustics_size: 1024 };
+
+impl DemoOptions {
+    /// These options within `caps`, and what was reduced: (option name, asked, given).
+    pub fn capped(self, caps: SizeCaps) -> (Self, Vec<(&'static str, u32, u32)>) {
+        let [mesh, caustics] = &Self::SPECS;
+        let sim_name = crate::params::spec(ParamId::SimSize).name;
+        let mut reduced = Vec::new();
+        let mut cap = |name, value: u32, most: u32| {
+            if value > most {
+                reduced.push((name, value, most));
+            }
+            value.min(most)
+        };
+        let options = Self {
+            sim_size: cap(sim_name, self.sim_size, caps.sim_size),
+            surface_grid: cap(mesh.name, self.surface_grid, caps.surface_grid),
+            caustics_size: cap(caustics.name, self.caustics_size, caps.caustics_size),
+            float_targets: self.float_targets,
+        };
+        (options, reduced)
+    }
+}
+
 impl Default for DemoOptions {
     fn default() -> Self {
         let [mesh, caustics] = &Self::SPECS;
@@ -95,5 +132,19 @@ mod tests {
         assert_eq!(DemoOptions::clamped(0, 100, 700).sim_size, 128);
         let d = DemoOptions::default();
         assert_eq!(DemoOptions::clamped(d.sim_size, d.surface_grid, d.caustics_size), d, "defaults lie in range");
+    }
+
+    #[test]
+    fn software_caps_reduce_only_what_is_over_them_and_say_what() {
+        let largest = DemoOptions::clamped(1024, 512, 2048);
+        let (capped, reduced) = largest.capped(SOFTWARE_CAPS);
+        println!("largest options on a software rasteriser: {capped:?}, reduced {reduced:?}");
+        assert_eq!((capped.sim_size, capped.surface_grid, capped.caustics_size), (512, 128, 1024));
+        assert_eq!(reduced, [("sim_size", 1024, 512), ("meshSize", 512, 128), ("causticsSize", 2048, 1024)]);
+        let d = DemoOptions::default();
+        assert_eq!(d.capped(SOFTWARE_CAPS), (d, vec![]), "the defaults fit a software rasteriser");
+        // The caps are sizes the options can take.
+        let c = DemoOptions::clamped(SOFTWARE_CAPS.sim_size, SOFTWARE_CAPS.surface_grid, SOFTWARE_CAPS.caustics_size);
+        assert_eq!((c.sim_size, c.surface_grid, c.caustics_size), (512, 128, 1024));
     }
 }

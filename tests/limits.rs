@@ -1,0 +1,69 @@
+//! The largest options the page allows never crash it, in headless Chromium on both backends
+//! with a second browser busy beside it: the sizes a software rasteriser cannot afford are held
+//! to what it can (the page says which), frames keep coming and the water keeps running. Needs
+//! `dist/`.
+
+// One browser at a time, held across awaits: each test runs on its own thread and runtime.
+#![allow(clippy::await_holding_lock)]
+
+#[path = "support/browser.rs"]
+mod support;
+
+use std::time::{Duration, Instant};
+
+use support::{serial, Browser, Graphics, StaticServer, READY};
+
+/// The largest values the page's options and controls accept.
+const LARGEST: &str = "/?sim_size=1024&causticsSize=2048&meshSize=512&quality=1";
+/// How long each load runs.
+const RUN: Duration = Duration::from_secs(20);
+
+/// State of the page's demo: simulated time, frames a second, its notice, what was reduced,
+/// and whether it shows an error.
+const STATE_JS: &str = "const p = document.querySelector('#pool'); const s = window.demo.stats();
+    const n = p.shadowRoot.querySelector('.notice');
+    return { simTime: s.simTime, fps: s.fps, reduced: s.reduced.map((r) => r.name + ' ' + r.asked + '->' + r.given),
+             notice: n && !n.hidden ? n.textContent : null, error: p.dataset.error === 'true', simSize: s.simSize };";
+
+/// Three loads of the largest options on each backend, each running 20 s beside a browser
+/// drawing the default page: no crash (the page answers throughout), no error, the sizes over
+/// a software rasteriser's caps reduced with a notice naming them, and the water running
+/// (simulated time advancing over the 20 s).
+#[tokio::test]
+async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let busy = Browser::open(Graphics::WebGpu).await;
+    busy.goto(&server.url("/?quality=1")).await;
+    busy.wait_ready("#pool", READY).await;
+    for graphics in [Graphics::WebGpu, Graphics::WebGl2Only] {
+        for load in 1..=3 {
+            let browser = Browser::open(graphics).await;
+            browser.goto(&server.url(LARGEST)).await;
+            let took = browser.wait_ready("#pool", READY).await;
+            let start = browser.js(STATE_JS).await;
+            println!("{graphics:?} load {load}: ready in {:.1} s: {start}", took.as_secs_f64());
+            assert_eq!(start["error"], false, "{graphics:?}: the demo failed: {start}");
+            let reduced = start["reduced"].as_array().unwrap();
+            assert!(!reduced.is_empty(), "{graphics:?}: nothing reduced on a software rasteriser: {start}");
+            let notice = start["notice"].as_str().unwrap_or_default();
+            assert!(
+                notice.contains("causticsSize 2048 → 1024"),
+                "{graphics:?}: the notice does not say what was reduced: {start}"
+            );
+            let begun = Instant::now();
+            let mut last = start.clone();
+            while begun.elapsed() < RUN {
+                tokio::time::sleep(Duration::from_secs(5)).await; // the page is watched as it runs
+                last = browser.js(STATE_JS).await; // a crashed page fails here
+                assert_eq!(last["error"], false, "{graphics:?}: the demo failed while running: {last}");
+            }
+            let advanced = last["simTime"].as_f64().unwrap() - start["simTime"].as_f64().unwrap();
+            println!("{graphics:?} load {load}: after {} s: {last}; simulated {advanced:.1} s", RUN.as_secs());
+            assert!(advanced > 1.0, "{graphics:?}: the water hardly ran: {advanced:.2} s in {} s", RUN.as_secs());
+            browser.close().await;
+        }
+    }
+    assert_eq!(busy.js("return document.querySelector('#pool').dataset.error || 'none';").await, "none");
+    busy.close().await;
+}
