@@ -236,6 +236,64 @@ async fn a_pool_on_a_slide_keeps_its_keys_fits_the_slide_and_pauses_off_it() {
     let large = assert_fits(&browser.js(FIT_JS).await, "after the window grew");
     println!("canvas {small:?} -> {large:?} with the window 1100x1000 -> 1600x1200");
     assert!(large.0 > small.0, "the canvas did not grow with the slide");
+    // ... and the deck's overview, which scales the slides down without a resize.
+    browser.js("Reveal.toggleOverview(true); return true;").await;
+    assert!(browser.wait_for(follows, Duration::from_secs(20)).await, "the canvas did not follow the overview's scale");
+    let overview = browser.js(FIT_JS).await["backing"].clone();
+    println!("canvas in the overview: {overview}");
+    assert!(overview[0].as_u64().unwrap() < large.0 / 2, "the canvas kept its size in the overview: {overview}");
+    browser.close().await;
+}
+
+/// Where each `<wave-pool>` of tests/pages/boxes.html and its box are, and its drawer's state.
+const BOXES_JS: &str = "const box = (e) => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
+    const parts = (id, holder) => { const p = document.getElementById(id); const r = p.shadowRoot;
+      const d = r.querySelector('details.controls');
+      return { box: box(holder), element: box(p), stage: box(r.querySelector('.stage')), summary: box(r.querySelector('summary')),
+               drawer: d ? box(d) : null, open: d ? d.open : null, buttons: [...r.querySelectorAll('.overlay button')].map(box) }; };
+    return { cell: parts('cell', document.getElementById('cell')), panel: parts('panel', document.getElementById('panel-box')) };";
+
+/// A pool stretched to a grid cell of fixed height (it fills the cell) and one under text in a
+/// fixed-height panel (it fits what the text leaves): each with its picture, buttons and drawer
+/// inside its box, the drawer folded at the start (it would not fit) and, opened, scrolling
+/// inside the box.
+#[tokio::test]
+async fn a_pool_in_a_grid_cell_or_a_fixed_panel_fits_it_with_its_drawer_folded_or_open() {
+    let _g = serial();
+    let server = StaticServer::start();
+    let browser = Browser::open(Graphics::WebGpu).await;
+    browser.goto(&server.url("/test/boxes.html")).await;
+    browser.wait_ready("#cell", READY).await;
+    browser.wait_ready("#panel", READY).await;
+    for opened in [false, true] {
+        if opened {
+            browser
+                .js("for (const id of ['cell', 'panel']) document.getElementById(id).shadowRoot.querySelector('details.controls').open = true;
+                     return true;")
+                .await;
+            // Refitted once the drawers' toggle events have come (the assertions below say how, if not).
+            let settled = "['cell', 'panel'].every((id) => { const p = document.getElementById(id);
+                             const holder = id === 'cell' ? p : document.getElementById('panel-box');
+                             return p.shadowRoot.querySelector('details.controls').getBoundingClientRect().bottom
+                                    <= holder.getBoundingClientRect().bottom + 1; })";
+            browser.wait_for(settled, Duration::from_secs(5)).await;
+        }
+        let boxes = browser.js(BOXES_JS).await;
+        for name in ["cell", "panel"] {
+            let b = &boxes[name];
+            println!("{name}, drawer {}: {b}", if opened { "opened" } else { "as it starts" });
+            assert_eq!(b["open"], opened, "{name}: the drawer should start folded in a box it does not fit");
+            let outer = rect(&b["box"]);
+            for part in ["element", "stage", "summary", "drawer"] {
+                assert!(inside(rect(&b[part]), outer), "{name}: its {part} {} leaves its box {outer:?}", b[part]);
+            }
+            for button in b["buttons"].as_array().unwrap() {
+                assert!(inside(rect(button), outer), "{name}: a button {button} leaves its box {outer:?}");
+            }
+            let stage = rect(&b["stage"]);
+            assert!(stage[3] - stage[1] >= 100.0, "{name}: the picture is squeezed to {} px", stage[3] - stage[1]);
+        }
+    }
     browser.close().await;
 }
 
