@@ -23,13 +23,15 @@ fn fs_deck(in: PoolOut) -> @location(0) vec4<f32> {
     let from_edge = max(abs(p.x), abs(p.z)) - half_width();
     // Coping: pale stone blocks along the edge; slabs: warmer, each a little different.
     let along = select(p.z, p.x, abs(p.z) > abs(p.x));
-    let coping = from_edge < COPING_WIDTH;
     let slab_uv = p.xz + vec2<f32>(half_width() + COPING_WIDTH);
-    let id = floor(select(slab_uv / SLAB_SIZE, vec2<f32>(along / 0.5, 0.0), coping));
-    let tint = 0.9 + 0.2 * hash31(vec3<f32>(id, 0.3));
-    let stone = select(vec3<f32>(0.095, 0.062, 0.042), vec3<f32>(0.60, 0.57, 0.52), coping) * tint;
-    let joint = select(joints(slab_uv, SLAB_SIZE, 0.012), joints(vec2<f32>(along, 0.25), 0.5, 0.01), coping);
-    let albedo = stone * mix(0.55, 1.0, joint);
+    let slab_tint = 0.9 + 0.2 * hash31(vec3<f32>(floor(slab_uv / SLAB_SIZE), 0.3));
+    let coping_tint = 0.9 + 0.2 * hash31(vec3<f32>(floor(along / 0.5), 0.0, 0.3));
+    let slab = vec3<f32>(0.095, 0.062, 0.042) * slab_tint * mix(0.55, 1.0, joints(slab_uv, SLAB_SIZE, 0.012));
+    let stone = vec3<f32>(0.60, 0.57, 0.52) * coping_tint * mix(0.55, 1.0, joints(vec2<f32>(along, 0.25), 0.5, 0.01));
+    // The coping's outer edge, averaged over the pixel's footprint (no stair-steps).
+    let edge_width = max(fwidth(from_edge), 1.0e-5);
+    let coping = 1.0 - smoothstep(COPING_WIDTH - 0.5 * edge_width, COPING_WIDTH + 0.5 * edge_width, from_edge);
+    let albedo = mix(slab, stone, coping);
     // The open sky and the sun (the deck is above the water and its objects: no shadows cast on it).
     let colour = albedo * (sky_light() + max(scene.sun.y, 0.0) * sun_light());
     let to_p = p - scene.eye.xyz;
