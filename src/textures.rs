@@ -30,6 +30,44 @@ fn linear_to_srgb(c: f32) -> f32 {
     }
 }
 
+/// Encodes linear values in sRGB 8 bits exactly as `(linear_to_srgb(v) * 255).round()` does,
+/// by a binary search among the 255 values of v where that result steps up, found once:
+/// the tile texture encodes 350,000 texels per channel, and a `powf` each made its making
+/// the longest task of a page's start-up.
+struct SrgbEncoder {
+    /// `steps[k - 1]`: the least v (in [0, 1]) encoded as k or more.
+    steps: Vec<f32>,
+}
+
+impl SrgbEncoder {
+    fn direct(v: f32) -> u8 {
+        (linear_to_srgb(v) * 255.0).round() as u8
+    }
+
+    fn new() -> Self {
+        let steps = (1..=255u8)
+            .map(|k| {
+                // Bisection over the bit patterns of [0, 1], which order as the values do.
+                let (mut low, mut high) = (0u32, 1.0f32.to_bits());
+                while low < high {
+                    let mid = low + (high - low) / 2;
+                    if Self::direct(f32::from_bits(mid)) >= k {
+                        high = mid;
+                    } else {
+                        low = mid + 1;
+                    }
+                }
+                f32::from_bits(low)
+            })
+            .collect();
+        Self { steps }
+    }
+
+    fn encode(&self, v: f32) -> u8 {
+        self.steps.partition_point(|&step| step <= v) as u8
+    }
+}
+
 /// Small integer hash to a value in [0, 1).
 fn hash(a: u32, b: u32) -> f32 {
     let mut h = a.wrapping_mul(0x9E37_79B9) ^ b.wrapping_mul(0x85EB_CA6B);
@@ -64,14 +102,10 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
         .collect();
     let mut size = TILE_TEXTURE_SIZE as usize;
     let mut mips = Vec::new();
+    let srgb = SrgbEncoder::new();
     loop {
         mips.push(
-            level
-                .iter()
-                .flat_map(|c| {
-                    [c[0], c[1], c[2]].map(|v| (linear_to_srgb(v) * 255.0).round() as u8).into_iter().chain([255])
-                })
-                .collect(),
+            level.iter().flat_map(|c| [c[0], c[1], c[2]].map(|v| srgb.encode(v)).into_iter().chain([255])).collect(),
         );
         if size == 1 {
             break;
@@ -250,6 +284,20 @@ impl SkyCube {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_srgb_encoder_gives_what_the_formula_gives() {
+        let srgb = SrgbEncoder::new();
+        // Every value of the tile texture's levels, and a sweep of [0, 1] with its ends.
+        let mut values: Vec<f32> = (0..TILE_TEXTURE_SIZE * TILE_TEXTURE_SIZE)
+            .flat_map(|i| tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE))
+            .collect();
+        values.extend((0..=100_000).map(|i| i as f32 / 100_000.0));
+        values.extend([-0.1, 0.0, 1.0, 1.5, f32::MIN_POSITIVE]);
+        let off = values.iter().filter(|&&v| srgb.encode(v) != SrgbEncoder::direct(v)).count();
+        println!("{} values encoded, {off} differ from the formula", values.len());
+        assert_eq!(off, 0);
+    }
 
     #[test]
     fn tiles_have_grout_and_mips_average_them() {

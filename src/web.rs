@@ -429,14 +429,17 @@ impl WebDemo {
     pub fn set(&mut self, name: &str, value: f64) -> Result<f64, JsError> {
         let sim_name = params::spec(ParamId::SimSize).name;
         let value = match self.caps {
-            Some(caps) if name == sim_name && value > caps.sim_size as f64 => {
-                warn(&format!(
-                    "wavepool: {name} {value} reduced to {}: this device draws without a GPU",
-                    caps.sim_size
-                ));
+            Some(caps) if name == sim_name => {
+                // What `reduced` says of the grid is about this value, whatever came before.
                 self.reduced.retain(|r| r.0 != sim_name);
-                self.reduced.push((sim_name, value as u32, caps.sim_size));
-                caps.sim_size as f64
+                if value > caps.sim_size as f64 {
+                    warn(&format!(
+                        "wavepool: {name} {value} reduced to {}: this device draws without a GPU",
+                        caps.sim_size
+                    ));
+                    self.reduced.push((sim_name, value as u32, caps.sim_size));
+                }
+                value.min(caps.sim_size as f64)
             }
             _ => value,
         };

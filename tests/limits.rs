@@ -55,8 +55,11 @@ async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
             let mut last = start.clone();
             while begun.elapsed() < RUN {
                 tokio::time::sleep(Duration::from_secs(5)).await; // the page is watched as it runs
-                last = browser.js(STATE_JS).await; // a crashed page fails here
-                assert_eq!(last["error"], false, "{graphics:?}: the demo failed while running: {last}");
+                let now = browser.js(STATE_JS).await; // a crashed page fails here
+                assert_eq!(now["error"], false, "{graphics:?}: the demo failed while running: {now}");
+                let ran = now["simTime"].as_f64().unwrap() > last["simTime"].as_f64().unwrap();
+                assert!(ran, "{graphics:?}: no frame in 5 s: {last} -> {now}");
+                last = now;
             }
             let advanced = last["simTime"].as_f64().unwrap() - start["simTime"].as_f64().unwrap();
             println!("{graphics:?} load {load}: after {} s: {last}; simulated {advanced:.1} s", RUN.as_secs());

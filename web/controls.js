@@ -4,6 +4,7 @@
 
 import { fresnelCurve, presetTable } from "./wavepool.js";
 import { FresnelPlot } from "./fresnel-plot.js";
+import { BROWSING_KEYS } from "./keys.js";
 import { formatValue, warn } from "./options.js";
 
 /** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
@@ -128,8 +129,10 @@ export const controlMethods = {
     // A preset starts the demo over, so it applies on a choice made (a click in the list, or
     // Enter), not while the arrow keys browse the closed select.
     let browsing = false;
+    let applied = select.value; // what the select shows once nothing is being browsed
     const apply = () => {
       browsing = false;
+      applied = select.value;
       if (select.value) this.applyPreset(select.value);
       this._say(select.value ? `Preset ${select.selectedOptions[0].textContent} applied.` : "");
     };
@@ -137,11 +140,16 @@ export const controlMethods = {
       if (e.key === "Enter") {
         e.preventDefault();
         apply();
-      } else if (e.key.startsWith("Arrow") || ["Home", "End", "PageUp", "PageDown"].includes(e.key) || e.key.length === 1) {
-        browsing = e.key !== " ";
+      } else if (BROWSING_KEYS.includes(e.key) || (e.key.length === 1 && e.key !== " ")) {
+        browsing = true;
       }
     });
     select.addEventListener("pointerdown", () => (browsing = false));
+    // Left without Enter: it shows the preset in effect again, not one never applied.
+    select.addEventListener("blur", () => {
+      if (browsing) select.value = applied;
+      browsing = false;
+    });
     select.addEventListener("change", () => {
       if (!browsing) apply();
       else this._say(`Press Enter to apply the preset ${select.selectedOptions[0].textContent}.`);

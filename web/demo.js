@@ -209,6 +209,9 @@ export class Demo {
     this._message.textContent = text;
     this._element.dataset.error = "true";
     console.error(`wavepool: ${text}`);
+    // What it no longer needs: nothing more to fit, and no keys to keep.
+    this._stopFitting();
+    this._unkeepKeys();
     if (!this._core) releaseContext(this);
     this._firstFrameReject(new Error(text));
   }

@@ -126,7 +126,9 @@ export const frameLoopMethods = {
   // Frames over a second apart, several in a row: first the resolution goes automatic, then
   // the simulation grid halves (down to its smallest), each with a notice.
   _rescue(interval) {
-    this._slowFrames = interval > RESCUE_MS ? (this._slowFrames || 0) + 1 : 0;
+    // (A frame cap of about one a second is the page's wish, not a device too slow.)
+    const slow = interval > Math.max(RESCUE_MS, 2 * this._minFrameMs());
+    this._slowFrames = slow ? (this._slowFrames || 0) + 1 : 0;
     if (this._slowFrames < RESCUE_FRAMES) return;
     this._slowFrames = 0;
     if (this.get("quality") !== 0) {

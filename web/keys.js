@@ -7,6 +7,9 @@
 const ARROWS = ["ArrowLeft", "ArrowRight", "ArrowUp", "ArrowDown"];
 const JUMPS = ["Home", "End", "PageUp", "PageDown"];
 
+/** Keys that move a closed select's choice (the Preset select waits for Enter after them). */
+export const BROWSING_KEYS = [...ARROWS, ...JUMPS];
+
 /** The keys a focused control of each kind uses (what browsers do with them). */
 const CONTROL_KEYS = {
   range: [...ARROWS, ...JUMPS],
@@ -42,20 +45,27 @@ export function poolKeeps(target, event) {
  * the same key. Returns the function that takes the guard away.
  */
 export function keepKeys(shadow) {
-  const held = new Set(); // keys whose keydown was kept, until their keyup
+  // Physical keys (event.code) whose keydown was kept, until their keyup: a key's value can
+  // change between the two (Shift let go first), its position cannot.
+  const held = new Set();
   const guard = (event) => {
     const target = event.composedPath()[0];
     if (event.type === "keydown") {
       if (!poolKeeps(target, event)) return;
-      held.add(event.key);
+      held.add(event.code);
     } else if (event.type === "keyup") {
-      if (!held.delete(event.key)) return;
-    } else if (!held.has(event.key) && !poolKeeps(target, event)) {
+      if (!held.delete(event.code)) return;
+    } else if (!held.has(event.code) && !poolKeeps(target, event)) {
       return;
     }
     event.stopPropagation();
   };
+  const forget = () => held.clear(); // focus gone: those keyups go to the page
   const types = ["keydown", "keypress", "keyup"];
   for (const type of types) shadow.addEventListener(type, guard);
-  return () => types.forEach((type) => shadow.removeEventListener(type, guard));
+  shadow.addEventListener("focusout", forget);
+  return () => {
+    types.forEach((type) => shadow.removeEventListener(type, guard));
+    shadow.removeEventListener("focusout", forget);
+  };
 }

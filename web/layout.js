@@ -10,7 +10,7 @@
 // - On a scrolling page the picture fits the first screen below its top; the drawer follows.
 // Without a height of its own the picture keeps the `aspect` option's shape.
 
-/** Least height (CSS px) of the picture when fitted. */
+/** Least height (CSS px) of the picture when fitted (also `.stage`'s min-height in wavepool.css). */
 const MIN_FIT_PX = 120;
 /** Share of a box's room the picture keeps while the drawer is open in it. */
 const PICTURE_SHARE = 0.55;
@@ -35,17 +35,42 @@ function findBox(element, stage) {
   return i < 0 ? null : chain[i];
 }
 
+/** The factor the page scales `element` by on screen (transforms), 1 when it cannot tell. */
+function screenScale(element) {
+  const scale = element.offsetWidth ? element.getBoundingClientRect().width / element.offsetWidth : 1;
+  return scale > 0 && Number.isFinite(scale) ? scale : 1;
+}
+
 /** Height (layout px) that `box`'s content other than `element` takes. */
 function othersIn(box, element) {
   let child = element;
   while (child.parentElement !== box) child = child.parentElement;
-  if (child === element) return box.scrollHeight - element.offsetHeight;
+  const scale = screenScale(box);
+  const inside = box.getBoundingClientRect().top + box.clientTop * scale; // the box's padding edge
+  const below = (e) => (e.getBoundingClientRect().bottom - element.getBoundingClientRect().bottom) / scale;
+  if (child === element) {
+    // Above it: its offset in the box (padding included); below it: its later siblings and
+    // the box's bottom padding.
+    let after = 0;
+    for (let s = element.nextElementSibling; s; s = s.nextElementSibling) after = Math.max(after, below(s));
+    const top = (element.getBoundingClientRect().top - inside) / scale + box.scrollTop;
+    return top + after + parseFloat(getComputedStyle(box).paddingBottom);
+  }
   // The box's child holding the pool: its other content, and where it starts unless the host
   // places it itself (absolutely, as reveal.js centres its slides).
   const placed = ["absolute", "fixed"].includes(getComputedStyle(child).position);
-  const scale = box.offsetHeight ? box.getBoundingClientRect().height / box.offsetHeight : 1;
-  const top = placed ? 0 : (child.getBoundingClientRect().top - box.getBoundingClientRect().top) / scale;
+  const top = placed ? 0 : (child.getBoundingClientRect().top - inside) / scale + box.scrollTop;
   return top + child.offsetHeight - element.offsetHeight;
+}
+
+/** Whether `box` scrolls its content (a pane, treated as a screen) rather than holding it. */
+function scrolls(box) {
+  return /auto|scroll/.test(getComputedStyle(box).overflowY);
+}
+
+/** The drawer's height with its panel folded (its summary, padding and border). */
+function foldedHeight(drawer) {
+  return drawer.offsetHeight - (drawer.open ? drawer.querySelector(".panel").offsetHeight : 0);
 }
 
 /** Sets a style property only when it changes (so a fit that settles makes no more layout). */
@@ -62,29 +87,36 @@ export const layoutMethods = {
     this._fitObserver = new ResizeObserver(() => this._fit());
     this._fitObserver.observe(this._element);
     this._onWindowResize = () => {
-      this._box = undefined; // the page's layout may have changed which box holds the pool
+      this._forgetBox(); // the page's layout may have changed which box holds the pool
       this._fit();
     };
     window.addEventListener("resize", this._onWindowResize);
     this._fit();
   },
 
+  /** Looks for the pool's box again at the next fit (moved in the page, or the page changed). */
+  _forgetBox() {
+    if (this._box && this._fitObserver) this._fitObserver.unobserve(this._box);
+    this._box = undefined;
+  },
+
   /** Sizes the picture (and an open drawer's panel) to the room the pool has. */
   _fit() {
     if (this._fills || !this._element.isConnected || this._element.offsetWidth === 0) return; // not shown yet
+    if (this._box && !this._box.contains(this._element)) this._forgetBox(); // moved elsewhere
     if (this._box === undefined) {
       this._box = findBox(this._element, this._stage);
       if (this._box) this._fitObserver.observe(this._box);
     }
     const box = this._box;
-    const scrolls = box && /auto|scroll/.test(getComputedStyle(box).overflowY);
+    const pane = box && scrolls(box);
     const drawer = this._root.querySelector(".controls");
     const panel = drawer && drawer.querySelector(".panel");
     let height;
-    if (box && !scrolls) {
+    if (box && !pane) {
       // Everything in the box: the picture, the gap and the drawer (folded, or open and scrolling).
       const gap = drawer ? parseFloat(getComputedStyle(this._root).rowGap) || 0 : 0;
-      const folded = drawer ? drawer.offsetHeight - (drawer.open ? panel.offsetHeight : 0) : 0;
+      const folded = drawer ? foldedHeight(drawer) : 0;
       const room = box.clientHeight - othersIn(box, this._element) - 2;
       height = room - (drawer ? gap + folded : 0);
       this._root.classList.add("boxed");
@@ -96,12 +128,16 @@ export const layoutMethods = {
         setStyle(panel, "maxHeight", "");
       }
     } else {
-      // A scrolling page (or pane): the picture in the first screen below its top.
-      const screen = scrolls ? box.getBoundingClientRect() : { top: 0, height: window.innerHeight };
-      const top = this._element.getBoundingClientRect().top - screen.top;
-      const scale = this._element.getBoundingClientRect().width / this._element.offsetWidth || 1;
-      const below = top < screen.height ? screen.height - top - 8 : screen.height;
-      height = Math.min(screen.height, below) / scale;
+      // A scrolling page (or pane): the picture in the first screen below its top in the
+      // document (the whole screen when it starts further down), wherever it is scrolled to.
+      // In layout pixels (the page may scale the pool on screen).
+      const scale = screenScale(this._element);
+      const rect = this._element.getBoundingClientRect();
+      const top = pane
+        ? (rect.top - box.getBoundingClientRect().top) / scale + box.scrollTop
+        : (rect.top + window.scrollY) / scale;
+      const screen = pane ? box.clientHeight : window.innerHeight / scale;
+      height = top < screen ? screen - top - 8 : screen;
       this._root.classList.remove("boxed");
     }
     setStyle(this._stage, "maxWidth", `${Math.floor(Math.max(MIN_FIT_PX, height) * this._aspect)}px`);
@@ -110,14 +146,11 @@ export const layoutMethods = {
   /** Whether the drawer opens at the start: room beside the groups, and room under the picture. */
   _drawerStartsOpen(drawer) {
     if (this._element.clientWidth < NARROW_PX) return false;
-    const panel = drawer.querySelector(".panel");
-    const folded = drawer.offsetHeight - (drawer.open ? panel.offsetHeight : 0);
+    const folded = foldedHeight(drawer);
     let room = null;
     if (this._fills) room = this._element.clientHeight - folded;
-    else if (this._box && !/auto|scroll/.test(getComputedStyle(this._box).overflowY)) {
-      room = this._box.clientHeight - othersIn(this._box, this._element) - folded;
-    }
-    return room === null || panel.scrollHeight <= (1 - PICTURE_SHARE) * room;
+    else if (this._box && !scrolls(this._box)) room = this._box.clientHeight - othersIn(this._box, this._element) - folded;
+    return room === null || drawer.querySelector(".panel").scrollHeight <= (1 - PICTURE_SHARE) * room;
   },
 
   _stopFitting() {

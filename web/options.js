@@ -22,8 +22,11 @@ export const DEFAULT_OPTIONS = Object.freeze({
  * pool's space is reserved at once; readOptions() warns about a bad value. */
 export function readAspect(options) {
   const v = Number(options && options.aspect);
-  return Number.isFinite(v) && v >= 0.25 && v <= 4 ? v : DEFAULT_OPTIONS.aspect;
+  return Number.isFinite(v) ? Math.min(ASPECT_RANGE[1], Math.max(ASPECT_RANGE[0], v)) : DEFAULT_OPTIONS.aspect;
 }
+
+/** Least and greatest `aspect` (width / height). */
+const ASPECT_RANGE = [0.25, 4];
 
 export function warn(message) {
   console.warn(`wavepool: ${message}`);
@@ -82,7 +85,7 @@ export function readOptions(options, table) {
       if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
       else warn(`camera "${value}" is not "yaw,pitch,distance" (three numbers); using the default view`);
     } else if (key === "aspect") {
-      out.aspect = clampNumber(key, value, 0.25, 4, DEFAULT_OPTIONS.aspect);
+      out.aspect = clampNumber(key, value, ...ASPECT_RANGE, DEFAULT_OPTIONS.aspect);
     } else {
       warn(`unknown option "${key}" ignored; options: ${[...Object.keys(DEFAULT_OPTIONS), ...created.keys()].join(", ")}, ` +
         `and the parameters ${[...names].join(", ")}`);
