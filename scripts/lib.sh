@@ -109,7 +109,9 @@ ensure_host_tools() {
         mkdir -p "$dir/hosts"
         npm install --prefix "$dir/hosts" --no-audit --no-fund --silent reveal.js@6.0.2 axe-core@4.14.1 >/dev/null
     fi
-    if ! "$dir/mkdocs/bin/pip" show mkdocs-material 2>/dev/null | grep -qx "Version: 9.8.2"; then
+    # (grep reads all of pip's output: with -q it would stop early, and pipefail would see pip's
+    # broken pipe as a missing install.)
+    if ! "$dir/mkdocs/bin/pip" show mkdocs-material 2>/dev/null | grep -x "Version: 9.8.2" >/dev/null; then
         echo "==> installing MkDocs Material 9.8.2 (PyPI, in $dir/mkdocs)"
         command -v python3 >/dev/null 2>&1 || ensure_apt_packages python3
         python3 -m venv "$dir/mkdocs" 2>/dev/null || { ensure_apt_packages python3-venv; python3 -m venv "$dir/mkdocs"; }
