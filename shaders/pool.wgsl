@@ -19,8 +19,9 @@ fn vs_pool(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> 
 
 @fragment
 fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
+    let edge = deck_edge(in.world);
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
     let colour = pool_colour(in.world, n, albedo);
-    return seen_directly(colour, in.world);
+    return with_deck_edge(seen_directly(colour, in.world), edge);
 }

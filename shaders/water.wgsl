@@ -39,6 +39,7 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
 // without branching on the side, so screen derivatives (tile_lod) stay in uniform control flow.
 @fragment
 fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @location(0) vec4<f32> {
+    let edge = deck_edge(in.world);
     let n = select(-1.0, 1.0, from_above) * water_normal(water_at(in.world.xz));
     // Toksvig's factor from the normal's spread over the pixel (a uniform spread over the
     // screen derivatives has variance |dn|^2 / 12 per axis): the highlight widens where
@@ -85,7 +86,7 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
     }
-    return finish(colour);
+    return with_deck_edge(finish(colour), edge);
 }
 
 // The surface's colour for light of refractive index `ior` (dispersion): the ray refracted by

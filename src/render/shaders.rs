@@ -7,13 +7,14 @@ use crate::gpu;
 
 pub const COMMON: &str = include_str!("../../shaders/common.wgsl");
 /// The scene's shared shading, in parts of one concept each (see `shaders/scene.wgsl`).
-pub const SCENE: [&str; 6] = [
+pub const SCENE: [&str; 7] = [
     include_str!("../../shaders/scene.wgsl"),
     include_str!("../../shaders/scene_surface.wgsl"),
     include_str!("../../shaders/scene_light.wgsl"),
     include_str!("../../shaders/scene_bodies.wgsl"),
     include_str!("../../shaders/scene_optics.wgsl"),
     include_str!("../../shaders/scene_trace.wgsl"),
+    include_str!("../../shaders/deck_shade.wgsl"),
 ];
 pub const SKY: &str = include_str!("../../shaders/sky.wgsl");
 pub const POOL: &str = include_str!("../../shaders/pool.wgsl");

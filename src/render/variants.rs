@@ -49,6 +49,9 @@ pub struct Features {
     pub flat_caustics: bool,
     /// What the flat water's normal comes from (its plane and its fake caustics).
     pub flat_distortion: Distortion,
+    /// The pool is sunk in the paved deck: what is seen through the opening blends the
+    /// coping in along its edge.
+    pub deck: bool,
 }
 
 impl Features {
@@ -65,13 +68,14 @@ impl Features {
             ambient: view.ambient.model,
             choppy: view.ambient.choppy(),
             foam: view.foam,
+            deck: view.deck,
             ..Self::default()
         }
     }
 
     /// The WGSL constants that select this variant (`HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
-    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `CLIP_SIDE`,
+    /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `HAS_DECK`, `CLIP_SIDE`,
     /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`; the bodies' `HAS_<BODY>` are in `bodies::wgsl`).
     pub fn wgsl(&self) -> String {
         let flat = format!(
@@ -82,7 +86,8 @@ impl Features {
             "const HAS_CAUSTICS: bool = {};\n\
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
-             const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n",
+             const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n\
+             const HAS_DECK: bool = {};\n",
             self.caustics,
             self.fresnel as u32,
             self.specular as u32,
@@ -92,7 +97,8 @@ impl Features {
             self.dispersion,
             self.ambient as u32,
             self.choppy,
-            self.foam
+            self.foam,
+            self.deck
         )
     }
 }
