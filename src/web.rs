@@ -9,11 +9,14 @@ use wasm_bindgen::prelude::*;
 
 use crate::bodies::BodyId;
 use crate::demo::{DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS};
-use crate::params::{self, table, Control, ParamId};
+use crate::params::{self, ParamId};
 use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
 use crate::sim::SimEngine;
 use crate::timing::StageTimer;
+use tables::{set, to_js_number};
+
+mod tables;
 
 /// Runs once when the module is instantiated: a panic goes to the console (with a stack)
 /// and to the page, as a `wavepool:panic` event whose detail is the message.
@@ -31,118 +34,6 @@ pub fn start() {
     }));
 }
 
-/// The creation options (`meshSize`, `causticsSize`) as an array of
-/// `{ name, label, min, max, default }`, for mount() to check and document them.
-#[wasm_bindgen(js_name = optionTable)]
-pub fn option_table() -> js_sys::Array {
-    DemoOptions::SPECS
-        .iter()
-        .map(|o| {
-            let object = js_sys::Object::new();
-            set(&object, "name", o.name);
-            set(&object, "label", o.label);
-            set(&object, "min", o.min);
-            set(&object, "max", o.max);
-            set(&object, "default", o.default);
-            JsValue::from(object)
-        })
-        .collect()
-}
-
-/// The presets (`src/presets.rs`) as an array of `{ name, label, help, values: [[name,
-/// value], ...], camera: [yaw, pitch, distance] | null }`.
-#[wasm_bindgen(js_name = presetTable)]
-pub fn preset_table() -> js_sys::Array {
-    crate::presets::PRESETS
-        .iter()
-        .map(|p| {
-            let object = js_sys::Object::new();
-            set(&object, "name", p.name);
-            set(&object, "label", p.label);
-            set(&object, "help", p.help);
-            let values: js_sys::Array = p
-                .values
-                .iter()
-                .map(|&(name, value)| {
-                    JsValue::from(
-                        [JsValue::from_str(name), JsValue::from(to_js_number(value))].iter().collect::<js_sys::Array>(),
-                    )
-                })
-                .collect();
-            set(&object, "values", values);
-            let camera = p.camera.map_or(JsValue::NULL, |c| {
-                JsValue::from(c.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>())
-            });
-            set(&object, "camera", camera);
-            JsValue::from(object)
-        })
-        .collect()
-}
-
-/// Fresnel reflectance of the `fresnel` parameter's model `model` at `samples` incidence
-/// angles from 0° to 90°, seen from air or from under the water: the curve the page plots,
-/// from the same formulas the surface shader uses (optics.rs).
-#[wasm_bindgen(js_name = fresnelCurve)]
-pub fn fresnel_curve(model: f32, from_water: bool, samples: u32) -> Vec<f32> {
-    crate::optics::reflectance_curve(
-        crate::optics::FresnelModel::from_param(model),
-        from_water,
-        samples.clamp(2, 1024) as usize,
-    )
-}
-
-/// Panics on purpose, for the test that a panic shows up in the page.
-#[doc(hidden)]
-#[wasm_bindgen(js_name = panicForTests)]
-pub fn panic_for_tests(message: &str) {
-    panic!("{message}");
-}
-
-fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>) {
-    let _ = js_sys::Reflect::set(object, &JsValue::from_str(key), &value.into());
-}
-
-/// The parameter table (the core's one source of truth) as an array of plain objects:
-/// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
-/// choices, choiceNames, default, help, shownWhen }` (`choices`: the allowed values of a
-/// choice, else empty; `choiceNames`: what to show for them, or empty to show the numbers;
-/// `shownWhen`: `{ param, values }` when the control matters only for those values of
-/// another parameter, else null).
-#[wasm_bindgen(js_name = paramTable)]
-pub fn param_table() -> js_sys::Array {
-    table()
-        .iter()
-        .map(|p| {
-            let o = js_sys::Object::new();
-            set(&o, "name", p.name);
-            set(&o, "label", p.label);
-            set(&o, "group", p.group);
-            set(&o, "unit", p.unit);
-            let (kind, step, choices, names) = match p.control {
-                Control::Slider { step, .. } => ("slider", step, &[][..], &[][..]),
-                Control::Toggle => ("toggle", 1.0, &[][..], &[][..]),
-                Control::Choice { values, names } => ("choice", 0.0, values, names),
-            };
-            set(&o, "choices", choices.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
-            set(&o, "choiceNames", names.iter().map(|&n| JsValue::from_str(n)).collect::<js_sys::Array>());
-            set(&o, "kind", kind);
-            set(&o, "min", to_js_number(p.min()));
-            set(&o, "max", to_js_number(p.max()));
-            set(&o, "step", to_js_number(step));
-            set(&o, "default", to_js_number(p.default));
-            set(&o, "help", p.help);
-            let shown_when = params::shown_when(p.name).map_or(JsValue::NULL, |(on, values)| {
-                let w = js_sys::Object::new();
-                set(&w, "param", on);
-                set(&w, "values", values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
-                JsValue::from(w)
-            });
-            set(&o, "shownWhen", shown_when);
-            JsValue::from(o)
-        })
-        .collect()
-}
-
 /// Whether the adapter can render into the float formats the GPU simulation and the float
 /// caustics map use, and blend the latter (WebGL2 needs EXT_color_buffer_float for it).
 fn float_targets(adapter: &wgpu::Adapter) -> bool {
@@ -152,11 +43,6 @@ fn float_targets(adapter: &wgpu::Adapter) -> bool {
     renders(F::Rgba32Float)
         && renders(F::Rg16Float)
         && features(F::Rg16Float).flags.contains(wgpu::TextureFormatFeatureFlags::BLENDABLE)
-}
-
-/// An `f32` as the `f64` with the same shortest decimal form (0.6f32 -> 0.6, not 0.6000000238).
-fn to_js_number(v: f32) -> f64 {
-    v.to_string().parse().unwrap_or(v as f64)
 }
 
 /// The canvas's colour format. WebGPU: the browser's preferred one (`getPreferredCanvasFormat`,
