@@ -130,8 +130,9 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
     mips
 }
 
-pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
-    let mips = tile_mips();
+/// The tile texture from its levels ([`tile_mips`], made ahead by a shell that spreads its
+/// start-up over tasks).
+pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue, mips: &[Vec<u8>]) -> wgpu::Texture {
     let texture = gpu::texture_2d(
         device,
         "tiles",

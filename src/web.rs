@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex};
 use wasm_bindgen::prelude::*;
 
 use crate::bodies::BodyId;
-use crate::demo::{DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS};
+use crate::demo::{DemoBuild, DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS};
 use crate::params::{self, ParamId};
 use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
@@ -107,6 +107,20 @@ pub struct WebDemo {
     caps: Option<SizeCaps>,
     /// What the caps reduced: (option or parameter name, asked, given), for the page to say.
     reduced: Vec<(&'static str, u32, u32)>,
+    /// Whether `prepare` has nothing left to do before the first frame.
+    prepared: bool,
+}
+
+/// Resolves in a later task of the browser's event loop: input and painting run between two
+/// steps of work (none of which should hold the thread for long).
+async fn next_task() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        let later = web_sys::window().map(|w| w.set_timeout_with_callback(&resolve).is_ok());
+        if later != Some(true) {
+            let _ = resolve.call0(&JsValue::NULL);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
 /// The browser's adapter for `surface` and a device on it (with timestamp queries where the
@@ -217,7 +231,13 @@ impl WebDemo {
                 warn(&format!("wavepool: {name} {asked} reduced to {given}: this device draws without a GPU"));
             }
         }
-        let demo = WaterDemo::new(&device, &queue, srgb_view.unwrap_or(format), options);
+        let mut build = DemoBuild::new(srgb_view.unwrap_or(format), options);
+        let demo = loop {
+            next_task().await;
+            if let Some(demo) = build.step(&device, &queue) {
+                break demo;
+            }
+        };
         Ok(WebDemo {
             demo,
             surface,
@@ -232,6 +252,7 @@ impl WebDemo {
             mode_costs: ModeCosts::default(),
             caps,
             reduced,
+            prepared: false,
             device,
             queue,
         })
@@ -292,13 +313,53 @@ impl WebDemo {
             timer.after_submit();
         }
         self.queue.present(frame);
+        self.count_in_flight();
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        Ok(())
+    }
+
+    /// One piece of the work before the first frame of `width` x `height` pixels; true when
+    /// none is left (then `frame` draws without a long pause). Call once per animation frame
+    /// until true, not after. Each piece builds one pipeline the frame will draw with; on WebGL2 the last
+    /// draws a frame that is not shown, so that the browser's GL process compiles what the
+    /// drawing needs while the page goes on (shown, the first frame would hold the page's
+    /// thread until the GPU had done it all: over a second without a GPU).
+    pub fn prepare(&mut self, width: u32, height: u32) -> bool {
+        let size = (width.clamp(1, self.max_side), height.clamp(1, self.max_side));
+        if !self.prepared && !self.demo.build_ahead(&self.device, size) {
+            return false;
+        }
+        if !self.prepared {
+            self.prepared = true;
+            if self.backend == "webgl2" {
+                self.draw_unshown(size);
+            }
+        }
+        // The first frame waits for the GPU to be done with the unshown one.
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        self.in_flight.load(Ordering::Acquire) == 0 || self.lost.lock().map_or(true, |m| m.is_some())
+    }
+
+    /// Draws a frame of `size` pixels into a texture of its own, not shown.
+    fn draw_unshown(&mut self, size: (u32, u32)) {
+        let format = self.srgb_view.unwrap_or(self.config.format);
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
+        let target = crate::gpu::texture_2d(&self.device, "unshown frame", size.0, size.1, 1, 1, format, usage);
+        let view = target.create_view(&Default::default());
+        let mut encoder = self.device.create_command_encoder(&Default::default());
+        self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, 1.0 / 60.0, &mut |_, _| {});
+        self.queue.submit([encoder.finish()]);
+        self.demo.after_submit();
+        self.count_in_flight();
+    }
+
+    /// Counts a submitted frame as in flight until the GPU has done its work.
+    fn count_in_flight(&self) {
         self.in_flight.fetch_add(1, Ordering::AcqRel);
         let in_flight = self.in_flight.clone();
         self.queue.on_submitted_work_done(move || {
             in_flight.fetch_sub(1, Ordering::AcqRel);
         });
-        let _ = self.device.poll(wgpu::PollType::Poll);
-        Ok(())
     }
 
     /// Whether the GPU has finished enough of the submitted frames to take another (fewer

@@ -231,3 +231,34 @@ fn debug_views_show_the_ring_where_it_is() {
         );
     }
 }
+
+/// Building ahead (a pipeline per call, as the browser's start-up does between frames) leaves
+/// the first frame nothing to build: in each render mode, with both bodies, with dispersion.
+#[test]
+fn pipelines_built_ahead_leave_the_first_frame_nothing_to_build() {
+    let g = common::gpu();
+    let setups: [(&str, &[(ParamId, f32)]); 5] = [
+        ("default", &[]),
+        ("sphere and duck", &[(ParamId::Objects, 3.0)]),
+        ("flat", &[(ParamId::RenderMode, 1.0)]),
+        ("split", &[(ParamId::RenderMode, 2.0), (ParamId::Objects, 3.0)]),
+        ("dispersion", &[(ParamId::Dispersion, 0.02)]),
+    ];
+    for (name, params) in setups {
+        let mut demo = common::demo(DemoOptions::default());
+        for &(id, value) in params {
+            demo.params.set(id, value);
+        }
+        let mut calls = 1;
+        while !demo.build_ahead(&g.device, (W, H)) {
+            calls += 1;
+            assert!(calls < 200, "{name}: building ahead does not finish");
+        }
+        let built = demo.pipeline_sets_built();
+        render(&mut demo, W, H, 1, 1.0 / 60.0);
+        let after = demo.pipeline_sets_built();
+        println!("{name}: {calls} calls built {built} pipeline sets; the first frame built {}", after - built);
+        assert!(built >= 1 && calls > built, "{name}: {calls} calls for {built} sets");
+        assert_eq!(after, built, "{name}: the first frame still built {} pipeline sets", after - built);
+    }
+}

@@ -43,6 +43,7 @@ export class Demo {
     this._id = id;
     this._started = started;
     this._core = null;
+    this._prepared = false; // the core's start-up work is done (frame-loop.js)
     this._canvas = null;
     this._frame = 0; // requestAnimationFrame id
     this._last = 0; // time of the last frame (ms)
@@ -115,6 +116,7 @@ export class Demo {
         continue;
       }
       [this._core, this._canvas] = [core, canvas];
+      this._prepared = false; // the core's start-up work is not done (frame-loop.js)
       if (this._dead) {
         this._detachCore(); // destroyed while the context was being made
         throw new Error("wavepool: the demo was destroyed while it started");

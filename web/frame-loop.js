@@ -68,11 +68,17 @@ export const frameLoopMethods = {
       this._run();
       return;
     }
-    const dt = this._last ? Math.min(0.25, (time - this._last) / 1000) : 1 / 60;
-    this._last = time;
     // The backing store follows the canvas's size on screen, transforms included (a slide
     // deck scaling its slides, its overview), which no resize observer reports.
     this._sizeCanvas(this._canvas);
+    if (!this._prepared) {
+      // The start-up's work, a piece per animation frame (no long task): see WebDemo.prepare.
+      this._prepared = this._core.prepare(this._canvas.width, this._canvas.height);
+      this._run();
+      return;
+    }
+    const dt = this._last ? Math.min(0.25, (time - this._last) / 1000) : 1 / 60;
+    this._last = time;
     try {
       this._core.frame(dt, this._canvas.width, this._canvas.height);
     } catch (error) {

@@ -79,6 +79,46 @@ pub struct WaterDemo {
     spectrum_shown: bool,
 }
 
+/// A demo made in steps, each short enough to leave a browser's thread responsive (at most
+/// about 150 ms on WebGL2 without a GPU): the tile texture's texels (CPU), the height field
+/// (its shaders), then the renderer. The web shell gives the thread back between steps;
+/// [`WaterDemo::new`] takes them all at once.
+pub struct DemoBuild {
+    target_format: wgpu::TextureFormat,
+    options: DemoOptions,
+    tile_mips: Option<Vec<Vec<u8>>>,
+    water: Option<HeightField>,
+}
+
+impl DemoBuild {
+    /// A demo to draw into colour targets of `target_format`.
+    pub fn new(target_format: wgpu::TextureFormat, options: DemoOptions) -> Self {
+        Self { target_format, options, tile_mips: None, water: None }
+    }
+
+    /// Takes the next step; the demo after the last.
+    pub fn step(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) -> Option<WaterDemo> {
+        let options = self.options;
+        if self.tile_mips.is_none() {
+            self.tile_mips = Some(crate::textures::tile_mips());
+            return None;
+        }
+        let Some(water) = self.water.take() else {
+            let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
+            self.water = Some(HeightField::new_on(device, options.sim_size, scene::HALF_WIDTH, engine));
+            return None;
+        };
+        let settings = RenderSettings {
+            target_format: self.target_format,
+            caustics_size: options.caustics_size,
+            surface_grid: options.surface_grid,
+            float_targets: options.float_targets,
+        };
+        let renderer = Renderer::new(device, queue, settings, &water, self.tile_mips.as_deref().unwrap_or_default());
+        Some(WaterDemo::assemble(water, renderer, options))
+    }
+}
+
 impl WaterDemo {
     /// Creates the demo for colour targets of `target_format`.
     pub fn new(
@@ -87,15 +127,15 @@ impl WaterDemo {
         target_format: wgpu::TextureFormat,
         options: DemoOptions,
     ) -> Self {
-        let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
-        let water = HeightField::new_on(device, options.sim_size, scene::HALF_WIDTH, engine);
-        let settings = RenderSettings {
-            target_format,
-            caustics_size: options.caustics_size,
-            surface_grid: options.surface_grid,
-            float_targets: options.float_targets,
-        };
-        let renderer = Renderer::new(device, queue, settings, &water);
+        let mut build = DemoBuild::new(target_format, options);
+        loop {
+            if let Some(demo) = build.step(device, queue) {
+                return demo;
+            }
+        }
+    }
+
+    fn assemble(water: HeightField, renderer: Renderer, options: DemoOptions) -> Self {
         let mut params = Params::default();
         let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
         let mut demo = Self {
@@ -122,6 +162,21 @@ impl WaterDemo {
         demo.refresh_ambient();
         demo.place_bodies_at_start();
         demo
+    }
+
+    /// Builds one of the pipelines the next frame, `size` pixels, will draw with, if one is
+    /// missing; true when none is. A shell that must keep a browser's thread responsive
+    /// calls it once per task before the first frame (which would otherwise build them all
+    /// at once: over a second on WebGL2 without a GPU).
+    pub fn build_ahead(&mut self, device: &wgpu::Device, size: (u32, u32)) -> bool {
+        self.set_viewport(size.0, size.1);
+        let view = self.view();
+        self.renderer.build_ahead(device, &view, size)
+    }
+
+    /// Pipeline sets built so far (see [`Renderer::pipeline_sets_built`]).
+    pub fn pipeline_sets_built(&self) -> usize {
+        self.renderer.pipeline_sets_built()
     }
 
     pub fn water(&self) -> &HeightField {

@@ -296,6 +296,16 @@ impl FlatWater {
     }
 
     /// The pipeline [`FlatWater::prepare_pipeline`] built for `features`.
+    /// How many feature sets' pipelines [`FlatWater::prepare_pipeline`] has built.
+    pub fn pipelines_built(&self) -> usize {
+        self.pipelines.len()
+    }
+
+    /// Whether [`FlatWater::prepare_pipeline`] has built the pipeline for `features`.
+    pub fn has_pipeline(&self, features: Features) -> bool {
+        self.pipelines.contains_key(&features)
+    }
+
     pub fn pipeline(&self, features: Features) -> &wgpu::RenderPipeline {
         &self.pipelines[&features]
     }

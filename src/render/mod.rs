@@ -31,7 +31,7 @@ use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
 use uniforms::SceneUniforms;
 use upscale::Upscale;
 pub use variants::Features;
-use variants::{PipelineTargets, ScenePipelines};
+use variants::{PipelineTargets, ScenePipelines, VariantBuild};
 pub use view::{flat_shown, AmbientView, Optics, View};
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
@@ -94,6 +94,9 @@ pub struct Renderer {
     sky: FullscreenPass,
     /// The scene's pipelines per feature set drawn so far (see [`Features`]).
     variants: HashMap<Features, ScenePipelines>,
+    /// Feature sets whose pipelines are being built ahead of their first frame, one pipeline
+    /// at a time ([`Renderer::build_ahead`]).
+    building: HashMap<Features, VariantBuild>,
     /// The debug view's pass per texture shown so far.
     debug_passes: HashMap<(DebugTexture, AmbientModel, bool), FullscreenPass>,
     /// The water surface, both sides in one draw.
@@ -107,7 +110,15 @@ pub struct Renderer {
 }
 
 impl Renderer {
-    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: RenderSettings, water: &HeightField) -> Self {
+    /// The renderer of `water`, with the tile texture's levels made ahead
+    /// ([`crate::textures::tile_mips`]).
+    pub fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        settings: RenderSettings,
+        water: &HeightField,
+        tile_mips: &[Vec<u8>],
+    ) -> Self {
         let (water_layout, textures_layout) = resources::scene_layouts(device);
         let uniforms = gpu::uniform_buffer(device, "scene uniforms", &<SceneUniforms as bytemuck::Zeroable>::zeroed());
         let cpu_ambient = [ambient_map(device, 1), ambient_map(device, 1)];
@@ -119,7 +130,7 @@ impl Renderer {
         let (caustics_format, _) = settings.caustics_format();
         let caustics = CausticsMap::new(device, settings.caustics_size, caustics_format, water.size());
         let sky_cube = SkyCube::new(device);
-        let scene_textures = SceneTextures::new(device, queue, &sky_cube);
+        let scene_textures = SceneTextures::new(device, queue, &sky_cube, tile_mips);
         let textures_group = scene_textures.bind_group(device, &textures_layout, &caustics.mips.view);
 
         let layouts = [&water_layout, &textures_layout];
@@ -151,6 +162,7 @@ impl Renderer {
             sky_cube,
             sky,
             variants: HashMap::new(),
+            building: HashMap::new(),
             debug_passes: HashMap::new(),
             grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
@@ -170,17 +182,24 @@ impl Renderer {
         }
     }
 
-    /// The pipelines for `features`, built the first time they are asked for. Building
-    /// compiles five shaders; do it ahead (see [`Renderer::prepare_variant`]) to keep it out
-    /// of a frame that must be quick.
+    /// The pipelines for `features`, built the first time they are asked for (finished, if
+    /// [`Renderer::build_ahead`] had started them).
     fn variant(&mut self, device: &wgpu::Device, features: Features) -> &ScenePipelines {
-        let targets = PipelineTargets {
+        if !self.variants.contains_key(&features) {
+            let build = self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features));
+            let pipelines = build.finish(device, &self.pipeline_targets(features));
+            self.variants.insert(features, pipelines);
+        }
+        &self.variants[&features]
+    }
+
+    fn pipeline_targets(&self, features: Features) -> PipelineTargets<'_> {
+        PipelineTargets {
             format: self.settings.target_format,
             caustics_format: self.settings.caustics_format_for(features.dispersion).0,
             water_layout: &self.water_layout,
             textures_layout: &self.textures_layout,
-        };
-        self.variants.entry(features).or_insert_with(|| ScenePipelines::new(device, features, &targets))
+        }
     }
 
     /// Builds the pipelines of a feature set now, if they are not built yet.
@@ -188,8 +207,41 @@ impl Renderer {
         self.variant(device, features);
     }
 
-    /// Feature sets whose pipelines are built.
-    pub fn variants_built(&self) -> usize {
-        self.variants.len()
+    /// Builds one pipeline of those a frame of `view` at `size` pixels will draw with, if
+    /// any is missing; true when none is. A shell that must not hold a browser's thread for
+    /// long calls it once per task before the first frame (a frame builds what is missing at
+    /// once: on WebGL2 without a GPU, a second or more).
+    pub fn build_ahead(&mut self, device: &wgpu::Device, view: &View, size: (u32, u32)) -> bool {
+        let Some(features) = self.variants_drawn(view, size).into_iter().find(|f| !self.variants.contains_key(f))
+        else {
+            // Then the flat water's own pipeline, if the frame shows flat water.
+            let Some(lit) = flat_shown(view).map(|f| f.lit_features(Features::of(view))) else {
+                return true;
+            };
+            if self.flat.has_pipeline(lit) {
+                return true;
+            }
+            let targets = PipelineTargets {
+                format: self.settings.target_format,
+                caustics_format: self.settings.caustics_format_for(lit.dispersion).0,
+                water_layout: &self.water_layout,
+                textures_layout: &self.textures_layout,
+            };
+            self.flat.prepare_pipeline(device, lit, &targets);
+            return false;
+        };
+        let mut build = self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features));
+        if build.step(device, &self.pipeline_targets(features)) {
+            let pipelines = build.finish(device, &self.pipeline_targets(features));
+            self.variants.insert(features, pipelines);
+        } else {
+            self.building.insert(features, build);
+        }
+        false
+    }
+
+    /// Pipeline sets built: feature sets of the scene's pipelines and of the flat water's.
+    pub fn pipeline_sets_built(&self) -> usize {
+        self.variants.len() + self.flat.pipelines_built()
     }
 }

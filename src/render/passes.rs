@@ -75,6 +75,40 @@ impl Renderer {
         }
     }
 
+    /// The feature sets a frame of `view` on a `size` target draws with: what
+    /// [`Renderer::encode_caustics`] and [`Renderer::draw_picture`] will ask pipelines for,
+    /// in the order they ask (kept in step with them; a test checks that a frame after
+    /// [`Renderer::build_ahead`] builds nothing).
+    pub(super) fn variants_drawn(&self, view: &View, size: (u32, u32)) -> Vec<Features> {
+        let base = Features::of(view);
+        let scale = view.render_scale.clamp(0.25, 1.0);
+        let size = if scale < 1.0 {
+            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
+            (scaled(size.0), scaled(size.1))
+        } else {
+            size
+        };
+        let flat = flat_shown(view);
+        let traced_shown = flat.is_none_or(|f| f.mode == flat::RenderMode::Split && f.split < 1.0);
+        let flat_reads = flat.is_some_and(|f| f.caustics == flat::FlatCaustics::Real);
+        let mut drawn = Vec::new();
+        if (view.caustics && traced_shown) || flat_reads {
+            drawn.push(base);
+        }
+        let divider = flat.map_or(0, |f| f.divider(size.0));
+        if let Some(f) = flat.filter(|_| divider > 0) {
+            let lit = f.lit_features(base);
+            drawn.extend([Features { clip: 1, ..lit }, Features { clip: -1, ..lit }, lit]);
+        }
+        if divider < size.0 {
+            drawn.push(base);
+            drawn.extend(variants::surface_regions(view, size).into_iter().flatten().map(|(_, needs)| needs));
+        }
+        let mut seen = std::collections::HashSet::new();
+        drawn.retain(|f| seen.insert(*f));
+        drawn
+    }
+
     /// The flat water's reflection texture (for tests: what the mirrored camera drew), once
     /// flat water has been drawn.
     #[doc(hidden)]

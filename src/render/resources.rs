@@ -28,9 +28,10 @@ pub(super) struct SceneTextures {
 
 impl SceneTextures {
     /// The tiles, sky cube, Fresnel table, a 1 x 1 foam map until foam is on, the spectrum
-    /// image, the flat water's du/dv map and the two samplers.
-    pub(super) fn new(device: &wgpu::Device, queue: &wgpu::Queue, sky_cube: &SkyCube) -> Self {
-        let tiles = textures::create_tile_texture(device, queue);
+    /// image, the flat water's du/dv map and the two samplers; `tile_mips` from
+    /// [`textures::tile_mips`].
+    pub(super) fn new(device: &wgpu::Device, queue: &wgpu::Queue, sky_cube: &SkyCube, tile_mips: &[Vec<u8>]) -> Self {
+        let tiles = textures::create_tile_texture(device, queue, tile_mips);
         let sampler = |address: wgpu::AddressMode| {
             device.create_sampler(&wgpu::SamplerDescriptor {
                 address_mode_u: address,

@@ -235,83 +235,121 @@ pub struct PipelineTargets<'a> {
     pub textures_layout: &'a wgpu::BindGroupLayout,
 }
 
-impl ScenePipelines {
-    pub fn new(device: &wgpu::Device, features: Features, targets: &PipelineTargets<'_>) -> Self {
-        let prelude = shaders::scene_prelude(features);
-        let module = |label, part| gpu::shader(device, label, &[&prelude, part]);
-        let caustics = caustics_pipelines(device, features, targets, &prelude);
-        let layouts = [targets.water_layout, targets.textures_layout];
-        // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
-        let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
-        let scene_pipeline = |label: &str,
-                              module: &wgpu::ShaderModule,
-                              vs: &str,
-                              fs: &str,
-                              attributes: &[wgpu::VertexAttribute],
-                              stride,
-                              cull| {
-            mesh_pipeline(
-                device,
-                MeshPipeline {
-                    label,
-                    module,
-                    vertex_entry: vs,
-                    fragment_entry: fs,
-                    layouts: &layouts,
-                    attributes,
-                    stride,
-                    cull,
-                    front_face,
-                    format: targets.format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                    depth: true,
-                },
-            )
-        };
-        let back = Some(wgpu::Face::Back);
+/// A variant's pipelines built one at a time: each compiles a shader, 20 to 60 ms of a
+/// browser's main thread on WebGL2 without a GPU, so a start-up that must not hold the thread
+/// for long builds one per task ([`super::Renderer::build_ahead`]).
+pub struct VariantBuild {
+    features: Features,
+    prelude: String,
+    caustics: Option<Vec<wgpu::RenderPipeline>>,
+    surface: Option<wgpu::RenderPipeline>,
+    pool: Option<wgpu::RenderPipeline>,
+    deck: Option<wgpu::RenderPipeline>,
+    /// Per kind of `bodies::KINDS`, once looked at: its pipeline if the kind is among the
+    /// features'.
+    bodies: Vec<Option<wgpu::RenderPipeline>>,
+}
+
+impl VariantBuild {
+    pub fn new(features: Features) -> Self {
         Self {
-            caustics,
-            // Culling off: front faces are the surface seen from above, back faces from below.
-            surface: scene_pipeline(
-                "water surface",
-                &module("water surface", shaders::WATER),
-                "vs_surface",
-                "fs_surface",
-                &wgpu::vertex_attr_array![0 => Float32x2],
-                8,
-                None,
-            ),
-            pool: scene_pipeline(
-                "pool",
-                &module("pool", shaders::POOL),
-                "vs_pool",
-                "fs_pool",
-                &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-                24,
-                back,
-            ),
-            deck: scene_pipeline(
-                "deck",
-                &module("deck", &[shaders::POOL, super::deck::WGSL].concat()),
-                "vs_pool",
-                "fs_deck",
-                &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-                24,
-                back,
-            ),
-            bodies: BodyId::all()
-                .map(|id| {
-                    (features.bodies & id.bit() as u8 != 0).then(|| {
-                        let kind = id.kind();
-                        let (vs, fs) = (format!("vs_{}", kind.name), format!("fs_{}", kind.name));
-                        let module = module(kind.name, "");
-                        scene_pipeline(kind.name, &module, &vs, &fs, kind.vertex, kind.vertex_stride, back)
-                    })
-                })
-                .collect(),
+            features,
+            prelude: shaders::scene_prelude(features),
+            caustics: None,
+            surface: None,
+            pool: None,
+            deck: None,
+            bodies: Vec::new(),
         }
     }
+
+    /// Builds the next pipeline not built yet; true once there is none left.
+    pub fn step(&mut self, device: &wgpu::Device, targets: &PipelineTargets<'_>) -> bool {
+        let (features, prelude) = (self.features, self.prelude.as_str());
+        let module = |label, part| gpu::shader(device, label, &[prelude, part]);
+        let pool_attributes = &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+        let back = Some(wgpu::Face::Back);
+        let scene = |label: &str, module: &wgpu::ShaderModule, vs: &str, fs: &str, attributes, stride, cull| {
+            scene_pipeline(device, features, targets, label, module, [vs, fs], (attributes, stride), cull)
+        };
+        if self.caustics.is_none() {
+            self.caustics = Some(caustics_pipelines(device, features, targets, prelude));
+        } else if self.surface.is_none() {
+            // Culling off: front faces are the surface seen from above, back faces from below.
+            let attributes = &wgpu::vertex_attr_array![0 => Float32x2];
+            let module = module("water surface", shaders::WATER);
+            self.surface = Some(scene("water surface", &module, "vs_surface", "fs_surface", attributes, 8, None));
+        } else if self.pool.is_none() {
+            let module = module("pool", shaders::POOL);
+            self.pool = Some(scene("pool", &module, "vs_pool", "fs_pool", pool_attributes, 24, back));
+        } else if self.deck.is_none() {
+            let module = module("deck", &[shaders::POOL, super::deck::WGSL].concat());
+            self.deck = Some(scene("deck", &module, "vs_pool", "fs_deck", pool_attributes, 24, back));
+        } else {
+            // The next kind of body in the features (the others get no pipeline).
+            while let Some(id) = BodyId::all().nth(self.bodies.len()) {
+                let present = features.bodies & id.bit() as u8 != 0;
+                self.bodies.push(present.then(|| {
+                    let kind = id.kind();
+                    let (vs, fs) = (format!("vs_{}", kind.name), format!("fs_{}", kind.name));
+                    let module = module(kind.name, "");
+                    scene(kind.name, &module, &vs, &fs, kind.vertex, kind.vertex_stride, back)
+                }));
+                if present {
+                    break;
+                }
+            }
+        }
+        self.bodies.len() == BodyId::all().count()
+    }
+
+    /// The variant's pipelines, building what is left.
+    pub fn finish(mut self, device: &wgpu::Device, targets: &PipelineTargets<'_>) -> ScenePipelines {
+        while !self.step(device, targets) {}
+        let built = "a finished variant has every pipeline";
+        ScenePipelines {
+            caustics: self.caustics.expect(built),
+            surface: self.surface.expect(built),
+            pool: self.pool.expect(built),
+            deck: self.deck.expect(built),
+            bodies: self.bodies,
+        }
+    }
+}
+
+/// A pipeline of the scene pass for `features`: `entries` are the vertex and fragment entry
+/// points, `vertex` the mesh's attributes and stride (bytes).
+#[allow(clippy::too_many_arguments)]
+fn scene_pipeline(
+    device: &wgpu::Device,
+    features: Features,
+    targets: &PipelineTargets<'_>,
+    label: &str,
+    module: &wgpu::ShaderModule,
+    entries: [&str; 2],
+    vertex: (&[wgpu::VertexAttribute], u64),
+    cull: Option<wgpu::Face>,
+) -> wgpu::RenderPipeline {
+    // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
+    let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
+    mesh_pipeline(
+        device,
+        MeshPipeline {
+            label,
+            module,
+            vertex_entry: entries[0],
+            fragment_entry: entries[1],
+            layouts: &[targets.water_layout, targets.textures_layout],
+            attributes: vertex.0,
+            stride: vertex.1,
+            cull,
+            front_face,
+            format: targets.format,
+            blend: None,
+            write_mask: wgpu::ColorWrites::ALL,
+            depth: true,
+        },
+    )
 }
 
 /// The caustics map's pipelines for `features`: one, or with dispersion one per colour channel
