@@ -78,6 +78,10 @@ fn web_format_name(format: wgpu::TextureFormat) -> String {
 /// when fewer are in flight ([`WebDemo::can_draw`]): a slow GPU (software rendering) then gets
 /// fewer frames instead of a growing queue of them, and a click shows in the next frame drawn.
 pub const MAX_FRAMES_IN_FLIGHT: u32 = 1;
+/// Time a piece of the start-up's work may take before the next pipeline waits for a later
+/// task (ms): a piece then lasts at most this plus one pipeline (≈ 100 ms on WebGL2 on
+/// SwiftShader).
+pub const PREPARE_BUDGET_MS: f64 = 40.0;
 
 fn warn(message: &str) {
     web_sys::console::warn_1(&JsValue::from_str(message));
@@ -318,21 +322,25 @@ impl WebDemo {
         Ok(())
     }
 
-    /// One piece of the work before the first frame of `width` x `height` pixels; true when
+    /// A piece of the work before the first frame of `width` x `height` pixels; true when
     /// none is left (then `frame` draws without a long pause). Call once per animation frame
-    /// until true, not after. Each piece builds one pipeline the frame will draw with; on WebGL2 the last
-    /// draws a frame that is not shown, so that the browser's GL process compiles what the
-    /// drawing needs while the page goes on (shown, the first frame would hold the page's
+    /// until true, not after. A piece builds pipelines the frame will draw with for up to
+    /// [`PREPARE_BUDGET_MS`] (one or two on WebGL2, where each waits for its shader's
+    /// compilation; most of them on WebGPU, which compiles in the GPU process). On WebGL2 the
+    /// last piece draws a frame that is not shown, so that the browser's GL process compiles
+    /// what drawing needs while the page goes on (a first frame shown would hold the page's
     /// thread until the GPU had done it all: over a second without a GPU).
     pub fn prepare(&mut self, width: u32, height: u32) -> bool {
         let size = (width.clamp(1, self.max_side), height.clamp(1, self.max_side));
-        if !self.prepared && !self.demo.build_ahead(&self.device, size) {
-            return false;
-        }
-        if !self.prepared {
-            self.prepared = true;
-            if self.backend == "webgl2" {
-                self.draw_unshown(size);
+        let start = js_sys::Date::now();
+        while !self.prepared {
+            if self.demo.build_ahead(&self.device, size) {
+                self.prepared = true;
+                if self.backend == "webgl2" {
+                    self.draw_unshown(size);
+                }
+            } else if js_sys::Date::now() - start > PREPARE_BUDGET_MS {
+                return false;
             }
         }
         // The first frame waits for the GPU to be done with the unshown one.
