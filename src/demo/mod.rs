@@ -174,6 +174,12 @@ impl WaterDemo {
         self.renderer.build_ahead(device, &view, size)
     }
 
+    /// See [`Renderer::set_object_regions`].
+    #[doc(hidden)]
+    pub fn set_object_regions(&mut self, on: bool) {
+        self.renderer.set_object_regions(on);
+    }
+
     /// Pipeline sets built so far (see [`Renderer::pipeline_sets_built`]).
     pub fn pipeline_sets_built(&self) -> usize {
         self.renderer.pipeline_sets_built()

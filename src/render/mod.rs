@@ -107,6 +107,9 @@ pub struct Renderer {
     body_meshes: Vec<Mesh>,
     depth: Option<DepthBuffer>,
     upscale: Upscale,
+    /// The water surface traces the objects only in their regions (`variants::surface_regions`);
+    /// off, everywhere (for tests: the regions must not change the picture).
+    object_regions: bool,
 }
 
 impl Renderer {
@@ -179,6 +182,7 @@ impl Renderer {
                 .collect(),
             depth: None,
             upscale: Upscale::new(device, settings.target_format),
+            object_regions: true,
         }
     }
 
@@ -238,6 +242,13 @@ impl Renderer {
             self.building.insert(features, build);
         }
         false
+    }
+
+    /// Whether the water surface traces the objects only where it can show them (the
+    /// default) or everywhere (the reference that tests compare the regions with).
+    #[doc(hidden)]
+    pub fn set_object_regions(&mut self, on: bool) {
+        self.object_regions = on;
     }
 
     /// Pipeline sets built: feature sets of the scene's pipelines and of the flat water's.

@@ -102,7 +102,8 @@ impl Renderer {
         }
         if divider < size.0 {
             drawn.push(base);
-            drawn.extend(variants::surface_regions(view, size).into_iter().flatten().map(|(_, needs)| needs));
+            let regions = self.object_regions.then(|| variants::surface_regions(view, size)).flatten();
+            drawn.extend(regions.into_iter().flatten().map(|(_, needs)| needs));
         }
         let mut seen = std::collections::HashSet::new();
         drawn.retain(|f| seen.insert(*f));
@@ -180,7 +181,7 @@ impl Renderer {
         let depth = self.depth_view(device, size).clone();
         // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
         let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
-        let regions = if flat.is_some() { None } else { variants::surface_regions(view, size) };
+        let regions = if flat.is_some() || !self.object_regions { None } else { variants::surface_regions(view, size) };
         self.variant(device, features);
         for (_, needs) in regions.iter().flatten() {
             self.variant(device, *needs);
