@@ -1,5 +1,5 @@
 // Tessendorf's FFT ocean on the GPU, in fragment passes (so WebGL2 runs the same code): the
-// spectrum pass advances each wave of the pool's lattice analytically, h = a0 e^{-i w t} +
+// spectrum pass advances each wave of a lattice (the pool's, a sea cascade's) analytically, h = a0 e^{-i w t} +
 // a1 e^{+i w t} with w^2 = g k tanh(k D) (1 + (k/k_m)^2), and packs the height and slope
 // spectra as two complex signals per texel; then log2(N) Stockham stages along the rows and
 // log2(N) along the columns sum the waves (inverse DFT). With choppiness a second chain sums
@@ -11,6 +11,9 @@ struct FftStage {
     // x: half-block of this stage (1, 2, ... N/2); y: 0 along rows, 1 along columns;
     // z: time since the spectrum's epoch (s), for the spectrum pass.
     params: vec4<f32>,
+    // The lattice's band, for the spectrum pass: x: pi / half the tile's side (rad/m, the
+    // wavenumber of one lattice step); y: the water's depth (m).
+    band: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> stage: FftStage;
@@ -22,17 +25,17 @@ fn complex_mul(a: vec2<f32>, b: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
 }
 
-// Angular frequency (rad/s) of a wave of wavenumber k (rad/m): gravity on water of the pool's
-// depth, and surface tension (ambient.rs angular_frequency). tanh's argument is capped at 9
+// Angular frequency (rad/s) of a wave of wavenumber k (rad/m): gravity on water of the band's
+// depth, and surface tension (ambient.rs angular_frequency_in). tanh's argument is capped at 9
 // (tanh 9 = 1 - 3e-8): some GPUs compute tanh from exponentials that overflow to inf/inf.
 fn wave_frequency(k: f32) -> f32 {
     let ratio = k / CAPILLARY_WAVENUMBER;
-    return sqrt(GRAVITY * k * tanh(min(k * OCEAN_DEPTH, 9.0)) * (1.0 + ratio * ratio));
+    return sqrt(GRAVITY * k * tanh(min(k * stage.band.y, 9.0)) * (1.0 + ratio * ratio));
 }
 
 // Wavenumber (rad/m) of lattice index i along one axis: indices past N/2 are negative.
 fn lattice_k(i: i32, n: i32) -> f32 {
-    return f32(select(i - n, i, i < n / 2)) * PI / OCEAN_HALF_WIDTH;
+    return f32(select(i - n, i, i < n / 2)) * stage.band.x;
 }
 
 // This texel's wavevector (rad/m) and its wave h = a0 e^{-i w dt} + a1 e^{i w dt}.

@@ -10,6 +10,7 @@
 //! and the tests from [`AmbientWaves::sample`]; each wave's phase is advanced here in f64 so that long runs keep
 //! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
 
+pub mod cascades;
 pub mod gpu_ocean;
 pub mod ocean;
 pub mod params;
@@ -99,9 +100,14 @@ pub const CAPILLARY_WAVENUMBER: f32 = 370.0;
 /// ω² = g k tanh(k D) (1 + (k/k_m)²), gravity and surface tension. (Beware the widely copied
 /// `k * k / KM * KM`: that is k², not (k/k_m)².)
 pub fn angular_frequency(k: f32) -> f32 {
+    angular_frequency_in(k, DEPTH)
+}
+
+/// The same on water `depth` deep (m).
+pub fn angular_frequency_in(k: f32, depth: f32) -> f32 {
     let ratio = k / CAPILLARY_WAVENUMBER;
     // tanh(9) = 1 − 3e-8; the cap keeps the shader's copy finite where tanh overflows.
-    (G * k * (k * DEPTH).min(9.0).tanh() * (1.0 + ratio * ratio)).sqrt()
+    (G * k * (k * depth).min(9.0).tanh() * (1.0 + ratio * ratio)).sqrt()
 }
 
 /// The physical settings of the ambient surface (from the parameter table).
@@ -371,8 +377,7 @@ pub fn wgsl_constants() -> String {
          const AMBIENT_GERSTNER: u32 = {}u;\nconst AMBIENT_FFT: u32 = {}u;\n\
          const MAX_AMBIENT_WAVES: i32 = {};\nconst SHARP_SINE_MEAN: f32 = {:?};\nconst GERSTNER_NEWTON_STEPS: i32 = {};\nconst CHOP_NEWTON_STEPS: i32 = {};\n\
          const CHOP_STEP_LIMIT: f32 = {:?};\nconst CHOP_SLOPE_LIMIT: f32 = {:?};\n\
-         const GRAVITY: f32 = {:?};\nconst CAPILLARY_WAVENUMBER: f32 = {:?};\nconst OCEAN_DEPTH: f32 = {:?};\n\
-         const OCEAN_HALF_WIDTH: f32 = {:?};\n\
+         const GRAVITY: f32 = {:?};\nconst CAPILLARY_WAVENUMBER: f32 = {:?};\n\
          const AMBIENT_SHORTEST: f32 = {:?};\nconst AMBIENT_LONGEST: f32 = {:?};\n",
         AmbientModel::None as u32,
         AmbientModel::Sines as u32,
@@ -387,8 +392,6 @@ pub fn wgsl_constants() -> String {
         ocean::CHOP_SLOPE_LIMIT,
         G,
         CAPILLARY_WAVENUMBER,
-        DEPTH,
-        HALF_WIDTH,
         SHORTEST_WAVELENGTH,
         LONGEST_WAVELENGTH,
     )

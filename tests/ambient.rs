@@ -8,6 +8,7 @@
 mod common;
 
 use common::render;
+use wavepool::ambient::cascades::SeaWaves;
 use wavepool::ambient::gpu_ocean::GpuOcean;
 use wavepool::ambient::ocean::Ocean;
 use wavepool::ambient::{AmbientModel, AmbientSettings};
@@ -158,15 +159,22 @@ fn the_height_and_normals_views_show_the_ambient_waves() {
 }
 
 /// The GPU's FFT (spectrum pass and Stockham stages in fragment passes) against the CPU's
-/// (the same stages), for both lattice sizes, early and late (after several epochs), for the
-/// surface's chain and the choppy displacement's.
+/// (the same stages), for both lattice sizes of the pool and for a cascade of the sea (its own
+/// tile and depth), early and late (after several epochs), for the surface's chain and the
+/// choppy displacement's.
 #[test]
 fn the_gpu_fft_matches_the_cpu_reference() {
     let g = common::gpu();
-    for size in [64usize, 128] {
-        let settings =
-            AmbientSettings { fft_size: size, choppiness: 1.5, ..AmbientSettings::default_for(AmbientModel::Fft) };
-        let ocean = Ocean::new(&settings, size);
+    let settings =
+        |size| AmbientSettings { fft_size: size, choppiness: 1.5, ..AmbientSettings::default_for(AmbientModel::Fft) };
+    let sea = SeaWaves::new(&AmbientSettings { significant_height: 1.0, wind_speed: 8.0, ..settings(64) }, 64);
+    let oceans = [
+        ("pool", Ocean::new(&settings(64), 64)),
+        ("pool", Ocean::new(&settings(128), 128)),
+        ("sea cascade", sea.cascades[1].ocean.clone()),
+    ];
+    for (what, ocean) in oceans {
+        let size = ocean.size;
         let mut gpu_ocean = GpuOcean::new(&g.device, size as u32);
         for t in [2.3, 1234.56] {
             let mut encoder = g.device.create_command_encoder(&Default::default());
@@ -187,9 +195,13 @@ fn the_gpu_fft_matches_the_cpu_reference() {
                     })
                     .collect();
                 println!(
-                    "FFT {size}² {name} at t = {t} s: GPU vs CPU, each field's largest difference over its largest \
-                     value: {:.1e} {:.1e} {:.1e} {:.1e}",
-                    relative[0], relative[1], relative[2], relative[3]
+                    "FFT {size}² ({what}, tile {} m) {name} at t = {t} s: GPU vs CPU, each field's largest \
+                     difference over its largest value: {:.1e} {:.1e} {:.1e} {:.1e}",
+                    2.0 * ocean.band.half_tile,
+                    relative[0],
+                    relative[1],
+                    relative[2],
+                    relative[3]
                 );
                 // Heights (and displacements) to 1e-5 of their peak; derivatives to 1e-4.
                 assert!(relative[0] < 1e-5 && relative[1..].iter().all(|r| *r < 1e-4), "{name}: {relative:?}");

@@ -40,7 +40,7 @@ fn a_single_sine_and_a_single_fft_wave_travel_at_the_speed_the_dispersion_relati
         let m = (2.0 * HALF_WIDTH / wavelength).round() as usize;
         let mut h0 = vec![[0.0f32; 4]; n * n];
         h0[m] = [0.004, 0.001, 0.0, 0.0];
-        let ocean = Ocean { size: n, h0, choppiness: 0.0 };
+        let ocean = Ocean { size: n, band: wavepool::ambient::ocean::Band::pool(n), h0, choppiness: 0.0 };
         let k_lattice = lattice_k(m, n);
         let expected_lattice = angular_frequency(k_lattice) / k_lattice;
         let fft = measured_phase_speed(|x, t| ocean.sample(x, 0.2, t)[0], dt, 0.5 * wavelength);

@@ -55,13 +55,14 @@ impl GpuOcean {
                 ],
             })
         };
-        let time = gpu::uniform_buffer(device, "ocean time", &[0.0f32; 4]);
+        let time = gpu::uniform_buffer(device, "ocean time", &[0.0f32; 8]);
         let spectrum_groups = [group(&time, &spectrum_view), group(&time, &spectrum_view)];
         let mut stage_buffers = Vec::new();
         for axis in [0.0f32, 1.0] {
             let mut half = 1;
             while half < size {
-                stage_buffers.push(gpu::uniform_buffer(device, "ocean stage", &[half as f32, axis, 0.0, 0.0]));
+                let params = [half as f32, axis, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+                stage_buffers.push(gpu::uniform_buffer(device, "ocean stage", &params));
                 half *= 2;
             }
         }
@@ -87,7 +88,8 @@ impl GpuOcean {
         self.size
     }
 
-    /// Encodes the passes that make `ocean`'s surface at simulated time `t` (s) in
+    /// Encodes the passes that make `ocean`'s surface (the pool's, or a sea cascade's) at
+    /// simulated time `t` (s) in
     /// [`GpuOcean::surface`] (per texel height (m), ∂h/∂x, ∂h/∂z, ∂Dx/∂z, as `Ocean::surface`)
     /// and, with choppiness, its displacement in [`GpuOcean::displacement`] (as
     /// `Ocean::displacement`).
@@ -99,7 +101,12 @@ impl GpuOcean {
             gpu::write_texture_2d(queue, &self.spectrum, 0, bytemuck::cast_slice(&texels));
             self.uploaded = Some((ocean.h0.clone(), epoch));
         }
-        queue.write_buffer(&self.time, 0, bytemuck::cast_slice(&[0.0f32, 0.0, (t - epoch) as f32, 0.0]));
+        let band = [std::f32::consts::PI / ocean.band.half_tile, ocean.band.depth];
+        queue.write_buffer(
+            &self.time,
+            0,
+            bytemuck::cast_slice(&[0.0f32, 0.0, (t - epoch) as f32, 0.0, band[0], band[1], 0.0, 0.0]),
+        );
         let chains = if ocean.choppiness > 0.0 { &mut self.chains[..] } else { &mut self.chains[..1] };
         for chain in chains {
             chain.fields.restart();

@@ -9,8 +9,8 @@
 //! the GPU to, and the path for devices without float render targets. Lengths in metres, times
 //! in seconds.
 
-use super::{angular_frequency, AmbientSettings, Spectrum, G, LONGEST_WAVELENGTH};
-use crate::scene::HALF_WIDTH;
+use super::{angular_frequency_in, AmbientSettings, Spectrum, G, LONGEST_WAVELENGTH};
+use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
 
 /// A complex number (re, im) in f32, as the GPU holds it.
@@ -38,11 +38,62 @@ const JONSWAP_SIGMA: (f32, f32) = (0.07, 0.09);
 /// wind has crossed this far (with the pool's own 2 m the peak would be 2 cm ripples).
 pub const JONSWAP_FETCH: f32 = 100.0;
 
-/// The spectrum sampled on the pool's lattice, and how it moves.
+/// The waves one lattice holds: a square tile 2 × `half_tile` wide (m) that repeats, the
+/// wavelengths from `longest` down to `shortest` (m) on water `depth` deep (m), and the seed of
+/// their random amplitudes and phases. `shared_with`: the longest waves of other lattices
+/// (m; 0 for none) that hold the same waves: a wave no longer than k of them is held by k + 1
+/// lattices, each with 1/(k + 1) of its energy.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Band {
+    pub half_tile: f32,
+    pub longest: f32,
+    pub shortest: f32,
+    pub depth: f32,
+    pub seed: u64,
+    pub shared_with: [f32; 2],
+}
+
+impl Band {
+    /// The share of the spectrum's energy this lattice holds at `wavelength` (m).
+    pub fn share(&self, wavelength: f32) -> f32 {
+        1.0 / (1 + self.shared_with.iter().filter(|&&longest| wavelength <= longest).count()) as f32
+    }
+}
+
+impl Band {
+    /// The pool's: the pool itself is the tile, from [`LONGEST_WAVELENGTH`] down to
+    /// [`SHORTEST_WAVE_CELLS`] cells of a `size`² lattice.
+    pub fn pool(size: usize) -> Self {
+        Self {
+            half_tile: HALF_WIDTH,
+            longest: LONGEST_WAVELENGTH,
+            shortest: SHORTEST_WAVE_CELLS * 2.0 * HALF_WIDTH / size as f32,
+            depth: DEPTH,
+            seed: 0x0cea_4f17,
+            shared_with: [0.0; 2],
+        }
+    }
+
+    /// Wavenumber (rad/m) of lattice index `i` (0..`size`) along one axis: indices past
+    /// `size`/2 are negative.
+    pub fn k(&self, i: usize, size: usize) -> f32 {
+        let m = if i < size / 2 { i as i32 } else { i as i32 - size as i32 };
+        m as f32 * std::f32::consts::PI / self.half_tile
+    }
+
+    /// Angular frequency (rad/s) of a wave of wavenumber `k` here.
+    pub fn omega(&self, k: f32) -> f32 {
+        angular_frequency_in(k, self.depth)
+    }
+}
+
+/// The spectrum sampled on a lattice (the pool's, or one of the sea's cascades), and how it moves.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ocean {
     /// Lattice points per side (a power of two).
     pub size: usize,
+    /// The tile and the wavelengths the lattice holds.
+    pub band: Band,
     /// Per lattice point, row-major with index (m mod N, n mod N) for k = (π/W)(m, n):
     /// h0(k) and conj(h0(−k)), the amplitudes at t = 0 (m).
     pub h0: Vec<[f32; 4]>,
@@ -62,17 +113,17 @@ pub const CHOP_NEWTON_STEPS: usize = 4;
 pub const CHOP_STEP_LIMIT: f32 = 0.05;
 pub const CHOP_SLOPE_LIMIT: f32 = 4.0;
 
-/// Wavenumber (rad/m) of lattice index `i` (0..N) along one axis: indices past N/2 are negative.
+/// Wavenumber (rad/m) of the pool's lattice index `i` (0..N) along one axis: indices past N/2
+/// are negative.
 pub fn lattice_k(i: usize, size: usize) -> f32 {
-    let m = if i < size / 2 { i as i32 } else { i as i32 - size as i32 };
-    m as f32 * std::f32::consts::PI / HALF_WIDTH
+    Band::pool(size).k(i, size)
 }
 
 /// The spectrum's density (m⁴ per unit of k², up to a scale) at wavevector (kx, kz), zero
 /// outside the band the lattice and the pool hold and outside the spread around the wind.
-fn density(kx: f32, kz: f32, settings: &AmbientSettings, shortest: f32) -> f32 {
+fn density(kx: f32, kz: f32, settings: &AmbientSettings, band: &Band) -> f32 {
     let k = (kx * kx + kz * kz).sqrt();
-    let (k_min, k_max) = (std::f32::consts::TAU / LONGEST_WAVELENGTH, std::f32::consts::TAU / shortest);
+    let (k_min, k_max) = (std::f32::consts::TAU / band.longest, std::f32::consts::TAU / band.shortest);
     if k < k_min || k > k_max {
         return 0.0;
     }
@@ -83,26 +134,27 @@ fn density(kx: f32, kz: f32, settings: &AmbientSettings, shortest: f32) -> f32 {
         return 0.0;
     }
     let align = off.cos();
-    match settings.spectrum {
-        Spectrum::Phillips => {
-            // exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
-            let l = settings.wind_speed * settings.wind_speed / G;
-            (-1.0 / (k * l).powi(2)).exp() / k.powi(4) * align * align
+    band.share(std::f32::consts::TAU / k)
+        * match settings.spectrum {
+            Spectrum::Phillips => {
+                // exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
+                let l = settings.wind_speed * settings.wind_speed / G;
+                (-1.0 / (k * l).powi(2)).exp() / k.powi(4) * align * align
+            }
+            Spectrum::Jonswap => {
+                // S(ω) = g²/ω⁵ exp(−5/4 (ω_p/ω)⁴) γ^r, r = exp(−(ω − ω_p)²/(2σ²ω_p²)), the
+                // fetch-limited peak ω_p = 22 (g²/(U F))^(1/3); per unit k²: S(ω) dω/dk / k,
+                // with cos² spreading.
+                let omega_p = 22.0 * (G * G / (settings.wind_speed * JONSWAP_FETCH)).cbrt();
+                let omega = band.omega(k);
+                let sigma = if omega <= omega_p { JONSWAP_SIGMA.0 } else { JONSWAP_SIGMA.1 };
+                let r = (-(omega - omega_p).powi(2) / (2.0 * sigma * sigma * omega_p * omega_p)).exp();
+                let s = G * G / omega.powi(5) * (-1.25 * (omega_p / omega).powi(4)).exp() * JONSWAP_GAMMA.powf(r);
+                let dk = 1e-3 * k;
+                let domega_dk = (band.omega(k + dk) - band.omega(k - dk)) / (2.0 * dk);
+                s * domega_dk / k * align * align
+            }
         }
-        Spectrum::Jonswap => {
-            // S(ω) = g²/ω⁵ exp(−5/4 (ω_p/ω)⁴) γ^r, r = exp(−(ω − ω_p)²/(2σ²ω_p²)), the
-            // fetch-limited peak ω_p = 22 (g²/(U F))^(1/3); per unit k²: S(ω) dω/dk / k,
-            // with cos² spreading.
-            let omega_p = 22.0 * (G * G / (settings.wind_speed * JONSWAP_FETCH)).cbrt();
-            let omega = angular_frequency(k);
-            let sigma = if omega <= omega_p { JONSWAP_SIGMA.0 } else { JONSWAP_SIGMA.1 };
-            let r = (-(omega - omega_p).powi(2) / (2.0 * sigma * sigma * omega_p * omega_p)).exp();
-            let s = G * G / omega.powi(5) * (-1.25 * (omega_p / omega).powi(4)).exp() * JONSWAP_GAMMA.powf(r);
-            let dk = 1e-3 * k;
-            let domega_dk = (angular_frequency(k + dk) - angular_frequency(k - dk)) / (2.0 * dk);
-            s * domega_dk / k * align * align
-        }
-    }
 }
 
 /// A standard normal number (Box–Muller).
@@ -116,20 +168,32 @@ impl Ocean {
     /// The lattice of `size`² points for `settings`, scaled so that the significant height
     /// (4 × the surface's standard deviation, averaged over time) is the asked one.
     pub fn new(settings: &AmbientSettings, size: usize) -> Self {
+        let mut ocean = Self::unscaled(settings, size, Band::pool(size));
+        let variance = ocean.variance();
+        if variance > 0.0 {
+            ocean.scale(settings.significant_height / 4.0 / variance.sqrt() as f32);
+        }
+        ocean
+    }
+
+    /// The lattice of `size`² points for `band`, with the spectrum's own (arbitrary) scale.
+    pub fn unscaled(settings: &AmbientSettings, size: usize, band: Band) -> Self {
         assert!(size.is_power_of_two() && size >= 8, "lattice size {size}");
-        let mut rng = SplitMix64(0x0cea_4f17);
-        let shortest = SHORTEST_WAVE_CELLS * 2.0 * HALF_WIDTH / size as f32;
+        let mut rng = SplitMix64(band.seed);
         let mut amplitude = vec![[0.0f32; 2]; size * size];
+        // The lattice's spacing in k (rad/m): lattices of different tiles then hold the same
+        // energy per unit of k², whatever their density of waves.
+        let dk = band.k(1, size);
         for j in 0..size {
             for i in 0..size {
-                let (kx, kz) = (lattice_k(i, size), lattice_k(j, size));
-                // h0 = (ξr + i ξi)/√2 · √(S(k) Δk²); the scale comes below.
-                let a = density(kx, kz, settings, shortest).max(0.0).sqrt() / std::f32::consts::SQRT_2;
+                let (kx, kz) = (band.k(i, size), band.k(j, size));
+                // h0 = (ξr + i ξi)/√2 · √(S(k) Δk²); the scale comes later.
+                let a = density(kx, kz, settings, &band).max(0.0).sqrt() * dk / std::f32::consts::SQRT_2;
                 amplitude[j * size + i] = [gaussian(&mut rng) * a, gaussian(&mut rng) * a];
             }
         }
         let negative = |i: usize| (size - i) % size;
-        let mut h0: Vec<[f32; 4]> = (0..size * size)
+        let h0: Vec<[f32; 4]> = (0..size * size)
             .map(|idx| {
                 let (i, j) = (idx % size, idx / size);
                 let minus = conj(amplitude[negative(j) * size + negative(i)]);
@@ -137,17 +201,26 @@ impl Ocean {
                 [here[0], here[1], minus[0], minus[1]]
             })
             .collect();
-        // The variance averaged over time is Σ |h0(k)|² + |h0(−k)|².
-        let variance: f64 = h0.iter().map(|a| (a.iter().map(|v| v * v).sum::<f32>()) as f64).sum();
-        if variance > 0.0 {
-            let scale = settings.significant_height / 4.0 / (variance.sqrt() as f32);
-            for a in &mut h0 {
-                for v in a.iter_mut() {
-                    *v *= scale;
-                }
+        Self { size, band, h0, choppiness: settings.choppiness.clamp(0.0, MAX_CHOPPINESS) }
+    }
+
+    /// The surface's variance averaged over time (m²): Σ |h0(k)|² + |h0(−k)|².
+    pub fn variance(&self) -> f64 {
+        self.h0.iter().map(|a| (a.iter().map(|v| v * v).sum::<f32>()) as f64).sum()
+    }
+
+    /// Multiplies every amplitude by `factor`.
+    pub fn scale(&mut self, factor: f32) {
+        for a in &mut self.h0 {
+            for v in a.iter_mut() {
+                *v *= factor;
             }
         }
-        Self { size, h0, choppiness: settings.choppiness.clamp(0.0, MAX_CHOPPINESS) }
+    }
+
+    /// Wavenumbers (rad/m) of lattice index `idx`.
+    fn k_at(&self, idx: usize) -> (f32, f32) {
+        (self.band.k(idx % self.size, self.size), self.band.k(idx / self.size, self.size))
     }
 
     /// The number of lattice points with a wave on them.
@@ -158,9 +231,8 @@ impl Ocean {
     /// h(k, t) = h0(k) e^{−iωt} + conj(h0(−k)) e^{iωt} at lattice index `idx`: the first
     /// term travels along k, the second against it; the sum is Hermitian (a real surface).
     pub fn amplitude(&self, idx: usize, t: f64) -> Complex {
-        let (i, j) = (idx % self.size, idx / self.size);
-        let (kx, kz) = (lattice_k(i, self.size), lattice_k(j, self.size));
-        let omega = angular_frequency((kx * kx + kz * kz).sqrt()) as f64;
+        let (kx, kz) = self.k_at(idx);
+        let omega = self.band.omega((kx * kx + kz * kz).sqrt()) as f64;
         let phase = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
         let turn = [phase.cos(), phase.sin()];
         let a = self.h0[idx];
@@ -174,12 +246,12 @@ impl Ocean {
     /// by in f32 stays short (the phase ωt keeps its precision in long sessions).
     pub fn epoch_spectrum(&self, epoch: f64) -> Vec<[f32; 4]> {
         let n = self.size;
-        let x0 = -HALF_WIDTH + HALF_WIDTH / n as f32;
+        let x0 = -self.band.half_tile + self.band.half_tile / n as f32;
         (0..n * n)
             .map(|idx| {
-                let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+                let (kx, kz) = self.k_at(idx);
                 let shift = [(kx * x0 + kz * x0).cos(), (kx * x0 + kz * x0).sin()];
-                let omega = angular_frequency((kx * kx + kz * kz).sqrt()) as f64;
+                let omega = self.band.omega((kx * kx + kz * kz).sqrt()) as f64;
                 let phase = (omega * epoch).rem_euclid(std::f64::consts::TAU) as f32;
                 let turn = [phase.cos(), phase.sin()];
                 let a = self.h0[idx];
@@ -193,14 +265,16 @@ impl Ocean {
     /// The spectrum of the fields the renderer reads at time `t`: the surface's (see
     /// [`advance`]), or with `choppy` the displacement's (see [`advance_choppy`]).
     pub fn fields_spectrum(&self, t: f64, choppy: bool) -> Vec<[f32; 4]> {
-        let n = self.size;
         let epoch = epoch_of(t);
         let dt = (t - epoch) as f32;
         let step = if choppy { advance_choppy } else { advance };
         self.epoch_spectrum(epoch)
             .into_iter()
             .enumerate()
-            .map(|(idx, a)| step(a, lattice_k(idx % n, n), lattice_k(idx / n, n), dt))
+            .map(|(idx, a)| {
+                let (kx, kz) = self.k_at(idx);
+                step(a, kx, kz, self.band.omega((kx * kx + kz * kz).sqrt()) * dt)
+            })
             .collect()
     }
 
@@ -218,13 +292,12 @@ impl Ocean {
     /// Every field at a rest point (x, z), summed wave by wave: h, ∂h/∂x, ∂h/∂z, Dx, Dz,
     /// ∂Dx/∂x, ∂Dx/∂z, ∂Dz/∂z. (A field with spectrum m(k) h(k) is Re(m h e^{ik·x}).)
     pub fn fields_at(&self, x: f32, z: f32, t: f64) -> [f32; 8] {
-        let n = self.size;
         let mut out = [0.0f32; 8];
         for (idx, a) in self.h0.iter().enumerate() {
             if a.iter().all(|v| *v == 0.0) {
                 continue;
             }
-            let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+            let (kx, kz) = self.k_at(idx);
             let k = (kx * kx + kz * kz).sqrt();
             let v = mul(self.amplitude(idx, t), [(kx * x + kz * z).cos(), (kx * x + kz * z).sin()]);
             let terms = [
@@ -258,7 +331,7 @@ impl Ocean {
         let waves = (0..n * n)
             .filter(|&idx| self.h0[idx].iter().any(|v| *v != 0.0))
             .map(|idx| {
-                let (kx, kz) = (lattice_k(idx % n, n), lattice_k(idx / n, n));
+                let (kx, kz) = self.k_at(idx);
                 let k = (kx * kx + kz * kz).sqrt();
                 NowWave {
                     cell: [idx % n, idx / n],
@@ -267,7 +340,7 @@ impl Ocean {
                 }
             })
             .collect();
-        OceanNow { size: n, choppiness: self.choppiness, waves }
+        OceanNow { size: n, half_tile: self.band.half_tile, choppiness: self.choppiness, waves }
     }
 }
 
@@ -309,6 +382,8 @@ struct NowWave {
 #[derive(Clone, Debug)]
 pub struct OceanNow {
     size: usize,
+    /// Half the side of the lattice's tile (m).
+    half_tile: f32,
     choppiness: f32,
     waves: Vec<NowWave>,
 }
@@ -318,7 +393,7 @@ impl OceanNow {
     /// f64 from e^{i (π/W) x}.
     fn axis_table(&self, x: f32) -> Vec<Complex> {
         let n = self.size;
-        let step = std::f64::consts::PI / HALF_WIDTH as f64 * x as f64;
+        let step = std::f64::consts::PI / self.half_tile as f64 * x as f64;
         let base = (step.cos(), step.sin());
         let mut table = vec![[0.0f32; 2]; n];
         let mut power = (1.0f64, 0.0f64);
@@ -378,12 +453,12 @@ pub fn epoch_of(t: f64) -> f64 {
 }
 
 /// The spectrum pass (shaders/ambient_fft.wgsl, `fs_ocean_spectrum`) for one lattice point:
-/// `a` from [`Ocean::epoch_spectrum`] advanced by `dt` (s) past its epoch, h = a₀ e^{−iω dt} +
-/// a₁ e^{iω dt}, packed as two complex signals (re, im, re, im): h + i (i kx h) and i kz h,
-/// whose inverse FFTs are h + i ∂h/∂x and ∂h/∂z (real fields come out as the real and
-/// imaginary parts).
-pub fn advance(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
-    let h = advanced(a, kx, kz, dt);
+/// `a` from [`Ocean::epoch_spectrum`] advanced by the phase ω dt (rad) of the time past its
+/// epoch, h = a₀ e^{−iω dt} + a₁ e^{iω dt}, packed as two complex signals (re, im, re, im):
+/// h + i (i kx h) and i kz h, whose inverse FFTs are h + i ∂h/∂x and ∂h/∂z (real fields come
+/// out as the real and imaginary parts).
+pub fn advance(a: [f32; 4], kx: f32, kz: f32, phase: f32) -> [f32; 4] {
+    let h = advanced(a, phase);
     // The second signal also carries ∂Dx/∂z (spectrum (kx kz / k) h) in its imaginary part.
     let c = kz + kx * kz * inverse_k(kx, kz);
     [h[0] - kx * h[0], h[1] - kx * h[1], -c * h[1], c * h[0]]
@@ -391,17 +466,16 @@ pub fn advance(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
 
 /// The choppy spectrum pass (`fs_ocean_choppy_spectrum`): Dx + i Dz and ∂Dx/∂x + i ∂Dz/∂z,
 /// from Dx = −i (kx/k) h, Dz = −i (kz/k) h and their derivatives (kx²/k) h, (kz²/k) h.
-pub fn advance_choppy(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> [f32; 4] {
-    let h = advanced(a, kx, kz, dt);
+pub fn advance_choppy(a: [f32; 4], kx: f32, kz: f32, phase: f32) -> [f32; 4] {
+    let h = advanced(a, phase);
     let r = inverse_k(kx, kz);
     let d = mul([kz * r, -kx * r], h);
     let j = mul([kx * kx * r, kz * kz * r], h);
     [d[0], d[1], j[0], j[1]]
 }
 
-/// h = a₀ e^{−iω dt} + a₁ e^{iω dt}.
-fn advanced(a: [f32; 4], kx: f32, kz: f32, dt: f32) -> Complex {
-    let phase = angular_frequency((kx * kx + kz * kz).sqrt()) * dt;
+/// h = a₀ e^{−iω dt} + a₁ e^{iω dt}, `phase` = ω dt.
+fn advanced(a: [f32; 4], phase: f32) -> Complex {
     let turn = [phase.cos(), phase.sin()];
     add(mul([a[0], a[1]], conj(turn)), mul([a[2], a[3]], turn))
 }
