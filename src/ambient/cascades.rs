@@ -41,6 +41,11 @@ pub const CASCADE_TILES: [f32; 5] =
     [CASCADES[0].tile, CASCADES[1].tile, CASCADES[2].tile, CASCADES[3].tile, CASCADES[4].tile];
 /// Depth (m) of the open sea's water: deep for every wave the cascades hold.
 pub const SEA_DEPTH: f32 = 200.0;
+/// The distance (m) the wind has blown over the open sea (JONSWAP's peak).
+pub const SEA_FETCH: f32 = 50_000.0;
+/// Whitecaps where the choppy surface's Jacobian determinant falls below this: the water is
+/// squeezed to this share of its area at rest, about to fold over and break.
+pub const WHITECAP_JACOBIAN: f32 = 0.3;
 
 /// One cascade: its lattice and how far it is turned from the world's axes.
 #[derive(Clone, Debug)]
@@ -85,6 +90,7 @@ impl SeaWaves {
                     shortest,
                     depth: SEA_DEPTH,
                     seed: 0x5ea0 + i as u64,
+                    fetch: SEA_FETCH,
                     shared_with: spec.shared_with,
                 };
                 // The wind in the cascade's frame.
@@ -112,6 +118,27 @@ impl SeaWaves {
             let (sx, sz) = c.to_world(f[1], f[2]);
             [sum[0] + f[0], sum[1] + sx, sum[2] + sz]
         })
+    }
+
+    /// The Jacobian determinant of the horizontal map x₀ ↦ x₀ − λ D(x₀) at world rest point
+    /// (x, z), time `t`: 1 where the water keeps its area, below 1 where the choppy waves
+    /// squeeze it (their crests), ≤ 0 where it folds over. D and its derivatives are the
+    /// cascades' summed; λ is their choppiness.
+    pub fn jacobian(&self, x: f32, z: f32, t: f64) -> f32 {
+        let mut d = [0.0f32; 3]; // ∂Dx/∂x, ∂Dx/∂z, ∂Dz/∂z in the world's frame
+        let mut lambda = 0.0;
+        for c in &self.cascades {
+            lambda = c.ocean.choppiness;
+            let (u, v) = c.local(x, z);
+            let f = c.ocean.fields_at(u, v, t);
+            // The cascade's tensor [[xx, xz], [xz, zz]] turned to the world: R M Rᵀ.
+            let (s, co) = c.angle.sin_cos();
+            let (xx, xz, zz) = (f[5], f[6], f[7]);
+            d[0] += co * co * xx - 2.0 * s * co * xz + s * s * zz;
+            d[1] += s * co * (xx - zz) + (co * co - s * s) * xz;
+            d[2] += s * s * xx + 2.0 * s * co * xz + co * co * zz;
+        }
+        (1.0 - lambda * d[0]) * (1.0 - lambda * d[2]) - lambda * lambda * d[1] * d[1]
     }
 
     /// Each cascade's share of the surface's variance.
@@ -213,8 +240,15 @@ mod tests {
         let (chance, at_direction, at_lag) = worst_repeat(random);
         println!("the same waves off the lattice: {chance:.3}, along {at_direction}° at {at_lag} m");
         // One lattice holding the whole spectrum, unturned: its tile shows at 256 m.
-        let band =
-            Band { half_tile: 128.0, longest: 256.0, shortest: 16.0, depth: SEA_DEPTH, seed: 1, shared_with: [0.0; 2] };
+        let band = Band {
+            half_tile: 128.0,
+            longest: 256.0,
+            shortest: 16.0,
+            depth: SEA_DEPTH,
+            seed: 1,
+            fetch: SEA_FETCH,
+            shared_with: [0.0; 2],
+        };
         let one = Cascade { ocean: Ocean::unscaled(&breeze(), 64, band), angle: 0.0 };
         let (one_r, one_lag) =
             largest_correlation(&line(&|x, z| one.ocean.fields_at(x, z, 0.0)[0], 0.0), 1.0, 40.0, 500.0);
@@ -227,6 +261,39 @@ mod tests {
             r < chance + 0.12,
             "the sea repeats along {direction}° at {lag} m: autocorrelation {r:.3} (by chance {chance:.3})"
         );
+    }
+
+    /// Whitecaps (the Jacobian below [`WHITECAP_JACOBIAN`]) on a choppy storm sea, none on a
+    /// calm one: the share of 1,600 points over a 500 m patch.
+    #[test]
+    fn a_storm_has_whitecaps_and_calm_water_none() {
+        let caps = |wind_speed: f32, significant_height: f32| {
+            let settings = AmbientSettings {
+                wind_speed,
+                significant_height,
+                choppiness: 1.5,
+                spectrum: Spectrum::Jonswap,
+                ..breeze()
+            };
+            let sea = SeaWaves::new(&settings, 64);
+            let points = (0..40 * 40).map(|i| ((i % 40) as f32 * 12.7, (i / 40) as f32 * 12.3));
+            let (mut capped, mut lowest) = (0, f32::MAX);
+            for (x, z) in points {
+                let j = sea.jacobian(x, z, 5.0);
+                lowest = lowest.min(j);
+                capped += (j < WHITECAP_JACOBIAN) as u32;
+            }
+            (capped as f32 / 1600.0, lowest)
+        };
+        let (storm, storm_lowest) = caps(20.0, 6.0);
+        let (calm, calm_lowest) = caps(3.0, 0.1);
+        println!(
+            "whitecaps: storm {:.1} % (lowest Jacobian {storm_lowest:.2}), calm {:.1} % ({calm_lowest:.2})",
+            storm * 100.0,
+            calm * 100.0
+        );
+        assert!(storm > 0.01, "a storm with {:.2} % whitecaps", storm * 100.0);
+        assert_eq!(calm, 0.0, "calm water with whitecaps");
     }
 
     #[test]

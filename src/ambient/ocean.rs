@@ -34,13 +34,14 @@ pub const SHORTEST_WAVE_CELLS: f32 = 4.0;
 /// JONSWAP's peak enhancement γ and widths σ below and above the peak (Hasselmann et al. 1973).
 const JONSWAP_GAMMA: f32 = 3.3;
 const JONSWAP_SIGMA: (f32, f32) = (0.07, 0.09);
-/// The fetch (m) the JONSWAP peak is computed for: the pool stands for a patch of a lake the
-/// wind has crossed this far (with the pool's own 2 m the peak would be 2 cm ripples).
+/// The fetch (m) the pool's JONSWAP peak is computed for: the pool stands for a patch of a lake
+/// the wind has crossed this far (with the pool's own 2 m the peak would be 2 cm ripples).
 pub const JONSWAP_FETCH: f32 = 100.0;
 
 /// The waves one lattice holds: a square tile 2 × `half_tile` wide (m) that repeats, the
 /// wavelengths from `longest` down to `shortest` (m) on water `depth` deep (m), and the seed of
-/// their random amplitudes and phases. `shared_with`: the longest waves of other lattices
+/// their random amplitudes and phases, and the distance the wind has blown over the water
+/// (`fetch`, m: JONSWAP's peak). `shared_with`: the longest waves of other lattices
 /// (m; 0 for none) that hold the same waves: a wave no longer than k of them is held by k + 1
 /// lattices, each with 1/(k + 1) of its energy.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,6 +51,7 @@ pub struct Band {
     pub shortest: f32,
     pub depth: f32,
     pub seed: u64,
+    pub fetch: f32,
     pub shared_with: [f32; 2],
 }
 
@@ -70,6 +72,7 @@ impl Band {
             shortest: SHORTEST_WAVE_CELLS * 2.0 * HALF_WIDTH / size as f32,
             depth: DEPTH,
             seed: 0x0cea_4f17,
+            fetch: JONSWAP_FETCH,
             shared_with: [0.0; 2],
         }
     }
@@ -145,7 +148,7 @@ fn density(kx: f32, kz: f32, settings: &AmbientSettings, band: &Band) -> f32 {
                 // S(ω) = g²/ω⁵ exp(−5/4 (ω_p/ω)⁴) γ^r, r = exp(−(ω − ω_p)²/(2σ²ω_p²)), the
                 // fetch-limited peak ω_p = 22 (g²/(U F))^(1/3); per unit k²: S(ω) dω/dk / k,
                 // with cos² spreading.
-                let omega_p = 22.0 * (G * G / (settings.wind_speed * JONSWAP_FETCH)).cbrt();
+                let omega_p = 22.0 * (G * G / (settings.wind_speed * band.fetch)).cbrt();
                 let omega = band.omega(k);
                 let sigma = if omega <= omega_p { JONSWAP_SIGMA.0 } else { JONSWAP_SIGMA.1 };
                 let r = (-(omega - omega_p).powi(2) / (2.0 * sigma * sigma * omega_p * omega_p)).exp();
