@@ -115,6 +115,22 @@ pub struct WebDemo {
     prepared: bool,
 }
 
+/// The demo, made in `DemoBuild`'s steps with a task of the browser's between them.
+async fn build_demo(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    format: wgpu::TextureFormat,
+    options: DemoOptions,
+) -> WaterDemo {
+    let mut build = DemoBuild::new(format, options);
+    loop {
+        next_task().await;
+        if let Some(demo) = build.step(device, queue) {
+            return demo;
+        }
+    }
+}
+
 /// Resolves in a later task of the browser's event loop: input and painting run between two
 /// steps of work (none of which should hold the thread for long).
 async fn next_task() {
@@ -235,13 +251,7 @@ impl WebDemo {
                 warn(&format!("wavepool: {name} {asked} reduced to {given}: this device draws without a GPU"));
             }
         }
-        let mut build = DemoBuild::new(srgb_view.unwrap_or(format), options);
-        let demo = loop {
-            next_task().await;
-            if let Some(demo) = build.step(&device, &queue) {
-                break demo;
-            }
-        };
+        let demo = build_demo(&device, &queue, srgb_view.unwrap_or(format), options).await;
         Ok(WebDemo {
             demo,
             surface,
@@ -331,6 +341,9 @@ impl WebDemo {
     /// what drawing needs while the page goes on (a first frame shown would hold the page's
     /// thread until the GPU had done it all: over a second without a GPU).
     pub fn prepare(&mut self, width: u32, height: u32) -> bool {
+        if self.lost.lock().map_or(true, |m| m.is_some()) {
+            return true; // the next frame reports the loss
+        }
         let size = (width.clamp(1, self.max_side), height.clamp(1, self.max_side));
         let start = js_sys::Date::now();
         while !self.prepared {

@@ -233,16 +233,19 @@ fn debug_views_show_the_ring_where_it_is() {
 }
 
 /// Building ahead (a pipeline per call, as the browser's start-up does between frames) leaves
-/// the first frame nothing to build: in each render mode, with both bodies, with dispersion.
+/// the first frame nothing to build: in each render mode, with both bodies, with dispersion,
+/// with choppy FFT waves and foam set before the first frame, at a fixed half resolution.
 #[test]
 fn pipelines_built_ahead_leave_the_first_frame_nothing_to_build() {
     let g = common::gpu();
-    let setups: [(&str, &[(ParamId, f32)]); 5] = [
+    let setups: [(&str, &[(ParamId, f32)]); 7] = [
         ("default", &[]),
         ("sphere and duck", &[(ParamId::Objects, 3.0)]),
         ("flat", &[(ParamId::RenderMode, 1.0)]),
         ("split", &[(ParamId::RenderMode, 2.0), (ParamId::Objects, 3.0)]),
         ("dispersion", &[(ParamId::Dispersion, 0.02)]),
+        ("choppy FFT and foam", &[(ParamId::Ambient, 4.0), (ParamId::Choppiness, 1.0), (ParamId::Foam, 1.0)]),
+        ("half resolution", &[(ParamId::Quality, 0.5)]),
     ];
     for (name, params) in setups {
         let mut demo = common::demo(DemoOptions::default());

@@ -73,7 +73,12 @@ export const frameLoopMethods = {
     this._sizeCanvas(this._canvas);
     if (!this._prepared) {
       // The start-up's work, a piece per animation frame (no long task): see WebDemo.prepare.
-      this._prepared = this._core.prepare(this._canvas.width, this._canvas.height);
+      try {
+        this._prepared = this._core.prepare(this._canvas.width, this._canvas.height);
+      } catch (error) {
+        this._recover(error);
+        return;
+      }
       this._run();
       return;
     }

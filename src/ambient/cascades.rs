@@ -1,11 +1,13 @@
 //! The open sea's waves (issue: `scene=sea`): one spectrum shared among five FFT lattices
-//! (cascades) whose tiles are incommensurate (256, 181.5, 128.3, 17.3 and 5.1 m) and turned by
+//! (cascades) whose tiles are incommensurate (256, 181.5, 128.3, 61.7 and 15.1 m) and turned by
 //! their own angles. A single lattice repeats its tile exactly, which the eye finds at once on
 //! a sea seen to the horizon. Here the wavelengths that carry most of the energy (from 128.3 m
-//! down to 17.3 m) are held a third by each of the three long lattices, so no one lattice's
-//! repeat can make the sum repeat; the shorter ones by one lattice each. Along a kilometre in
-//! any direction the sum repeats no more than a sea off any lattice does by chance (the tests
-//! measure its autocorrelation), where one lattice repeats its tile exactly.
+//! down to 16 m) are held a third by each of the three long lattices, so no one lattice's
+//! repeat can make the sum repeat; the shorter ones by one lattice each, whose tile is about
+//! four times its band's longest wave (the lattice's first rings, coarse in k, hold nothing).
+//! Along a kilometre in any direction the sum repeats no more than a sea off any lattice does
+//! by chance (the tests measure its autocorrelation), where one lattice repeats its tile
+//! exactly.
 //!
 //! Each cascade is an [`Ocean`] on its own [`Band`]; per wavelength the shares of the
 //! cascades holding it add up to one, and the five are scaled together to the asked
@@ -14,11 +16,12 @@
 use super::ocean::{Band, Ocean, SHORTEST_WAVE_CELLS};
 use super::AmbientSettings;
 
-/// One cascade's lattice: its tile's side, the shortest wave it holds (the next cascade's
-/// longest; 0 for [`SHORTEST_WAVE_CELLS`] cells), the other lattices holding the same waves
-/// (their tiles; 0 for none) and its turn from the world's axes (degrees).
+/// One cascade's lattice: its tile's side, the longest and the shortest wave it holds (0 for
+/// [`SHORTEST_WAVE_CELLS`] cells), the other lattices holding the same waves (their longest;
+/// 0 for none) and its turn from the world's axes (degrees).
 struct CascadeSpec {
     tile: f32,
+    longest: f32,
     shortest: f32,
     shared_with: [f32; 2],
     angle_deg: f32,
@@ -26,15 +29,44 @@ struct CascadeSpec {
 
 /// The long tiles (m), which share the energetic waves.
 const LONG: [f32; 3] = [256.0, 181.5, 128.3];
+/// Where the long lattices' waves end and the next cascade's begin (m): four of the longest
+/// tile's cells of a 64² lattice.
+const LONG_SHORTEST: f32 = 16.0;
+/// Where the middle cascade's waves end and the last one's begin (m).
+const MIDDLE_SHORTEST: f32 = 3.9;
 
 /// The cascades, longest first. The tiles' ratios are far from small fractions, and the turns
 /// keep the long tiles' lattices apart.
 const CASCADES: [CascadeSpec; 5] = [
-    CascadeSpec { tile: LONG[0], shortest: 17.3, shared_with: [LONG[1], LONG[2]], angle_deg: 21.7 },
-    CascadeSpec { tile: LONG[1], shortest: 17.3, shared_with: [LONG[0], LONG[2]], angle_deg: 57.3 },
-    CascadeSpec { tile: LONG[2], shortest: 17.3, shared_with: [LONG[0], LONG[1]], angle_deg: 96.7 },
-    CascadeSpec { tile: 17.3, shortest: 5.1, shared_with: [0.0; 2], angle_deg: 104.9 },
-    CascadeSpec { tile: 5.1, shortest: 0.0, shared_with: [0.0; 2], angle_deg: 33.1 },
+    CascadeSpec {
+        tile: LONG[0],
+        longest: LONG[0],
+        shortest: LONG_SHORTEST,
+        shared_with: [LONG[1], LONG[2]],
+        angle_deg: 21.7,
+    },
+    CascadeSpec {
+        tile: LONG[1],
+        longest: LONG[1],
+        shortest: LONG_SHORTEST,
+        shared_with: [LONG[0], LONG[2]],
+        angle_deg: 57.3,
+    },
+    CascadeSpec {
+        tile: LONG[2],
+        longest: LONG[2],
+        shortest: LONG_SHORTEST,
+        shared_with: [LONG[0], LONG[1]],
+        angle_deg: 96.7,
+    },
+    CascadeSpec {
+        tile: 61.7,
+        longest: LONG_SHORTEST,
+        shortest: MIDDLE_SHORTEST,
+        shared_with: [0.0; 2],
+        angle_deg: 104.9,
+    },
+    CascadeSpec { tile: 15.1, longest: MIDDLE_SHORTEST, shortest: 0.0, shared_with: [0.0; 2], angle_deg: 33.1 },
 ];
 /// Side of each cascade's tile (m).
 pub const CASCADE_TILES: [f32; 5] =
@@ -78,6 +110,7 @@ impl SeaWaves {
     /// The cascades of `size`² points each for `settings` (its wind, spectrum and spread; its
     /// significant height is the whole sea's).
     pub fn new(settings: &AmbientSettings, size: usize) -> Self {
+        assert!(size >= 64, "a {size}² lattice cannot hold the long cascades' waves down to {LONG_SHORTEST} m");
         let mut cascades: Vec<Cascade> = CASCADES
             .iter()
             .enumerate()
@@ -86,7 +119,7 @@ impl SeaWaves {
                     if spec.shortest > 0.0 { spec.shortest } else { SHORTEST_WAVE_CELLS * spec.tile / size as f32 };
                 let band = Band {
                     half_tile: spec.tile / 2.0,
-                    longest: spec.tile,
+                    longest: spec.longest,
                     shortest,
                     depth: SEA_DEPTH,
                     seed: 0x5ea0 + i as u64,
@@ -125,20 +158,20 @@ impl SeaWaves {
     /// squeeze it (their crests), ≤ 0 where it folds over. D and its derivatives are the
     /// cascades' summed; λ is their choppiness.
     pub fn jacobian(&self, x: f32, z: f32, t: f64) -> f32 {
-        let mut d = [0.0f32; 3]; // ∂Dx/∂x, ∂Dx/∂z, ∂Dz/∂z in the world's frame
-        let mut lambda = 0.0;
+        // λ ∂D/∂x₀ summed over the cascades in the world's frame: xx, xz, zz.
+        let mut d = [0.0f32; 3];
         for c in &self.cascades {
-            lambda = c.ocean.choppiness;
             let (u, v) = c.local(x, z);
             let f = c.ocean.fields_at(u, v, t);
-            // The cascade's tensor [[xx, xz], [xz, zz]] turned to the world: R M Rᵀ.
+            // The cascade's tensor M = [[xx, xz], [xz, zz]] turned to the world: Rᵀ M R.
             let (s, co) = c.angle.sin_cos();
-            let (xx, xz, zz) = (f[5], f[6], f[7]);
+            let lambda = c.ocean.choppiness;
+            let (xx, xz, zz) = (lambda * f[5], lambda * f[6], lambda * f[7]);
             d[0] += co * co * xx - 2.0 * s * co * xz + s * s * zz;
             d[1] += s * co * (xx - zz) + (co * co - s * s) * xz;
             d[2] += s * s * xx + 2.0 * s * co * xz + co * co * zz;
         }
-        (1.0 - lambda * d[0]) * (1.0 - lambda * d[2]) - lambda * lambda * d[1] * d[1]
+        (1.0 - d[0]) * (1.0 - d[2]) - d[1] * d[1]
     }
 
     /// Each cascade's share of the surface's variance.
@@ -307,17 +340,17 @@ mod tests {
             for (idx, a) in c.ocean.h0.iter().enumerate() {
                 if a.iter().any(|v| *v != 0.0) {
                     let k = c.ocean.band.k(idx % n, n).hypot(c.ocean.band.k(idx / n, n));
-                    assert!(k >= lo * 0.999 && k <= hi * 1.001, "cascade {i}: a wave at k {k} outside {lo}..{hi}");
+                    assert!(k > lo && k <= hi * 1.0001, "cascade {i}: a wave at k {k} outside {lo}..{hi}");
                 }
             }
         }
         // Per wavelength, the shares of the cascades holding it add up to one.
-        for wavelength in [0.5f32, 3.0, 10.0, 17.0, 40.0, 120.0, 150.0, 200.0, 250.0] {
+        for wavelength in [1.0f32, 3.0, 3.9, 10.0, 16.0, 17.0, 40.0, 120.0, 128.3, 150.0, 181.5, 200.0, 250.0] {
             let held: f32 = sea
                 .cascades
                 .iter()
                 .map(|c| &c.ocean.band)
-                .filter(|b| wavelength <= b.longest && wavelength >= b.shortest)
+                .filter(|b| wavelength < b.longest && wavelength >= b.shortest)
                 .map(|b| b.share(wavelength))
                 .sum();
             assert!((held - 1.0).abs() < 1e-6, "a {wavelength} m wave is held {held} times");

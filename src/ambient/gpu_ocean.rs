@@ -4,7 +4,7 @@
 //! Devices without float render targets take the CPU's [`Ocean::surface`] instead, which
 //! runs the same stages ([`super::ocean::inverse_fft_2d`]).
 
-use super::ocean::{epoch_of, Ocean};
+use super::ocean::{epoch_of, Band, Ocean};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
 /// Format of the spectrum and of the passes' targets: two complex numbers per texel.
@@ -12,10 +12,10 @@ const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
 
 pub struct GpuOcean {
     size: u32,
-    /// The spectrum at its epoch (`Ocean::epoch_spectrum`), re-uploaded when the ocean or the
-    /// epoch changes.
+    /// The spectrum at its epoch (`Ocean::epoch_spectrum`), re-uploaded when the ocean (its
+    /// amplitudes or its band) or the epoch changes.
     spectrum: wgpu::Texture,
-    uploaded: Option<(Vec<[f32; 4]>, f64)>,
+    uploaded: Option<(Vec<[f32; 4]>, Band, f64)>,
     time: wgpu::Buffer,
     spectrum_groups: [wgpu::BindGroup; 2],
     stage_pass: FullscreenPass,
@@ -95,11 +95,12 @@ impl GpuOcean {
     /// `Ocean::displacement`).
     pub fn encode(&mut self, queue: &wgpu::Queue, encoder: &mut wgpu::CommandEncoder, ocean: &Ocean, t: f64) {
         let epoch = epoch_of(t);
-        let fresh = self.uploaded.as_ref().is_some_and(|(h0, at)| *at == epoch && *h0 == ocean.h0);
+        let fresh =
+            self.uploaded.as_ref().is_some_and(|(h0, band, at)| *at == epoch && *band == ocean.band && *h0 == ocean.h0);
         if !fresh {
             let texels = ocean.epoch_spectrum(epoch);
             gpu::write_texture_2d(queue, &self.spectrum, 0, bytemuck::cast_slice(&texels));
-            self.uploaded = Some((ocean.h0.clone(), epoch));
+            self.uploaded = Some((ocean.h0.clone(), ocean.band, epoch));
         }
         let band = [std::f32::consts::PI / ocean.band.half_tile, ocean.band.depth];
         queue.write_buffer(

@@ -1,7 +1,8 @@
-//! Tessendorf's FFT ocean at pool scale: a wave spectrum (Phillips, or JONSWAP) sampled once on
-//! the lattice of waves that tile the pool (wavevectors k = (π/W)(m, n), the tile being the
-//! pool 2W wide) with seeded Gaussian noise, h(k, t) advanced analytically, and the surface
-//! h(x) = Σ h(k, t) e^{i k·x} made by an inverse FFT.
+//! Tessendorf's FFT ocean: a wave spectrum (Phillips, or JONSWAP) sampled once on the lattice
+//! of waves that tile a square 2W wide (wavevectors k = (π/W)(m, n); the pool's tile is the
+//! pool, the open sea's cascades have tiles of their own: [`Band`]) with seeded Gaussian noise,
+//! h(k, t) advanced analytically, and the surface h(x) = Σ h(k, t) e^{i k·x} made by an
+//! inverse FFT.
 //!
 //! The inverse FFT is Stockham's radix-2 autosort, written as a gather (each output from two
 //! inputs) so that one fragment pass can compute one stage on the GPU (shaders/ambient_fft.wgsl);
@@ -41,9 +42,10 @@ pub const JONSWAP_FETCH: f32 = 100.0;
 /// The waves one lattice holds: a square tile 2 × `half_tile` wide (m) that repeats, the
 /// wavelengths from `longest` down to `shortest` (m) on water `depth` deep (m), and the seed of
 /// their random amplitudes and phases, and the distance the wind has blown over the water
-/// (`fetch`, m: JONSWAP's peak). `shared_with`: the longest waves of other lattices
-/// (m; 0 for none) that hold the same waves: a wave no longer than k of them is held by k + 1
-/// lattices, each with 1/(k + 1) of its energy.
+/// (`fetch`, m: JONSWAP's peak). It holds the wavelengths from `shortest` up to, not
+/// including, `longest`. `shared_with`: the `longest` of other lattices (m; 0 for none) that
+/// hold the same waves: a wave shorter than k of them is held by k + 1 lattices, each with
+/// 1/(k + 1) of its energy.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
     pub half_tile: f32,
@@ -53,13 +55,6 @@ pub struct Band {
     pub seed: u64,
     pub fetch: f32,
     pub shared_with: [f32; 2],
-}
-
-impl Band {
-    /// The share of the spectrum's energy this lattice holds at `wavelength` (m).
-    pub fn share(&self, wavelength: f32) -> f32 {
-        1.0 / (1 + self.shared_with.iter().filter(|&&longest| wavelength <= longest).count()) as f32
-    }
 }
 
 impl Band {
@@ -88,6 +83,11 @@ impl Band {
     pub fn omega(&self, k: f32) -> f32 {
         angular_frequency_in(k, self.depth)
     }
+
+    /// The share of the spectrum's energy this lattice holds at `wavelength` (m).
+    pub fn share(&self, wavelength: f32) -> f32 {
+        1.0 / (1 + self.shared_with.iter().filter(|&&longest| wavelength < longest).count()) as f32
+    }
 }
 
 /// The spectrum sampled on a lattice (the pool's, or one of the sea's cascades), and how it moves.
@@ -97,7 +97,8 @@ pub struct Ocean {
     pub size: usize,
     /// The tile and the wavelengths the lattice holds.
     pub band: Band,
-    /// Per lattice point, row-major with index (m mod N, n mod N) for k = (π/W)(m, n):
+    /// Per lattice point, row-major with index (m mod N, n mod N) for k = (π/W)(m, n), W the
+    /// band's `half_tile`:
     /// h0(k) and conj(h0(−k)), the amplitudes at t = 0 (m).
     pub h0: Vec<[f32; 4]>,
     /// Choppiness λ: the water at rest point x₀ is carried to x₀ − λ D(x₀), with
@@ -126,8 +127,10 @@ pub fn lattice_k(i: usize, size: usize) -> f32 {
 /// outside the band the lattice and the pool hold and outside the spread around the wind.
 fn density(kx: f32, kz: f32, settings: &AmbientSettings, band: &Band) -> f32 {
     let k = (kx * kx + kz * kz).sqrt();
+    // Wavelengths from `shortest` up to, not including, `longest`: bands that meet there hold
+    // the wave on their edge once.
     let (k_min, k_max) = (std::f32::consts::TAU / band.longest, std::f32::consts::TAU / band.shortest);
-    if k < k_min || k > k_max {
+    if k <= k_min || k > k_max {
         return 0.0;
     }
     // Travelling downwind, within the spread of directions.
@@ -379,7 +382,8 @@ struct NowWave {
 
 /// The ocean at one moment, for sampling many points (the floating bodies' probes, every
 /// frame): each wave's h(k, t) computed once, and e^{ik·x} = e^{ikx x} e^{ikz z} taken from
-/// two tables of e^{i m (π/W) x} (the lattice's wavenumbers are whole multiples of π/W), so a
+/// two tables of e^{i m (π/W) x} (the lattice's wavenumbers are whole multiples of π/W, W
+/// half its tile), so a
 /// point costs two table builds and a few products per wave instead of two sines and two
 /// cosines per wave. Same sums as [`Ocean::fields_at`] (the tests hold them together).
 #[derive(Clone, Debug)]

@@ -96,7 +96,7 @@ impl DemoBuild {
         Self { target_format, options, tile_mips: None, water: None }
     }
 
-    /// Takes the next step; the demo after the last.
+    /// Takes the next step; the demo after the last (do not call it again then).
     pub fn step(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) -> Option<WaterDemo> {
         let options = self.options;
         if self.tile_mips.is_none() {
@@ -169,9 +169,25 @@ impl WaterDemo {
     /// calls it once per task before the first frame (which would otherwise build them all
     /// at once: over a second on WebGL2 without a GPU).
     pub fn build_ahead(&mut self, device: &wgpu::Device, size: (u32, u32)) -> bool {
-        self.set_viewport(size.0, size.1);
+        self.follow_params(size);
+        if self.params.get(ParamId::Quality) > 0.0 {
+            self.choose_render_scale(0.0); // a fixed scale (the automatic one observes frames)
+        }
         let view = self.view();
         self.renderer.build_ahead(device, &view, size)
+    }
+
+    /// Brings what the view is made from up to the parameters before a frame of `size`
+    /// pixels: the viewport, the camera's clearance over the deck, the ambient waves, the foam.
+    fn follow_params(&mut self, size: (u32, u32)) {
+        self.set_viewport(size.0, size.1);
+        if self.on_deck() {
+            // The camera stays above the paving.
+            self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
+        }
+        self.refresh_ambient();
+        let foam = self.params.flag(ParamId::Foam).then(|| self.params.get(ParamId::FoamDecay));
+        self.water.set_foam(foam);
     }
 
     /// See [`Renderer::set_object_regions`].
@@ -306,12 +322,7 @@ impl WaterDemo {
         frame_time: f32,
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
-        self.set_viewport(size.0, size.1);
-        if self.on_deck() {
-            // The camera stays above the paving.
-            self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
-        }
-        self.refresh_ambient();
+        self.follow_params(size);
         self.choose_render_scale(frame_time);
         let steps = self.take_steps(frame_time);
         let pushes = self.step_bodies(steps);
@@ -335,6 +346,7 @@ impl WaterDemo {
             absorbing_walls: self.params.flag(ParamId::AbsorbingWalls),
         };
         mark(&mut sim_encoder, Stage::Start);
+        // Again: a resampled field above starts without foam.
         let foam = self.params.flag(ParamId::Foam).then(|| self.params.get(ParamId::FoamDecay));
         self.water.set_foam(foam);
         self.water.encode(queue, &mut sim_encoder, steps, STEP_DT, settings);

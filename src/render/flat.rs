@@ -295,7 +295,6 @@ impl FlatWater {
         });
     }
 
-    /// The pipeline [`FlatWater::prepare_pipeline`] built for `features`.
     /// How many feature sets' pipelines [`FlatWater::prepare_pipeline`] has built.
     pub fn pipelines_built(&self) -> usize {
         self.pipelines.len()
@@ -306,6 +305,7 @@ impl FlatWater {
         self.pipelines.contains_key(&features)
     }
 
+    /// The pipeline [`FlatWater::prepare_pipeline`] built for `features`.
     pub fn pipeline(&self, features: Features) -> &wgpu::RenderPipeline {
         &self.pipelines[&features]
     }

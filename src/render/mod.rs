@@ -218,8 +218,10 @@ impl Renderer {
     pub fn build_ahead(&mut self, device: &wgpu::Device, view: &View, size: (u32, u32)) -> bool {
         let Some(features) = self.variants_drawn(view, size).into_iter().find(|f| !self.variants.contains_key(f))
         else {
-            // Then the flat water's own pipeline, if the frame shows flat water.
-            let Some(lit) = flat_shown(view).map(|f| f.lit_features(Features::of(view))) else {
+            // Then the flat water's own pipeline, if the frame shows flat water (as
+            // `draw_picture` decides: some columns left of the divider).
+            let flat = flat_shown(view).filter(|f| f.divider(self.scaled_size(view, size).0) > 0);
+            let Some(lit) = flat.map(|f| f.lit_features(Features::of(view))) else {
                 return true;
             };
             if self.flat.has_pipeline(lit) {

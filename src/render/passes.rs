@@ -28,10 +28,8 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
-        let scale = view.render_scale.clamp(0.25, 1.0);
-        if scale < 1.0 {
-            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
-            let scaled = (scaled(size.0), scaled(size.1));
+        let scaled = self.scaled_size(view, size);
+        if scaled != size {
             let image = self.upscale.image(device, self.settings.target_format, scaled);
             self.draw_picture(device, encoder, Picture { target: &image, size: scaled, view, water });
             self.upscale.run(encoder, target);
@@ -75,19 +73,24 @@ impl Renderer {
         }
     }
 
+    /// The size (pixels) a `size` target's picture is drawn at: the view's render scale of it.
+    pub(super) fn scaled_size(&self, view: &View, size: (u32, u32)) -> (u32, u32) {
+        let scale = view.render_scale.clamp(0.25, 1.0);
+        if scale < 1.0 {
+            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
+            (scaled(size.0), scaled(size.1))
+        } else {
+            size
+        }
+    }
+
     /// The feature sets a frame of `view` on a `size` target draws with: what
     /// [`Renderer::encode_caustics`] and [`Renderer::draw_picture`] will ask pipelines for,
     /// in the order they ask (kept in step with them; a test checks that a frame after
     /// [`Renderer::build_ahead`] builds nothing).
     pub(super) fn variants_drawn(&self, view: &View, size: (u32, u32)) -> Vec<Features> {
         let base = Features::of(view);
-        let scale = view.render_scale.clamp(0.25, 1.0);
-        let size = if scale < 1.0 {
-            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
-            (scaled(size.0), scaled(size.1))
-        } else {
-            size
-        };
+        let size = self.scaled_size(view, size);
         let flat = flat_shown(view);
         let traced_shown = flat.is_none_or(|f| f.mode == flat::RenderMode::Split && f.split < 1.0);
         let flat_reads = flat.is_some_and(|f| f.caustics == flat::FlatCaustics::Real);
