@@ -17,14 +17,37 @@ pub struct OrbitCamera {
     pub target: Vec3,
     /// Vertical field of view (degrees).
     pub fov_y: f32,
+    /// How far the scene lets the camera go, and its projection's depth range.
+    pub limits: CameraLimits,
 }
 
+/// What a scene allows its camera: the pitch range (degrees), the distance range from the
+/// target (m), and the projection's near and far planes (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraLimits {
+    pub pitch: (f32, f32),
+    pub distance: (f32, f32),
+    pub near: f32,
+    pub far: f32,
+}
+
+/// The pool's pitch and distance ranges.
 pub const PITCH_RANGE: (f32, f32) = (-89.0, 89.0);
 pub const DISTANCE_RANGE: (f32, f32) = (1.5, 12.0);
+/// The pool's camera limits.
+pub const POOL_LIMITS: CameraLimits =
+    CameraLimits { pitch: PITCH_RANGE, distance: DISTANCE_RANGE, near: 0.05, far: 100.0 };
 
 impl Default for OrbitCamera {
     fn default() -> Self {
-        Self { yaw: -25.0, pitch: 34.0, distance: 3.4, target: Vec3::new(0.0, -0.3, 0.0), fov_y: 45.0 }
+        Self {
+            yaw: -25.0,
+            pitch: 34.0,
+            distance: 3.4,
+            target: Vec3::new(0.0, -0.3, 0.0),
+            fov_y: 45.0,
+            limits: POOL_LIMITS,
+        }
     }
 }
 
@@ -47,10 +70,11 @@ pub enum Pick {
 }
 
 impl OrbitCamera {
-    /// Clamps pitch and distance into their ranges, wraps yaw.
+    /// Clamps pitch and distance into their ranges ([`OrbitCamera::limits`]), wraps yaw.
     pub fn clamp(&mut self) {
-        self.pitch = self.pitch.clamp(PITCH_RANGE.0, PITCH_RANGE.1);
-        self.distance = self.distance.clamp(DISTANCE_RANGE.0, DISTANCE_RANGE.1);
+        let CameraLimits { pitch, distance, .. } = self.limits;
+        self.pitch = self.pitch.clamp(pitch.0, pitch.1);
+        self.distance = self.distance.clamp(distance.0, distance.1);
         if !self.yaw.is_finite() {
             self.yaw = 0.0;
         }
@@ -62,7 +86,7 @@ impl OrbitCamera {
     pub fn keep_eye_above(&mut self, height: f32) {
         let lowest = ((height - self.target.y) / self.distance).clamp(-1.0, 1.0).asin().to_degrees();
         if self.pitch < lowest {
-            self.pitch = lowest.min(PITCH_RANGE.1);
+            self.pitch = lowest.min(self.limits.pitch.1);
         }
     }
 
@@ -96,7 +120,7 @@ impl OrbitCamera {
     }
 
     pub fn projection(&self, aspect: f32) -> Mat4 {
-        Mat4::perspective_rh(self.fov_y.to_radians(), aspect.max(1e-3), 0.05, 100.0)
+        Mat4::perspective_rh(self.fov_y.to_radians(), aspect.max(1e-3), self.limits.near, self.limits.far)
     }
 
     pub fn view_projection(&self, aspect: f32) -> Mat4 {
@@ -176,7 +200,7 @@ mod tests {
 
     #[test]
     fn pick_finds_the_water_and_nothing() {
-        let cam = OrbitCamera { yaw: 0.0, pitch: 60.0, distance: 4.0, target: Vec3::ZERO, fov_y: 45.0 };
+        let cam = OrbitCamera { yaw: 0.0, pitch: 60.0, distance: 4.0, target: Vec3::ZERO, ..Default::default() };
         let size = Vec2::new(800.0, 600.0);
         match cam.pick(Vec2::new(400.0, 300.0), size) {
             Pick::Water { x, z } => assert!(x.abs() < 1e-3 && z.abs() < 1e-3),
@@ -195,5 +219,18 @@ mod tests {
         assert_eq!(cam.distance, DISTANCE_RANGE.1);
         cam.zoom(f32::NAN);
         assert_eq!(cam.distance, DISTANCE_RANGE.1);
+        // Another scene's limits: the same camera goes further and not as low.
+        cam.limits = CameraLimits { pitch: (2.0, 89.0), distance: (3.0, 600.0), near: 0.25, far: 30_000.0 };
+        cam.zoom(1.0e9);
+        cam.orbit(0.0, -1.0e6);
+        assert_eq!((cam.distance, cam.pitch), (600.0, 2.0));
+        // Its far plane: a point 20 km ahead is drawn, where the pool's camera clips it.
+        let ahead = cam.eye() - cam.back() * 20_000.0;
+        let depth = |c: &OrbitCamera| {
+            let clip = c.view_projection(1.0) * ahead.extend(1.0);
+            clip.z / clip.w
+        };
+        assert!(depth(&cam) < 1.0, "20 km ahead is clipped: depth {}", depth(&cam));
+        assert!(depth(&OrbitCamera { limits: POOL_LIMITS, ..cam }) > 1.0);
     }
 }
