@@ -197,6 +197,18 @@ impl Renderer {
         &self.variants[&features]
     }
 
+    /// Builds the flat water's pipeline for `features` if it is not built yet.
+    fn prepare_flat_pipeline(&mut self, device: &wgpu::Device, features: Features) {
+        // The targets borrow the layouts field by field, beside the flat water's own borrow.
+        let targets = PipelineTargets {
+            format: self.settings.target_format,
+            caustics_format: self.settings.caustics_format_for(features.dispersion).0,
+            water_layout: &self.water_layout,
+            textures_layout: &self.textures_layout,
+        };
+        self.flat.prepare_pipeline(device, features, &targets);
+    }
+
     fn pipeline_targets(&self, features: Features) -> PipelineTargets<'_> {
         PipelineTargets {
             format: self.settings.target_format,
@@ -227,13 +239,7 @@ impl Renderer {
             if self.flat.has_pipeline(lit) {
                 return true;
             }
-            let targets = PipelineTargets {
-                format: self.settings.target_format,
-                caustics_format: self.settings.caustics_format_for(lit.dispersion).0,
-                water_layout: &self.water_layout,
-                textures_layout: &self.textures_layout,
-            };
-            self.flat.prepare_pipeline(device, lit, &targets);
+            self.prepare_flat_pipeline(device, lit);
             return false;
         };
         let mut build = self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features));

@@ -2,7 +2,7 @@
 //! split, at the view's render scale), the flat water's textures, the scene pass itself.
 
 use super::flat::{self, FlatView};
-use super::variants::{self, PipelineTargets};
+use super::variants;
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::sim::HeightField;
@@ -190,13 +190,7 @@ impl Renderer {
             self.variant(device, *needs);
         }
         if flat.is_some() {
-            let targets = PipelineTargets {
-                format: self.settings.target_format,
-                caustics_format: self.settings.caustics_format_for(features.dispersion).0,
-                water_layout: &self.water_layout,
-                textures_layout: &self.textures_layout,
-            };
-            self.flat.prepare_pipeline(device, features, &targets);
+            self.prepare_flat_pipeline(device, features);
         }
         let clear = (rect[0] == 0).then_some(wgpu::Color::BLACK);
         let mut pass = begin_scene_pass(encoder, "scene", target, &depth, clear);
