@@ -45,10 +45,10 @@ fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
 }
 
-// Diffuse plastic plus a glossy highlight of the sun above the water.
-fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    var colour = object_colour(p, n, albedo);
-    if (p.y >= 0.0) {
+// Diffuse plastic plus a glossy highlight of the sun above the water (under: see object_colour).
+fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
+    var colour = object_colour(p, n, albedo, under);
+    if (!under) {
         let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 80.0);
         colour += sun_light() * 0.6 * gloss;
     }
@@ -77,5 +77,5 @@ fn vs_ball(@location(0) unit: vec3<f32>) -> BallOut {
 fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world - ball_uniform().xyz);
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view), in.world);
+    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, in.world.y < 0.0), in.world);
 }

@@ -73,10 +73,10 @@ fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
 }
 
 // The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,
-// seen along dir, where the sun reaches it directly.
-fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    var colour = object_colour(p, n, albedo);
-    if (p.y >= 0.0) {
+// seen along dir, where the sun reaches it directly (under: see object_colour).
+fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
+    var colour = object_colour(p, n, albedo, under);
+    if (!under) {
         let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 40.0);
         colour += sun_light() * 0.35 * gloss;
     }
@@ -104,5 +104,5 @@ fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @lo
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view), in.world);
+    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, in.world.y < 0.0), in.world);
 }

@@ -24,23 +24,24 @@ fn sphere_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
 }
 
-fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
-    return sphere_colour(p, dir);
+fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
+    return sphere_colour(p, dir, under);
 }
 
 // The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres above
 // the rest level it is wet (darker paint, a stronger coat); above the water the coat mirrors
 // the sky and the sun by Schlick's Fresnel (r0 = 0.04, a lacquer's index of about 1.5).
-fn sphere_colour(p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {
+// under: see object_colour.
+fn sphere_colour(p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
     let n = normalize(p - sphere_uniform().xyz);
     let wet = 1.0 - smoothstep(0.0, 0.04, p.y);
-    var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet));
+    var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet), under);
     let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
     let r = reflect(dir, n);
     // The sky in the coat, and the sun's highlight on it (a glossy lobe, cos^SPHERE_GLOSS).
     let highlight = sun_light() * SPHERE_SHINE * pow(max(dot(r, scene.sun.xyz), 0.0), SPHERE_GLOSS);
     let coat = fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
-    return colour + select(vec3<f32>(0.0), coat, p.y > 0.0);
+    return colour + select(coat, vec3<f32>(0.0), under);
 }
 
 // The ambient light the sphere takes from a point with normal n (sphere_occlusion_of).
@@ -64,5 +65,5 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
-    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz)), in.world);
+    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), in.world.y < 0.0), in.world);
 }

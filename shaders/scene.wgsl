@@ -71,10 +71,11 @@ var<private> caustics_lod: f32 = CAUSTICS_MIN_LOD;
 fn sun_light() -> vec3<f32> { return scene.sun_light.rgb; }
 fn sky_light() -> vec3<f32> { return scene.sky_light.rgb; }
 
-// The sky's light on a point at height y: under the water only what comes in through the
-// opening above and the surface (UNDERWATER_SKY of it), so the sun's caustics stand out.
-fn sky_light_at(y: f32) -> vec3<f32> {
-    return sky_light() * select(1.0, UNDERWATER_SKY, y < 0.0);
+// The sky's light on a point above or under the water's rest level: under it only what comes
+// in through the opening above and the surface (UNDERWATER_SKY of it), so the sun's caustics
+// stand out.
+fn sky_light_at(under: bool) -> vec3<f32> {
+    return sky_light() * select(1.0, UNDERWATER_SKY, under);
 }
 
 const FOAM_ALBEDO: vec3<f32> = vec3<f32>(0.9, 0.92, 0.93);

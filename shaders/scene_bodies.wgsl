@@ -12,10 +12,13 @@ struct ObjectHit {
 
 // Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
 // sunlight (through the caustics under water),
-// ambient darkened where the floor and walls are close (ambient occlusion).
-fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
+// ambient darkened where the floor and walls are close (ambient occlusion). under: whether p
+// is under the water's rest level; a traced ray's hits are on its own side, and passing that
+// side as a constant compiles the other side's light away (software rasterisers run every
+// branch); a surface drawn directly passes p.y < 0.
+fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> vec3<f32> {
     var direct: f32;
-    if (p.y < 0.0) {
+    if (under) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0);
@@ -25,6 +28,6 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
     var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
     occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
     occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
-    let ambient = sky_light_at(p.y) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
+    let ambient = sky_light_at(under) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
     return albedo * (ambient + direct * sun_light());
 }

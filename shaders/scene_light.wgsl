@@ -2,10 +2,11 @@
 // the rim's and the bodies' shadows, the pool's tiles lit by it.
 
 // Where the flat-surface refracted sunbeam through p entered the water (xz, m): the
-// caustics map is indexed by this point.
+// caustics map is indexed by this point. A point lit as under water but above the rest level
+// (a ray traced from a crest that hits a wall just above it) takes the light entering there.
 fn light_entry(p: vec3<f32>) -> vec2<f32> {
     let r = scene.refracted_sun.xyz;
-    return p.xz - r.xz * (p.y / r.y);
+    return p.xz - r.xz * (min(p.y, 0.0) / r.y);
 }
 
 fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
@@ -97,21 +98,22 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
-// sun arrives refracted, through the caustics; above it, directly.
-fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
-    if (HAS_DISPERSION && p.y < 0.0) {
+// sun arrives refracted, through the caustics; above it, directly (under: whether p is under
+// it, as object_colour's).
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> vec3<f32> {
+    if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = sky_light_at(p.y) * (1.0 - 0.9 * bodies_occlusion(p, n));
+        let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
-    if (p.y < 0.0) {
+    if (under) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
     }
-    let ambient = sky_light_at(p.y) * (1.0 - 0.9 * bodies_occlusion(p, n));
+    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
 }
 
@@ -132,11 +134,11 @@ fn tile_lod(hit: vec3<f32>) -> f32 {
 }
 
 // pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod.
-fn pool_colour_at_hit(p: vec3<f32>, lod: f32) -> vec3<f32> {
+fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
     let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
-    return pool_colour(p, n, albedo);
+    return pool_colour(p, n, albedo, under);
 }

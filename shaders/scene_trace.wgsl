@@ -2,7 +2,7 @@
 // curve, sRGB).
 
 // What a ray starting in the water sees: a body or the pool's inside, dimmed by the
-// water it crossed (Beer–Lambert). t_exit: pool_exit_distance of the ray; lod: tile mip
+// water it crossed (Beer–Lambert); what it hits is lit as under the water. t_exit: pool_exit_distance of the ray; lod: tile mip
 // level (see tile_lod).
 fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     var t = t_exit;
@@ -10,10 +10,10 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
     let body = hit_bodies(origin, dir);
     if (body.t < t) {
         t = body.t;
-        colour = body_colour(body, origin + dir * t, dir);
+        colour = body_colour(body, origin + dir * t, dir, true);
     } else {
         let hit = origin + dir * t;
-        colour = pool_colour_at_hit(hit, lod);
+        colour = pool_colour_at_hit(hit, lod, true);
     }
     return through_water(colour, origin, origin + dir * t);
 }
@@ -26,18 +26,18 @@ fn upward(dir: vec3<f32>) -> vec3<f32> {
 }
 
 // What a ray starting at the surface and going up through air (see upward) sees: a body,
-// the pool walls above the water line, or the sky. normal: the surface normal the
+// the pool walls above the water line, or the sky; what it hits is lit as above the water. normal: the surface normal the
 // ray was mirrored at (zero for a refracted ray; see sun_specular); t_exit:
 // pool_exit_distance of the ray; lod: tile mip level (see tile_lod).
 fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, lod: f32) -> vec3<f32> {
     let t = t_exit;
     let body = hit_bodies(origin, dir);
     if (body.t < t) {
-        return body_colour(body, origin + dir * body.t, dir);
+        return body_colour(body, origin + dir * body.t, dir, false);
     }
     let hit = origin + dir * t;
     if (hit.y < rim() - 1.0e-3) {
-        return pool_colour_at_hit(hit, lod);
+        return pool_colour_at_hit(hit, lod, false);
     }
     return sky_colour(dir) + sun_specular(dir, normal);
 }

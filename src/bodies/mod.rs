@@ -193,9 +193,9 @@ pub fn wgsl(present: u32) -> String {
         ))
     );
     out += &format!(
-        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
+        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir);\n    }}\n"
+            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under);\n    }}\n"
         ))
     );
     out += &format!(

@@ -201,6 +201,7 @@ impl Renderer {
         let [x, y, w, h] = rect;
         pass.set_scissor_rect(x, y, w, h);
         self.draw_deck(&mut pass, features, view);
+        self.draw_bodies(&mut pass, features, view);
         match (flat, regions) {
             (Some(_), _) => {
                 let group = &self.flat.targets.as_ref().expect("flat textures are drawn first").group;
@@ -224,7 +225,7 @@ impl Renderer {
                 self.grid.draw(&mut pass);
             }
         }
-        self.draw_solids(&mut pass, features, view);
+        self.draw_pool(&mut pass, features);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
     }
 
@@ -240,14 +241,25 @@ impl Renderer {
     /// Draws the sphere and the duck (those the view has) and the pool with the pipelines of
     /// `features`, front to back.
     pub(super) fn draw_solids(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
-        let pipelines = &self.variants[&features];
-        for (k, pipeline) in pipelines.bodies.iter().enumerate() {
+        self.draw_bodies(pass, features, view);
+        self.draw_pool(pass, features);
+    }
+
+    /// Draws the sphere and the duck (those the view has). Cheap to shade, so drawn before the
+    /// water surface: the surface's costly fragments behind their parts above the water then
+    /// fail the depth test (their parts under it are drawn for nothing, hidden by the water).
+    pub(super) fn draw_bodies(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        for (k, pipeline) in self.variants[&features].bodies.iter().enumerate() {
             if let (Some(pipeline), Some(_)) = (pipeline, &view.bodies[k]) {
                 pass.set_pipeline(pipeline);
                 self.body_meshes[k].draw(pass);
             }
         }
-        pass.set_pipeline(&pipelines.pool);
+    }
+
+    /// Draws the pool's walls and floor.
+    pub(super) fn draw_pool(&self, pass: &mut wgpu::RenderPass<'_>, features: Features) {
+        pass.set_pipeline(&self.variants[&features].pool);
         self.pool_mesh.draw(pass);
     }
 }
