@@ -99,8 +99,9 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
-// it, as object_colour's).
-fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> vec3<f32> {
+// it, as object_colour's), where shadowed: the objects' shadows above the water (under it the
+// caustics map holds them).
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, shadowed: bool) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
@@ -111,7 +112,10 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> ve
     if (under) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
     } else {
-        direct = max(dot(n, scene.sun.xyz), 0.0) * objects_visibility(p, scene.sun.xyz, 10.0);
+        direct = max(dot(n, scene.sun.xyz), 0.0);
+        if (shadowed) {
+            direct *= objects_visibility(p, scene.sun.xyz, 10.0);
+        }
     }
     let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
@@ -133,12 +137,15 @@ fn tile_lod(hit: vec3<f32>) -> f32 {
     return clamp(log2(max(footprint, 1.0)), 0.0, 12.0);
 }
 
-// pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod.
+// pool_colour for a traced ray hit, at a mip level the caller worked out with tile_lod. A wall
+// above the water is seen traced only in the water's mirror, with no object's shadow: the
+// objects float away from the walls and a shadow there is a few pixels of the mirror image,
+// which cost lavapipe's default frame 0.9 ms.
 fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
     let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
-    return pool_colour(p, n, albedo, under);
+    return pool_colour(p, n, albedo, under, false);
 }
