@@ -1,7 +1,8 @@
 // The beach ball (bodies/ball.rs): a sphere of thin plastic in six gores of colour around its
 // axis, with white caps, turned with its pose. Traced like the sphere (hit, the light it
 // blocks, the ambient light it takes from the pool near it) with a glossy plastic highlight;
-// drawn directly as a unit mesh scaled and moved to its centre. Uniform (BALL_SLOT on): centre
+// drawn directly as a unit mesh scaled and moved to its centre, its outline blended in
+// (ball_edge). Uniform (BALL_SLOT on): centre
 // and radius (0: no ball), then the three columns of its rotation.
 
 const BALL_GORES: array<vec3<f32>, 6> = array<vec3<f32>, 6>(
@@ -78,4 +79,25 @@ fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world - ball_uniform().xyz);
     let view = normalize(in.world - scene.eye.xyz);
     return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, in.world.y < 0.0), in.world);
+}
+
+// The ball's outline, blended over what lies behind (ball_edge).
+@vertex
+fn vs_ball_edge(@location(0) unit: vec3<f32>) -> BallOut {
+    var out: BallOut;
+    out.world = ball_uniform().xyz + unit * ball_uniform().w * BALL_EDGE_GROWTH;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_ball_edge(in: BallOut) -> @location(0) vec4<f32> {
+    let edge = ball_edge(in.world, ball_uniform());
+    if (edge.hidden) {
+        discard;
+    }
+    let p = edge.point;
+    let n = normalize(p - ball_uniform().xyz);
+    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), p.y < 0.0), p);
+    return vec4<f32>(out.rgb, edge.cover);
 }

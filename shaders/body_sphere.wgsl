@@ -1,6 +1,7 @@
 // The sphere (bodies/sphere.rs): a ball of paint under a clear coat. Traced in the scene's rays
-// (hit, the light it blocks, its colour, the ambient light it takes from the pool near it) and
-// drawn directly as a unit mesh scaled and moved to its centre.
+// (hit, the light it blocks, its colour, the ambient light it takes from the pool near it),
+// drawn directly as a unit mesh scaled and moved to its centre, and its outline blended in
+// (ball_edge).
 
 const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
 // The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
@@ -66,4 +67,24 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
     return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), in.world.y < 0.0), in.world);
+}
+
+// The sphere's outline, blended over what lies behind (ball_edge).
+@vertex
+fn vs_sphere_edge(@location(0) unit: vec3<f32>) -> SphereOut {
+    var out: SphereOut;
+    out.world = sphere_uniform().xyz + unit * sphere_uniform().w * BALL_EDGE_GROWTH;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_sphere_edge(in: SphereOut) -> @location(0) vec4<f32> {
+    let edge = ball_edge(in.world, sphere_uniform());
+    if (edge.hidden) {
+        discard;
+    }
+    let p = edge.point;
+    let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), p.y < 0.0), p);
+    return vec4<f32>(out.rgb, edge.cover);
 }

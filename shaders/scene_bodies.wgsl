@@ -31,3 +31,33 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> 
     let ambient = sky_light_at(under) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
     return albedo * (ambient + direct * sun_light());
 }
+
+// A ball's silhouette without stair-steps: its mesh grown by BALL_EDGE_GROWTH is drawn again
+// after everything else, each pixel blended by the share of it the ball covers (a ramp one
+// pixel footprint wide, centred on the outline), as the deck's edge is. The pixel's ray passes
+// `miss` (m) from the centre; `point` is where it hits the ball or, past the outline, the
+// outline's point nearest to it, which gives the colour.
+struct BallEdge {
+    point: vec3<f32>,
+    cover: f32,
+    // Nothing to blend: deep enough inside that the ball's own mesh has the pixel, or on the
+    // far side of the water from the eye (the water's own edge hides it there).
+    hidden: bool,
+};
+
+const BALL_EDGE_GROWTH: f32 = 1.1;
+
+// Call in uniform control flow (it takes a screen derivative). world: the grown mesh's point.
+fn ball_edge(world: vec3<f32>, ball: vec4<f32>) -> BallEdge {
+    let eye = scene.eye.xyz;
+    let dir = normalize(world - eye);
+    let nearest = eye + dir * dot(ball.xyz - eye, dir);
+    let miss = distance(nearest, ball.xyz);
+    let footprint = max(fwidth(miss), 1.0e-6);
+    let t = intersect_sphere(eye, dir, ball.xyz, ball.w);
+    let outline = ball.xyz + ball.w * normalize(nearest - ball.xyz);
+    let point = select(outline, eye + dir * t, t < NO_HIT);
+    let cover = clamp(0.5 - (miss - ball.w) / footprint, 0.0, 1.0);
+    let across = (point.y < 0.0) != (eye.y < 0.0);
+    return BallEdge(point, cover, miss < ball.w - footprint || across || cover <= 0.0);
+}

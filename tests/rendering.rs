@@ -288,3 +288,42 @@ fn the_objects_regions_draw_what_tracing_the_objects_everywhere_draws() {
     assert_eq!(again, 0.0, "two identical runs drew different frames");
     assert!(off <= 3.0e-5, "the regions changed {:.4} % of the picture", off * 100.0);
 }
+
+/// The sphere's outline is blended over what lies behind it (`BodyKind::edge`): the pixels
+/// that change are on the edge of the sphere as its mesh draws it, each taking a colour
+/// between those on either side of the edge; there are enough of them to run along the
+/// sphere's outline above the water.
+#[test]
+fn the_spheres_outline_is_blended_on_its_edge_and_nowhere_else() {
+    let (w, h) = (640, 480);
+    let frame = |outlines: bool| {
+        let mut demo = common::demo(DemoOptions::default());
+        demo.set_body_outlines(outlines);
+        // A second: the sphere has risen from where it starts to float.
+        render(&mut demo, w, h, 60, 1.0 / 60.0)
+    };
+    let (blended, stepped) = (frame(true), frame(false));
+    let (mut changed, mut elsewhere) = (0, 0);
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let i = ((y * w + x) * 4) as usize;
+            if (0..3).all(|k| blended.rgba[i + k].abs_diff(stepped.rgba[i + k]) <= 2) {
+                continue;
+            }
+            changed += 1;
+            let around: Vec<f32> = (-1..=1)
+                .flat_map(|dy| (-1..=1).map(move |dx| (x as i32 + dx, y as i32 + dy)))
+                .map(|(nx, ny)| stepped.luma(nx as u32, ny as u32))
+                .collect();
+            let (lo, hi) = around.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &l| (lo.min(l), hi.max(l)));
+            let on_edge = hi - lo > 0.08;
+            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.luma(x, y));
+            if !(on_edge && between) {
+                elsewhere += 1;
+            }
+        }
+    }
+    println!("{changed} pixels blended, {elsewhere} of them off the edge or outside its colours");
+    assert!(changed >= 100, "only {changed} pixels of the outline were blended");
+    assert!(elsewhere * 50 <= changed, "{elsewhere} of {changed} blended pixels are not on the edge");
+}

@@ -54,6 +54,7 @@ pub const KIND: BodyKind = BodyKind {
     vertex_stride: 12,
     wgsl: include_str!("../../shaders/body_ball.wgsl"),
     wgsl_constants: String::new,
+    edge: true,
 };
 
 /// The ball's size and density. (The parameter table, `params::table`, lists them in this order.)

@@ -43,6 +43,7 @@ pub const KIND: BodyKind = BodyKind {
     vertex_stride: 36,
     wgsl: include_str!("../../shaders/body_duck.wgsl"),
     wgsl_constants: || format!("const DUCK_PARTS: i32 = {};\n", TRACED_PARTS.len()),
+    edge: false,
 };
 
 /// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame (rotation

@@ -58,6 +58,9 @@ pub struct BodyKind {
     pub wgsl: &'static str,
     /// WGSL constants its code reads, written from Rust.
     pub wgsl_constants: fn() -> String,
+    /// Whether its WGSL has `vs_<name>_edge` and `fs_<name>_edge`: its outline drawn again
+    /// after everything else, blended by the share of each pixel it covers (anti-aliasing).
+    pub edge: bool,
 }
 
 /// A body as the renderer draws it: where (its pose; the sphere's kept inside the pool) and

@@ -42,6 +42,7 @@ pub const KIND: BodyKind = BodyKind {
     vertex_stride: 12,
     wgsl: include_str!("../../shaders/body_sphere.wgsl"),
     wgsl_constants: String::new,
+    edge: true,
 };
 
 /// A ball of `radius` as drawn for a body at `pose`: kept inside the pool box (the sphere's and

@@ -196,6 +196,12 @@ impl WaterDemo {
         self.renderer.set_object_regions(on);
     }
 
+    /// See [`Renderer::set_body_outlines`].
+    #[doc(hidden)]
+    pub fn set_body_outlines(&mut self, on: bool) {
+        self.renderer.set_body_outlines(on);
+    }
+
     /// Pipeline sets built so far (see [`Renderer::pipeline_sets_built`]).
     pub fn pipeline_sets_built(&self) -> usize {
         self.renderer.pipeline_sets_built()

@@ -11,7 +11,7 @@ use std::collections::HashMap;
 
 use glam::{Mat4, Vec4};
 
-use super::variants::{mesh_pipeline, MeshPipeline, PipelineTargets};
+use super::variants::{mesh_pipeline, DepthUse, MeshPipeline, PipelineTargets};
 use super::{Features, DEPTH_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -289,7 +289,7 @@ impl FlatWater {
                     format: targets.format,
                     blend: None,
                     write_mask: wgpu::ColorWrites::ALL,
-                    depth: true,
+                    depth: DepthUse::TestAndWrite,
                 },
             )
         });

@@ -110,6 +110,8 @@ pub struct Renderer {
     /// The water surface traces the objects only in their regions (`variants::surface_regions`);
     /// off, everywhere (for tests: the regions must not change the picture).
     object_regions: bool,
+    /// The bodies' outlines are blended in (`BodyKind::edge`); off for tests to compare with.
+    body_outlines: bool,
 }
 
 impl Renderer {
@@ -183,6 +185,7 @@ impl Renderer {
             depth: None,
             upscale: Upscale::new(device, settings.target_format),
             object_regions: true,
+            body_outlines: true,
         }
     }
 
@@ -257,6 +260,13 @@ impl Renderer {
     #[doc(hidden)]
     pub fn set_object_regions(&mut self, on: bool) {
         self.object_regions = on;
+    }
+
+    /// Whether the bodies' outlines are blended in (the default) or left as the mesh's
+    /// pixels draw them (for tests to compare with).
+    #[doc(hidden)]
+    pub fn set_body_outlines(&mut self, on: bool) {
+        self.body_outlines = on;
     }
 
     /// Pipeline sets built: feature sets of the scene's pipelines and of the flat water's.

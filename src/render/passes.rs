@@ -168,10 +168,12 @@ impl Renderer {
         }
     }
 
-    /// A scene pass over the pixels `rect` (x, y, width, height) of `target`: the water
-    /// surface (ray-traced, or flat with `flat`), objects and pool front to back (early depth
-    /// testing skips what the water and objects hide), then the sky where nothing else was
-    /// drawn. The pass starting at column 0 clears the target.
+    /// A scene pass over the pixels `rect` (x, y, width, height) of `target`: the deck, the
+    /// objects, the water surface (ray-traced, or flat with `flat`) and the pool, cheapest
+    /// first where they hide costly work (early depth testing skips the water the deck and
+    /// the objects hide, and the pool the water hides), then the sky where nothing else was
+    /// drawn and the objects' outlines over it all. The pass starting at column 0 clears the
+    /// target.
     pub(super) fn draw_scene(
         &mut self,
         device: &wgpu::Device,
@@ -227,6 +229,9 @@ impl Renderer {
         }
         self.draw_pool(&mut pass, features);
         self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+        if self.body_outlines {
+            self.draw_edges(&mut pass, features, view);
+        }
     }
 
     /// Draws the deck around the pool if the view has one. Drawn first: where it hides the
@@ -250,6 +255,17 @@ impl Renderer {
     /// fail the depth test (their parts under it are drawn for nothing, hidden by the water).
     pub(super) fn draw_bodies(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
         for (k, pipeline) in self.variants[&features].bodies.iter().enumerate() {
+            if let (Some(pipeline), Some(_)) = (pipeline, &view.bodies[k]) {
+                pass.set_pipeline(pipeline);
+                self.body_meshes[k].draw(pass);
+            }
+        }
+    }
+
+    /// Draws the outlines of the bodies that have one (`BodyKind::edge`), blended over
+    /// everything else.
+    pub(super) fn draw_edges(&self, pass: &mut wgpu::RenderPass<'_>, features: Features, view: &View) {
+        for (k, pipeline) in self.variants[&features].edges.iter().enumerate() {
             if let (Some(pipeline), Some(_)) = (pipeline, &view.bodies[k]) {
                 pass.set_pipeline(pipeline);
                 self.body_meshes[k].draw(pass);

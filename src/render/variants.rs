@@ -224,6 +224,9 @@ pub struct ScenePipelines {
     pub deck: wgpu::RenderPipeline,
     /// Per kind of `bodies::KINDS`, its mesh's pipeline, if the kind is among the features'.
     pub bodies: Vec<Option<wgpu::RenderPipeline>>,
+    /// Per kind, its outline's pipeline (`BodyKind::edge`), if it has one and is among the
+    /// features' (not in the flat water's textures).
+    pub edges: Vec<Option<wgpu::RenderPipeline>>,
 }
 
 /// Formats and layouts the scene's pipelines are built for (fixed for a renderer).
@@ -250,6 +253,8 @@ pub struct VariantBuild {
     /// Per kind of `bodies::KINDS`, once looked at: its pipeline if the kind is among the
     /// features'.
     bodies: Vec<Option<wgpu::RenderPipeline>>,
+    /// The same for the kinds' outlines.
+    edges: Vec<Option<wgpu::RenderPipeline>>,
 }
 
 impl VariantBuild {
@@ -262,6 +267,7 @@ impl VariantBuild {
             pool: None,
             deck: None,
             bodies: Vec::new(),
+            edges: Vec::new(),
         }
     }
 
@@ -272,7 +278,7 @@ impl VariantBuild {
         let pool_attributes = &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
         let back = Some(wgpu::Face::Back);
         let scene = |label: &str, module: &wgpu::ShaderModule, vs: &str, fs: &str, attributes, stride, cull| {
-            scene_pipeline(device, features, targets, label, module, [vs, fs], (attributes, stride), cull)
+            scene_pipeline(device, features, targets, label, module, [vs, fs], (attributes, stride), cull, false)
         };
         if self.caustics.is_none() {
             self.caustics = Some(caustics_pipelines(device, features, targets, prelude));
@@ -287,7 +293,7 @@ impl VariantBuild {
         } else if self.deck.is_none() {
             let module = module("deck", &[shaders::POOL, super::deck::WGSL].concat());
             self.deck = Some(scene("deck", &module, "vs_pool", "fs_deck", pool_attributes, 24, back));
-        } else {
+        } else if self.bodies.len() < BodyId::all().count() {
             // The next kind of body in the features (the others get no pipeline).
             while let Some(id) = BodyId::all().nth(self.bodies.len()) {
                 let present = features.bodies & id.bit() as u8 != 0;
@@ -301,8 +307,33 @@ impl VariantBuild {
                     break;
                 }
             }
+        } else {
+            // The next present kind's outline, if it has one.
+            while let Some(id) = BodyId::all().nth(self.edges.len()) {
+                let kind = id.kind();
+                let present = features.bodies & id.bit() as u8 != 0 && kind.edge && features.clip == 0;
+                self.edges.push(present.then(|| {
+                    let (vs, fs) = (format!("vs_{}_edge", kind.name), format!("fs_{}_edge", kind.name));
+                    let module = module(kind.name, "");
+                    let (attributes, stride) = (kind.vertex, kind.vertex_stride);
+                    scene_pipeline(
+                        device,
+                        features,
+                        targets,
+                        "outline",
+                        &module,
+                        [&vs, &fs],
+                        (attributes, stride),
+                        back,
+                        true,
+                    )
+                }));
+                if present {
+                    break;
+                }
+            }
         }
-        self.bodies.len() == BodyId::all().count()
+        self.edges.len() == BodyId::all().count()
     }
 
     /// The variant's pipelines, building what is left.
@@ -315,12 +346,14 @@ impl VariantBuild {
             pool: self.pool.expect(built),
             deck: self.deck.expect(built),
             bodies: self.bodies,
+            edges: self.edges,
         }
     }
 }
 
 /// A pipeline of the scene pass for `features`: `entries` are the vertex and fragment entry
-/// points, `vertex` the mesh's attributes and stride (bytes).
+/// points, `vertex` the mesh's attributes and stride (bytes). An overlay is blended by its
+/// alpha over what is drawn and leaves the depth as it is.
 #[allow(clippy::too_many_arguments)]
 fn scene_pipeline(
     device: &wgpu::Device,
@@ -331,6 +364,7 @@ fn scene_pipeline(
     entries: [&str; 2],
     vertex: (&[wgpu::VertexAttribute], u64),
     cull: Option<wgpu::Face>,
+    overlay: bool,
 ) -> wgpu::RenderPipeline {
     // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
     let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
@@ -347,9 +381,9 @@ fn scene_pipeline(
             cull,
             front_face,
             format: targets.format,
-            blend: None,
+            blend: overlay.then_some(wgpu::BlendState::ALPHA_BLENDING),
             write_mask: wgpu::ColorWrites::ALL,
-            depth: true,
+            depth: if overlay { DepthUse::Test } else { DepthUse::TestAndWrite },
         },
     )
 }
@@ -397,7 +431,7 @@ fn caustics_pipelines(
                     format: targets.caustics_format,
                     blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
                     write_mask,
-                    depth: false,
+                    depth: DepthUse::None,
                 },
             )
         })
@@ -418,8 +452,18 @@ pub struct MeshPipeline<'a> {
     pub format: wgpu::TextureFormat,
     pub blend: Option<wgpu::BlendState>,
     pub write_mask: wgpu::ColorWrites,
-    /// Depth-tested and written against [`DEPTH_FORMAT`].
-    pub depth: bool,
+    pub depth: DepthUse,
+}
+
+/// What a pipeline does with the depth target ([`DEPTH_FORMAT`]).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum DepthUse {
+    /// No depth target.
+    None,
+    /// Drawn where nearer than what is there, without changing the depth.
+    Test,
+    /// Drawn where nearer than what is there, and its depth kept.
+    TestAndWrite,
 }
 
 pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipeline {
@@ -438,9 +482,9 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
             })],
         },
         primitive: wgpu::PrimitiveState { cull_mode: p.cull, front_face: p.front_face, ..Default::default() },
-        depth_stencil: p.depth.then(|| wgpu::DepthStencilState {
+        depth_stencil: (p.depth != DepthUse::None).then(|| wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
+            depth_write_enabled: Some(p.depth == DepthUse::TestAndWrite),
             depth_compare: Some(wgpu::CompareFunction::Less),
             stencil: Default::default(),
             bias: Default::default(),
