@@ -46,14 +46,16 @@ fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
 }
 
-// Diffuse plastic plus a glossy highlight of the sun above the water (under: see object_colour).
+// Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within
+// BALL_WET_BAND above the rest level (under: see object_colour).
+const BALL_GLOSS: f32 = 80.0;
+const BALL_SHINE: f32 = 15.0;
+const BALL_WET_BAND: f32 = 0.03;
+
 fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    var colour = object_colour(p, n, albedo, under);
-    if (!under) {
-        let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 80.0);
-        colour += sun_light() * 0.6 * gloss;
-    }
-    return colour;
+    let wet = wetness(p, BALL_WET_BAND);
+    let colour = object_colour(p, n, albedo * mix(1.0, 0.75, wet), under);
+    return colour + select(clear_coat(n, dir, wet, BALL_GLOSS, BALL_SHINE), vec3<f32>(0.0), under);
 }
 
 // The ambient light the ball takes from a point with normal n (sphere_occlusion_of).

@@ -72,15 +72,17 @@ fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
     return 0.0;
 }
 
-// The duck's rubber: diffuse like the sphere plus a broad glossy highlight of the sun,
-// seen along dir, where the sun reaches it directly (under: see object_colour).
+// The duck's vinyl: diffuse like the sphere under a softer coat (clear_coat: the sky mirrored
+// by Fresnel, a broad highlight of the sun), seen along dir; darker and glossier within
+// DUCK_WET_BAND above the rest level, where it rides the ripples (under: see object_colour).
+const DUCK_GLOSS: f32 = 60.0;
+const DUCK_SHINE: f32 = 12.0;
+const DUCK_WET_BAND: f32 = 0.015;
+
 fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    var colour = object_colour(p, n, albedo, under);
-    if (!under) {
-        let gloss = pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), 40.0);
-        colour += sun_light() * 0.35 * gloss;
-    }
-    return colour;
+    let wet = wetness(p, DUCK_WET_BAND);
+    let colour = object_colour(p, n, albedo * mix(1.0, 0.75, wet), under);
+    return colour + select(clear_coat(n, dir, wet, DUCK_GLOSS, DUCK_SHINE), vec3<f32>(0.0), under);
 }
 
 // The duck seen directly.

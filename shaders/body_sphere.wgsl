@@ -7,6 +7,8 @@ const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
 // The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
 const SPHERE_GLOSS: f32 = 300.0;
 const SPHERE_SHINE: f32 = 60.0;
+// How far above the rest level (m) the sphere is wet.
+const SPHERE_WET_BAND: f32 = 0.04;
 
 // The sphere's uniform: xyz centre (m), w radius (m).
 fn sphere_uniform() -> vec4<f32> {
@@ -31,18 +33,12 @@ fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, u
 
 // The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres above
 // the rest level it is wet (darker paint, a stronger coat); above the water the coat mirrors
-// the sky and the sun by Schlick's Fresnel (r0 = 0.04, a lacquer's index of about 1.5).
-// under: see object_colour.
+// the sky and the sun (clear_coat). under: see object_colour.
 fn sphere_colour(p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
     let n = normalize(p - sphere_uniform().xyz);
-    let wet = 1.0 - smoothstep(0.0, 0.04, p.y);
-    var colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet), under);
-    let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
-    let r = reflect(dir, n);
-    // The sky in the coat, and the sun's highlight on it (a glossy lobe, cos^SPHERE_GLOSS).
-    let highlight = sun_light() * SPHERE_SHINE * pow(max(dot(r, scene.sun.xyz), 0.0), SPHERE_GLOSS);
-    let coat = fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
-    return colour + select(coat, vec3<f32>(0.0), under);
+    let wet = wetness(p, SPHERE_WET_BAND);
+    let colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet), under);
+    return colour + select(clear_coat(n, dir, wet, SPHERE_GLOSS, SPHERE_SHINE), vec3<f32>(0.0), under);
 }
 
 // The ambient light the sphere takes from a point with normal n (sphere_occlusion_of).

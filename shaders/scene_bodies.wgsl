@@ -32,6 +32,23 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> 
     return albedo * (ambient + direct * sun_light());
 }
 
+// How wet a body's surface at p is: 1 at the water's rest level and under it, 0 from `band`
+// (m) above it, where the water it rides up and down on has not reached.
+fn wetness(p: vec3<f32>, band: f32) -> f32 {
+    return 1.0 - smoothstep(0.0, band, p.y);
+}
+
+// A glossy coat over a body above the water, at a point with outward normal n seen along dir:
+// Schlick's Fresnel (r0 = 0.04, an index of about 1.5) mirroring the sky, and the sun's
+// highlight, a lobe cos^gloss about the mirror direction with `shine` times the sun's light at
+// its peak. A wet surface (wetness 1) mirrors twice as much: the film of water is smoother.
+fn clear_coat(n: vec3<f32>, dir: vec3<f32>, wet: f32, gloss: f32, shine: f32) -> vec3<f32> {
+    let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
+    let r = reflect(dir, n);
+    let highlight = sun_light() * shine * pow(max(dot(r, scene.sun.xyz), 0.0), gloss);
+    return fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
+}
+
 // A ball's silhouette without stair-steps: its mesh grown by BALL_EDGE_GROWTH is drawn again
 // after everything else, each pixel blended by the share of it the ball covers (a ramp one
 // pixel footprint wide, centred on the outline), as the deck's edge is. The pixel's ray passes

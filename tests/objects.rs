@@ -254,6 +254,44 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     assert!(shadow < 0.75 * lit, "no shadow on the floor: {shadow} vs {lit}");
 }
 
+/// The duck's vinyl has a glossy coat: seen from low over the water, the upper side of the
+/// duck, where the coat's Fresnel reflectance climbs, mirrors the blue-white sky, so part of
+/// its warm pixels carry blue that its diffuse yellow (blue albedo 0.03) cannot give.
+#[test]
+fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
+    let (w, h) = (320u32, 240u32);
+    let mut demo = demo_with(DUCK, true);
+    demo.params.set(ParamId::Gravity, 0.0);
+    let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
+    demo.set_body_pose(BodyId::named("duck").unwrap(), Pose::at(Vec3::new(0.0, y, 0.0)));
+    demo.camera.yaw = 90.0;
+    demo.camera.pitch = 12.0;
+    demo.camera.distance = 1.5;
+    let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+    let size = Vec2::new(w as f32, h as f32);
+    let centre = demo.camera.project(demo.duck().unwrap().position, size).unwrap();
+    // The duck's pixels: warm (red well over blue), in a box around it.
+    let (mut warm, mut sky_lit) = (0u32, 0u32);
+    for y in (centre.y as u32).saturating_sub(60)..(centre.y as u32 + 30).min(h) {
+        for x in (centre.x as u32).saturating_sub(70)..(centre.x as u32 + 70).min(w) {
+            let [r, g, b] = frame.pixel(x, y);
+            if r > 0.35 && r > g && r - b > 0.15 {
+                warm += 1;
+                if b > 0.3 * r {
+                    sky_lit += 1;
+                }
+            }
+        }
+    }
+    let share = sky_lit as f64 / warm.max(1) as f64;
+    println!(
+        "duck at pixel {centre}: {warm} warm pixels, {sky_lit} of them ({:.1} %) with blue over 0.3 of red",
+        share * 100.0
+    );
+    assert!(warm > 800, "duck not seen: {warm} warm pixels");
+    assert!(share > 0.08, "the coat mirrors no sky: {:.1} % of the duck's pixels", share * 100.0);
+}
+
 /// The third kind of body, added as one entry of the table of kinds: dropped in, the beach
 /// ball pushes the water, comes to rest high at its own waterline, and is drawn in its red and
 /// orange gores with a shadow on the floor.
