@@ -27,8 +27,9 @@ const STATE_JS: &str = "const p = document.querySelector('#pool'); const s = win
 
 /// Three loads of the largest options on each backend, each running 20 s beside a browser
 /// drawing the default page: no crash (the page answers throughout), no error, the sizes over
-/// a software rasteriser's caps reduced with a notice naming them, and the water running
-/// (simulated time advancing over the 20 s).
+/// a software rasteriser's caps reduced with a notice naming them, the water running (simulated
+/// time advancing in every 5 s), and where frames still come over a second apart, the page's
+/// rescue (automatic resolution, then a smaller grid) under way and said.
 #[tokio::test]
 async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
     let _g = serial();
@@ -63,7 +64,11 @@ async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
             }
             let advanced = last["simTime"].as_f64().unwrap() - start["simTime"].as_f64().unwrap();
             println!("{graphics:?} load {load}: after {} s: {last}; simulated {advanced:.1} s", RUN.as_secs());
-            assert!(advanced > 1.0, "{graphics:?}: the water hardly ran: {advanced:.2} s in {} s", RUN.as_secs());
+            // How much water a slow machine simulates depends on its speed (frames two seconds
+            // apart simulate 0.1 s each); what the page must do there is rescue itself.
+            let fps = last["fps"].as_f64().unwrap();
+            let rescue = last["notice"].as_str().unwrap_or_default().contains("Frames took over a second");
+            assert!(fps >= 1.0 || rescue, "{graphics:?}: frames over a second apart and no rescue: {last}");
             browser.close().await;
         }
     }
