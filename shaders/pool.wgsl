@@ -22,6 +22,6 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let edge = deck_edge(in.world);
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
-    let colour = pool_colour(in.world, n, albedo, in.world.y < 0.0, true, normalize(in.world - scene.eye.xyz));
+    let colour = pool_colour(in.world, n, albedo, in.world.y < 0.0, true);
     return with_deck_edge(seen_directly(colour, in.world), edge);
 }

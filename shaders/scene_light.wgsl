@@ -96,42 +96,29 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
     return select(wall, p.xz, abs(n.y) > 0.5);
 }
 
-// The tiles' glaze above the water: the share of the sun's light that a tile seen along dir
-// mirrors towards the eye, a soft lobe (cos^TILE_GLOSS about the mirror direction, TILE_SHINE
-// at its peak); the pale tiles are glazed, the darker grout not. Under water a glaze of index
-// about 1.5 against water's 1.33 mirrors a tenth of what it does in air, so it is left out.
-const TILE_GLOSS: f32 = 24.0;
-const TILE_SHINE: f32 = 0.35;
-
-fn tile_glaze(albedo: vec3<f32>, n: vec3<f32>, dir: vec3<f32>) -> f32 {
-    let glazed = smoothstep(0.3, 0.6, albedo.g);
-    return glazed * TILE_SHINE * pow(max(dot(reflect(dir, n), scene.sun.xyz), 0.0), TILE_GLOSS);
-}
-
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
-// it, as object_colour's). Seen directly along dir (not traced in the water's mirror, where
-// both would be a few pixels weighted by the water's small reflectance): the objects' shadows
-// above the water (under it the caustics map holds them), and the glaze's highlight.
-fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, seen_directly: bool, dir: vec3<f32>) -> vec3<f32> {
-    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
+// it, as object_colour's), where shadowed: the objects' shadows above the water (under it the
+// caustics map holds them).
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, shadowed: bool) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
+        let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
+    var direct: f32;
     if (under) {
-        let direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
-        return albedo * (ambient + direct * sun_light());
+        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
+    } else {
+        direct = max(dot(n, scene.sun.xyz), 0.0);
+        if (shadowed) {
+            direct *= objects_visibility(p, scene.sun.xyz, 10.0);
+        }
     }
-    var direct = max(dot(n, scene.sun.xyz), 0.0);
-    var colour = albedo * ambient;
-    if (seen_directly) {
-        direct *= objects_visibility(p, scene.sun.xyz, 10.0);
-        colour += tile_glaze(albedo, n, dir) * direct * sun_light();
-    }
-    return colour + albedo * direct * sun_light();
+    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
+    return albedo * (ambient + direct * sun_light());
 }
 
 // Distance (m) along a ray from inside the pool box to where it leaves it (the tile it
@@ -160,5 +147,5 @@ fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
-    return pool_colour(p, n, albedo, under, false, vec3<f32>(0.0));
+    return pool_colour(p, n, albedo, under, false);
 }
