@@ -1,6 +1,6 @@
 // The beach ball (bodies/ball.rs): a sphere of thin plastic in six gores of colour around its
 // axis, with white caps, turned with its pose. Traced like the sphere (hit, the light it
-// blocks, the ambient light it takes from the pool near it) with a glossy plastic highlight;
+// blocks, the ambient light it takes from the pool near it), its vinyl under a glossy coat;
 // drawn directly as a unit mesh scaled and moved to its centre, its outline blended in
 // (ball_edge). Uniform (BALL_SLOT on): centre
 // and radius (0: no ball), then the three columns of its rotation.
@@ -50,12 +50,11 @@ fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
 // BALL_WET_BAND above the rest level (under: see object_colour).
 const BALL_GLOSS: f32 = 80.0;
 const BALL_SHINE: f32 = 15.0;
+const BALL_WET_ALBEDO: f32 = 0.75;
 const BALL_WET_BAND: f32 = 0.03;
 
 fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    let wet = wetness(p, BALL_WET_BAND);
-    let colour = object_colour(p, n, albedo * mix(1.0, 0.75, wet), under);
-    return colour + select(clear_coat(n, dir, wet, BALL_GLOSS, BALL_SHINE), vec3<f32>(0.0), under);
+    return coated_colour(p, n, albedo, dir, under, Coat(BALL_WET_BAND, BALL_WET_ALBEDO, BALL_GLOSS, BALL_SHINE));
 }
 
 // The ambient light the ball takes from a point with normal n (sphere_occlusion_of).

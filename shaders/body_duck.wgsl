@@ -77,12 +77,11 @@ fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
 // DUCK_WET_BAND above the rest level, where it rides the ripples (under: see object_colour).
 const DUCK_GLOSS: f32 = 60.0;
 const DUCK_SHINE: f32 = 12.0;
+const DUCK_WET_ALBEDO: f32 = 0.75;
 const DUCK_WET_BAND: f32 = 0.015;
 
 fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    let wet = wetness(p, DUCK_WET_BAND);
-    let colour = object_colour(p, n, albedo * mix(1.0, 0.75, wet), under);
-    return colour + select(clear_coat(n, dir, wet, DUCK_GLOSS, DUCK_SHINE), vec3<f32>(0.0), under);
+    return coated_colour(p, n, albedo, dir, under, Coat(DUCK_WET_BAND, DUCK_WET_ALBEDO, DUCK_GLOSS, DUCK_SHINE));
 }
 
 // The duck seen directly.

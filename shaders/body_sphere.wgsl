@@ -7,8 +7,9 @@ const SPHERE_ALBEDO: vec3<f32> = vec3<f32>(0.66, 0.64, 0.60);
 // The sphere's clear coat: exponent and peak (times the sun's light) of its highlight.
 const SPHERE_GLOSS: f32 = 300.0;
 const SPHERE_SHINE: f32 = 60.0;
-// How far above the rest level (m) the sphere is wet.
+// How far above the rest level (m) the sphere is wet, and the share of its colour left there.
 const SPHERE_WET_BAND: f32 = 0.04;
+const SPHERE_WET_ALBEDO: f32 = 0.72;
 
 // The sphere's uniform: xyz centre (m), w radius (m).
 fn sphere_uniform() -> vec4<f32> {
@@ -36,9 +37,7 @@ fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, u
 // the sky and the sun (clear_coat). under: see object_colour.
 fn sphere_colour(p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
     let n = normalize(p - sphere_uniform().xyz);
-    let wet = wetness(p, SPHERE_WET_BAND);
-    let colour = object_colour(p, n, SPHERE_ALBEDO * mix(1.0, 0.72, wet), under);
-    return colour + select(clear_coat(n, dir, wet, SPHERE_GLOSS, SPHERE_SHINE), vec3<f32>(0.0), under);
+    return coated_colour(p, n, SPHERE_ALBEDO, dir, under, Coat(SPHERE_WET_BAND, SPHERE_WET_ALBEDO, SPHERE_GLOSS, SPHERE_SHINE));
 }
 
 // The ambient light the sphere takes from a point with normal n (sphere_occlusion_of).

@@ -1,5 +1,5 @@
-// What every kind of floating body shares in the scene's rays: the hit a kind's tracer returns
-// and the diffuse lighting of its surface. Each kind's own tracing and colour is in
+// What every kind of floating body shares in the scene's rays: the hit a kind's tracer returns,
+// the diffuse lighting of its surface, its wet band and glossy coat, and its blended outline. Each kind's own tracing and colour is in
 // body_<kind>.wgsl; the code that asks every kind present (hit_bodies, body_colour,
 // objects_visibility, bodies_occlusion) is written by bodies::wgsl from the table of kinds.
 
@@ -41,12 +41,30 @@ fn wetness(p: vec3<f32>, band: f32) -> f32 {
 // A glossy coat over a body above the water, at a point with outward normal n seen along dir:
 // Schlick's Fresnel (r0 = 0.04, an index of about 1.5) mirroring the sky, and the sun's
 // highlight, a lobe cos^gloss about the mirror direction with `shine` times the sun's light at
-// its peak. A wet surface (wetness 1) mirrors twice as much: the film of water is smoother.
+// its peak (the sky's disk is a mirror's sun; the lobe is the sun blurred by a coat that is
+// not one). A wet surface (wetness 1) mirrors up to twice as much, never more than all.
 fn clear_coat(n: vec3<f32>, dir: vec3<f32>, wet: f32, gloss: f32, shine: f32) -> vec3<f32> {
     let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
     let r = reflect(dir, n);
     let highlight = sun_light() * shine * pow(max(dot(r, scene.sun.xyz), 0.0), gloss);
-    return fresnel * (1.0 + wet) * (sky_colour(r) + highlight);
+    return min(fresnel * (1.0 + wet), 1.0) * (sky_colour(r) + highlight);
+}
+
+// A body kind's coat: how far above the rest level it is wet (m), how much of its diffuse
+// colour it keeps there, and its highlight's exponent and peak (clear_coat).
+struct Coat {
+    wet_band: f32,
+    wet_albedo: f32,
+    gloss: f32,
+    shine: f32,
+};
+
+// Lit colour of a coated body at p (outward normal n, colour albedo) seen along dir: diffuse
+// (object_colour), darker where wet, and above the water its coat (under: see object_colour).
+fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, coat: Coat) -> vec3<f32> {
+    let wet = wetness(p, coat.wet_band);
+    let colour = object_colour(p, n, albedo * mix(1.0, coat.wet_albedo, wet), under);
+    return colour + select(clear_coat(n, dir, wet, coat.gloss, coat.shine), vec3<f32>(0.0), under);
 }
 
 // A ball's silhouette without stair-steps: its mesh grown by BALL_EDGE_GROWTH is drawn again

@@ -23,13 +23,14 @@ const RUN: Duration = Duration::from_secs(20);
 const STATE_JS: &str = "const p = document.querySelector('#pool'); const s = window.demo.stats();
     const n = p.shadowRoot.querySelector('.notice');
     return { simTime: s.simTime, fps: s.fps, reduced: s.reduced.map((r) => r.name + ' ' + r.asked + '->' + r.given),
-             notice: n && !n.hidden ? n.textContent : null, error: p.dataset.error === 'true', simSize: s.simSize };";
+             notice: n && !n.hidden ? n.textContent : null, error: p.dataset.error === 'true', simSize: s.simSize,
+             quality: window.demo.get('quality') };";
 
 /// Three loads of the largest options on each backend, each running 20 s beside a browser
 /// drawing the default page: no crash (the page answers throughout), no error, the sizes over
 /// a software rasteriser's caps reduced with a notice naming them, the water running (simulated
 /// time advancing in every 5 s), and where frames still come over a second apart, the page's
-/// rescue (automatic resolution, then a smaller grid) under way and said.
+/// rescue (automatic resolution, then a smaller grid) under way.
 #[tokio::test]
 async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
     let _g = serial();
@@ -47,9 +48,15 @@ async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
             assert_eq!(start["error"], false, "{graphics:?}: the demo failed: {start}");
             let reduced = start["reduced"].as_array().unwrap();
             assert!(!reduced.is_empty(), "{graphics:?}: nothing reduced on a software rasteriser: {start}");
+            assert!(
+                reduced.iter().any(|r| r == "causticsSize 2048->1024"),
+                "{graphics:?}: the caustics map is not held to the caps: {start}"
+            );
+            // The notice names what was reduced, unless a slow start has already put the
+            // rescue's notices in its place (a slow machine, before the page was ready).
             let notice = start["notice"].as_str().unwrap_or_default();
             assert!(
-                notice.contains("causticsSize 2048 → 1024"),
+                notice.contains("causticsSize 2048 → 1024") || notice.contains("Frames took over a second"),
                 "{graphics:?}: the notice does not say what was reduced: {start}"
             );
             let begun = Instant::now();
@@ -65,10 +72,12 @@ async fn the_largest_options_run_beside_a_busy_browser_without_a_crash() {
             let advanced = last["simTime"].as_f64().unwrap() - start["simTime"].as_f64().unwrap();
             println!("{graphics:?} load {load}: after {} s: {last}; simulated {advanced:.1} s", RUN.as_secs());
             // How much water a slow machine simulates depends on its speed (frames two seconds
-            // apart simulate 0.1 s each); what the page must do there is rescue itself.
+            // apart simulate 0.1 s each); what the page must do there is rescue itself: its
+            // first step makes the resolution automatic (quality 0; the page asked for 1), and
+            // it stays so (the notice saying it hides after a while).
             let fps = last["fps"].as_f64().unwrap();
-            let rescue = last["notice"].as_str().unwrap_or_default().contains("Frames took over a second");
-            assert!(fps >= 1.0 || rescue, "{graphics:?}: frames over a second apart and no rescue: {last}");
+            let rescued = last["quality"].as_f64() == Some(0.0);
+            assert!(fps > 1.0 || rescued, "{graphics:?}: frames over a second apart and no rescue: {last}");
             browser.close().await;
         }
     }
