@@ -22,7 +22,13 @@
 //! - `WAVEPOOL_BENCH_WARMUP` (5) and `WAVEPOOL_BENCH_SECONDS` (20): warm-up and window, s;
 //! - `WAVEPOOL_BENCH_QUERY`: extra options for our page, e.g. `&objects=none&quality=1`;
 //! - `WAVEPOOL_BENCH_RUNS` (all): which runs, space-separated, of `chromium-webgpu`,
-//!   `chromium-webgl2`, `firefox-webgl2`, `firefox-webgpu`, `webkit-webgl2`.
+//!   `chromium-webgl2`, `firefox-webgl2`, `firefox-webgpu`, `webkit-webgl2`;
+//! - `WAVEPOOL_BENCH_BASELINE`: another build's `dist/` (e.g. an older commit's), served at
+//!   `/baseline/` and measured in place of the classic, with the same query as ours: our cost
+//!   against an earlier build's in one run;
+//! - `WAVEPOOL_BENCH_PAGE` (`index.html`): which of our pages to load (and of the baseline's);
+//!   `embed.html` fills the viewport, so two builds whose `index.html` lay out differently
+//!   draw canvases of the same size.
 //!
 //! Prints one JSON line per measurement, then one summary line per run: mean drawn fps of
 //! ours and of the classic, their ratio, and the ratio per canvas pixel (fps x backing pixels;
@@ -66,6 +72,10 @@ struct Settings {
     extra_query: String,
     /// Names of the runs to make (of [`RUNS`]).
     runs: Vec<String>,
+    /// Another build of our page to measure in place of the classic.
+    baseline: Option<std::path::PathBuf>,
+    /// Our page's file name.
+    page: String,
 }
 
 impl Settings {
@@ -83,6 +93,8 @@ impl Settings {
             runs: std::env::var("WAVEPOOL_BENCH_RUNS")
                 .map(|v| v.split_whitespace().map(str::to_owned).collect())
                 .unwrap_or_else(|_| RUNS.iter().map(|r| r.0.to_owned()).collect()),
+            baseline: std::env::var_os("WAVEPOOL_BENCH_BASELINE").map(Into::into),
+            page: std::env::var("WAVEPOOL_BENCH_PAGE").unwrap_or_else(|_| "index.html".to_owned()),
         }
     }
 }
@@ -91,6 +103,8 @@ impl Settings {
 enum Page {
     Ours,
     Classic,
+    /// Another build of ours (`WAVEPOOL_BENCH_BASELINE`) at `/baseline/`.
+    Baseline,
 }
 
 impl Page {
@@ -98,20 +112,23 @@ impl Page {
         match self {
             Page::Ours => "wavepool",
             Page::Classic => "classic",
+            Page::Baseline => "baseline",
         }
     }
 
-    fn path(self, backend: &str, extra_query: &str) -> String {
+    fn path(self, backend: &str, settings: &Settings) -> String {
+        let (page, extra_query) = (&settings.page, &settings.extra_query);
         match self {
-            Page::Ours => format!("/index.html?backend={backend}{extra_query}"),
+            Page::Ours => format!("/{page}?backend={backend}{extra_query}"),
             Page::Classic => "/classic/index.html".to_string(),
+            Page::Baseline => format!("/baseline/{page}?backend={backend}{extra_query}"),
         }
     }
 
     /// JS expression: the page's canvas.
     fn canvas_js(self) -> &'static str {
         match self {
-            Page::Ours => "document.querySelector('#pool').shadowRoot.querySelector('canvas')",
+            Page::Ours | Page::Baseline => "document.querySelector('#pool').shadowRoot.querySelector('canvas')",
             Page::Classic => "document.querySelector('canvas')",
         }
     }
@@ -146,7 +163,11 @@ async fn main() {
             strays.others.join("\n  ")
         );
     }
-    let server = StaticServer::start_with_classic(true);
+    let server = StaticServer::start_with_classic_and_mounts(
+        true,
+        settings.baseline.iter().map(|dir| ("/baseline/", dir.clone())).collect(),
+    );
+    let other = if settings.baseline.is_some() { Page::Baseline } else { Page::Classic };
     let mut results = Vec::new();
     let runs: Vec<_> = RUNS.iter().filter(|r| settings.runs.iter().any(|name| name == r.0)).collect();
     assert!(!runs.is_empty(), "WAVEPOOL_BENCH_RUNS names none of {:?}", RUNS.map(|r| r.0));
@@ -161,14 +182,14 @@ async fn main() {
                     "warm_up_s": settings.warm_up.as_secs(), "window_s": settings.window.as_secs() })
         );
         for round in 1..=settings.rounds {
-            for page in [Page::Ours, Page::Classic] {
+            for page in [Page::Ours, other] {
                 results.push(measure(&browser, &server, page, run, backend, round, &settings).await);
             }
         }
         browser.close().await;
     }
     for &&(run, _, _) in &runs {
-        println!("{}", summary(&results, run));
+        println!("{}", summary(&results, run, other));
     }
 }
 
@@ -192,11 +213,11 @@ async fn measure(
     if other_browsers > 0 {
         eprintln!("warning: {other_browsers} other Chromium running while measuring {}", page.name());
     }
-    let path = page.path(backend, &settings.extra_query);
+    let path = page.path(backend, settings);
     let loaded = Instant::now();
     browser.goto(&server.url(&path)).await;
     match page {
-        Page::Ours => {
+        Page::Ours | Page::Baseline => {
             browser.wait_ready("#pool", READY_TIMEOUT).await;
         }
         Page::Classic => {
@@ -227,7 +248,7 @@ async fn measure(
         .await;
     // Our page's own figures, when its handle is on `window` (index.html puts it there).
     let stats = match page {
-        Page::Ours => {
+        Page::Ours | Page::Baseline => {
             browser
                 .js("const d = window.demo; if (!d || typeof d.stats !== 'function') return null;
                      const s = d.stats();
@@ -283,16 +304,17 @@ async fn measure(
     }
 }
 
-/// The summary of one run: mean drawn fps of each page, ours / classic, and the same per
-/// canvas pixel (fps x backing pixels, so a bigger canvas is not a handicap).
-fn summary(results: &[Measurement], run: &str) -> Value {
+/// The summary of one run: mean drawn fps of each page, ours / the other (the classic or the
+/// baseline build; the figures named after it), and the same per canvas pixel (fps x backing
+/// pixels, so a bigger canvas is not a handicap).
+fn summary(results: &[Measurement], run: &str, other: Page) -> Value {
     let mean = |page: Page, f: &dyn Fn(&Measurement) -> f64| -> f64 {
         let values: Vec<f64> = results.iter().filter(|m| m.page == page && m.run == run).map(f).collect();
         values.iter().sum::<f64>() / values.len().max(1) as f64
     };
-    let (ours, classic) = (mean(Page::Ours, &|m| m.fps), mean(Page::Classic, &|m| m.fps));
+    let (ours, classic) = (mean(Page::Ours, &|m| m.fps), mean(other, &|m| m.fps));
     let ours_pixel_rate = mean(Page::Ours, &|m| m.fps * m.pixels);
-    let classic_pixel_rate = mean(Page::Classic, &|m| m.fps * m.pixels);
+    let classic_pixel_rate = mean(other, &|m| m.fps * m.pixels);
     let ratio = |a: f64, b: f64| if b > 0.0 { round3(a / b) } else { f64::NAN };
     // Pixels our scene is actually drawn at (canvas x render scale squared), when every
     // measurement of ours reported its scale.
@@ -306,19 +328,21 @@ fn summary(results: &[Measurement], run: &str) -> Value {
     } else {
         (None, None)
     };
+    let name = |figure: &str| format!("{}_{figure}", other.name());
     json!({
         "summary": run,
+        "against": other.name(),
         "rounds": results.iter().filter(|m| m.page == Page::Ours && m.run == run).count(),
         "ours_drawn_fps": round3(ours),
-        "classic_drawn_fps": round3(classic),
+        name("drawn_fps"): round3(classic),
         "ratio": ratio(ours, classic),
         "ours_megapixels_per_s": round3(ours_pixel_rate / 1e6),
-        "classic_megapixels_per_s": round3(classic_pixel_rate / 1e6),
+        name("megapixels_per_s"): round3(classic_pixel_rate / 1e6),
         "ratio_per_pixel": ratio(ours_pixel_rate, classic_pixel_rate),
         "ours_render_scale": ours_scale,
         "ratio_per_rendered_pixel": ratio_per_rendered_pixel,
         "ours_callbacks_fps": round3(mean(Page::Ours, &|m| m.callbacks_fps)),
-        "classic_callbacks_fps": round3(mean(Page::Classic, &|m| m.callbacks_fps)),
+        name("callbacks_fps"): round3(mean(other, &|m| m.callbacks_fps)),
     })
 }
 

@@ -47,14 +47,14 @@ fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
 }
 
 // Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within
-// BALL_WET_BAND above the rest level (under: see object_colour).
+// BALL_WET_BAND above the rest level (under, direct: see coated_colour).
 const BALL_GLOSS: f32 = 80.0;
 const BALL_SHINE: f32 = 15.0;
 const BALL_WET_ALBEDO: f32 = 0.75;
 const BALL_WET_BAND: f32 = 0.03;
 
-fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    return coated_colour(p, n, albedo, dir, under, Coat(BALL_WET_BAND, BALL_WET_ALBEDO, BALL_GLOSS, BALL_SHINE));
+fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {
+    return coated_colour(p, n, albedo, dir, under, direct, Coat(BALL_WET_BAND, BALL_WET_ALBEDO, BALL_GLOSS, BALL_SHINE));
 }
 
 // The ambient light the ball takes from a point with normal n (sphere_occlusion_of).
@@ -79,7 +79,7 @@ fn vs_ball(@location(0) unit: vec3<f32>) -> BallOut {
 fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world - ball_uniform().xyz);
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, in.world.y < 0.0), in.world);
+    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, in.world.y < 0.0, true), in.world);
 }
 
 // The ball's outline, blended over what lies behind (ball_edge).
@@ -99,6 +99,6 @@ fn fs_ball_edge(in: BallOut) -> @location(0) vec4<f32> {
     }
     let p = edge.point;
     let n = normalize(p - ball_uniform().xyz);
-    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), p.y < 0.0), p);
+    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), p.y < 0.0, true), p);
     return vec4<f32>(out.rgb, edge.cover);
 }

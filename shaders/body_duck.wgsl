@@ -74,14 +74,14 @@ fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
 
 // The duck's vinyl: diffuse like the sphere under a softer coat (clear_coat: the sky mirrored
 // by Fresnel, a broad highlight of the sun), seen along dir; darker and glossier within
-// DUCK_WET_BAND above the rest level, where it rides the ripples (under: see object_colour).
+// DUCK_WET_BAND above the rest level, where it rides the ripples (under, direct: see coated_colour).
 const DUCK_GLOSS: f32 = 60.0;
 const DUCK_SHINE: f32 = 12.0;
 const DUCK_WET_ALBEDO: f32 = 0.75;
 const DUCK_WET_BAND: f32 = 0.015;
 
-fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    return coated_colour(p, n, albedo, dir, under, Coat(DUCK_WET_BAND, DUCK_WET_ALBEDO, DUCK_GLOSS, DUCK_SHINE));
+fn duck_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {
+    return coated_colour(p, n, albedo, dir, under, direct, Coat(DUCK_WET_BAND, DUCK_WET_ALBEDO, DUCK_GLOSS, DUCK_SHINE));
 }
 
 // The duck seen directly.
@@ -105,5 +105,5 @@ fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @lo
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, in.world.y < 0.0), in.world);
+    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, in.world.y < 0.0, true), in.world);
 }

@@ -28,16 +28,16 @@ fn sphere_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
 }
 
-fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
-    return sphere_colour(p, dir, under);
+fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {
+    return sphere_colour(p, dir, under, direct);
 }
 
 // The sphere, seen along dir: diffuse paint under a clear coat. Within a few centimetres above
 // the rest level it is wet (darker paint, a stronger coat); above the water the coat mirrors
-// the sky and the sun (clear_coat). under: see object_colour.
-fn sphere_colour(p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {
+// the sky and the sun (clear_coat). under: see object_colour; direct: see coated_colour.
+fn sphere_colour(p: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {
     let n = normalize(p - sphere_uniform().xyz);
-    return coated_colour(p, n, SPHERE_ALBEDO, dir, under, Coat(SPHERE_WET_BAND, SPHERE_WET_ALBEDO, SPHERE_GLOSS, SPHERE_SHINE));
+    return coated_colour(p, n, SPHERE_ALBEDO, dir, under, direct, Coat(SPHERE_WET_BAND, SPHERE_WET_ALBEDO, SPHERE_GLOSS, SPHERE_SHINE));
 }
 
 // The ambient light the sphere takes from a point with normal n (sphere_occlusion_of).
@@ -61,7 +61,7 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
-    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), in.world.y < 0.0), in.world);
+    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), in.world.y < 0.0, true), in.world);
 }
 
 // The sphere's outline, blended over what lies behind (ball_edge).
@@ -80,6 +80,6 @@ fn fs_sphere_edge(in: SphereOut) -> @location(0) vec4<f32> {
         discard;
     }
     let p = edge.point;
-    let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), p.y < 0.0), p);
+    let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), p.y < 0.0, true), p);
     return vec4<f32>(out.rgb, edge.cover);
 }

@@ -61,7 +61,7 @@ fn fs_debug(in: FullscreenOut) -> @location(0) vec4<f32> {
     // The colours above are meant as displayed: decode to linear (no tone curve), then
     // sRGB-encode like every other pass.
     let c = pow(clamp(colour, vec3<f32>(0.0), vec3<f32>(1.0)), vec3<f32>(2.2));
-    if (scene.output.x > 0.5) {
+    if (ENCODE_SRGB) {
         return vec4<f32>(linear_to_srgb(c), 1.0);
     }
     return vec4<f32>(c, 1.0);

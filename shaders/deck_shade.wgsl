@@ -19,9 +19,20 @@ fn coping_along(p: vec3<f32>) -> f32 {
     return select(p.z, p.x, abs(p.z) > abs(p.x));
 }
 
-// A coping stone's own colour: pale, each block a little different.
+// The coping's pale stone and the paving's warm slabs (albedo), each block a little different
+// (block_tint); coping blocks are COPING_BLOCK m long.
+const STONE: vec3<f32> = vec3<f32>(0.60, 0.57, 0.52);
+const SLAB: vec3<f32> = vec3<f32>(0.095, 0.062, 0.042);
+const COPING_BLOCK: f32 = 0.5;
+
+// A block's tint (0.9 to 1.1) from its cell on a grid of `size` m.
+fn block_tint(uv: vec2<f32>, size: f32) -> f32 {
+    return 0.9 + 0.2 * hash31(vec3<f32>(floor(uv / size), 0.3));
+}
+
+// A coping stone's own colour.
 fn coping_stone(along: f32) -> vec3<f32> {
-    return vec3<f32>(0.60, 0.57, 0.52) * (0.9 + 0.2 * hash31(vec3<f32>(floor(along / 0.5), 0.0, 0.3)));
+    return STONE * block_tint(vec2<f32>(along, 0.25), COPING_BLOCK);
 }
 
 // Ground of `albedo` at p under the open sky and the sun, fading into the horizon's haze with
@@ -30,8 +41,18 @@ fn deck_lit(albedo: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
     let colour = albedo * (sky_light() + max(scene.sun.y, 0.0) * sun_light());
     let to_p = p - scene.eye.xyz;
     let haze = 1.0 - exp(-length(to_p) / HAZE_DISTANCE * 0.69);
-    let horizon = sky_colour(normalize(vec3<f32>(to_p.x, 0.0, to_p.z) + vec3<f32>(0.0, 0.02, 0.0)));
-    return mix(colour, horizon, haze);
+    return mix(colour, horizon_colour(to_p.xz), haze);
+}
+
+// The sky's colour at the horizon towards `towards` (horizontal, any length), as the sky cube
+// holds it: render/deck.rs's fit, a polynomial in √(1 − cos) of the angle from the sun.
+fn horizon_colour(towards: vec2<f32>) -> vec3<f32> {
+    let h = &scene.horizon;
+    let dir = normalize(vec3<f32>(towards.x, HORIZON_LIFT * length(towards), towards.y));
+    let x = sqrt(max(1.0 - dot(dir, scene.sun.xyz), 0.0)) * (*h)[0].w + (*h)[1].w;
+    // Horner's rule, written out (a loop indexes the uniform array at run time).
+    let colour = (*h)[0].rgb + x * ((*h)[1].rgb + x * ((*h)[2].rgb + x * ((*h)[3].rgb + x * (*h)[4].rgb)));
+    return clamp(colour, vec3<f32>(0.0), vec3<f32>(SKY_RANGE));
 }
 
 // Where the pixel's ray (eye to `world`) crosses the deck's plane (xyz) and the share of the
@@ -47,15 +68,12 @@ fn deck_edge(world: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(q, select(0.0, cover, seen));
 }
 
-// `out` (a finished pixel seen through the opening) with the coping blended in by `edge`
-// (deck_edge). Software rasterisers shade this for every pixel seen through the opening, so
-// it is the coping's light without the joints and the haze, which a pixel on the edge does
-// not show (the haze is under 13 % within the 12 m the camera keeps to).
-fn with_deck_edge(out: vec4<f32>, edge: vec4<f32>) -> vec4<f32> {
-    if (edge.w <= 0.0) {
-        return out;
-    }
+// `colour` (the scene light of a pixel seen through the opening, before the tone curve) with
+// the coping's blended in by `edge` (deck_edge). Software rasterisers shade this for every
+// pixel seen through the opening (both sides of any branch, so none is taken), so it is the
+// coping's light without the joints and the haze, which a pixel on the edge does not show (the
+// haze is under 13 % within the 12 m the camera keeps to), blended before the one tone curve.
+fn with_deck_edge(colour: vec3<f32>, edge: vec4<f32>) -> vec3<f32> {
     let light = sky_light() + max(scene.sun.y, 0.0) * sun_light();
-    let coping = finish(coping_stone(coping_along(edge.xyz)) * light);
-    return vec4<f32>(mix(out.rgb, coping.rgb, edge.w), out.a);
+    return mix(colour, coping_stone(coping_along(edge.xyz)) * light, edge.w);
 }

@@ -25,7 +25,7 @@ fn vs_flat(@location(0) grid: vec2<f32>) -> FlatOut {
 
 // A texel of a texture drawn by the scene passes, back in linear light.
 fn linear_texel(t: vec4<f32>) -> vec3<f32> {
-    return select(t.rgb, srgb_to_linear(t.rgb), scene.output.x > 0.5);
+    return select(t.rgb, srgb_to_linear(t.rgb), ENCODE_SRGB);
 }
 
 @fragment
@@ -50,5 +50,5 @@ fn fs_flat(in: FlatOut) -> @location(0) vec4<f32> {
     let colour = mix(linear_texel(under), linear_texel(mirrored), r) + r * glint;
     // The textures are tone-mapped already: only the highlight is rolled off here.
     let mapped = clamp(colour, vec3<f32>(0.0), vec3<f32>(1.0));
-    return vec4<f32>(select(mapped, linear_to_srgb(mapped), scene.output.x > 0.5), 1.0);
+    return vec4<f32>(select(mapped, linear_to_srgb(mapped), ENCODE_SRGB), 1.0);
 }

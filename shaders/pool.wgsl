@@ -23,5 +23,6 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
     let colour = pool_colour(in.world, n, albedo, in.world.y < 0.0, true);
-    return with_deck_edge(seen_directly(colour, in.world), edge);
+    // Seen directly from above the deck, the pool is above the water: nothing dims the edge.
+    return seen_directly(with_deck_edge(colour, edge), in.world);
 }

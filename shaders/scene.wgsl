@@ -15,7 +15,7 @@ struct Scene {
     pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
     water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
-    output: vec4<f32>,         // x = 1: encode sRGB in the shader (target is not an sRGB format);
+    output: vec4<f32>,         // x unused (the sRGB encoding is the constant ENCODE_SRGB);
                                // y debug view (0 none, see debug_view.wgsl)
     optics: vec4<f32>,         // x highlight exponent s, y and z cosines of the sun disk's edge
                                // and core (optics::sun_disk_cosines)
@@ -32,6 +32,7 @@ struct Scene {
                                // w exposure factor 2^EV before the tone curve
     sky_light: vec4<f32>,      // rgb the sky's light on a surface facing up (albedo factor);
                                // w 1 with the deck around the pool, 0 cut-away
+    horizon: array<vec4<f32>, HORIZON_TERMS>, // the sky at the horizon (deck.rs: horizon_fit)
     // Each kind of body's share (bodies::wgsl: <NAME>_SLOT on; see its body_<name>.wgsl).
     bodies: array<vec4<f32>, BODY_SLOTS>,
 };

@@ -60,10 +60,16 @@ struct Coat {
 };
 
 // Lit colour of a coated body at p (outward normal n, colour albedo) seen along dir: diffuse
-// (object_colour), darker where wet, and above the water its coat (under: see object_colour).
-fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, coat: Coat) -> vec3<f32> {
+// (object_colour), darker where wet, and above the water its coat (under: see object_colour)
+// if seen `direct`ly. A traced ray (direct false, a constant that compiles the coat away)
+// sees the body in the water's mirror or through it, weighted by the water's reflectance or
+// from under it: there a coat would add a few hundredths of what it adds seen directly.
+fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool, coat: Coat) -> vec3<f32> {
     let wet = wetness(p, coat.wet_band);
     let colour = object_colour(p, n, albedo * mix(1.0, coat.wet_albedo, wet), under);
+    if (!direct) {
+        return colour;
+    }
     return colour + select(clear_coat(n, dir, wet, coat.gloss, coat.shine), vec3<f32>(0.0), under);
 }
 

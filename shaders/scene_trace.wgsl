@@ -55,7 +55,7 @@ fn tone_map(c: vec3<f32>) -> vec3<f32> {
 // no tone curve.
 fn as_displayed(v: vec3<f32>) -> vec4<f32> {
     let g = clamp(v, vec3<f32>(0.0), vec3<f32>(1.0));
-    if (scene.output.x > 0.5) {
+    if (ENCODE_SRGB) {
         return vec4<f32>(g, 1.0);
     }
     return vec4<f32>(srgb_to_linear(g), 1.0);
@@ -80,7 +80,7 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
 
 fn finish(c: vec3<f32>) -> vec4<f32> {
     let mapped = clamp(tone_map(max(c, vec3<f32>(0.0))), vec3<f32>(0.0), vec3<f32>(1.0));
-    if (scene.output.x > 0.5) {
+    if (ENCODE_SRGB) {
         return vec4<f32>(linear_to_srgb(mapped), 1.0);
     }
     return vec4<f32>(mapped, 1.0);

@@ -86,7 +86,7 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @locat
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
     }
-    return with_deck_edge(finish(colour), edge);
+    return finish(with_deck_edge(colour, edge));
 }
 
 // The surface's colour for light of refractive index `ior` (dispersion): the ray refracted by

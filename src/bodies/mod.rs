@@ -53,7 +53,8 @@ pub struct BodyKind {
     pub vertex: &'static [wgpu::VertexAttribute],
     pub vertex_stride: u64,
     /// Its WGSL: `<name>_hit`, `<name>_light` (what it lets through along a segment),
-    /// `<name>_shade`, `<name>_occlusion` and the mesh's `vs_<name>`, `fs_<name>`; it reads its
+    /// `<name>_shade` (its colour at a point; `direct`: seen directly, not in a traced ray),
+    /// `<name>_occlusion` and the mesh's `vs_<name>`, `fs_<name>`; it reads its
     /// uniform at `<NAME>_SLOT`.
     pub wgsl: &'static str,
     /// WGSL constants its code reads, written from Rust.
@@ -198,7 +199,7 @@ pub fn wgsl(present: u32) -> String {
     out += &format!(
         "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under);\n    }}\n"
+            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under, false);\n    }}\n"
         ))
     );
     out += &format!(

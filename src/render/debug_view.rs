@@ -73,7 +73,7 @@ impl Renderer {
             FullscreenPass::new(
                 device,
                 "debug view",
-                &[&constants, &shaders::scene_prelude(features), shaders::DEBUG_VIEW],
+                &[&constants, &shaders::scene_prelude(features, format), shaders::DEBUG_VIEW],
                 "fs_debug",
                 &layouts,
                 FullscreenTarget { format, blend: None, depth: None },

@@ -2,10 +2,11 @@
 //! the rim's height from the pool's opening out to [`DECK_EXTENT`], coping stones along the
 //! opening, paving slabs beyond, fading into the sky's haze with distance (`shaders/deck.wgsl`).
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
+use crate::sky::Daylight;
 use crate::util::push_triangle;
 
 /// How far the deck reaches from the pool's centre (m): past any frame the camera can show.
@@ -19,6 +20,12 @@ pub const HAZE_DISTANCE: f32 = 60.0;
 /// Clearance of the camera's eye above the deck (m): it never goes under the paving.
 pub const EYE_CLEARANCE: f32 = 0.15;
 
+/// Height of the direction the haze's colour is taken in, per unit across (a hair above the
+/// horizon, where the cube's texels look).
+const HORIZON_LIFT: f32 = 0.01;
+/// Terms of the polynomial the haze's colour is written as ([`horizon_fit`]).
+pub const HORIZON_TERMS: usize = 5; // written out in horizon_colour (deck_shade.wgsl)
+
 /// The deck's fragment shader (its vertices go through the pool's `vs_pool`).
 pub const WGSL: &str = include_str!("../../shaders/deck.wgsl");
 
@@ -26,8 +33,86 @@ pub const WGSL: &str = include_str!("../../shaders/deck.wgsl");
 pub fn wgsl_constants() -> String {
     format!(
         "const COPING_WIDTH: f32 = {COPING_WIDTH:?};\nconst SLAB_SIZE: f32 = {SLAB_SIZE:?};\n\
-         const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\n"
+         const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\nconst HORIZON_TERMS: u32 = {HORIZON_TERMS};\n\
+         const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\n"
     )
+}
+
+/// The sky at the horizon, the colour the deck fades into, as the sky cube holds it (scene
+/// units; the shader clips it at SKY_RANGE as the cube does), written as a polynomial in x, the
+/// distance to the sun's direction, s = √(1 − cos γ) = √2 sin(γ/2) for the angle γ between
+/// them, mapped onto [-1, 1] over the horizon: the sky, Perez's smooth function of γ, needs few
+/// terms in it (in the azimuth's cosine the glow around a low sun needed twelve for 1 %; an
+/// arccosine for γ itself cost lavapipe 1.3 ms). Coefficients of x^0 up to x^4 in rgb; w of the
+/// first two: x = s w0 + w1. Least squares over directions spaced evenly in azimuth. The deck's
+/// pixels sum it in four multiply-adds and a square root, where a cube lookup cost lavapipe's
+/// default frame 5 ms.
+pub fn horizon_fit(daylight: &Daylight) -> [[f32; 4]; HORIZON_TERMS] {
+    let towards_sun = Vec2::new(daylight.sun.x, daylight.sun.z).try_normalize().unwrap_or(Vec2::X);
+    let direction = |azimuth: f32| {
+        let d = towards_sun.rotate(Vec2::from_angle(azimuth));
+        // The cube's texels at the horizon look a hair above it (sky_cube.wgsl).
+        Vec3::new(d.x, HORIZON_LIFT, d.y).normalize()
+    };
+    let distance = |azimuth: f32| (1.0 - direction(azimuth).dot(daylight.sun)).max(0.0).sqrt();
+    let (near, far) = (distance(0.0), distance(std::f32::consts::PI));
+    // With the sun overhead s is the same all round: a constant, x = 0.
+    let span = (far - near).max(1.0e-2);
+    let (scale, offset) = (2.0 / span, -(far + near) / span);
+    const SAMPLES: usize = 64;
+    let mut normal = [[0.0f64; HORIZON_TERMS]; HORIZON_TERMS];
+    let mut right = [[0.0f64; 3]; HORIZON_TERMS];
+    for k in 0..SAMPLES {
+        let azimuth = std::f32::consts::PI * (k as f32 + 0.5) / SAMPLES as f32;
+        let x = (distance(azimuth) * scale + offset) as f64;
+        let colour = daylight.radiance(direction(azimuth));
+        let powers: [f64; HORIZON_TERMS] = std::array::from_fn(|i| x.powi(i as i32));
+        for i in 0..HORIZON_TERMS {
+            for j in 0..HORIZON_TERMS {
+                normal[i][j] += powers[i] * powers[j];
+            }
+            for (c, value) in colour.to_array().into_iter().enumerate() {
+                right[i][c] += powers[i] * value as f64;
+            }
+        }
+    }
+    // A little ridge keeps the sun overhead (every x the same) solvable: its terms in x vanish.
+    for (i, row) in normal.iter_mut().enumerate() {
+        row[i] += 1.0e-9 * SAMPLES as f64;
+    }
+    let solved = solve(normal, right);
+    let mut out = [[0.0; 4]; HORIZON_TERMS];
+    for (row, coefficients) in out.iter_mut().zip(solved) {
+        *row = [coefficients[0] as f32, coefficients[1] as f32, coefficients[2] as f32, 0.0];
+    }
+    out[0][3] = scale;
+    out[1][3] = offset;
+    out
+}
+
+/// Solves a x = b for a symmetric positive definite a (the normal equations), three right-hand
+/// sides at once, by Gaussian elimination.
+fn solve(mut a: [[f64; HORIZON_TERMS]; HORIZON_TERMS], mut b: [[f64; 3]; HORIZON_TERMS]) -> [[f64; 3]; HORIZON_TERMS] {
+    for col in 0..HORIZON_TERMS {
+        let (pivot, pivot_b) = (a[col], b[col]);
+        for row in col + 1..HORIZON_TERMS {
+            let f = a[row][col] / pivot[col];
+            for (x, p) in a[row].iter_mut().zip(pivot).skip(col) {
+                *x -= f * p;
+            }
+            for (x, p) in b[row].iter_mut().zip(pivot_b) {
+                *x -= f * p;
+            }
+        }
+    }
+    let mut x = [[0.0; 3]; HORIZON_TERMS];
+    for row in (0..HORIZON_TERMS).rev() {
+        for c in 0..3 {
+            let rest: f64 = (row + 1..HORIZON_TERMS).map(|k| a[row][k] * x[k][c]).sum();
+            x[row][c] = (b[row][c] - rest) / a[row][row];
+        }
+    }
+    x
 }
 
 /// The deck as four quads around the opening at the rim's height, facing up, with the pool
@@ -59,3 +144,38 @@ pub const PARAMS: &[ParamSpec] = &[
         help: "Where the pool is: sunk in a paved deck under the sky, or the classic's cut-away box, open at the near walls so you see the water's cross-section.",
     },
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sky::SKY_RANGE;
+
+    /// The fit's colour towards horizontal direction d, as deck_shade.wgsl's horizon_colour.
+    fn fitted(fit: &[[f32; 4]; HORIZON_TERMS], d: Vec2, sun: Vec3) -> Vec3 {
+        let distance = (1.0 - Vec3::new(d.x, HORIZON_LIFT, d.y).normalize().dot(sun)).max(0.0).sqrt();
+        let c = distance * fit[0][3] + fit[1][3];
+        let colour = fit.iter().rev().fold(Vec3::ZERO, |sum, term| sum * c + Vec3::new(term[0], term[1], term[2]));
+        colour.clamp(Vec3::ZERO, Vec3::splat(SKY_RANGE))
+    }
+
+    #[test]
+    fn the_hazes_colour_is_the_skys_at_the_horizon_all_round_for_any_sun() {
+        let mut worst: f32 = 0.0;
+        for elevation in [10.0f32, 25.0, 55.0, 80.0, 90.0] {
+            for sun_azimuth in [-150.0f32, 35.0, 120.0] {
+                let (e, a) = (elevation.to_radians(), sun_azimuth.to_radians());
+                let daylight = Daylight::new(Vec3::new(e.cos() * a.cos(), e.sin(), e.cos() * a.sin()));
+                let fit = horizon_fit(&daylight);
+                for k in 0..360 {
+                    let d = Vec2::from_angle((k as f32).to_radians());
+                    let sky = daylight.radiance(Vec3::new(d.x, HORIZON_LIFT, d.y)).min(Vec3::splat(SKY_RANGE));
+                    // Error relative to the sky's brightest channel there.
+                    let error = (fitted(&fit, d, daylight.sun) - sky).abs().max_element() / sky.max_element();
+                    worst = worst.max(error);
+                }
+            }
+        }
+        println!("largest error of the horizon's fit: {:.2} % of the sky's brightest channel", worst * 100.0);
+        assert!(worst < 0.02, "the haze's colour is off the sky's by {:.1} %", worst * 100.0);
+    }
+}

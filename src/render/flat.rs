@@ -272,7 +272,10 @@ impl FlatWater {
             let module = gpu::shader(
                 device,
                 "flat water",
-                &[&super::shaders::scene_prelude(features), include_str!("../../shaders/flat_water.wgsl")],
+                &[
+                    &super::shaders::scene_prelude(features, targets.format),
+                    include_str!("../../shaders/flat_water.wgsl"),
+                ],
             );
             mesh_pipeline(
                 device,

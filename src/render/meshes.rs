@@ -1,6 +1,8 @@
 //! Triangle meshes of the scene, built on the CPU once: the water grid and the pool box, and
 //! the GPU buffers that hold them (the bodies' meshes come from their kinds).
 
+use std::ops::Range;
+
 use glam::Vec3;
 use wgpu::util::DeviceExt;
 
@@ -31,9 +33,67 @@ impl Mesh {
     }
 
     pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        self.draw_indices(pass, 0..self.index_count);
+    }
+
+    /// Draws the triangles of a range of the index buffer.
+    pub fn draw_indices(&self, pass: &mut wgpu::RenderPass<'_>, indices: Range<u32>) {
         pass.set_vertex_buffer(0, self.vertices.slice(..));
         pass.set_index_buffer(self.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..self.index_count, 0, 0..1);
+        pass.draw_indexed(indices, 0, 0..1);
+    }
+}
+
+/// Rows (along x, one per step in z) or columns (along z) of the water grid's cells.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum GridBand {
+    Rows(Range<u32>),
+    Columns(Range<u32>),
+}
+
+/// The water grid's mesh ([`water_grid`]) with its cells indexed twice, row by row and then
+/// column by column, so that a draw can take any band of rows or of columns.
+pub struct GridMesh {
+    mesh: Mesh,
+    /// Quads per side.
+    n: u32,
+}
+
+impl GridMesh {
+    pub fn new(device: &wgpu::Device, n: u32) -> Self {
+        let (vertices, rows) = water_grid(n);
+        // The same triangles column by column: cell (i, j)'s six indices are at 6 (j n + i).
+        let columns: Vec<u32> = (0..n * n)
+            .flat_map(|k| {
+                let (i, j) = (k / n, k % n);
+                let at = (6 * (j * n + i)) as usize;
+                rows[at..at + 6].to_vec()
+            })
+            .collect();
+        let indices: Vec<u32> = rows.iter().chain(&columns).copied().collect();
+        Self { mesh: Mesh::new(device, "water grid", &vertices, &indices), n }
+    }
+
+    /// Quads per side.
+    pub fn n(&self) -> u32 {
+        self.n
+    }
+
+    /// Draws the whole grid.
+    pub fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        self.draw_band(pass, &GridBand::Rows(0..self.n));
+    }
+
+    /// Draws a band of rows or columns.
+    pub fn draw_band(&self, pass: &mut wgpu::RenderPass<'_>, band: &GridBand) {
+        let per_strip = 6 * self.n;
+        let (range, first) = match band {
+            GridBand::Rows(r) => (r, 0),
+            GridBand::Columns(c) => (c, per_strip * self.n),
+        };
+        if !range.is_empty() {
+            self.mesh.draw_indices(pass, first + range.start * per_strip..first + range.end * per_strip);
+        }
     }
 }
 

@@ -8,6 +8,7 @@ pub(crate) mod deck;
 pub mod flat;
 mod meshes;
 mod passes;
+mod regions;
 mod resources;
 mod shaders;
 mod uniforms;
@@ -26,7 +27,7 @@ pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS
 pub use debug_view::{DebugTexture, DebugView, REFLECTANCE_VIEW};
 pub use deck::EYE_CLEARANCE;
 use flat::FlatWater;
-use meshes::{pool_box, water_grid, Mesh};
+use meshes::{pool_box, GridMesh, Mesh};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
 use uniforms::SceneUniforms;
 use upscale::Upscale;
@@ -100,14 +101,14 @@ pub struct Renderer {
     /// The debug view's pass per texture shown so far.
     debug_passes: HashMap<(DebugTexture, AmbientModel, bool), FullscreenPass>,
     /// The water surface, both sides in one draw.
-    grid: Mesh,
+    grid: GridMesh,
     pool_mesh: Mesh,
     deck_mesh: Mesh,
     /// Each kind of body's mesh, in the order of `bodies::KINDS`.
     body_meshes: Vec<Mesh>,
     depth: Option<DepthBuffer>,
     upscale: Upscale,
-    /// The water surface traces the objects only in their regions (`variants::surface_regions`);
+    /// The water surface traces the objects only in their regions (`regions::surface_regions`);
     /// off, everywhere (for tests: the regions must not change the picture).
     object_regions: bool,
     /// The bodies' outlines are blended in (`BodyKind::edge`); off for tests to compare with.
@@ -143,12 +144,11 @@ impl Renderer {
         let sky = FullscreenPass::new(
             device,
             "sky",
-            &[&shaders::scene_prelude(Features::default()), shaders::SKY],
+            &[&shaders::scene_prelude(Features::default(), format), shaders::SKY],
             "fs_sky",
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
-        let (grid_vertices, grid_indices) = water_grid(settings.surface_grid.clamp(8, 1024));
         let (pool_vertices, pool_indices) = pool_box();
         Self {
             settings,
@@ -169,7 +169,7 @@ impl Renderer {
             variants: HashMap::new(),
             building: HashMap::new(),
             debug_passes: HashMap::new(),
-            grid: Mesh::new(device, "water grid", &grid_vertices, &grid_indices),
+            grid: GridMesh::new(device, settings.surface_grid.clamp(8, 1024)),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             deck_mesh: {
                 let (vertices, indices) = deck::deck_ring();
@@ -193,7 +193,10 @@ impl Renderer {
     /// [`Renderer::build_ahead`] had started them).
     fn variant(&mut self, device: &wgpu::Device, features: Features) -> &ScenePipelines {
         if !self.variants.contains_key(&features) {
-            let build = self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features));
+            let build = self
+                .building
+                .remove(&features)
+                .unwrap_or_else(|| VariantBuild::new(features, self.settings.target_format));
             let pipelines = build.finish(device, &self.pipeline_targets(features));
             self.variants.insert(features, pipelines);
         }
@@ -245,7 +248,8 @@ impl Renderer {
             self.prepare_flat_pipeline(device, lit);
             return false;
         };
-        let mut build = self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features));
+        let mut build =
+            self.building.remove(&features).unwrap_or_else(|| VariantBuild::new(features, self.settings.target_format));
         if build.step(device, &self.pipeline_targets(features)) {
             let pipelines = build.finish(device, &self.pipeline_targets(features));
             self.variants.insert(features, pipelines);

@@ -2,7 +2,7 @@
 //! split, at the view's render scale), the flat water's textures, the scene pass itself.
 
 use super::flat::{self, FlatView};
-use super::variants;
+use super::regions;
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::sim::HeightField;
@@ -105,7 +105,7 @@ impl Renderer {
         }
         if divider < size.0 {
             drawn.push(base);
-            let regions = self.object_regions.then(|| variants::surface_regions(view, size)).flatten();
+            let regions = self.object_regions.then(|| regions::surface_regions(view, size)).flatten();
             drawn.extend(regions.into_iter().flatten().map(|(_, needs)| needs));
         }
         let mut seen = std::collections::HashSet::new();
@@ -186,7 +186,7 @@ impl Renderer {
         let depth = self.depth_view(device, size).clone();
         // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
         let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
-        let regions = if flat.is_some() || !self.object_regions { None } else { variants::surface_regions(view, size) };
+        let regions = if flat.is_some() || !self.object_regions { None } else { regions::surface_regions(view, size) };
         self.variant(device, features);
         for (_, needs) in regions.iter().flatten() {
             self.variant(device, *needs);
@@ -217,7 +217,10 @@ impl Renderer {
                     if let Some([x, y, w, h]) = overlap(region, rect) {
                         pass.set_pipeline(&self.variants[&needs].surface);
                         pass.set_scissor_rect(x, y, w, h);
-                        self.grid.draw(&mut pass);
+                        match regions::grid_band(view, [x, y, w, h], size, self.grid.n()) {
+                            Some(band) => self.grid.draw_band(&mut pass, &band),
+                            None => self.grid.draw(&mut pass),
+                        }
                     }
                 }
                 pass.set_scissor_rect(x, y, w, h);

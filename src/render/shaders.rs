@@ -26,8 +26,14 @@ pub const DEBUG_VIEW: &str = include_str!("../../shaders/debug_view.wgsl");
 /// the features the scene shows (water's refractive index, optics, ambient waves, flat water,
 /// sky, deck, caustics mips), the shared WGSL (maths, ray helpers, the scene's bindings and
 /// shading) and the bodies' (their kinds' code, and the code asking the kinds present). The pass adds its own file after it.
-pub fn scene_prelude(features: Features) -> String {
-    let numbers = format!("const IOR_WATER: f32 = {:?};\n", crate::scene::IOR_WATER);
+/// `target`: the format the scene is finally drawn in; without hardware sRGB encoding the
+/// shaders encode (ENCODE_SRGB, a constant: software rasterisers run both sides of a branch).
+pub fn scene_prelude(features: Features, target: wgpu::TextureFormat) -> String {
+    let numbers = format!(
+        "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
+        crate::scene::IOR_WATER,
+        !target.is_srgb()
+    );
     [
         features.wgsl(),
         numbers,

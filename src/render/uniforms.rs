@@ -28,6 +28,7 @@ pub(super) struct SceneUniforms {
     pub(super) flat: [f32; 4],
     pub(super) sun_light: [f32; 4],
     pub(super) sky_light: [f32; 4],
+    pub(super) horizon: [[f32; 4]; super::deck::HORIZON_TERMS],
     pub(super) bodies: [[f32; 4]; UNIFORM_SLOTS],
 }
 
@@ -65,12 +66,7 @@ impl Renderer {
             refracted_sun: refracted.extend(0.0).to_array(),
             pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, 0.0],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
-            output: [
-                if self.settings.target_format.is_srgb() { 0.0 } else { 1.0 },
-                view.debug.map_or(0.0, |d| d.texture as u32 as f32),
-                0.0,
-                0.0,
-            ],
+            output: [0.0, view.debug.map_or(0.0, |d| d.texture as u32 as f32), 0.0, 0.0],
             optics: {
                 let (edge, core) = optics::sun_disk_cosines(view.optics.sun_size);
                 [view.optics.shininess, edge, core, 0.0]
@@ -86,6 +82,7 @@ impl Renderer {
             flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
             sun_light: daylight.sun_light.extend(2f32.powf(view.exposure)).to_array(),
             sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
+            horizon: super::deck::horizon_fit(&daylight),
             bodies: bodies_uniform(view),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));

@@ -125,7 +125,13 @@ impl StaticServer {
     /// runs before the page's own in any engine (the way to inject it where DevTools is not
     /// there: Firefox, WebKit).
     pub fn start_with_classic(count_frames: bool) -> Self {
-        Self::start_serving(Some(classic_dir()), count_frames, Vec::new())
+        Self::start_with_classic_and_mounts(count_frames, Vec::new())
+    }
+
+    /// `start_with_classic` and `start_with_mounts` together.
+    pub fn start_with_classic_and_mounts(count_frames: bool, mounts: Vec<(&str, PathBuf)>) -> Self {
+        let mounts = mounts.into_iter().map(|(prefix, dir)| (prefix.to_owned(), dir)).collect();
+        Self::start_serving(Some(classic_dir()), count_frames, mounts)
     }
 
     fn start_serving(classic: Option<PathBuf>, count_frames: bool, mounts: Vec<(String, PathBuf)>) -> Self {
