@@ -253,7 +253,8 @@ async fn measure(
                 .js("const d = window.demo; if (!d || typeof d.stats !== 'function') return null;
                      const s = d.stats();
                      return { fps: s.fps, backend: s.backend, adapter: s.adapter, simEngine: s.simEngine,
-                              renderScale: s.renderScale === undefined ? null : s.renderScale };")
+                              renderScale: s.renderScale === undefined ? null : s.renderScale,
+                              gpuMs: s.gpuMs === undefined ? null : s.gpuMs };")
                 .await
         }
         Page::Classic => Value::Null,

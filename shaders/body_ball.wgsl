@@ -79,7 +79,7 @@ fn vs_ball(@location(0) unit: vec3<f32>) -> BallOut {
 fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world - ball_uniform().xyz);
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, in.world.y < 0.0, true), in.world);
+    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, lit_under(in.world), true), in.world);
 }
 
 // The ball's outline, blended over what lies behind (ball_edge).
@@ -99,6 +99,6 @@ fn fs_ball_edge(in: BallOut) -> @location(0) vec4<f32> {
     }
     let p = edge.point;
     let n = normalize(p - ball_uniform().xyz);
-    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), p.y < 0.0, true), p);
+    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), lit_under(p), true), p);
     return vec4<f32>(out.rgb, edge.cover);
 }

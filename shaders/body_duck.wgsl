@@ -105,5 +105,5 @@ fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @lo
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, in.world.y < 0.0, true), in.world);
+    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, lit_under(in.world), true), in.world);
 }

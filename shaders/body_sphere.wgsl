@@ -61,7 +61,7 @@ fn vs_sphere(@location(0) unit: vec3<f32>) -> SphereOut {
 
 @fragment
 fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
-    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), in.world.y < 0.0, true), in.world);
+    return seen_directly(sphere_colour(in.world, normalize(in.world - scene.eye.xyz), lit_under(in.world), true), in.world);
 }
 
 // The sphere's outline, blended over what lies behind (ball_edge).
@@ -80,6 +80,6 @@ fn fs_sphere_edge(in: SphereOut) -> @location(0) vec4<f32> {
         discard;
     }
     let p = edge.point;
-    let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), p.y < 0.0, true), p);
+    let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), lit_under(p), true), p);
     return vec4<f32>(out.rgb, edge.cover);
 }

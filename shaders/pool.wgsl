@@ -22,7 +22,7 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let edge = deck_edge(in.world);
     let n = normalize(in.normal);
     let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n)).rgb;
-    let colour = pool_colour(in.world, n, albedo, in.world.y < 0.0, true);
+    let colour = pool_colour(in.world, n, albedo, lit_under(in.world), true);
     // Seen directly from above the deck, the pool is above the water: nothing dims the edge.
     return seen_directly(with_deck_edge(colour, edge), in.world);
 }

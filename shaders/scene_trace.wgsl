@@ -78,6 +78,15 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
     return out;
 }
 
+// Whether a point p of a surface drawn directly (the pool's walls, a body) is lit as under the
+// water. With the deck the eye stays above the water, and what it sees directly is above the
+// surface (the water's own pass draws what lies under it): never, a constant, so software
+// rasterisers do not shade the caustics for every such pixel as well. The flat water's
+// refraction texture (CLIP_SIDE) shows what is under the plane: there by the rest level.
+fn lit_under(p: vec3<f32>) -> bool {
+    return (!HAS_DECK || CLIP_SIDE != 0) && p.y < 0.0;
+}
+
 fn finish(c: vec3<f32>) -> vec4<f32> {
     let mapped = clamp(tone_map(max(c, vec3<f32>(0.0))), vec3<f32>(0.0), vec3<f32>(1.0));
     if (ENCODE_SRGB) {

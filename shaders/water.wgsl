@@ -37,8 +37,12 @@ fn vs_surface(@location(0) grid: vec2<f32>) -> SurfaceOut {
 // window to the sky, the reflected one (all of it beyond the critical angle) stays in the
 // water, and everything is dimmed by the water between eye and surface. Both rays are traced
 // without branching on the side, so screen derivatives (tile_lod) stay in uniform control flow.
+// With the deck the eye stays above the paving, so above the water: every fragment is seen from
+// above (a constant: software rasterisers would shade the view from under the water as well),
+// and a wave's far slope, turned from the eye, is shaded as its near one.
 @fragment
-fn fs_surface(in: SurfaceOut, @builtin(front_facing) from_above: bool) -> @location(0) vec4<f32> {
+fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    let from_above = HAS_DECK || front;
     let edge = deck_edge(in.world);
     let n = select(-1.0, 1.0, from_above) * water_normal(water_at(in.world.xz));
     // Toksvig's factor from the normal's spread over the pixel (a uniform spread over the
