@@ -65,7 +65,9 @@ const READY_TIMEOUT: Duration = Duration::from_secs(180);
 /// From running to the `load` screenshot; from the drops to the `ripples` one.
 const LOAD_WAIT: Duration = Duration::from_secs(1);
 const RIPPLE_WAIT: Duration = Duration::from_secs(1);
-/// Calm water before the caustics drop, and from that drop to the screenshot.
+/// Calm water before the caustics drop, and from that drop to the screenshot: the classic's
+/// in wall time; ours in simulated time, which a slow machine's frames (each at most a quarter
+/// of a second) take longer to reach, so the ring is the same size on any machine.
 const CALM_WAIT: Duration = Duration::from_millis(500);
 const CAUSTIC_WAIT: Duration = Duration::from_millis(500);
 /// Where the `ripples` drops land (pool coordinates, m; the pool spans -1..1 in both pages).
@@ -182,8 +184,9 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     load_ours(browser, server, &top, backend).await;
     browser.js("window.demo.reset(); return true;").await;
     tokio::time::sleep(CALM_WAIT).await;
-    browser.js("window.demo.addDrop(0, 0); return true;").await;
-    tokio::time::sleep(CAUSTIC_WAIT).await;
+    browser.js("window.__dropAt = window.demo.stats().simTime; window.demo.addDrop(0, 0); return true;").await;
+    let ring = format!("window.demo.stats().simTime - window.__dropAt >= {}", CAUSTIC_WAIT.as_secs_f64());
+    assert!(browser.wait_for(&ring, READY_TIMEOUT).await, "our page's water stopped");
     let info = browser.js(TIDY_OURS_JS).await;
     rows.push(shoot(browser, &name, "caustics", &top, info, dir).await);
     rows
