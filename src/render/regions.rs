@@ -49,28 +49,13 @@ pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], F
     let (w, h) = (size.0 as f32, size.1 as f32);
     let mut rects = Vec::new();
     for (centre, radius, with) in bounds {
-        let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
         // From above, the surface shows what is under water refracted (raised towards the
         // surface, straight above itself) and what is above it mirrored: both within the
         // column over the object, from the surface down to its own or its mirror image's bottom.
         let bottom = -(centre.y.abs() + radius);
-        for corner in 0..8 {
-            let pick = |bit: u32, a: f32, b: f32| if corner & bit == 0 { a } else { b };
-            let p = Vec3::new(
-                pick(1, centre.x - radius, centre.x + radius),
-                pick(2, bottom, 0.0),
-                pick(4, centre.z - radius, centre.z + radius),
-            );
-            let clip = view.view_proj * p.extend(1.0);
-            if clip.w <= 1e-3 {
-                return None;
-            }
-            lo = lo.min(clip.xy() / clip.w);
-            hi = hi.max(clip.xy() / clip.w);
-        }
-        // NDC (y up) to pixels (y down), with the margin.
-        let (x0, x1) = ((lo.x * 0.5 + 0.5) * w, (hi.x * 0.5 + 0.5) * w);
-        let (y0, y1) = ((0.5 - hi.y * 0.5) * h, (0.5 - lo.y * 0.5) * h);
+        let low = Vec3::new(centre.x - radius, bottom, centre.z - radius);
+        let high = Vec3::new(centre.x + radius, 0.0, centre.z + radius);
+        let [x0, y0, x1, y1] = screen_bounds(view, low, high, size)?;
         let margin = REGION_MARGIN * (x1 - x0).max(y1 - y0) + REGION_MARGIN_PX;
         let pixel = |v: f32, end: f32| v.round().clamp(0.0, end) as u32;
         let rect = [pixel(x0 - margin, w), pixel(y0 - margin, h), pixel(x1 + margin, w), pixel(y1 + margin, h)];
@@ -123,32 +108,40 @@ fn partition(rects: &[([u32; 4], Features)], base: Features, size: (u32, u32)) -
 const SURFACE_REACH_UP_DOWN: f32 = 2.0 * MAX_HEIGHT + 0.1;
 const SURFACE_REACH_SIDEWAYS: f32 = 0.1;
 
+/// The screen bounds (x0, y0, x1, y1 in pixels of a `size` target, y down) of the box from
+/// `low` to `high` (m); `None` when a corner is behind the eye.
+fn screen_bounds(view: &View, low: Vec3, high: Vec3, size: (u32, u32)) -> Option<[f32; 4]> {
+    let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
+    for corner in 0..8 {
+        let pick = |bit: u32, a: f32, b: f32| if corner & bit == 0 { a } else { b };
+        let p = Vec3::new(pick(1, low.x, high.x), pick(2, low.y, high.y), pick(4, low.z, high.z));
+        let clip = view.view_proj * p.extend(1.0);
+        if clip.w <= 1e-3 {
+            return None;
+        }
+        lo = lo.min(clip.xy() / clip.w);
+        hi = hi.max(clip.xy() / clip.w);
+    }
+    // NDC (y up) to pixels (y down).
+    let (w, h) = (size.0 as f32, size.1 as f32);
+    Some([(lo.x * 0.5 + 0.5) * w, (0.5 - hi.y * 0.5) * h, (hi.x * 0.5 + 0.5) * w, (0.5 - lo.y * 0.5) * h])
+}
+
 /// The band of the `n` x `n` water grid (rows or columns, whichever has fewer cells) a draw
 /// into `rect` (x, y, width, height in pixels of a `size` target) needs: every row and every
-/// column whose strip of the surface, moved as far as any wave can move it, can reach a pixel of the rectangle. `None`: the whole grid (a strip behind
-/// the eye).
+/// column whose strip of the surface, moved as far as any wave can move it, can reach a pixel
+/// of the rectangle. `None`: the whole grid (a strip behind the eye).
 pub fn grid_band(view: &View, rect: [u32; 4], size: (u32, u32), n: u32) -> Option<GridBand> {
-    let (w, h) = (size.0 as f32, size.1 as f32);
     let (x0, y0, x1, y1) = (rect[0] as f32, rect[1] as f32, (rect[0] + rect[2]) as f32, (rect[1] + rect[3]) as f32);
     let half = scene::HALF_WIDTH + SURFACE_REACH_SIDEWAYS;
     let reaches = |across: Range<f32>, rows: bool| -> Option<bool> {
-        let (mut lo, mut hi) = (glam::Vec2::splat(f32::INFINITY), glam::Vec2::splat(f32::NEG_INFINITY));
-        for corner in 0..8 {
-            let pick = |bit: u32, a: f32, b: f32| if corner & bit == 0 { a } else { b };
-            let along = pick(1, -half, half);
-            let side = pick(2, across.start - SURFACE_REACH_SIDEWAYS, across.end + SURFACE_REACH_SIDEWAYS);
-            let y = pick(4, -SURFACE_REACH_UP_DOWN, SURFACE_REACH_UP_DOWN);
-            let p = if rows { Vec3::new(along, y, side) } else { Vec3::new(side, y, along) };
-            let clip = view.view_proj * p.extend(1.0);
-            if clip.w <= 1e-3 {
-                return None;
-            }
-            lo = lo.min(clip.xy() / clip.w);
-            hi = hi.max(clip.xy() / clip.w);
-        }
-        // NDC (y up) to pixels (y down).
-        let (px0, px1) = ((lo.x * 0.5 + 0.5) * w, (hi.x * 0.5 + 0.5) * w);
-        let (py0, py1) = ((0.5 - hi.y * 0.5) * h, (0.5 - lo.y * 0.5) * h);
+        let (side0, side1) = (across.start - SURFACE_REACH_SIDEWAYS, across.end + SURFACE_REACH_SIDEWAYS);
+        let (low, high) = if rows {
+            (Vec3::new(-half, -SURFACE_REACH_UP_DOWN, side0), Vec3::new(half, SURFACE_REACH_UP_DOWN, side1))
+        } else {
+            (Vec3::new(side0, -SURFACE_REACH_UP_DOWN, -half), Vec3::new(side1, SURFACE_REACH_UP_DOWN, half))
+        };
+        let [px0, py0, px1, py1] = screen_bounds(view, low, high, size)?;
         Some(px1 >= x0 && px0 <= x1 && py1 >= y0 && py0 <= y1)
     };
     let cell = 2.0 * scene::HALF_WIDTH / n as f32;
