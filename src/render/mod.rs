@@ -92,6 +92,9 @@ pub struct Renderer {
     scene_textures: SceneTextures,
     caustics: CausticsMap,
     sky_cube: SkyCube,
+    /// The deck's haze colour (`deck::horizon_fit`) and the sun it was fitted for: refitted
+    /// only when the sun moves, as the cube is repainted.
+    horizon: (glam::Vec3, [[f32; 4]; deck::HORIZON_TERMS]),
     sky: FullscreenPass,
     /// The scene's pipelines per feature set drawn so far (see [`Features`]).
     variants: HashMap<Features, ScenePipelines>,
@@ -164,6 +167,7 @@ impl Renderer {
             textures_group,
             scene_textures,
             caustics,
+            horizon: (glam::Vec3::ZERO, deck::horizon_fit(sky_cube.daylight())),
             sky_cube,
             sky,
             variants: HashMap::new(),

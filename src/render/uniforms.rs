@@ -56,6 +56,9 @@ impl Renderer {
     ) {
         self.sky_cube.update(queue, encoder, view.sun);
         let daylight = *self.sky_cube.daylight();
+        if self.horizon.0 != daylight.sun {
+            self.horizon = (daylight.sun, super::deck::horizon_fit(&daylight));
+        }
         let refracted = scene::refracted_sun(view.sun);
         let n = water.size() as f32;
         let u = SceneUniforms {
@@ -82,7 +85,7 @@ impl Renderer {
             flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
             sun_light: daylight.sun_light.extend(2f32.powf(view.exposure)).to_array(),
             sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
-            horizon: super::deck::horizon_fit(&daylight),
+            horizon: self.horizon.1,
             bodies: bodies_uniform(view),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
