@@ -12,12 +12,13 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use wavepool::camera::{DISTANCE_RANGE, PITCH_RANGE};
+use wavepool::camera::POOL_LIMITS;
 use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
 use wavepool::scene::HALF_WIDTH;
+use wavepool::sea::SEA_LIMITS;
 use wavepool::sim::random_drops;
 use wavepool::timing::StageTimer;
 
@@ -116,11 +117,13 @@ struct RenderArgs {
     /// Camera yaw (degrees).
     #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, -360.0f32, 360.0))]
     yaw: Option<f32>,
-    /// Camera pitch (degrees; negative looks up from under the water).
-    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, PITCH_RANGE.0, PITCH_RANGE.1))]
+    /// Camera pitch (degrees; negative looks up from under the water; the scene's own range
+    /// applies: the pool's -89..89, the sea's 2..89).
+    #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, POOL_LIMITS.pitch.0, POOL_LIMITS.pitch.1))]
     pitch: Option<f32>,
-    /// Camera distance from the pool's centre (m).
-    #[arg(long, value_name = "M", value_parser = |s: &str| number(s, DISTANCE_RANGE.0, DISTANCE_RANGE.1))]
+    /// Camera distance from its target (m; the scene's own range applies: the pool's
+    /// 1.5..12, the sea's 3..600).
+    #[arg(long, value_name = "M", value_parser = |s: &str| number(s, POOL_LIMITS.distance.0, SEA_LIMITS.distance.1))]
     distance: Option<f32>,
     #[command(flatten)]
     frame: FrameArgs,
@@ -246,6 +249,7 @@ impl StartArgs {
 fn render(o: &RenderArgs) -> Result<(), String> {
     let gpu = HeadlessGpu::new()?;
     let mut demo = o.frame.start.make_demo(&gpu);
+    demo.sync_scene();
     if let Some(y) = o.yaw {
         demo.camera.yaw = y;
     }

@@ -6,9 +6,9 @@ use wgpu::util::DeviceExt;
 /// The WGSL parts every kind of pass may use; each feature keeps its own beside its code.
 pub mod wgsl {
     /// The full-screen triangle's vertex shader ([`super::FullscreenPass`] adds it).
-    pub const FULLSCREEN: &str = include_str!("../shaders/fullscreen.wgsl");
+    pub const FULLSCREEN: &str = crate::wgsl!("fullscreen.wgsl");
     /// Maths and colour helpers without bindings: PI, sRGB conversions, hash and value noise.
-    pub const MATH: &str = include_str!("../shaders/math.wgsl");
+    pub const MATH: &str = crate::wgsl!("math.wgsl");
 }
 
 /// Compiles a shader module from WGSL parts (constants written by Rust, then sources), joined

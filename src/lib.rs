@@ -2,6 +2,14 @@
 //! ray-traced pool with caustics, an orbit camera, and a platform-free core that the
 //! browser and native shells drive.
 
+/// A shader's WGSL as the binary holds it: `shaders/<name>` without its comments (build.rs).
+#[macro_export]
+macro_rules! wgsl {
+    ($name:literal) => {
+        include_str!(concat!(env!("OUT_DIR"), "/", $name))
+    };
+}
+
 pub mod ambient;
 pub mod bodies;
 pub mod camera;
@@ -17,6 +25,7 @@ pub mod presets;
 pub mod quality;
 pub mod render;
 pub mod scene;
+pub mod sea;
 pub mod sim;
 pub mod sky;
 pub mod textures;

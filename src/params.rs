@@ -8,7 +8,7 @@ use std::ops::Deref;
 use std::sync::OnceLock;
 
 pub use crate::param_spec::{choice_label, Control, ParamSpec};
-use crate::{ambient, bodies, optics, physics, quality, render, sim, sky};
+use crate::{ambient, bodies, optics, physics, quality, render, sea, sim, sky};
 
 /// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
 macro_rules! param_ids {
@@ -39,6 +39,13 @@ param_ids! {
     SunElevation,
     SunSize,
     Exposure,
+    Scene,
+    SeaWind,
+    SeaWindDirection,
+    SeaWaveHeight,
+    SeaChoppiness,
+    SeaFog,
+    SeaFogDistance,
     Setting,
     Caustics,
     Ambient,
@@ -92,6 +99,8 @@ fn slices() -> Vec<&'static [ParamSpec]> {
         sky::SUN_PARAMS,
         optics::SUN_SIZE_PARAMS,
         sky::EXPOSURE_PARAMS,
+        sea::SCENE_PARAMS,
+        sea::PARAMS,
         render::deck::PARAMS,
         render::caustics::PARAMS,
         ambient::params::PARAMS,
@@ -148,6 +157,12 @@ fn snake_case(name: &str) -> String {
 /// Parameters that matter only for some values of another (a model's own settings): the
 /// controls show them only then. (parameter, the one it depends on, the choices it needs)
 pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
+    (ParamId::SeaWind, ParamId::Scene, &["sea"]),
+    (ParamId::SeaWindDirection, ParamId::Scene, &["sea"]),
+    (ParamId::SeaWaveHeight, ParamId::Scene, &["sea"]),
+    (ParamId::SeaChoppiness, ParamId::Scene, &["sea"]),
+    (ParamId::SeaFog, ParamId::Scene, &["sea"]),
+    (ParamId::SeaFogDistance, ParamId::Scene, &["sea"]),
     (ParamId::WindSpeed, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
     (ParamId::WindDirection, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
     (ParamId::WaveHeight, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),

@@ -245,7 +245,7 @@ impl SkyCube {
         let pass = FullscreenPass::new(
             device,
             "sky cube face",
-            &[&Daylight::wgsl_constants(), gpu::wgsl::MATH, include_str!("../shaders/sky_cube.wgsl")],
+            &[&Daylight::wgsl_constants(), gpu::wgsl::MATH, crate::wgsl!("sky_cube.wgsl")],
             "fs_sky_face",
             &[&layout],
             FullscreenTarget { format: SKY_FORMAT, blend: None, depth: None },

@@ -225,7 +225,8 @@ impl Viewer {
                 None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
                 None => ui.label("GPU time: waiting for the first timestamps"),
             };
-            if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()) {
+            let pool = self.demo.scene() == wavepool::sea::SceneKind::Pool; // the modes are the pool's
+            if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
                 let mode = RenderMode::from_param(self.demo.params.get(ParamId::RenderMode));
                 self.mode_costs.observe(mode, stages);
                 ui.label(format!("drawing the water (caustics + scene): {}", self.mode_costs.summary()));

@@ -12,6 +12,7 @@ use crate::demo::{DemoBuild, DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAP
 use crate::params::{self, ParamId};
 use crate::render::flat::ModeCosts;
 use crate::render::flat::RenderMode;
+use crate::sea::SceneKind;
 use crate::sim::SimEngine;
 use crate::timing::StageTimer;
 use tables::{set, to_js_number};
@@ -315,7 +316,8 @@ impl WebDemo {
                     timer.mark(e, s as u32)
                 });
                 timer.finish(&mut encoder);
-                if let Some(stages) = timer.latest() {
+                // The render modes' costs are the pool's (the sea has none of them).
+                if let Some(stages) = timer.latest().filter(|_| self.demo.scene() == SceneKind::Pool) {
                     self.mode_costs.observe(RenderMode::from_param(self.demo.params.get(ParamId::RenderMode)), stages);
                 }
             }
@@ -502,6 +504,7 @@ impl WebDemo {
     /// camera's ranges are clamped with a console warning.
     #[wasm_bindgen(js_name = setCamera)]
     pub fn set_camera(&mut self, yaw: f32, pitch: f32, distance: f32) {
+        self.demo.sync_scene();
         let mut camera = self.demo.camera;
         let finite = |v: f32, current: f32| if v.is_finite() { v } else { current };
         camera.yaw = finite(yaw, camera.yaw);
@@ -511,8 +514,8 @@ impl WebDemo {
         if !yaw.is_finite() || camera.pitch != pitch || camera.distance != distance {
             warn(&format!(
                 "wavepool: camera ({yaw}, {pitch}, {distance}) is outside yaw any, pitch {:?}, distance {:?}; using ({}, {}, {})",
-                crate::camera::PITCH_RANGE,
-                crate::camera::DISTANCE_RANGE,
+                camera.limits.pitch,
+                camera.limits.distance,
                 camera.yaw,
                 camera.pitch,
                 camera.distance
@@ -556,6 +559,7 @@ impl WebDemo {
         set(&o, "simSize", self.demo.water().size());
         set(&o, "simEngine", if self.demo.water().engine() == SimEngine::Gpu { "gpu" } else { "cpu" });
         set(&o, "simTime", self.demo.sim_time());
+        set(&o, "scene", if self.demo.drawn_scene() == SceneKind::Sea { "sea" } else { "pool" });
         set(&o, "meanLevel", level.mean as f64);
         set(&o, "maxAbsHeight", level.max_abs as f64);
         set(&o, "width", self.config.width);

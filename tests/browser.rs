@@ -949,3 +949,36 @@ async fn flat_water_splits_and_the_divider_drags_on_webgl2() {
     let _g = serial();
     flat_water_in_the_page(Graphics::WebGl2Only, "webgl2").await;
 }
+
+/// The open sea in the page on both backends: a picture (sky over darker water), its own
+/// controls shown, and back to the pool without a reload or an error.
+#[tokio::test]
+async fn the_sea_runs_in_the_page_on_both_backends_and_gives_the_pool_back() {
+    let _g = serial();
+    for (graphics, backend) in [(Graphics::WebGpu, "webgpu"), (Graphics::WebGl2Only, "webgl2")] {
+        let (browser, _server) = open_demo(graphics, &format!("?backend={backend}&scene=sea&quality=1"), backend).await;
+        assert!(browser.wait_for("window.demo.stats().scene === 'sea'", Duration::from_secs(20)).await);
+        let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+        let shot = browser.screenshot().await;
+        let band = |from: u32, to: u32| Rect { y: rect.y + rect.h * from / 10, h: rect.h * (to - from) / 10, ..rect };
+        let (sky, sea) = (shot.mean(band(0, 2)), shot.mean(band(7, 10)));
+        let controls = browser
+            .js("const root = document.querySelector('#pool').shadowRoot;
+                 const shown = n => !root.querySelector(`[name=${n}]`).closest('.row').hidden;
+                 return { wind: shown('sea_wind'), fog: shown('sea_fog') };")
+            .await;
+        println!("{backend}: sky {sky:.0?}, sea {sea:.0?}, sea controls {controls}");
+        assert!(sky[2] > sky[0] && sea[2] > sea[0], "{backend}: sky and sea are not blue");
+        assert!(sea.iter().sum::<f64>() < sky.iter().sum::<f64>(), "{backend}: the sea is not darker than the sky");
+        assert!(controls["wind"] == true && controls["fog"] == true, "{backend}: the sea's controls are hidden");
+        browser.js("window.demo.set('scene', 0); return true;").await;
+        assert!(browser.wait_for("window.demo.stats().scene === 'pool'", Duration::from_secs(20)).await);
+        let state = browser
+            .js("const root = document.querySelector('#pool').shadowRoot;
+                 return { error: document.querySelector('#pool').dataset.error || null,
+                          wind: !root.querySelector('[name=sea_wind]').closest('.row').hidden };")
+            .await;
+        assert!(state["error"].is_null() && state["wind"] == false, "{backend}: back in the pool: {state}");
+        browser.close().await;
+    }
+}

@@ -12,7 +12,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("parameter types", &["param_spec"]),
     ("gpu plumbing", &["gpu", "timing"]),
     ("simulation", &["sim"]),
-    ("features", &["physics", "optics", "ambient", "bodies", "sky"]),
+    ("features", &["physics", "optics", "ambient", "bodies", "sky", "sea"]),
     ("renderer", &["render", "textures"]),
     ("app", &["params", "demo", "presets", "quality"]),
     ("shells", &["web", "headless", "viewer", "cli", "main"]),

@@ -68,7 +68,7 @@ impl GpuOcean {
         }
         let target = || FullscreenTarget { format: FORMAT, blend: None, depth: None };
         let constants = super::wgsl_constants();
-        let parts = [constants.as_str(), gpu::wgsl::MATH, include_str!("../../shaders/ambient_fft.wgsl")];
+        let parts = [constants.as_str(), gpu::wgsl::MATH, crate::wgsl!("ambient_fft.wgsl")];
         let chain = |label: &str, entry: &str| {
             let fields = PingPong::new(device, label, size, size, FORMAT, true);
             let views = [0, 1].map(|i| fields.textures()[i].create_view(&Default::default()));

@@ -52,7 +52,7 @@ pub const KIND: BodyKind = BodyKind {
     // A point on the unit sphere.
     vertex: &wgpu::vertex_attr_array![0 => Float32x3],
     vertex_stride: 12,
-    wgsl: include_str!("../../shaders/body_ball.wgsl"),
+    wgsl: crate::wgsl!("body_ball.wgsl"),
     wgsl_constants: String::new,
     edge: true,
 };

@@ -41,7 +41,7 @@ pub const KIND: BodyKind = BodyKind {
     // Position and normal in the duck's frame, linear colour.
     vertex: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
     vertex_stride: 36,
-    wgsl: include_str!("../../shaders/body_duck.wgsl"),
+    wgsl: crate::wgsl!("body_duck.wgsl"),
     wgsl_constants: || format!("const DUCK_PARTS: i32 = {};\n", TRACED_PARTS.len()),
     edge: false,
 };

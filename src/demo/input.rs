@@ -92,6 +92,10 @@ impl WaterDemo {
     /// water starts drawing ripples, elsewhere starts orbiting.
     pub fn pointer_down(&mut self, x: f32, y: f32) {
         let p = Vec2::new(x, y);
+        if self.scene() == crate::sea::SceneKind::Sea {
+            self.drag = Drag::Orbit { last: p }; // the sea takes no drops yet
+            return;
+        }
         if self.over_divider(x) {
             self.drag = Drag::Divider;
             return;

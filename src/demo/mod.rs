@@ -5,6 +5,7 @@
 mod bodies;
 mod input;
 mod options;
+mod sea;
 mod view;
 
 use glam::{Vec2, Vec3};
@@ -77,6 +78,11 @@ pub struct WaterDemo {
     gpu_ocean: Option<GpuOcean>,
     /// Whether the renderer holds the current ambient waves' spectrum image.
     spectrum_shown: bool,
+    /// The scene `camera` belongs to, and the other scene's camera, kept for its return.
+    camera_scene: crate::sea::SceneKind,
+    other_camera: OrbitCamera,
+    /// The open sea's waves, once the sea has been shown.
+    sea: Option<sea::Sea>,
 }
 
 /// A demo made in steps, each short enough to leave a browser's thread responsive (at most
@@ -158,6 +164,9 @@ impl WaterDemo {
             ocean_on_gpu: options.float_targets,
             gpu_ocean: None,
             spectrum_shown: false,
+            camera_scene: crate::sea::SceneKind::Pool,
+            other_camera: crate::sea::default_camera(),
+            sea: None,
         };
         demo.refresh_ambient();
         demo.place_bodies_at_start();
@@ -170,6 +179,9 @@ impl WaterDemo {
     /// at once: over a second on WebGL2 without a GPU).
     pub fn build_ahead(&mut self, device: &wgpu::Device, size: (u32, u32)) -> bool {
         self.follow_params(size);
+        if self.scene() == crate::sea::SceneKind::Sea {
+            return true; // the sea's two pipelines are built with its first frame
+        }
         if self.params.get(ParamId::Quality) > 0.0 {
             self.choose_render_scale(0.0); // a fixed scale (the automatic one observes frames)
         }
@@ -181,7 +193,8 @@ impl WaterDemo {
     /// pixels: the viewport, the camera's clearance over the deck, the ambient waves, the foam.
     fn follow_params(&mut self, size: (u32, u32)) {
         self.set_viewport(size.0, size.1);
-        if self.on_deck() {
+        self.sync_scene();
+        if self.on_deck() && self.camera_scene == crate::sea::SceneKind::Pool {
             // The camera stays above the paving.
             self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
         }
@@ -329,6 +342,10 @@ impl WaterDemo {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
         self.follow_params(size);
+        if self.camera_scene == crate::sea::SceneKind::Sea {
+            self.encode_sea_frame(device, queue, encoder, target, size, frame_time, mark);
+            return;
+        }
         self.choose_render_scale(frame_time);
         let steps = self.take_steps(frame_time);
         let pushes = self.step_bodies(steps);

@@ -62,7 +62,7 @@ impl CausticsMips {
         let pass = FullscreenPass::new(
             device,
             "caustics mip",
-            &[include_str!("../../shaders/caustics_mip.wgsl")],
+            &[crate::wgsl!("caustics_mip.wgsl")],
             "fs_caustics_mip",
             &[&layout],
             FullscreenTarget { format, blend: None, depth: None },

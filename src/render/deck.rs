@@ -27,7 +27,7 @@ const HORIZON_LIFT: f32 = 0.01;
 pub const HORIZON_TERMS: usize = 5; // written out in horizon_colour (deck_shade.wgsl)
 
 /// The deck's fragment shader (its vertices go through the pool's `vs_pool`).
-pub const WGSL: &str = include_str!("../../shaders/deck.wgsl");
+pub const WGSL: &str = crate::wgsl!("deck.wgsl");
 
 /// The deck's WGSL constants.
 pub fn wgsl_constants() -> String {

@@ -272,10 +272,7 @@ impl FlatWater {
             let module = gpu::shader(
                 device,
                 "flat water",
-                &[
-                    &super::shaders::scene_prelude(features, targets.format),
-                    include_str!("../../shaders/flat_water.wgsl"),
-                ],
+                &[&super::shaders::scene_prelude(features, targets.format), crate::wgsl!("flat_water.wgsl")],
             );
             mesh_pipeline(
                 device,

@@ -10,6 +10,7 @@ mod meshes;
 mod passes;
 mod regions;
 mod resources;
+mod sea;
 mod shaders;
 mod uniforms;
 mod upscale;
@@ -29,6 +30,7 @@ pub use deck::EYE_CLEARANCE;
 use flat::FlatWater;
 use meshes::{pool_box, GridMesh, Mesh};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
+pub use sea::{SeaView, SEA_CASCADES};
 use uniforms::SceneUniforms;
 use upscale::Upscale;
 pub use variants::Features;
@@ -116,6 +118,8 @@ pub struct Renderer {
     object_regions: bool,
     /// The bodies' outlines are blended in (`BodyKind::edge`); off for tests to compare with.
     body_outlines: bool,
+    /// The open sea's pipelines and maps, once it has been drawn.
+    sea: Option<sea::SeaRenderer>,
 }
 
 impl Renderer {
@@ -190,6 +194,7 @@ impl Renderer {
             upscale: Upscale::new(device, settings.target_format),
             object_regions: true,
             body_outlines: true,
+            sea: None,
         }
     }
 

@@ -5,22 +5,22 @@
 use super::variants::Features;
 use crate::gpu;
 
-pub const COMMON: &str = include_str!("../../shaders/common.wgsl");
+pub const COMMON: &str = crate::wgsl!("common.wgsl");
 /// The scene's shared shading, in parts of one concept each (see `shaders/scene.wgsl`).
 pub const SCENE: [&str; 7] = [
-    include_str!("../../shaders/scene.wgsl"),
-    include_str!("../../shaders/scene_surface.wgsl"),
-    include_str!("../../shaders/scene_light.wgsl"),
-    include_str!("../../shaders/scene_bodies.wgsl"),
-    include_str!("../../shaders/scene_optics.wgsl"),
-    include_str!("../../shaders/scene_trace.wgsl"),
-    include_str!("../../shaders/deck_shade.wgsl"),
+    crate::wgsl!("scene.wgsl"),
+    crate::wgsl!("scene_surface.wgsl"),
+    crate::wgsl!("scene_light.wgsl"),
+    crate::wgsl!("scene_bodies.wgsl"),
+    crate::wgsl!("scene_optics.wgsl"),
+    crate::wgsl!("scene_trace.wgsl"),
+    crate::wgsl!("deck_shade.wgsl"),
 ];
-pub const SKY: &str = include_str!("../../shaders/sky.wgsl");
-pub const POOL: &str = include_str!("../../shaders/pool.wgsl");
-pub const WATER: &str = include_str!("../../shaders/water.wgsl");
-pub const CAUSTICS: &str = include_str!("../../shaders/caustics.wgsl");
-pub const DEBUG_VIEW: &str = include_str!("../../shaders/debug_view.wgsl");
+pub const SKY: &str = crate::wgsl!("sky.wgsl");
+pub const POOL: &str = crate::wgsl!("pool.wgsl");
+pub const WATER: &str = crate::wgsl!("water.wgsl");
+pub const CAUSTICS: &str = crate::wgsl!("caustics.wgsl");
+pub const DEBUG_VIEW: &str = crate::wgsl!("debug_view.wgsl");
 
 /// Everything a scene pass of `features` starts from: the variant's constants, the numbers of
 /// the features the scene shows (water's refractive index, optics, ambient waves, flat water,

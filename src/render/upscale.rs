@@ -21,7 +21,7 @@ impl Upscale {
         let pass = FullscreenPass::new(
             device,
             "upscale",
-            &[include_str!("../../shaders/upscale.wgsl")],
+            &[crate::wgsl!("upscale.wgsl")],
             "fs_upscale",
             &[&layout],
             FullscreenTarget { format, blend: None, depth: None },

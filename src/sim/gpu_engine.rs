@@ -11,12 +11,12 @@ use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
 /// The simulation's WGSL: its uniforms (`SHARED`) and one file per pass.
 mod wgsl {
-    pub const SHARED: &str = include_str!("../../shaders/sim_shared.wgsl");
-    pub const DROP: &str = include_str!("../../shaders/sim_drop.wgsl");
-    pub const UPDATE: &str = include_str!("../../shaders/sim_update.wgsl");
-    pub const NORMALS: &str = include_str!("../../shaders/sim_normals.wgsl");
-    pub const RESAMPLE: &str = include_str!("../../shaders/sim_resample.wgsl");
-    pub const MEAN: &str = include_str!("../../shaders/sim_mean.wgsl");
+    pub const SHARED: &str = crate::wgsl!("sim_shared.wgsl");
+    pub const DROP: &str = crate::wgsl!("sim_drop.wgsl");
+    pub const UPDATE: &str = crate::wgsl!("sim_update.wgsl");
+    pub const NORMALS: &str = crate::wgsl!("sim_normals.wgsl");
+    pub const RESAMPLE: &str = crate::wgsl!("sim_resample.wgsl");
+    pub const MEAN: &str = crate::wgsl!("sim_mean.wgsl");
 }
 
 /// The sizes of `SimUniforms`' arrays and one step's share of the hull slots, for

@@ -1,0 +1,181 @@
+// The open sea (render/sea.rs). A grid laid over the screen is projected along the eye's rays
+// onto the mean sea plane (capped GRID_FAR away), so its cells stay about the same size in
+// pixels from the bow to the horizon; each vertex is then moved by the FFT cascades (heights,
+// and the choppy sideways carry x0 - lambda D). Each pixel is lit from the slopes at its rest
+// point: the sky mirrored with Fresnel's reflectance, the sun's glint, the deep water's own
+// scattered light. A cascade whose texels the pixel's footprint outgrows fades out and its
+// slope variance widens the glint instead (Toksvig), so the far sea does not sparkle. A haze
+// thinning with height, e^(-y/H), takes water and sky to the sky's horizon colour.
+
+struct Sea {
+    eye: vec4<f32>,                // xyz eye (m)
+    right: vec4<f32>,              // camera's right times tan(half the field across)
+    up: vec4<f32>,                 // camera's up times tan(half the field down)
+    forward: vec4<f32>,            // camera's forward
+    grid: vec4<f32>,               // the grid's screen rectangle (NDC): x from, x to, y from, y to
+    cells: vec4<f32>,              // columns, rows, choppiness lambda, a cell's angle (rad)
+    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m), all slopes' variance
+    cascades: array<vec4<f32>, 5>, // cos, sin of the cascade's turn, its tile (m), slope variance
+}
+
+@group(2) @binding(0) var<uniform> sea: Sea;
+// The five cascades' lattices side by side (SEA_LATTICE texels each, in their own frames):
+// height (m), slopes dh/dx, dh/dz, dDx/dz; and the displacement Dx, Dz (m), dDx/dx, dDz/dz.
+@group(2) @binding(1) var sea_surface: texture_2d<f32>;
+@group(2) @binding(2) var sea_displacement: texture_2d<f32>;
+
+const CASCADES: i32 = 5;
+// A cascade is whole while a footprint spans at most FADE_TEXELS of its texels, gone at twice.
+const FADE_TEXELS: f32 = 2.0;
+// Distance (m) standing for "to infinity" along a ray into the sky.
+const FAR_AWAY: f32 = 1.0e7;
+
+// Cascade c of an atlas of the five lattices side by side, at local point p (m), read between
+// its four nearest texels and wrapped (its tile repeats; texel centres at -W + (i + 1/2) tile/N).
+fn cascade_texel(map: texture_2d<f32>, c: i32, p: vec2<f32>, tile: f32) -> vec4<f32> {
+    let n = f32(SEA_LATTICE);
+    let s = p / tile * n + 0.5 * n - 0.5;
+    let f = floor(s);
+    let w = s - f;
+    let i = vec2<i32>(f);
+    let a = (i % SEA_LATTICE + SEA_LATTICE) % SEA_LATTICE;
+    let b = (a + 1) % SEA_LATTICE;
+    let x0 = c * SEA_LATTICE;
+    let t00 = textureLoad(map, vec2<i32>(x0 + a.x, a.y), 0);
+    let t10 = textureLoad(map, vec2<i32>(x0 + b.x, a.y), 0);
+    let t01 = textureLoad(map, vec2<i32>(x0 + a.x, b.y), 0);
+    let t11 = textureLoad(map, vec2<i32>(x0 + b.x, b.y), 0);
+    return mix(mix(t00, t10, w.x), mix(t01, t11, w.x), w.y);
+}
+
+// World point (x, z) in cascade c's frame, and a vector of its frame in the world's.
+fn to_cascade(c: i32, p: vec2<f32>) -> vec2<f32> {
+    let r = sea.cascades[c].xy;
+    return vec2<f32>(r.x * p.x + r.y * p.y, -r.y * p.x + r.x * p.y);
+}
+fn from_cascade(c: i32, v: vec2<f32>) -> vec2<f32> {
+    let r = sea.cascades[c].xy;
+    return vec2<f32>(r.x * v.x - r.y * v.y, r.y * v.x + r.x * v.y);
+}
+
+// How much of cascade c a footprint (m) keeps: 1 while its texels are finer than FADE_TEXELS
+// of them, 0 from twice that.
+fn cascade_weight(c: i32, footprint: f32) -> f32 {
+    let texels = footprint * f32(SEA_LATTICE) / sea.cascades[c].z;
+    return clamp(2.0 - texels / FADE_TEXELS, 0.0, 1.0);
+}
+
+// Where the eye's ray along dir meets the sea plane (xz, m), at most GRID_FAR away across.
+fn rest_point(dir: vec3<f32>) -> vec2<f32> {
+    let across = max(length(dir.xz), 1.0e-6);
+    let to_plane = select(FAR_AWAY, sea.eye.y / -dir.y, dir.y < 0.0);
+    return sea.eye.xz + dir.xz * min(to_plane, GRID_FAR / across);
+}
+
+// Optical depth of the haze along `dist` m of a ray from the eye in unit direction dir:
+// (1/L) e^(-y0/H) times the integral of e^(-dir.y t / H) over the path, which for a ray into
+// the sky is H / dir.y. A ray skimming down to the sea far off takes at least the depth of the
+// ray as far above the horizon: both sides of the horizon meet in the same haze, with no seam.
+fn haze_depth(dir: vec3<f32>, dist: f32) -> f32 {
+    let h = sea.fog.y;
+    let k = max(dir.y * dist / h, -40.0);
+    let shape = select((1.0 - exp(-k)) / k, 1.0 - 0.5 * k, abs(k) < 1.0e-3);
+    let skim = h / max(abs(dir.y), 1.0e-6);
+    return sea.fog.x * exp(-sea.eye.y / h) * max(dist * shape, skim);
+}
+
+// Light arriving at the eye from `colour` `dist` m away along dir through the haze, which
+// glows with the sky's colour at the horizon in that direction.
+fn through_haze(colour: vec3<f32>, dir: vec3<f32>, dist: f32) -> vec3<f32> {
+    let horizon = normalize(vec3<f32>(dir.x, HORIZON_LIFT * length(dir.xz), dir.z));
+    let haze = textureSampleLevel(sky_cube, clamp_sampler, horizon, 0.0).rgb * SKY_RANGE;
+    return mix(haze, colour, exp(-haze_depth(dir, dist)));
+}
+
+// The light the deep water sends back up: what it scatters of the sun's and the sky's light.
+fn deep_water() -> vec3<f32> {
+    return DEEP_WATER_ALBEDO * (sky_light() + sun_light() * max(scene.sun.y, 0.0));
+}
+
+// The sea's colour seen along unit v with surface normal n: the mirrored sky and sun by
+// Fresnel's reflectance, over the deep water's light. rough: the rms slope of the waves too
+// small to be drawn here; their facets face the eye by about that much even where the drawn
+// surface is seen edge-on, so a rough sea mirrors less at grazing than a smooth one (the sea
+// at the horizon is darker than the sky above it).
+fn sea_colour(v: vec3<f32>, n: vec3<f32>, rough: f32) -> vec3<f32> {
+    var r = reflect(v, n);
+    r.y = abs(r.y); // a ray mirrored down runs into the next wave: it sees the sky as well
+    let f = reflectance(max(dot(-v, n), rough), IOR_AIR / IOR_WATER);
+    return mix(deep_water(), sky_colour(r) + sun_specular(r, n), f);
+}
+
+struct SeaOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) rest: vec2<f32>,
+}
+
+// Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
+@vertex
+fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
+    let columns = u32(sea.cells.x);
+    let quad = index / 6u;
+    let corner = index % 6u;
+    let dx = select(0u, 1u, corner == 1u || corner == 2u || corner == 4u);
+    let dy = select(0u, 1u, corner == 2u || corner == 4u || corner == 5u);
+    let g = vec2<f32>(f32(quad % columns + dx), f32(quad / columns + dy)) / sea.cells.xy;
+    let ndc = mix(sea.grid.xz, sea.grid.yw, g);
+    let dir = normalize(sea.forward.xyz + ndc.x * sea.right.xyz + ndc.y * sea.up.xyz);
+    let rest = rest_point(dir);
+    // The cell's length on the water along the ray (m): its angle over the grazing angle.
+    let dist = distance(rest, sea.eye.xz);
+    let footprint = sea.cells.w * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
+    var height = 0.0;
+    var carry = vec2<f32>(0.0);
+    for (var c = 0; c < CASCADES; c++) {
+        let w = cascade_weight(c, footprint);
+        let local = to_cascade(c, rest);
+        height += w * cascade_texel(sea_surface, c, local, sea.cascades[c].z).x;
+        carry += w * from_cascade(c, cascade_texel(sea_displacement, c, local, sea.cascades[c].z).xy);
+    }
+    var out: SeaOut;
+    let moved = rest - sea.cells.z * carry;
+    out.world = vec3<f32>(moved.x, height, moved.y);
+    out.rest = rest;
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
+    let footprint = max(length(dpdx(in.rest)), length(dpdy(in.rest)));
+    var slope = vec2<f32>(0.0);
+    var removed = 0.0;
+    for (var c = 0; c < CASCADES; c++) {
+        let w = cascade_weight(c, footprint);
+        let s = cascade_texel(sea_surface, c, to_cascade(c, in.rest), sea.cascades[c].z).yz;
+        slope += w * from_cascade(c, s);
+        removed += (1.0 - w * w) * sea.cascades[c].w;
+    }
+    let n = normalize(vec3<f32>(-slope.x, 1.0, -slope.y));
+    // The slopes left out, and those varying within the pixel, spread the glint (Toksvig).
+    let dn = dot(dpdx(n), dpdx(n)) + dot(dpdy(n), dpdy(n));
+    specular_spread = 1.0 / (1.0 + scene.optics.x * (0.5 * removed + dn / 24.0));
+    let to_point = in.world - sea.eye.xyz;
+    let dist = length(to_point);
+    let v = to_point / dist;
+    return finish(through_haze(sea_colour(v, n, sqrt(removed)), v, dist));
+}
+
+// Where the grid drew nothing: the sky, and between the grid's far edge and the horizon the sea
+// at infinity (its mean surface, level), both through the haze.
+@fragment
+fn fs_sea_sky(in: FullscreenOut) -> @location(0) vec4<f32> {
+    let ndc = vec2<f32>(in.uv.x * 2.0 - 1.0, 1.0 - in.uv.y * 2.0);
+    let dir = normalize(sea.forward.xyz + ndc.x * sea.right.xyz + ndc.y * sea.up.xyz);
+    let below = dir.y < 0.0;
+    let level = vec3<f32>(0.0, 1.0, 0.0);
+    let colour = select(sky_colour(dir), sea_colour(dir, level, sqrt(sea.fog.z)), below);
+    let dist = select(FAR_AWAY, sea.eye.y / -dir.y, below);
+    return finish(through_haze(colour, dir, dist));
+}

@@ -1,0 +1,235 @@
+//! Drawing the open sea (`shaders/sea.wgsl`): the projected grid, which has no vertex buffer
+//! (its vertices come from their index, a cell about every [`GRID_CELL_PX`] pixels), and the
+//! sky pass behind it. The grid covers the screen from a margin below its bottom edge up to
+//! the horizon of [`GRID_FAR`]; the margin is what the largest waves can pull the grid's edge
+//! in by, so the moved edge never uncovers the background. The cascades' maps are filled by
+//! the caller (the CPU's FFT) each frame.
+
+use glam::{Vec2, Vec3};
+
+use super::{shaders, Features, Renderer, DEPTH_FORMAT};
+use crate::camera::OrbitCamera;
+use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::sea::{FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE};
+
+/// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
+pub const SEA_CASCADES: usize = 5;
+
+const WGSL: &str = crate::wgsl!("sea.wgsl");
+
+/// What a frame of the sea depends on besides the scene's [`super::View`].
+pub struct SeaView<'a> {
+    pub camera: &'a OrbitCamera,
+    /// The fog's distance at sea level (m); `None`: no fog.
+    pub fog_distance: Option<f32>,
+    /// Choppiness λ the displacement maps are carried by.
+    pub choppiness: f32,
+    /// About the highest crest above the mean level (m).
+    pub crest: f32,
+    /// Per cascade: its turn from the world's axes (rad), its tile (m), its slopes' variance.
+    pub cascades: [(f32, f32, f32); SEA_CASCADES],
+    /// The cascades' lattices side by side, rows of `SEA_CASCADES * SEA_LATTICE` texels:
+    /// (h, dh/dx, dh/dz, dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
+    pub surface: &'a [[f32; 4]],
+    pub displacement: &'a [[f32; 4]],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct SeaUniforms {
+    eye: [f32; 4],
+    right: [f32; 4],
+    up: [f32; 4],
+    forward: [f32; 4],
+    grid: [f32; 4],
+    cells: [f32; 4],
+    fog: [f32; 4],
+    cascades: [[f32; 4]; SEA_CASCADES],
+}
+
+/// The sea's pipelines and maps, made the first time the sea is drawn.
+pub struct SeaRenderer {
+    uniforms: wgpu::Buffer,
+    maps: [wgpu::Texture; 2],
+    group: wgpu::BindGroup,
+    /// The feature set (optics models) the pipelines were built for.
+    features: Features,
+    grid: wgpu::RenderPipeline,
+    sky: FullscreenPass,
+}
+
+impl SeaRenderer {
+    fn new(renderer: &Renderer, device: &wgpu::Device, features: Features) -> Self {
+        let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sea layout"),
+            entries: &[gpu::uniform_entry(0, vis), gpu::float_texture_entry(1, vis), gpu::float_texture_entry(2, vis)],
+        });
+        let uniforms = gpu::uniform_buffer(device, "sea uniforms", &<SeaUniforms as bytemuck::Zeroable>::zeroed());
+        let map = |label| {
+            let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+            let (w, h) = ((SEA_CASCADES * SEA_LATTICE) as u32, SEA_LATTICE as u32);
+            gpu::texture_2d(device, label, w, h, 1, 1, wgpu::TextureFormat::Rgba32Float, usage)
+        };
+        let maps = [map("sea surface"), map("sea displacement")];
+        let views = maps.each_ref().map(|m| m.create_view(&Default::default()));
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sea"),
+            layout: &layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&views[0]) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&views[1]) },
+            ],
+        });
+        let format = renderer.settings.target_format;
+        let prelude = [shaders::scene_prelude(features, format), crate::sea::wgsl_constants()].join("\n");
+        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout];
+        let module = gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude, WGSL]);
+        let grid = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("sea grid"),
+            layout: Some(&gpu::pipeline_layout(device, "sea grid", &layouts)),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_sea"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_sea"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let sky = FullscreenPass::new(
+            device,
+            "sea sky",
+            &[&prelude, WGSL],
+            "fs_sea_sky",
+            &layouts,
+            FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
+        );
+        Self { uniforms, maps, group, features, grid, sky }
+    }
+}
+
+/// The camera's basis scaled to its field of view: right and up times the tangents of half the
+/// field across and down, and forward.
+fn camera_basis(camera: &OrbitCamera, aspect: f32) -> (Vec3, Vec3, Vec3) {
+    let forward = (camera.target - camera.eye()).normalize();
+    let right = forward.cross(Vec3::Y).normalize();
+    let up = right.cross(forward);
+    let tan_y = (camera.fov_y.to_radians() * 0.5).tan();
+    (right * tan_y * aspect, up * tan_y, forward)
+}
+
+/// The grid's screen rectangle (NDC x from, x to, y from, y to), its cells across and down,
+/// and a cell's angle (rad), for a target of `size` pixels.
+fn grid_layout(sea: &SeaView<'_>, size: (u32, u32)) -> ([f32; 4], (u32, u32), f32) {
+    let aspect = size.0 as f32 / size.1.max(1) as f32;
+    let (_, up, forward) = camera_basis(sea.camera, aspect);
+    let eye = sea.camera.eye();
+    // The margin: the largest sideways carry and heave, seen at the nearest water in view.
+    let bottom = (forward - up).normalize();
+    let nearest = if bottom.y < 0.0 { eye.y / -bottom.y } else { GRID_FAR };
+    let reach = sea.crest * (1.0 + sea.choppiness);
+    let margin = (reach / (nearest * up.length())).clamp(0.02, 0.5);
+    // The horizon of the grid's far edge, straight ahead.
+    let ahead = Vec2::new(forward.x, forward.z).normalize_or(Vec2::X) * GRID_FAR;
+    let far_edge = Vec3::new(ahead.x, -eye.y, ahead.y);
+    let horizon = far_edge.dot(up) / up.length_squared() / far_edge.dot(forward);
+    let top = (horizon + 0.02).min(1.0 + margin);
+    let rect = [-1.0 - margin, 1.0 + margin, -1.0 - margin, top.max(-1.0)];
+    let cells_for =
+        |span: f32, pixels: u32, most: u32| ((span * 0.5 * pixels as f32 / GRID_CELL_PX).ceil() as u32).clamp(1, most);
+    let cells = (
+        cells_for(rect[1] - rect[0], size.0, GRID_MAX_CELLS.0),
+        cells_for(rect[3] - rect[2], size.1, GRID_MAX_CELLS.1),
+    );
+    let angle = (rect[3] - rect[2]) / cells.1 as f32 * up.length();
+    (rect, cells, angle)
+}
+
+impl Renderer {
+    /// Draws the sea into `target` (`size` pixels), after [`Renderer::prepare`] wrote this
+    /// frame's scene uniforms for `view` (the sea camera's, with no bodies, caustics or deck).
+    #[allow(clippy::too_many_arguments)]
+    pub fn encode_sea(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        view: &super::View,
+        sea: &SeaView<'_>,
+    ) {
+        let features = Features::of(view);
+        if self.sea.as_ref().is_none_or(|s| s.features != features) {
+            self.sea = Some(SeaRenderer::new(self, device, features));
+        }
+        let drawn = self.sea.as_ref().expect("made above");
+        let (rect, cells, angle) = grid_layout(sea, size);
+        let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
+        let u = SeaUniforms {
+            eye: sea.camera.eye().extend(1.0).to_array(),
+            right: right.extend(0.0).to_array(),
+            up: up.extend(0.0).to_array(),
+            forward: forward.extend(0.0).to_array(),
+            grid: rect,
+            cells: [cells.0 as f32, cells.1 as f32, sea.choppiness, angle],
+            fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, sea.cascades.iter().map(|c| c.2).sum(), 0.0],
+            cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
+        };
+        queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
+        gpu::write_texture_2d(queue, &drawn.maps[0], 0, bytemuck::cast_slice(sea.surface));
+        gpu::write_texture_2d(queue, &drawn.maps[1], 0, bytemuck::cast_slice(sea.displacement));
+        let depth = self.depth_view(device, size).clone();
+        let drawn = self.sea.as_ref().expect("made above");
+        let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
+        let groups = [&self.water_groups[0], &self.textures_group, &drawn.group];
+        pass.set_pipeline(&drawn.grid);
+        for (i, group) in groups.iter().enumerate() {
+            pass.set_bind_group(i as u32, Some(*group), &[]);
+        }
+        pass.draw(0..cells.0 * cells.1 * 6, 0..1);
+        drawn.sky.draw(&mut pass, &groups);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_grid_reaches_below_the_screen_and_up_to_the_horizon() {
+        let camera = crate::sea::default_camera();
+        let sea = SeaView {
+            camera: &camera,
+            fog_distance: None,
+            choppiness: 1.0,
+            crest: 1.2,
+            cascades: [(0.0, 1.0, 0.0); SEA_CASCADES],
+            surface: &[],
+            displacement: &[],
+        };
+        let (rect, cells, angle) = grid_layout(&sea, (800, 600));
+        println!("grid {rect:?}, {cells:?} cells, {angle} rad a cell");
+        assert!(rect[0] < -1.0 && rect[1] > 1.0 && rect[2] < -1.0, "a margin past the screen's edges");
+        // Looking 9° down with a 22.5° half field the horizon is on the screen's upper half.
+        assert!(rect[3] > 0.0 && rect[3] < 1.0, "the grid stops at the horizon, {}", rect[3]);
+        assert!(cells.0 <= GRID_MAX_CELLS.0 && cells.1 <= GRID_MAX_CELLS.1 && cells.0 >= 100);
+    }
+}

@@ -1,0 +1,203 @@
+//! The open sea (`scene` = sea): water to the horizon under the same sky as the pool, its waves
+//! the FFT cascades of [`crate::ambient::cascades`], drawn on a grid projected from the screen
+//! onto the sea plane (render/sea.rs), with a height fog that takes water and sky to one colour
+//! at the horizon. This file holds the scene's choice, its parameters and its camera's limits.
+//! Lengths in metres, angles in degrees.
+
+use glam::Vec3;
+
+use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
+use crate::camera::{CameraLimits, OrbitCamera};
+use crate::param_spec::{slider, Control, ParamSpec};
+
+/// Which scene is drawn: the pool, or the open sea.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SceneKind {
+    #[default]
+    Pool,
+    Sea,
+}
+
+impl SceneKind {
+    pub fn from_param(value: f32) -> Self {
+        if value.round() == 1.0 {
+            SceneKind::Sea
+        } else {
+            SceneKind::Pool
+        }
+    }
+}
+
+/// The sea's camera: from a few metres to 600 m from its target on the water, looking down at
+/// least 2° (the horizon stays in view from any height), with a far plane past the grid's
+/// reach ([`GRID_FAR`]).
+pub const SEA_LIMITS: CameraLimits =
+    CameraLimits { pitch: (2.0, 89.0), distance: (3.0, 600.0), near: 0.25, far: 30_000.0 };
+
+/// How far the projected grid reaches over the sea (m, horizontally): inside the far plane. Past
+/// it the sky pass draws the sea at infinity, where the fog has taken it.
+pub const GRID_FAR: f32 = 0.9 * SEA_LIMITS.far;
+const _: () = assert!(GRID_FAR < SEA_LIMITS.far);
+/// Screen pixels per cell of the projected grid, and the most cells across and down.
+pub const GRID_CELL_PX: f32 = 8.0;
+pub const GRID_MAX_CELLS: (u32, u32) = (160, 120);
+/// Lattice points per side of each cascade.
+pub const SEA_LATTICE: usize = 64;
+/// Absorption (1/m) of clear sea water at red, green and blue light (pure water's, about 650,
+/// 530 and 450 nm), and the share of light its molecules and particles scatter back (1/m).
+pub const SEA_ABSORPTION: [f32; 3] = [0.35, 0.05, 0.015];
+pub const SEA_BACKSCATTER: f32 = 0.002;
+
+/// The deep sea's albedo per channel: as a diffuse reflector it sends back about a third of
+/// b_b / (a + b_b) of the light falling on it (Gordon's approximation of the irradiance
+/// reflectance below the surface).
+pub fn deep_water_albedo() -> [f32; 3] {
+    SEA_ABSORPTION.map(|a| 0.33 * SEA_BACKSCATTER / (a + SEA_BACKSCATTER))
+}
+
+/// The fog's scale height (m): its density falls by e every this much above the sea.
+pub const FOG_HEIGHT: f32 = 100.0;
+/// The eye's clearance over the highest crest (m): the camera never goes into a wave.
+pub const EYE_OVER_CRESTS: f32 = 1.0;
+
+/// The camera the sea starts with: 40 m from a target on the water, 9° above the horizon.
+pub fn default_camera() -> OrbitCamera {
+    OrbitCamera { yaw: -25.0, pitch: 9.0, distance: 40.0, target: Vec3::ZERO, fov_y: 45.0, limits: SEA_LIMITS }
+}
+
+/// The sea's settings, from its parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SeaSettings {
+    /// Wind speed (m/s) and the direction it blows towards (degrees from +x towards +z).
+    pub wind_speed: f32,
+    pub wind_direction: f32,
+    /// Significant wave height H_s (m).
+    pub wave_height: f32,
+    /// Choppiness λ of the cascades (0: heights only).
+    pub choppiness: f32,
+    /// The fog's distance at sea level (m): light over it is dimmed to 1/e; `None`: no fog.
+    pub fog_distance: Option<f32>,
+}
+
+impl SeaSettings {
+    /// The settings from the values of [`PARAMS`], `value` giving each by its name.
+    pub fn from_values(value: impl Fn(&str) -> f32) -> Self {
+        Self {
+            wind_speed: value("sea_wind"),
+            wind_direction: value("sea_wind_direction"),
+            wave_height: value("sea_wave_height"),
+            choppiness: value("sea_choppiness"),
+            fog_distance: (value("sea_fog") >= 0.5).then(|| value("sea_fog_distance")),
+        }
+    }
+
+    /// The waves' settings for [`crate::ambient::cascades::SeaWaves::new`]: a JONSWAP sea.
+    pub fn waves(&self) -> AmbientSettings {
+        AmbientSettings {
+            model: AmbientModel::Fft,
+            wind_speed: self.wind_speed,
+            wind_direction_deg: self.wind_direction,
+            significant_height: self.wave_height,
+            spread_deg: 60.0,
+            spectrum: Spectrum::Jonswap,
+            fft_size: SEA_LATTICE,
+            choppiness: self.choppiness,
+            ..Default::default()
+        }
+    }
+
+    /// About the highest a crest stands above the mean level (m): a sea's largest waves are
+    /// about twice its significant height from trough to crest.
+    pub fn crest_bound(&self) -> f32 {
+        self.wave_height
+    }
+}
+
+/// The scene's choice (the pool's parameters stay as they are while the sea is shown).
+pub const SCENE_PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "scene",
+    label: "Scene",
+    group: "Scene",
+    unit: "",
+    control: Control::Choice { values: &[0.0, 1.0], names: &["pool", "sea"] },
+    default: 0.0,
+    help: "The pool, or the open sea to the horizon under the same sky.",
+}];
+
+/// The sea's own parameters (shown only with `scene` sea).
+pub const PARAMS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "sea_wind",
+        label: "Wind",
+        group: "Scene",
+        unit: "m/s",
+        control: slider(2.0, 25.0, 0.5),
+        default: 8.0,
+        help: "Wind speed over the sea: stronger wind puts the waves' energy at longer wavelengths.",
+    },
+    ParamSpec {
+        name: "sea_wind_direction",
+        label: "Wind direction",
+        group: "Scene",
+        unit: "°",
+        control: slider(0.0, 360.0, 1.0),
+        default: 30.0,
+        help: "Direction the wind blows towards, from +x towards +z.",
+    },
+    ParamSpec {
+        name: "sea_wave_height",
+        label: "Wave height",
+        group: "Scene",
+        unit: "m",
+        control: slider(0.1, 8.0, 0.1),
+        default: 1.2,
+        help: "Significant wave height: four standard deviations of the sea's height (about the mean of the highest third of the waves).",
+    },
+    ParamSpec {
+        name: "sea_choppiness",
+        label: "Choppiness",
+        group: "Scene",
+        unit: "",
+        control: slider(0.0, 2.0, 0.05),
+        default: 1.0,
+        help: "How far the water is carried sideways towards the crests, sharpening them (Tessendorf's lambda).",
+    },
+    ParamSpec {
+        name: "sea_fog",
+        label: "Fog",
+        group: "Scene",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "Haze over the sea, thinning with height, taking water and sky to one colour at the horizon.",
+    },
+    ParamSpec {
+        name: "sea_fog_distance",
+        label: "Fog distance",
+        group: "Scene",
+        unit: "m",
+        control: slider(500.0, 20_000.0, 100.0),
+        default: 4000.0,
+        help: "Distance over which the haze at sea level dims light to 37 %.",
+    },
+];
+
+/// The sea's WGSL constants.
+pub fn wgsl_constants() -> String {
+    let [r, g, b] = deep_water_albedo();
+    format!(
+        "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
+         const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sea_camera_starts_above_the_crests() {
+        let camera = default_camera();
+        assert!(camera.eye().y > SeaSettings::from_values(|n| crate::params::find(n).unwrap().default).crest_bound());
+    }
+}

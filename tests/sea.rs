@@ -1,0 +1,103 @@
+//! The open sea (`scene` = sea) on the headless GPU: the horizon where water meets sky, the
+//! picture, and the pool coming back unchanged after it.
+
+mod common;
+
+use common::{demo, render, Frame, Rect};
+use wavepool::demo::{DemoOptions, WaterDemo};
+use wavepool::params::ParamId;
+
+const SIZE: (u32, u32) = (320, 240);
+
+/// A sea demo with its camera at `pitch` (degrees down) and `distance` (m) from its target.
+fn sea(pitch: f32, distance: f32, fog: bool) -> WaterDemo {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 1.0);
+    d.params.set(ParamId::SeaFog, if fog { 1.0 } else { 0.0 });
+    d.sync_scene();
+    d.camera.pitch = pitch;
+    d.camera.distance = distance;
+    d.camera.clamp();
+    d
+}
+
+/// The row where the horizon (the sea plane's vanishing line) crosses the frame, with the eye
+/// looking `pitch` degrees down: tan(pitch) / tan(half the field) above the middle.
+fn horizon_row(d: &WaterDemo, height: u32) -> f32 {
+    let ndc = d.camera.pitch.to_radians().tan() / (d.camera.fov_y.to_radians() * 0.5).tan();
+    (1.0 - ndc) * 0.5 * height as f32
+}
+
+/// Largest channel difference (0-255) between the pixels `gap` rows clear of the horizon's own
+/// row above and below it (the last water row and the first sky row for 1), per column: the
+/// median over the frame's columns.
+fn horizon_step(frame: &Frame, row: f32, gap: u32) -> f32 {
+    let (above, below) = (row.floor() as u32 - gap, row.ceil() as u32 + gap);
+    let mut steps: Vec<f32> = (0..frame.width)
+        .map(|x| {
+            let (a, b) = (frame.pixel(x, above), frame.pixel(x, below));
+            (0..3).map(|c| (a[c] - b[c]).abs() * 255.0).fold(0.0, f32::max)
+        })
+        .collect();
+    steps.sort_by(f32::total_cmp);
+    steps[steps.len() / 2]
+}
+
+#[test]
+fn the_horizon_has_no_seam_in_the_fog_at_any_height_and_shows_one_without() {
+    // Eyes about 2, 40 and 200 m above the sea, the horizon on the screen's upper half.
+    for (pitch, distance) in [(5.0, 25.0), (10.0, 230.0), (19.0, 600.0)] {
+        let mut steps = Vec::new();
+        for fog in [true, false] {
+            let mut d = sea(pitch, distance, fog);
+            let frame = render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0);
+            let row = horizon_row(&d, SIZE.1);
+            steps.push(horizon_step(&frame, row, 1));
+        }
+        let eye = sea(pitch, distance, true).camera.eye().y;
+        println!("eye {eye:.1} m: step across the horizon {:.1}/255 with fog, {:.1}/255 without", steps[0], steps[1]);
+        assert!(steps[0] < 6.0, "a seam at the horizon in the fog from {eye:.1} m: {:.1}/255", steps[0]);
+        assert!(steps[1] >= 12.0, "without fog the sea's edge should show from {eye:.1} m: {:.1}/255", steps[1]);
+    }
+}
+
+#[test]
+fn the_sea_shows_sky_above_and_moving_waves_below() {
+    let mut d = sea(9.0, 40.0, true);
+    let first = render(&mut d, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    let later = render(&mut d, SIZE.0, SIZE.1, 30, 1.0 / 60.0);
+    let row = horizon_row(&d, SIZE.1) / SIZE.1 as f32;
+    let (sky, water) = (Rect(0.0, 0.0, 1.0, row - 0.05), Rect(0.0, row + 0.1, 1.0, 1.0));
+    let (sky_colour, water_colour) = (later.mean_colour(sky), later.mean_colour(water));
+    let (_, water_var) = later.luma_stats(water);
+    let moved = later.changed_fraction(&first, water, 4);
+    println!(
+        "sky {sky_colour:?}, water {water_colour:?}, water luma std {:.3}, {:.0} % of the water changed in 0.5 s",
+        water_var.sqrt(),
+        moved * 100.0
+    );
+    assert!(sky_colour[2] > sky_colour[0] && water_colour[2] > water_colour[0], "sky and sea are blue");
+    assert!(water_colour.iter().sum::<f32>() < sky_colour.iter().sum::<f32>(), "the sea is darker than the sky");
+    assert!(water_var.sqrt() > 0.02, "waves show on the water");
+    assert!(moved > 0.2, "the waves move");
+}
+
+#[test]
+fn the_pool_comes_back_byte_for_byte_after_the_sea() {
+    let paused = |d: &mut WaterDemo| {
+        d.params.set(ParamId::Paused, 1.0);
+    };
+    let mut only_pool = demo(DemoOptions::default());
+    paused(&mut only_pool);
+    let before = render(&mut only_pool, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    let mut visited = demo(DemoOptions::default());
+    paused(&mut visited);
+    visited.params.set(ParamId::Scene, 1.0);
+    let at_sea = render(&mut visited, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    visited.params.set(ParamId::Scene, 0.0);
+    let after = render(&mut visited, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    let sea_differs = at_sea.changed_fraction(&before, Rect(0.0, 0.0, 1.0, 1.0), 16);
+    println!("the sea differs from the pool in {:.0} % of pixels", sea_differs * 100.0);
+    assert!(sea_differs > 0.5, "the sea was not drawn");
+    assert!(before.rgba == after.rgba, "the pool after the sea is not the pool before it");
+}
