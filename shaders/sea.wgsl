@@ -1,7 +1,8 @@
 // The open sea (render/sea.rs). A grid laid over the screen is projected along the eye's rays
 // onto the mean sea plane (capped GRID_FAR away), so its cells stay about the same size in
 // pixels from the bow to the horizon; each vertex is then moved by the FFT cascades (heights,
-// and the choppy sideways carry x0 - lambda D). Each pixel is lit from the slopes at its rest
+// and the choppy sideways carry x0 - lambda D) and the clicks' ripples (a patch of the pool's
+// simulation round the target). Each pixel is lit from the slopes at its rest
 // point: the sky mirrored with Fresnel's reflectance, the sun's glint, the deep water's own
 // scattered light. A cascade whose texels the pixel's footprint outgrows fades out and its
 // slope variance widens the glint instead (Toksvig), so the far sea does not sparkle. A haze
@@ -14,7 +15,8 @@ struct Sea {
     forward: vec4<f32>,            // camera's forward
     grid: vec4<f32>,               // the grid's screen rectangle (NDC): x from, x to, y from, y to
     cells: vec4<f32>,              // columns, rows, choppiness lambda, a cell's angle (rad)
-    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m), all slopes' variance
+    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m), all slopes'
+                                   // variance, whitecaps drawn (1) or not (0, for tests)
     cascades: array<vec4<f32>, 5>, // cos, sin of the cascade's turn, its tile (m), slope variance
 }
 
@@ -65,6 +67,23 @@ fn cascade_weight(c: i32, footprint: f32) -> f32 {
     return clamp(2.0 - texels / FADE_TEXELS, 0.0, 1.0);
 }
 
+// The clicks' ripples at rest point p (m): height (m) and slopes dh/dx, dh/dz of the patch of
+// simulated water (the scene's water state, scene.water.x cells across PATCH_HALF_WIDTH each
+// way; its walls absorb, so it is calm at its edge), 0 outside it. Their waves are ten cells
+// long and more: they fade as the footprint (m) grows from four cells to eight.
+fn ripples_at(p: vec2<f32>, footprint: f32) -> vec3<f32> {
+    let n = i32(scene.water.x);
+    let q = (p / PATCH_HALF_WIDTH * 0.5 + 0.5) * f32(n) - 0.5;
+    let base = floor(q);
+    let i0 = clamp(vec2<i32>(base), vec2<i32>(0), vec2<i32>(n - 1));
+    let i1 = clamp(vec2<i32>(base) + 1, vec2<i32>(0), vec2<i32>(n - 1));
+    let state = bilinear_load(water_state, MapTaps(i0, i1, q - base));
+    let normal = water_normal(state);
+    let cells = footprint * f32(n) / (2.0 * PATCH_HALF_WIDTH);
+    let keep = clamp(2.0 - cells / 4.0, 0.0, 1.0) * f32(all(abs(p) < vec2<f32>(PATCH_HALF_WIDTH)));
+    return keep * vec3<f32>(state.x, -normal.xz / normal.y);
+}
+
 // Where the eye's ray along dir meets the sea plane (xz, m), at most GRID_FAR away across.
 fn rest_point(dir: vec3<f32>) -> vec2<f32> {
     let across = max(length(dir.xz), 1.0e-6);
@@ -113,6 +132,28 @@ struct SeaOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
     @location(1) rest: vec2<f32>,
+    // det of the map x0 -> x0 - lambda D at the vertex: below 1 where the water is squeezed.
+    @location(2) jacobian: f32,
+}
+
+// Adds cascade c's carry gradient to the world's (xx, xz, zz) in t, weighted by w: dDx/dx and
+// dDz/dz from its displacement texel, dDx/dz from its surface texel, turned from its frame
+// (R^T M R).
+fn add_gradient(t: vec3<f32>, c: i32, w: f32, displacement: vec4<f32>, surface: vec4<f32>) -> vec3<f32> {
+    let r = sea.cascades[c].xy;
+    let m = vec3<f32>(displacement.z, surface.w, displacement.w);
+    let turned = vec3<f32>(
+        r.x * r.x * m.x - 2.0 * r.y * r.x * m.y + r.y * r.y * m.z,
+        r.y * r.x * (m.x - m.z) + (r.x * r.x - r.y * r.y) * m.y,
+        r.y * r.y * m.x + 2.0 * r.y * r.x * m.y + r.x * r.x * m.z,
+    );
+    return t + w * turned;
+}
+
+// Whitecaps: where the choppy waves squeeze the water to under WHITECAP_JACOBIAN of its area
+// at rest the crests are about to break; white from a little above it.
+fn whitecap(jacobian: f32) -> f32 {
+    return smoothstep(WHITECAP_JACOBIAN + 0.15, WHITECAP_JACOBIAN, jacobian);
 }
 
 // Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
@@ -132,15 +173,21 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
     let footprint = sea.cells.w * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
     var height = 0.0;
     var carry = vec2<f32>(0.0);
+    var gradient = vec3<f32>(0.0);
     for (var c = 0; c < CASCADES; c++) {
         let w = cascade_weight(c, footprint);
         let local = to_cascade(c, rest);
-        height += w * cascade_texel(sea_surface, c, local, sea.cascades[c].z).x;
-        carry += w * from_cascade(c, cascade_texel(sea_displacement, c, local, sea.cascades[c].z).xy);
+        let surface = cascade_texel(sea_surface, c, local, sea.cascades[c].z);
+        let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
+        height += w * surface.x;
+        carry += w * from_cascade(c, displacement.xy);
+        gradient = add_gradient(gradient, c, w, displacement, surface);
     }
     var out: SeaOut;
+    let l = sea.cells.z * gradient;
+    out.jacobian = (1.0 - l.x) * (1.0 - l.z) - l.y * l.y;
     let moved = rest - sea.cells.z * carry;
-    out.world = vec3<f32>(moved.x, height, moved.y);
+    out.world = vec3<f32>(moved.x, height + ripples_at(rest, footprint).x, moved.y);
     out.rest = rest;
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
     return out;
@@ -157,6 +204,9 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         slope += w * from_cascade(c, s);
         removed += (1.0 - w * w) * sea.cascades[c].w;
     }
+    // The ripples' fade by the pixel's mean footprint: along a grazing view the longest side
+    // would lose rings that are sharp across it.
+    slope += ripples_at(in.rest, sqrt(length(dpdx(in.rest)) * length(dpdy(in.rest)))).yz;
     let n = normalize(vec3<f32>(-slope.x, 1.0, -slope.y));
     // The slopes left out, and those varying within the pixel, spread the glint (Toksvig).
     let dn = dot(dpdx(n), dpdx(n)) + dot(dpdy(n), dpdy(n));
@@ -164,7 +214,9 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
     let v = to_point / dist;
-    return finish(through_haze(sea_colour(v, n, sqrt(removed)), v, dist));
+    let foam = WHITECAP_ALBEDO * (sky_light() + sun_light() * max(scene.sun.y, 0.0));
+    let colour = mix(sea_colour(v, n, sqrt(removed)), foam, whitecap(in.jacobian) * sea.fog.w);
+    return finish(through_haze(colour, v, dist));
 }
 
 // Where the grid drew nothing: the sky, and between the grid's far edge and the horizon the sea

@@ -151,11 +151,17 @@ impl OrbitCamera {
     /// What is under pixel (x, y): the water surface inside the pool, or nothing (the
     /// bodies are picked first, by `WaterDemo::pick_body`).
     pub fn pick(&self, pixel: Vec2, size: Vec2) -> Pick {
+        self.pick_within(pixel, size, HALF_WIDTH)
+    }
+
+    /// What lies under a screen point of water `half_width` (m) each way from the origin (the
+    /// pool's, or the open sea's patch of simulated water).
+    pub fn pick_within(&self, pixel: Vec2, size: Vec2, half_width: f32) -> Pick {
         let ray = self.ray(pixel, size);
         let water_t = if ray.dir.y.abs() > 1e-6 { -ray.origin.y / ray.dir.y } else { f32::INFINITY };
         if water_t > 0.0 && water_t.is_finite() {
             let p = ray.origin + ray.dir * water_t;
-            if p.x.abs() <= HALF_WIDTH && p.z.abs() <= HALF_WIDTH {
+            if p.x.abs() <= half_width && p.z.abs() <= half_width {
                 return Pick::Water { x: p.x, z: p.z };
             }
         }

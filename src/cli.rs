@@ -237,7 +237,7 @@ impl StartArgs {
     fn make_demo(&self, gpu: &HeadlessGpu) -> WaterDemo {
         let mut demo = WaterDemo::new(&gpu.device, &gpu.queue, OFFSCREEN_FORMAT, self.demo_options());
         if let Some(preset) = self.preset {
-            preset.apply(&mut demo.params, &mut demo.camera);
+            demo.apply_preset(preset);
         }
         for (name, v) in &self.sets {
             demo.params.set_by_name(name, *v).expect("names checked while parsing");

@@ -143,6 +143,43 @@ pub const PRESETS: &[Preset] = &[
         values: &[("sun_elevation", 20.0), ("sun_azimuth", -90.0), ("exposure", 1.8)],
         camera: None,
     },
+    Preset {
+        name: "sea",
+        label: "Lesson: the open sea",
+        help: "Open water to the horizon in a moderate breeze: five FFT cascades of different tile sizes, so no pattern repeats; the grid the sea is drawn on is projected from the screen, so its detail follows your view; the haze takes sea and sky to one colour at the horizon (turn Fog off to see the sea's edge). Click near the middle to make ripples in the patch of simulated water and watch them run out.",
+        values: &[("scene", 1.0), ("sun_elevation", 30.0), ("sun_azimuth", 0.0)],
+        camera: Some([160.0, 9.0, 40.0]),
+    },
+    Preset {
+        name: "dawn",
+        label: "A calm sea at dawn",
+        help: "A low sun ahead over a calm sea: its glint spread into a long path of glitter on the small waves, the sky warm along the horizon.",
+        values: &[
+            ("scene", 1.0),
+            ("sun_elevation", 10.0),
+            ("sun_azimuth", 0.0),
+            ("sea_wind", 4.0),
+            ("sea_wave_height", 0.3),
+            ("sea_choppiness", 0.5),
+            ("exposure", 0.8),
+        ],
+        camera: Some([180.0, 6.0, 30.0]),
+    },
+    Preset {
+        name: "storm",
+        label: "A storm at sea",
+        help: "A strong wind raises 5 m waves with sharpened crests under a low sun, in thick haze.",
+        values: &[
+            ("scene", 1.0),
+            ("sea_wind", 20.0),
+            ("sea_wave_height", 5.0),
+            ("sea_choppiness", 1.5),
+            ("sea_fog_distance", 1500.0),
+            ("sun_elevation", 15.0),
+            ("sun_azimuth", 60.0),
+        ],
+        camera: Some([-30.0, 12.0, 80.0]),
+    },
 ];
 
 impl Preset {
@@ -171,8 +208,9 @@ pub fn find(name: &str) -> Option<&'static Preset> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::camera::{DISTANCE_RANGE, PITCH_RANGE};
+    use crate::camera::POOL_LIMITS;
     use crate::params;
+    use crate::sea::SEA_LIMITS;
 
     #[test]
     fn every_preset_names_known_parameters_with_values_in_their_ranges() {
@@ -186,10 +224,12 @@ mod tests {
                     preset.name
                 );
             }
+            // Each scene's camera has its own limits.
+            let limits = if preset.values.contains(&("scene", 1.0)) { SEA_LIMITS } else { POOL_LIMITS };
             if let Some([_, pitch, distance]) = preset.camera {
-                assert!((PITCH_RANGE.0..=PITCH_RANGE.1).contains(&pitch), "{}: pitch {pitch}", preset.name);
+                assert!((limits.pitch.0..=limits.pitch.1).contains(&pitch), "{}: pitch {pitch}", preset.name);
                 assert!(
-                    (DISTANCE_RANGE.0..=DISTANCE_RANGE.1).contains(&distance),
+                    (limits.distance.0..=limits.distance.1).contains(&distance),
                     "{}: distance {distance}",
                     preset.name
                 );

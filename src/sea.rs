@@ -6,6 +6,7 @@
 
 use glam::Vec3;
 
+use crate::ambient::cascades::WHITECAP_JACOBIAN;
 use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -59,6 +60,29 @@ pub fn deep_water_albedo() -> [f32; 3] {
 pub const FOG_HEIGHT: f32 = 100.0;
 /// The eye's clearance over the highest crest (m): the camera never goes into a wave.
 pub const EYE_OVER_CRESTS: f32 = 1.0;
+
+/// The patch of sea round the camera's target where the pool's wave equation runs, so that a
+/// click makes ripples there: its half width (m), cells per side, depth (m; its ripples run at
+/// shallow water's sqrt(g d)) and the fading of its ripples (1/s). Its walls absorb (the
+/// pool's sponge, grown with the patch to 4 m), so the ripples run out and do not come back.
+pub const PATCH_HALF_WIDTH: f32 = 16.0;
+pub const PATCH_CELLS: u32 = 256;
+pub const PATCH_DEPTH: f32 = 2.0;
+pub const PATCH_DAMPING: f32 = 0.05;
+
+/// The speed of the patch's ripples (m/s): shallow water's sqrt(g d).
+pub fn patch_wave_speed() -> f32 {
+    (crate::physics::GRAVITY * PATCH_DEPTH).sqrt()
+}
+
+/// How much larger a click's drop is in the patch than in the pool: its radius grows with the
+/// patch's width against the pool's (a click looks the same size against either); its height
+/// [`PATCH_DROP_HEIGHT`] times more, so that the rings stand out of a sea whose waves are as
+/// steep as they.
+pub fn patch_scale() -> f32 {
+    PATCH_HALF_WIDTH / crate::scene::HALF_WIDTH
+}
+pub const PATCH_DROP_HEIGHT: f32 = 3.0;
 
 /// The camera the sea starts with: 40 m from a target on the water, 9° above the horizon.
 pub fn default_camera() -> OrbitCamera {
@@ -182,11 +206,16 @@ pub const PARAMS: &[ParamSpec] = &[
     },
 ];
 
+/// The whitecaps' albedo: foam sends back most of the light falling on it.
+pub const WHITECAP_ALBEDO: f32 = 0.75;
+
 /// The sea's WGSL constants.
 pub fn wgsl_constants() -> String {
     let [r, g, b] = deep_water_albedo();
     format!(
         "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
+         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\n\
+         const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
     )
 }

@@ -108,7 +108,7 @@ impl Viewer {
     fn new(state: &egui_wgpu::RenderState, options: ViewerOptions, outcome: Outcome) -> Self {
         let mut demo = WaterDemo::new(&state.device, &state.queue, SCENE_FORMAT, options.demo);
         if let Some(preset) = options.preset {
-            preset.apply(&mut demo.params, &mut demo.camera);
+            demo.apply_preset(preset);
         }
         for (name, value) in &options.sets {
             let _ = demo.params.set_by_name(name, *value);
@@ -179,7 +179,7 @@ impl Viewer {
                 .response
                 .on_hover_text("Start over from a lesson's settings and view");
             if let Some(preset) = chosen {
-                preset.apply(&mut self.demo.params, &mut self.demo.camera);
+                self.demo.apply_preset(preset);
                 self.demo.reset(&self.render_state.queue);
             }
             let mut groups: Vec<&str> = Vec::new();

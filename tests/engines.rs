@@ -99,6 +99,14 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
         traced_changed * 100.0
     );
 
+    // The open sea draws here too, switched to in the page.
+    browser.js("window.demo.set('scene', 'sea'); return true;").await;
+    let at_sea = browser.wait_for("window.demo.stats().scene === 'sea'", Duration::from_secs(30)).await;
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let sea_spread = browser.screenshot().await.luma_spread(rect);
+    println!("{}: the open sea, luma spread {sea_spread:.1}", engine.name());
+    assert!(at_sea && sea_spread > 12.0, "{engine:?}: the sea did not draw (luma spread {sea_spread:.1})");
+
     // Still running 5 s later, no error shown or printed (Firefox prints the page's console).
     tokio::time::sleep(Duration::from_secs(5)).await;
     let later = browser

@@ -132,7 +132,8 @@ fn drop_test_items(code: &str) -> String {
     out.into_iter().collect()
 }
 
-/// The first-level module names a `crate::` path (or group) names, with the byte offset of each.
+/// The first-level module names a `crate::` path (or group) names, with the byte offset of each
+/// (a macro at the crate's root, `crate::name!`, names none).
 fn imported_modules(code: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
     for (at, _) in code.match_indices("crate::") {
@@ -155,7 +156,11 @@ fn imported_modules(code: &str) -> Vec<(usize, String)> {
                 found.push((at, leading_name(segment.trim_start())));
             }
         } else {
-            found.push((at, leading_name(rest)));
+            let name = leading_name(rest);
+            // `crate::wgsl!(..)`: a macro exported at the crate's root (lib.rs), not a module.
+            if !rest[name.len()..].starts_with('!') {
+                found.push((at, name));
+            }
         }
     }
     found.retain(|(_, name)| !name.is_empty() && name != "self");

@@ -1,5 +1,7 @@
 //! The open sea (`scene` = sea) on the headless GPU: the horizon where water meets sky, the
-//! picture, and the pool coming back unchanged after it.
+//! picture, the clicks' ripples, the whitecaps, and the pool coming back unchanged after it.
+// The tests read the sea's patch back from the GPU, waiting for it.
+#![allow(clippy::disallowed_methods)]
 
 mod common;
 
@@ -100,4 +102,97 @@ fn the_pool_comes_back_byte_for_byte_after_the_sea() {
     println!("the sea differs from the pool in {:.0} % of pixels", sea_differs * 100.0);
     assert!(sea_differs > 0.5, "the sea was not drawn");
     assert!(before.rgba == after.rgba, "the pool after the sea is not the pool before it");
+}
+
+/// Radius (m) of the highest ring of a patch's heights (`n`² cells over ±`half_width`) beyond
+/// `min_r`, from its mean height per ring of one cell's width.
+fn crest_radius(state: &[[f32; 4]], n: usize, half_width: f32, min_r: f32) -> f32 {
+    let dx = 2.0 * half_width / n as f32;
+    let centre = |i: usize| -half_width + (i as f32 + 0.5) * dx;
+    let bins = (half_width / dx) as usize;
+    let (mut sum, mut count) = (vec![0.0f64; bins], vec![0u32; bins]);
+    for j in 0..n {
+        for i in 0..n {
+            let b = ((centre(i).powi(2) + centre(j).powi(2)).sqrt() / dx) as usize;
+            if b < bins {
+                sum[b] += state[j * n + i][0] as f64;
+                count[b] += 1;
+            }
+        }
+    }
+    let ring = |b: usize| ((b as f32 + 0.5) * dx, sum[b] / count[b].max(1) as f64);
+    (0..bins)
+        .map(ring)
+        .filter(|(r, _)| *r > min_r)
+        .fold((0.0, f64::MIN), |best, p| if p.1 > best.1 { p } else { best })
+        .0
+}
+
+#[test]
+fn a_click_on_the_sea_makes_ripples_that_run_out_at_the_speed_of_shallow_water() {
+    // A student's view of the ripples: 20 m from them, 25° down, towards the sun (ripples on
+    // deep water show in what they mirror: the glint's and the sky's light).
+    let (mut clicked, mut calm) = (sea(25.0, 20.0, true), sea(25.0, 20.0, true));
+    for d in [&mut clicked, &mut calm] {
+        d.params.set(ParamId::SunAzimuth, d.camera.yaw + 180.0);
+        d.params.set(ParamId::SunElevation, 30.0);
+    }
+    render(&mut clicked, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    render(&mut calm, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    // The middle of the screen: the camera's target, the patch's centre.
+    clicked.pointer_down(SIZE.0 as f32 / 2.0, SIZE.1 as f32 / 2.0);
+    clicked.pointer_up();
+    let g = common::gpu();
+    let n = wavepool::sea::PATCH_CELLS as usize;
+    let w = wavepool::sea::PATCH_HALF_WIDTH;
+    let mut radii = Vec::new();
+    for frames in [30, 60] {
+        render(&mut clicked, SIZE.0, SIZE.1, frames - radii.len() as u32 * 30, 1.0 / 60.0);
+        let state = clicked.sea_patch().expect("the sea's patch").read_state(&g.device, &g.queue);
+        radii.push(crest_radius(&state, n, w, 1.0));
+    }
+    let speed = (radii[1] - radii[0]) / 0.5;
+    let expected = wavepool::sea::patch_wave_speed();
+    let with = render(&mut clicked, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+    let without = render(&mut calm, SIZE.0, SIZE.1, 61, 1.0 / 60.0);
+    let near = Rect(0.25, 0.35, 0.75, 0.85);
+    let changed = with.changed_fraction(&without, near, 8);
+    println!(
+        "crest at {:.2} m and {:.2} m half a second apart: {speed:.2} m/s against sqrt(g d) = {expected:.2} m/s; \
+         {:.1} % of the pixels round the click differ from the same sea unclicked",
+        radii[0],
+        radii[1],
+        changed * 100.0
+    );
+    assert!((speed - expected).abs() <= 0.1 * expected, "ripples run at {speed} m/s, expected {expected} ±10 %");
+    assert!(changed > 0.05, "the click's ripples do not show");
+}
+
+#[test]
+fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
+    let mut shares = Vec::new();
+    for name in ["storm", "dawn"] {
+        // The same sea drawn with its whitecaps and without: the pixels they whiten.
+        let mut frames = Vec::new();
+        for caps in [true, false] {
+            let mut d = demo(DemoOptions::default());
+            d.apply_preset(wavepool::presets::find(name).expect("a preset"));
+            d.set_sea_whitecaps(caps);
+            // At the page's size: on a coarser grid the finest cascades, the steepest, fade.
+            frames.push(render(&mut d, 800, 600, 10, 0.1));
+        }
+        let whitened = Rect(0.0, 0.0, 1.0, 1.0)
+            .pixels(&frames[0])
+            .into_iter()
+            .filter(|&(x, y)| frames[0].luma(x, y) > frames[1].luma(x, y) + 0.05)
+            .count();
+        shares.push(whitened as f64 / (800.0 * 600.0));
+    }
+    println!(
+        "whitecaps whiten {:.2} % of the frame in the storm, {:.2} % at dawn",
+        shares[0] * 100.0,
+        shares[1] * 100.0
+    );
+    assert!(shares[0] > 0.002, "no whitecaps in the storm");
+    assert!(shares[1] == 0.0, "whitecaps on a calm sea");
 }

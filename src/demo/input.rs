@@ -9,6 +9,7 @@ use crate::params::ParamId;
 use crate::physics::Pose;
 use crate::render::flat::RenderMode;
 use crate::scene;
+use crate::sea::{self, SceneKind};
 use crate::sim::Drop;
 
 /// Keys the core understands; shells map their key events to these.
@@ -51,14 +52,35 @@ impl WaterDemo {
     }
 
     /// Queues a drop at pool coordinates (m) with radius (m) and strength (m); values are
-    /// clamped into the parameter ranges.
+    /// clamped into the parameter ranges. In the open sea the drop falls in its patch of
+    /// simulated water (sea coordinates, m), radius and strength grown as the patch is wider
+    /// than the pool (`sea::patch_scale`).
     pub fn add_drop(&mut self, x: f32, z: f32, radius: f32, strength: f32) {
         let r = crate::params::spec(ParamId::DropRadius).sanitise(radius);
         let s = crate::params::spec(ParamId::DropStrength).sanitise(strength);
-        let w = scene::HALF_WIDTH;
-        if x.is_finite() && z.is_finite() {
-            self.water.add_drop(Drop { x: x.clamp(-w, w), z: z.clamp(-w, w), radius: r, strength: s });
+        if !(x.is_finite() && z.is_finite()) {
+            return;
         }
+        if let Some(patch) = self.sea_patch_mut() {
+            let (w, k) = (sea::PATCH_HALF_WIDTH, sea::patch_scale());
+            patch.add_drop(Drop {
+                x: x.clamp(-w, w),
+                z: z.clamp(-w, w),
+                radius: r * k,
+                strength: s * k * sea::PATCH_DROP_HEIGHT,
+            });
+            return;
+        }
+        let w = scene::HALF_WIDTH;
+        self.water.add_drop(Drop { x: x.clamp(-w, w), z: z.clamp(-w, w), radius: r, strength: s });
+    }
+
+    /// What lies under pixel p: the water of the scene drawn (the pool's, or the sea's patch).
+    fn pick_water(&self, p: Vec2) -> Pick {
+        if self.drawn_scene() == SceneKind::Sea {
+            return self.camera.pick_within(p, self.viewport, sea::PATCH_HALF_WIDTH);
+        }
+        self.camera.pick(p, self.viewport)
     }
 
     /// A drop with the current radius and strength parameters.
@@ -92,8 +114,14 @@ impl WaterDemo {
     /// water starts drawing ripples, elsewhere starts orbiting.
     pub fn pointer_down(&mut self, x: f32, y: f32) {
         let p = Vec2::new(x, y);
-        if self.scene() == crate::sea::SceneKind::Sea {
-            self.drag = Drag::Orbit { last: p }; // the sea takes no drops yet
+        if self.drawn_scene() == SceneKind::Sea {
+            self.drag = match self.pick_water(p) {
+                Pick::Water { x, z } => {
+                    self.click_drop(x, z);
+                    Drag::Water { last: p }
+                }
+                Pick::Nothing => Drag::Orbit { last: p },
+            };
             return;
         }
         if self.over_divider(x) {
@@ -129,10 +157,11 @@ impl WaterDemo {
             }
             Drag::Water { last } => {
                 // Drops along the stroke, about one per drop radius, so fast drags draw lines.
-                let from = self.camera.pick(last, self.viewport);
-                let to = self.camera.pick(p, self.viewport);
+                let from = self.pick_water(last);
+                let to = self.pick_water(p);
                 if let (Pick::Water { x: x0, z: z0 }, Pick::Water { x: x1, z: z1 }) = (from, to) {
-                    let r = self.params.get(ParamId::DropRadius);
+                    let scale = if self.drawn_scene() == SceneKind::Sea { sea::patch_scale() } else { 1.0 };
+                    let r = self.params.get(ParamId::DropRadius) * scale;
                     let length = Vec2::new(x1 - x0, z1 - z0).length();
                     let count = ((length / r).ceil() as u32).clamp(1, 16);
                     for i in 1..=count {

@@ -83,6 +83,8 @@ pub struct WaterDemo {
     other_camera: OrbitCamera,
     /// The open sea's waves, once the sea has been shown.
     sea: Option<sea::Sea>,
+    /// The sea draws its whitecaps (off only in tests).
+    sea_whitecaps: bool,
 }
 
 /// A demo made in steps, each short enough to leave a browser's thread responsive (at most
@@ -167,6 +169,7 @@ impl WaterDemo {
             camera_scene: crate::sea::SceneKind::Pool,
             other_camera: crate::sea::default_camera(),
             sea: None,
+            sea_whitecaps: true,
         };
         demo.refresh_ambient();
         demo.place_bodies_at_start();

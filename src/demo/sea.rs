@@ -1,17 +1,20 @@
 //! The demo in the open sea (`scene` = sea): its own camera, kept beside the pool's while the
-//! other scene is shown, and its frame: the cascades summed on the CPU at the simulated time,
+//! other scene is shown, and its frame: the patch of simulated water round the camera's target
+//! stepped (the clicks' ripples), the cascades summed on the CPU at the simulated time, both
 //! drawn by the renderer's sea pass. The pool's water and bodies wait, as they were.
 
-use super::{Stage, WaterDemo};
+use super::{Stage, WaterDemo, STEP_DT};
 use crate::ambient::cascades::SeaWaves;
 use crate::params::ParamId;
 use crate::render::{AmbientView, SeaView, View, SEA_CASCADES};
-use crate::sea::{SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
+use crate::sea::{self, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
+use crate::sim::{HeightField, WaveSettings};
 
-/// The sea's waves and the settings they were made for.
+/// The sea's waves and the settings they were made for, and the patch of simulated water.
 pub(super) struct Sea {
     settings: SeaSettings,
     waves: SeaWaves,
+    patch: HeightField,
 }
 
 impl WaterDemo {
@@ -39,18 +42,54 @@ impl WaterDemo {
         }
     }
 
+    /// Starts over from `preset`: its values, then its view on the camera of the scene it
+    /// shows (so a sea preset's view is the sea camera's, within the sea's limits).
+    pub fn apply_preset(&mut self, preset: &crate::presets::Preset) {
+        let mut view = self.camera;
+        preset.apply(&mut self.params, &mut view);
+        self.sync_scene();
+        (self.camera.yaw, self.camera.pitch, self.camera.distance) = (view.yaw, view.pitch, view.distance);
+        self.camera.clamp();
+    }
+
     fn sea_settings(&self) -> SeaSettings {
         SeaSettings::from_values(|name| self.params.get_by_name(name).expect("a sea parameter"))
     }
 
-    /// The sea's waves for the current parameters, made again when they changed.
-    fn sea_waves(&mut self) -> &SeaWaves {
+    /// The sea for the current parameters: made the first time (the patch on the pool's
+    /// engine), its waves made again when their parameters changed.
+    fn sea(&mut self, device: &wgpu::Device) -> &mut Sea {
         let settings = self.sea_settings();
-        if self.sea.as_ref().is_none_or(|s| s.settings != settings) {
-            let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
-            self.sea = Some(Sea { settings, waves });
+        match &mut self.sea {
+            Some(sea) if sea.settings != settings => {
+                sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
+                sea.settings = settings;
+            }
+            Some(_) => {}
+            None => {
+                let engine = self.water.engine();
+                let patch = HeightField::new_on(device, sea::PATCH_CELLS, sea::PATCH_HALF_WIDTH, engine);
+                self.sea = Some(Sea { waves: SeaWaves::new(&settings.waves(), SEA_LATTICE), settings, patch });
+            }
         }
-        &self.sea.as_ref().expect("made above").waves
+        self.sea.as_mut().expect("made above")
+    }
+
+    /// Whether the sea draws its whitecaps (the default) or not (for tests to compare with).
+    #[doc(hidden)]
+    pub fn set_sea_whitecaps(&mut self, on: bool) {
+        self.sea_whitecaps = on;
+    }
+
+    /// The open sea's patch of simulated water while the sea is drawn (for drops), and once
+    /// made (for tests).
+    pub(super) fn sea_patch_mut(&mut self) -> Option<&mut HeightField> {
+        let drawn = self.camera_scene == SceneKind::Sea;
+        self.sea.as_mut().filter(|_| drawn).map(|s| &mut s.patch)
+    }
+
+    pub fn sea_patch(&self) -> Option<&HeightField> {
+        self.sea.as_ref().map(|s| &s.patch)
     }
 
     /// What the sea's frame shows of the scene: the sea camera, the sun and optics; no
@@ -63,15 +102,14 @@ impl WaterDemo {
             ambient: AmbientView::default(),
             foam: false,
             debug: None,
-            render_scale: 1.0,
             flat: None,
             deck: false,
             ..pool
         }
     }
 
-    /// [`WaterDemo::encode_frame`] in the sea: time runs on (the waves are the simulated
-    /// time's), no simulation step is taken.
+    /// [`WaterDemo::encode_frame`] in the sea: the patch takes the frame's steps (submitted
+    /// ahead, as the pool's water), the waves are the simulated time's.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn encode_sea_frame(
         &mut self,
@@ -83,24 +121,30 @@ impl WaterDemo {
         frame_time: f32,
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
-        self.take_steps(frame_time);
-        let mut sim_encoder = device.create_command_encoder(&Default::default());
-        mark(&mut sim_encoder, Stage::Start);
-        mark(&mut sim_encoder, Stage::AfterSimulation);
-        queue.submit([sim_encoder.finish()]);
+        self.choose_render_scale(frame_time);
+        let steps = self.take_steps(frame_time);
         let t = self.sim_time();
         let settings = self.sea_settings();
-        let waves = self.sea_waves();
-        let [surface, displacement] = waves.atlas(t);
-        let variances = SeaWaves::slope_variances(&surface, waves.cascades.len());
+        let view = self.sea_scene_view();
+        let sea = self.sea(device);
+        let mut sim_encoder = device.create_command_encoder(&Default::default());
+        mark(&mut sim_encoder, Stage::Start);
+        let ripples =
+            WaveSettings { wave_speed: sea::patch_wave_speed(), damping: sea::PATCH_DAMPING, absorbing_walls: true };
+        sea.patch.encode(queue, &mut sim_encoder, steps, STEP_DT, ripples);
+        mark(&mut sim_encoder, Stage::AfterSimulation);
+        queue.submit([sim_encoder.finish()]);
+        sea.patch.after_submit();
+        let [surface, displacement] = sea.waves.atlas(t);
+        let variances = SeaWaves::slope_variances(&surface, sea.waves.cascades.len());
         let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
-        for (i, c) in waves.cascades.iter().enumerate().take(SEA_CASCADES) {
+        for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
             cascades[i] = (c.angle, 2.0 * c.ocean.band.half_tile, variances[i]);
         }
-        let view = self.sea_scene_view();
-        self.renderer.prepare(queue, encoder, &view, &self.water);
+        let sea = self.sea.as_ref().expect("made above");
+        self.renderer.prepare(queue, encoder, &view, &sea.patch);
         mark(encoder, Stage::AfterCaustics);
-        let sea = SeaView {
+        let drawn = SeaView {
             camera: &self.camera,
             fog_distance: settings.fog_distance,
             choppiness: settings.choppiness,
@@ -108,8 +152,10 @@ impl WaterDemo {
             cascades,
             surface: &surface,
             displacement: &displacement,
+            patch: &sea.patch,
+            whitecaps: self.sea_whitecaps,
         };
-        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &sea);
+        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn);
         mark(encoder, Stage::AfterScene);
     }
 }

@@ -7,10 +7,12 @@
 
 use glam::{Vec2, Vec3};
 
+use super::resources::water_bind_groups;
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::sea::{FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE};
+use crate::sim::HeightField;
 
 /// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
 pub const SEA_CASCADES: usize = 5;
@@ -32,6 +34,11 @@ pub struct SeaView<'a> {
     /// (h, dh/dx, dh/dz, dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
     pub surface: &'a [[f32; 4]],
     pub displacement: &'a [[f32; 4]],
+    /// Whether whitecaps are drawn (off only for tests to compare with).
+    pub whitecaps: bool,
+    /// The patch of simulated water round the target (`sea::PATCH_HALF_WIDTH`), whose
+    /// ripples are added to the waves.
+    pub patch: &'a HeightField,
 }
 
 #[repr(C)]
@@ -56,10 +63,12 @@ pub struct SeaRenderer {
     features: Features,
     grid: wgpu::RenderPipeline,
     sky: FullscreenPass,
+    /// Group 0 (the scene's uniforms) with the patch's state, one per ping-pong texture.
+    patch_groups: [wgpu::BindGroup; 2],
 }
 
 impl SeaRenderer {
-    fn new(renderer: &Renderer, device: &wgpu::Device, features: Features) -> Self {
+    fn new(renderer: &Renderer, device: &wgpu::Device, features: Features, patch: &HeightField) -> Self {
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sea layout"),
@@ -121,7 +130,9 @@ impl SeaRenderer {
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
-        Self { uniforms, maps, group, features, grid, sky }
+        let patch_groups =
+            water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
+        Self { uniforms, maps, group, features, grid, sky, patch_groups }
     }
 }
 
@@ -137,14 +148,15 @@ fn camera_basis(camera: &OrbitCamera, aspect: f32) -> (Vec3, Vec3, Vec3) {
 
 /// The grid's screen rectangle (NDC x from, x to, y from, y to), its cells across and down,
 /// and a cell's angle (rad), for a target of `size` pixels.
-fn grid_layout(sea: &SeaView<'_>, size: (u32, u32)) -> ([f32; 4], (u32, u32), f32) {
+/// `reach`: how far (m) the waves can move a point of the grid (their crest's height and
+/// sideways carry).
+fn grid_layout(camera: &OrbitCamera, reach: f32, size: (u32, u32)) -> ([f32; 4], (u32, u32), f32) {
     let aspect = size.0 as f32 / size.1.max(1) as f32;
-    let (_, up, forward) = camera_basis(sea.camera, aspect);
-    let eye = sea.camera.eye();
+    let (_, up, forward) = camera_basis(camera, aspect);
+    let eye = camera.eye();
     // The margin: the largest sideways carry and heave, seen at the nearest water in view.
     let bottom = (forward - up).normalize();
     let nearest = if bottom.y < 0.0 { eye.y / -bottom.y } else { GRID_FAR };
-    let reach = sea.crest * (1.0 + sea.choppiness);
     let margin = (reach / (nearest * up.length())).clamp(0.02, 0.5);
     // The horizon of the grid's far edge, straight ahead.
     let ahead = Vec2::new(forward.x, forward.z).normalize_or(Vec2::X) * GRID_FAR;
@@ -163,8 +175,9 @@ fn grid_layout(sea: &SeaView<'_>, size: (u32, u32)) -> ([f32; 4], (u32, u32), f3
 }
 
 impl Renderer {
-    /// Draws the sea into `target` (`size` pixels), after [`Renderer::prepare`] wrote this
-    /// frame's scene uniforms for `view` (the sea camera's, with no bodies, caustics or deck).
+    /// Draws the sea into `target` (`size` pixels) at the view's render scale, after
+    /// [`Renderer::prepare`] wrote this frame's scene uniforms for `view` (the sea camera's,
+    /// with no bodies, caustics or deck).
     #[allow(clippy::too_many_arguments)]
     pub fn encode_sea(
         &mut self,
@@ -178,10 +191,30 @@ impl Renderer {
     ) {
         let features = Features::of(view);
         if self.sea.as_ref().is_none_or(|s| s.features != features) {
-            self.sea = Some(SeaRenderer::new(self, device, features));
+            self.sea = Some(SeaRenderer::new(self, device, features, sea.patch));
         }
-        let drawn = self.sea.as_ref().expect("made above");
-        let (rect, cells, angle) = grid_layout(sea, size);
+        let scaled = self.scaled_size(view, size);
+        if scaled != size {
+            let image = self.upscale.image(device, self.settings.target_format, scaled);
+            self.draw_sea(device, queue, encoder, &image, scaled, sea);
+            self.upscale.run(encoder, target);
+        } else {
+            self.draw_sea(device, queue, encoder, target, size, sea);
+        }
+    }
+
+    /// The sea's grid and sky into `target` of `size` pixels.
+    fn draw_sea(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        sea: &SeaView<'_>,
+    ) {
+        let drawn = self.sea.as_ref().expect("made by encode_sea");
+        let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
         let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
         let u = SeaUniforms {
             eye: sea.camera.eye().extend(1.0).to_array(),
@@ -190,16 +223,21 @@ impl Renderer {
             forward: forward.extend(0.0).to_array(),
             grid: rect,
             cells: [cells.0 as f32, cells.1 as f32, sea.choppiness, angle],
-            fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, sea.cascades.iter().map(|c| c.2).sum(), 0.0],
+            fog: [
+                sea.fog_distance.map_or(0.0, |d| 1.0 / d),
+                FOG_HEIGHT,
+                sea.cascades.iter().map(|c| c.2).sum(),
+                if sea.whitecaps { 1.0 } else { 0.0 },
+            ],
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
         };
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
         gpu::write_texture_2d(queue, &drawn.maps[0], 0, bytemuck::cast_slice(sea.surface));
         gpu::write_texture_2d(queue, &drawn.maps[1], 0, bytemuck::cast_slice(sea.displacement));
         let depth = self.depth_view(device, size).clone();
-        let drawn = self.sea.as_ref().expect("made above");
+        let drawn = self.sea.as_ref().expect("made by encode_sea");
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
-        let groups = [&self.water_groups[0], &self.textures_group, &drawn.group];
+        let groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
         pass.set_pipeline(&drawn.grid);
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
@@ -216,16 +254,7 @@ mod tests {
     #[test]
     fn the_grid_reaches_below_the_screen_and_up_to_the_horizon() {
         let camera = crate::sea::default_camera();
-        let sea = SeaView {
-            camera: &camera,
-            fog_distance: None,
-            choppiness: 1.0,
-            crest: 1.2,
-            cascades: [(0.0, 1.0, 0.0); SEA_CASCADES],
-            surface: &[],
-            displacement: &[],
-        };
-        let (rect, cells, angle) = grid_layout(&sea, (800, 600));
+        let (rect, cells, angle) = grid_layout(&camera, 2.4, (800, 600));
         println!("grid {rect:?}, {cells:?} cells, {angle} rad a cell");
         assert!(rect[0] < -1.0 && rect[1] > 1.0 && rect[2] < -1.0, "a margin past the screen's edges");
         // Looking 9° down with a 22.5° half field the horizon is on the screen's upper half.

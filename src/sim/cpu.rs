@@ -4,10 +4,7 @@
 //! to float textures.
 
 use super::foam::Foam;
-use super::{
-    displaced_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings, MAX_HEIGHT,
-    MAX_VELOCITY,
-};
+use super::{displaced_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings};
 
 /// Mirrors the shaders' `bounded`: finite values clamped, NaN and infinity to rest.
 fn bounded(x: f32, limit: f32) -> f32 {
@@ -49,9 +46,9 @@ pub struct CpuHeightField {
 #[inline(always)]
 fn update_cell(h: f32, v: f32, neighbours: f32, plan: &StepPlan, absorb: f32) -> (f32, f32) {
     let laplacian = neighbours - 4.0 * h;
-    let v = bounded((v + plan.coupling * laplacian) * plan.velocity_decay * absorb, MAX_VELOCITY);
+    let v = bounded((v + plan.coupling * laplacian) * plan.velocity_decay * absorb, plan.max_velocity);
     let level = plan.rest_level;
-    let h = bounded((h - level + plan.dt * v) * absorb, MAX_HEIGHT) + level;
+    let h = bounded((h - level + plan.dt * v) * absorb, plan.max_height) + level;
     (h, v)
 }
 
@@ -276,7 +273,7 @@ impl CpuHeightField {
         for j in cells.z.0..=cells.z.1 {
             for i in cells.x.0..=cells.x.1 {
                 let h = &mut self.height[j as usize * n + i as usize];
-                *h = bounded(*h - correction - level, MAX_HEIGHT) + level;
+                *h = bounded(*h - correction - level, plan.max_height) + level;
             }
         }
     }
@@ -407,6 +404,7 @@ impl CpuHeightField {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::{MAX_HEIGHT, MAX_VELOCITY};
 
     #[test]
     fn nan_and_huge_values_never_enter_the_state() {

@@ -5,7 +5,7 @@
 use bytemuck::Zeroable;
 
 use super::coupling::{CPU_COPY_SIZE, DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PUSH_STEPS};
-use super::plan::{StepPlan, MAX_DROPS_PER_PASS, MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH};
+use super::plan::{StepPlan, MAX_DROPS_PER_PASS};
 use super::{cpu, WaterLevel, STATE_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
@@ -246,7 +246,7 @@ impl GpuSim {
         let mut u = SimUniforms::zeroed();
         u.grid = [size as f32, 1.0 / size as f32, 2.0 * half_width / size as f32, half_width];
         u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
-        u.bounds = [MAX_HEIGHT, MAX_VELOCITY, SPONGE_WIDTH, 0.0];
+        u.bounds = [plan.max_height, plan.max_velocity, plan.sponge_width, 0.0];
         u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
         for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];

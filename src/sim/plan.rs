@@ -53,11 +53,17 @@ const SPONGE_STRENGTH: f32 = 12.0;
 /// `sponge rate * profile` per second, which swallows outgoing waves.
 pub fn sponge_profile(x: f32, z: f32, half_width: f32) -> f32 {
     let from_wall = half_width - x.abs().max(z.abs());
-    let t = (1.0 - from_wall / SPONGE_WIDTH).max(0.0);
+    let t = (1.0 - from_wall / (SPONGE_WIDTH * scale_of(half_width))).max(0.0);
     t * t
 }
 
-/// Largest |height| an update may leave (m); it clamps to it and replaces NaN or infinity
+/// A field's width against the pool's: its sponge and bounds grow with it, so a field of any
+/// width (the open sea's patch) behaves as the pool would at that size; exactly 1 for the pool.
+pub fn scale_of(half_width: f32) -> f32 {
+    half_width / crate::scene::HALF_WIDTH
+}
+
+/// Largest |height| an update may leave (m, for the pool; [`scale_of`] times it for a field); it clamps to it and replaces NaN or infinity
 /// by rest. The once-per-frame mean subtraction can move a clamped cell by at most the
 /// mean, itself at most MAX_HEIGHT, so |h| <= 2 * MAX_HEIGHT = 0.16 m always: below the
 /// 1/6 m rim, no wave ever overtops the pool.
@@ -87,6 +93,11 @@ pub struct StepPlan {
     pub moves: Vec<Vec<HullMove>>,
     /// Mean height the water is held at (m); heights are bounded around it.
     pub rest_level: f32,
+    /// This field's bounds on |height| (m) and |velocity| (m/s), and its sponge's width (m):
+    /// the pool's [`MAX_HEIGHT`], [`MAX_VELOCITY`], [`SPONGE_WIDTH`] times [`scale_of`].
+    pub max_height: f32,
+    pub max_velocity: f32,
+    pub sponge_width: f32,
 }
 
 impl StepPlan {
@@ -98,6 +109,7 @@ impl StepPlan {
         let dx = 2.0 * half_width / n as f32;
         let substeps = substeps(dt, settings.wave_speed, dx);
         let h = dt / substeps as f32;
+        let scale = scale_of(half_width);
         Self {
             correction: drops.iter().map(|d| drop_mean(d, n, half_width)).sum(),
             drops,
@@ -106,12 +118,15 @@ impl StepPlan {
             coupling: settings.wave_speed * settings.wave_speed * h / (dx * dx),
             velocity_decay: (-settings.damping.max(0.0) * h).exp(),
             sponge_rate: if settings.absorbing_walls {
-                SPONGE_STRENGTH * settings.wave_speed.abs() / SPONGE_WIDTH
+                SPONGE_STRENGTH * settings.wave_speed.abs() / (SPONGE_WIDTH * scale)
             } else {
                 0.0
             },
             moves: Vec::new(),
             rest_level: 0.0,
+            max_height: MAX_HEIGHT * scale,
+            max_velocity: MAX_VELOCITY * scale,
+            sponge_width: SPONGE_WIDTH * scale,
         }
     }
 
