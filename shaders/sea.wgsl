@@ -21,10 +21,10 @@ struct Sea {
 }
 
 @group(2) @binding(0) var<uniform> sea: Sea;
-// The five cascades' lattices side by side (SEA_LATTICE texels each, in their own frames):
+// The five cascades' lattices, a layer each (SEA_LATTICE texels a side, in their own frames):
 // height (m), slopes dh/dx, dh/dz, dDx/dz; and the displacement Dx, Dz (m), dDx/dx, dDz/dz.
-@group(2) @binding(1) var sea_surface: texture_2d<f32>;
-@group(2) @binding(2) var sea_displacement: texture_2d<f32>;
+@group(2) @binding(1) var sea_surface: texture_2d_array<f32>;
+@group(2) @binding(2) var sea_displacement: texture_2d_array<f32>;
 
 const CASCADES: i32 = 5;
 // A cascade is whole while a footprint spans at most FADE_TEXELS of its texels, gone at twice.
@@ -32,22 +32,10 @@ const FADE_TEXELS: f32 = 2.0;
 // Distance (m) standing for "to infinity" along a ray into the sky.
 const FAR_AWAY: f32 = 1.0e7;
 
-// Cascade c of an atlas of the five lattices side by side, at local point p (m), read between
-// its four nearest texels and wrapped (its tile repeats; texel centres at -W + (i + 1/2) tile/N).
-fn cascade_texel(map: texture_2d<f32>, c: i32, p: vec2<f32>, tile: f32) -> vec4<f32> {
-    let n = f32(SEA_LATTICE);
-    let s = p / tile * n + 0.5 * n - 0.5;
-    let f = floor(s);
-    let w = s - f;
-    let i = vec2<i32>(f);
-    let a = (i % SEA_LATTICE + SEA_LATTICE) % SEA_LATTICE;
-    let b = (a + 1) % SEA_LATTICE;
-    let x0 = c * SEA_LATTICE;
-    let t00 = textureLoad(map, vec2<i32>(x0 + a.x, a.y), 0);
-    let t10 = textureLoad(map, vec2<i32>(x0 + b.x, a.y), 0);
-    let t01 = textureLoad(map, vec2<i32>(x0 + a.x, b.y), 0);
-    let t11 = textureLoad(map, vec2<i32>(x0 + b.x, b.y), 0);
-    return mix(mix(t00, t10, w.x), mix(t01, t11, w.x), w.y);
+// Cascade c (its layer of the maps) at local point p (m): one bilinear fetch that wraps round
+// its tile (texel centres at -W + (i + 1/2) tile/N, so p / tile + 1/2 in texture units).
+fn cascade_texel(map: texture_2d_array<f32>, c: i32, p: vec2<f32>, tile: f32) -> vec4<f32> {
+    return textureSampleLevel(map, repeat_sampler, p / tile + 0.5, c, 0.0);
 }
 
 // World point (x, z) in cascade c's frame, and a vector of its frame in the world's.

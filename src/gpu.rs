@@ -110,8 +110,8 @@ pub fn texture_2d(
 }
 
 /// A render pass on one colour target and no depth, stored; `load` keeps or clears it first.
-/// Copies `data` (rows of texels, top row first, nothing between rows) into the whole of mip
-/// level `level` of a 2D texture.
+/// Copies `data` (rows of texels, top row first, nothing between rows; layer after layer) into
+/// the whole of mip level `level` of a 2D texture, every layer of it.
 pub fn write_texture_2d(queue: &wgpu::Queue, texture: &wgpu::Texture, level: u32, data: &[u8]) {
     let (width, height) = ((texture.width() >> level).max(1), (texture.height() >> level).max(1));
     let texel = texture.format().block_copy_size(None).expect("colour format");
@@ -123,8 +123,8 @@ pub fn write_texture_2d(queue: &wgpu::Queue, texture: &wgpu::Texture, level: u32
             aspect: wgpu::TextureAspect::All,
         },
         data,
-        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(width * texel), rows_per_image: None },
-        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(width * texel), rows_per_image: Some(height) },
+        wgpu::Extent3d { width, height, depth_or_array_layers: texture.depth_or_array_layers() },
     );
 }
 

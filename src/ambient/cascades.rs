@@ -174,39 +174,32 @@ impl SeaWaves {
         (1.0 - d[0]) * (1.0 - d[2]) - d[1] * d[1]
     }
 
-    /// The cascades' lattices at time `t` (s) side by side, as the GPU reads them: rows of
-    /// `cascades × N` texels, cascade i's texel (x, z) at (i N + x, z); its surface (h, ∂h/∂x,
+    /// The cascades' lattices at time `t` (s), one after the other (cascade i's texel (x, z)
+    /// at (i N + z) N + x), as the GPU's array texture holds them: their surface (h, ∂h/∂x,
     /// ∂h/∂z, ∂Dx/∂z) and displacement (Dx, Dz, ∂Dx/∂x, ∂Dz/∂z), each in the cascade's own
     /// frame. Without choppiness the displacement is zero and not computed.
-    pub fn atlas(&self, t: f64) -> [Vec<[f32; 4]>; 2] {
-        let count = self.cascades.len();
-        let n = self.cascades.first().map_or(0, |c| c.ocean.size);
-        let mut out = [vec![[0.0; 4]; count * n * n], vec![[0.0; 4]; count * n * n]];
-        for (i, c) in self.cascades.iter().enumerate() {
-            let choppy = c.ocean.choppiness > 0.0;
-            let maps = [Some(c.ocean.surface(t)), choppy.then(|| c.ocean.displacement(t))];
-            for (atlas, map) in out.iter_mut().zip(maps) {
-                let Some(map) = map else { continue };
-                for (z, row) in map.chunks_exact(n).enumerate() {
-                    let at = z * count * n + i * n;
-                    atlas[at..at + n].copy_from_slice(row);
-                }
+    pub fn layers(&self, t: f64) -> [Vec<[f32; 4]>; 2] {
+        let mut out = [Vec::new(), Vec::new()];
+        for c in &self.cascades {
+            let n = c.ocean.size;
+            out[0].extend(c.ocean.surface(t));
+            if c.ocean.choppiness > 0.0 {
+                out[1].extend(c.ocean.displacement(t));
+            } else {
+                out[1].extend(std::iter::repeat_n([0.0; 4], n * n));
             }
         }
         out
     }
 
-    /// Each cascade's slope variance (mean of (∂h/∂x)² + (∂h/∂z)²) over a surface atlas of
-    /// `count` cascades ([`SeaWaves::atlas`]).
+    /// Each cascade's slope variance (mean of (∂h/∂x)² + (∂h/∂z)²) over a surface's layers of
+    /// `count` cascades ([`SeaWaves::layers`]).
     pub fn slope_variances(surface: &[[f32; 4]], count: usize) -> Vec<f32> {
-        let n = ((surface.len() / count.max(1)) as f64).sqrt() as usize;
-        (0..count)
-            .map(|i| {
-                let sum: f64 = (0..n)
-                    .flat_map(|z| surface[z * count * n + i * n..z * count * n + (i + 1) * n].iter())
-                    .map(|t| (t[1] * t[1] + t[2] * t[2]) as f64)
-                    .sum();
-                (sum / (n * n).max(1) as f64) as f32
+        surface
+            .chunks_exact((surface.len() / count.max(1)).max(1))
+            .map(|layer| {
+                let sum: f64 = layer.iter().map(|t| (t[1] * t[1] + t[2] * t[2]) as f64).sum();
+                (sum / layer.len() as f64) as f32
             })
             .collect()
     }

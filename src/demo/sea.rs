@@ -135,7 +135,7 @@ impl WaterDemo {
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         sea.patch.after_submit();
-        let [surface, displacement] = sea.waves.atlas(t);
+        let [surface, displacement] = sea.waves.layers(t);
         let variances = SeaWaves::slope_variances(&surface, sea.waves.cascades.len());
         let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
         for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {

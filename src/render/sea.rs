@@ -30,8 +30,8 @@ pub struct SeaView<'a> {
     pub crest: f32,
     /// Per cascade: its turn from the world's axes (rad), its tile (m), its slopes' variance.
     pub cascades: [(f32, f32, f32); SEA_CASCADES],
-    /// The cascades' lattices side by side, rows of `SEA_CASCADES * SEA_LATTICE` texels:
-    /// (h, dh/dx, dh/dz, dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
+    /// The cascades' lattices one after the other (`SeaWaves::layers`): (h, dh/dx, dh/dz,
+    /// dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
     pub surface: &'a [[f32; 4]],
     pub displacement: &'a [[f32; 4]],
     /// Whether whitecaps are drawn (off only for tests to compare with).
@@ -72,16 +72,21 @@ impl SeaRenderer {
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sea layout"),
-            entries: &[gpu::uniform_entry(0, vis), gpu::float_texture_entry(1, vis), gpu::float_texture_entry(2, vis)],
+            entries: &[gpu::uniform_entry(0, vis), layers_entry(1), layers_entry(2)],
         });
         let uniforms = gpu::uniform_buffer(device, "sea uniforms", &<SeaUniforms as bytemuck::Zeroable>::zeroed());
         let map = |label| {
             let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-            let (w, h) = ((SEA_CASCADES * SEA_LATTICE) as u32, SEA_LATTICE as u32);
-            gpu::texture_2d(device, label, w, h, 1, 1, wgpu::TextureFormat::Rgba32Float, usage)
+            let (n, layers) = (SEA_LATTICE as u32, SEA_CASCADES as u32);
+            gpu::texture_2d(device, label, n, n, layers, 1, wgpu::TextureFormat::Rgba16Float, usage)
         };
         let maps = [map("sea surface"), map("sea displacement")];
-        let views = maps.each_ref().map(|m| m.create_view(&Default::default()));
+        let views = maps.each_ref().map(|m| {
+            m.create_view(&wgpu::TextureViewDescriptor {
+                dimension: Some(wgpu::TextureViewDimension::D2Array),
+                ..Default::default()
+            })
+        });
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("sea"),
             layout: &layout,
@@ -134,6 +139,31 @@ impl SeaRenderer {
             water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
         Self { uniforms, maps, group, features, grid, sky, patch_groups }
     }
+}
+
+/// A filterable array texture binding: the cascades' maps, one layer each.
+fn layers_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    let sample_type = wgpu::TextureSampleType::Float { filterable: true };
+    gpu::texture_entry(binding, wgpu::ShaderStages::VERTEX_FRAGMENT, sample_type, wgpu::TextureViewDimension::D2Array)
+}
+
+/// The half-precision float nearest `x` (round half up; under 2^-14 flushed to zero, past the
+/// largest to infinity: the waves' heights and slopes lie well between). Half floats are
+/// filterable on every backend, so the shader reads each cascade in one bilinear fetch that
+/// wraps round its tile (32-bit floats are not).
+fn f16_bits(x: f32) -> u16 {
+    let bits = x.to_bits();
+    let sign = ((bits >> 16) & 0x8000) as u16;
+    let exponent = ((bits >> 23) & 0xff) as i32 - 127 + 15;
+    if exponent <= 0 {
+        return sign;
+    }
+    if exponent >= 31 {
+        return sign | 0x7c00;
+    }
+    let mantissa = bits & 0x7f_ffff;
+    let rounded = (((exponent as u32) << 10) | (mantissa >> 13)) + ((mantissa >> 12) & 1);
+    sign | rounded.min(0x7c00) as u16
 }
 
 /// The camera's basis scaled to its field of view: right and up times the tangents of half the
@@ -232,8 +262,10 @@ impl Renderer {
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
         };
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
-        gpu::write_texture_2d(queue, &drawn.maps[0], 0, bytemuck::cast_slice(sea.surface));
-        gpu::write_texture_2d(queue, &drawn.maps[1], 0, bytemuck::cast_slice(sea.displacement));
+        for (map, texels) in drawn.maps.iter().zip([sea.surface, sea.displacement]) {
+            let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(f16_bits)).collect();
+            gpu::write_texture_2d(queue, map, 0, bytemuck::cast_slice(&halves));
+        }
         let depth = self.depth_view(device, size).clone();
         let drawn = self.sea.as_ref().expect("made by encode_sea");
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
@@ -250,6 +282,20 @@ impl Renderer {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn half_floats_keep_the_waves_numbers_to_three_decimal_digits() {
+        for x in [0.0f32, 1.0, -2.5, 0.3337, 1.0e-3, 7.99, -0.0123] {
+            let h = f16_bits(x);
+            // Back from half precision by its definition: sign, 5-bit exponent, 10-bit fraction.
+            let (e, f) = (((h >> 10) & 0x1f) as i32, (h & 0x3ff) as f32);
+            let back = if e == 0 { 0.0 } else { (1.0 + f / 1024.0) * 2f32.powi(e - 15) };
+            let back = if h & 0x8000 != 0 { -back } else { back };
+            assert!((back - x).abs() <= x.abs() / 1024.0 + 1.0e-7, "{x} came back as {back}");
+        }
+        assert_eq!(f16_bits(1.0), 0x3c00);
+        assert_eq!(f16_bits(-2.0), 0xc000);
+    }
 
     #[test]
     fn the_grid_reaches_below_the_screen_and_up_to_the_horizon() {
