@@ -14,10 +14,11 @@ struct Sea {
     up: vec4<f32>,                 // camera's up times tan(half the field down)
     forward: vec4<f32>,            // camera's forward
     grid: vec4<f32>,               // the grid's screen rectangle (NDC): x from, x to, y from, y to
-    cells: vec4<f32>,              // columns, rows, choppiness lambda, a cell's angle (rad)
-    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m), all slopes'
-                                   // variance, whitecaps drawn (1) or not (0, for tests)
-    cascades: array<vec4<f32>, 5>, // cos, sin of the cascade's turn, its tile (m), slope variance
+    cells: vec4<f32>,              // columns, rows, a cell's angle (rad)
+    waves: vec4<f32>,              // choppiness lambda, all cascades' slope variance, whitecaps
+                                   // drawn (1) or not (0, for tests)
+    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m)
+    cascades: array<vec4<f32>, CASCADES>, // cos, sin of the turn, tile (m), slope variance
 }
 
 @group(2) @binding(0) var<uniform> sea: Sea;
@@ -26,7 +27,6 @@ struct Sea {
 @group(2) @binding(1) var sea_surface: texture_2d_array<f32>;
 @group(2) @binding(2) var sea_displacement: texture_2d_array<f32>;
 
-const CASCADES: i32 = 5;
 // A cascade is whole while a footprint spans at most FADE_TEXELS of its texels, gone at twice.
 const FADE_TEXELS: f32 = 2.0;
 // Distance (m) standing for "to infinity" along a ray into the sky.
@@ -81,13 +81,14 @@ fn rest_point(dir: vec3<f32>) -> vec2<f32> {
 
 // Optical depth of the haze along `dist` m of a ray from the eye in unit direction dir:
 // (1/L) e^(-y0/H) times the integral of e^(-dir.y t / H) over the path, which for a ray into
-// the sky is H / dir.y. A ray skimming down to the sea far off takes at least the depth of the
-// ray as far above the horizon: both sides of the horizon meet in the same haze, with no seam.
+// the sky is H / dir.y. Just under the horizon (within HORIZON_HAZE_BAND rad) a ray down to the
+// sea takes at least the depth of the ray as far above it: both sides of the horizon meet in
+// the same haze, with no seam, from any height.
 fn haze_depth(dir: vec3<f32>, dist: f32) -> f32 {
     let h = sea.fog.y;
     let k = max(dir.y * dist / h, -40.0);
     let shape = select((1.0 - exp(-k)) / k, 1.0 - 0.5 * k, abs(k) < 1.0e-3);
-    let skim = h / max(abs(dir.y), 1.0e-6);
+    let skim = h / max(abs(dir.y), 1.0e-6) * (1.0 - smoothstep(0.0, HORIZON_HAZE_BAND, -dir.y));
     return sea.fog.x * exp(-sea.eye.y / h) * max(dist * shape, skim);
 }
 
@@ -141,7 +142,7 @@ fn add_gradient(t: vec3<f32>, c: i32, w: f32, displacement: vec4<f32>, surface: 
 // Whitecaps: where the choppy waves squeeze the water to under WHITECAP_JACOBIAN of its area
 // at rest the crests are about to break; white from a little above it.
 fn whitecap(jacobian: f32) -> f32 {
-    return smoothstep(WHITECAP_JACOBIAN + 0.15, WHITECAP_JACOBIAN, jacobian);
+    return 1.0 - smoothstep(WHITECAP_JACOBIAN, WHITECAP_JACOBIAN + 0.15, jacobian);
 }
 
 // Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
@@ -158,7 +159,7 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
     let rest = rest_point(dir);
     // The cell's length on the water along the ray (m): its angle over the grazing angle.
     let dist = distance(rest, sea.eye.xz);
-    let footprint = sea.cells.w * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
+    let footprint = sea.cells.z * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
     var height = 0.0;
     var carry = vec2<f32>(0.0);
     var gradient = vec3<f32>(0.0);
@@ -172,9 +173,9 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
         gradient = add_gradient(gradient, c, w, displacement, surface);
     }
     var out: SeaOut;
-    let l = sea.cells.z * gradient;
+    let l = sea.waves.x * gradient;
     out.jacobian = (1.0 - l.x) * (1.0 - l.z) - l.y * l.y;
-    let moved = rest - sea.cells.z * carry;
+    let moved = rest - sea.waves.x * carry;
     out.world = vec3<f32>(moved.x, height + ripples_at(rest, footprint).x, moved.y);
     out.rest = rest;
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
@@ -203,7 +204,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let dist = length(to_point);
     let v = to_point / dist;
     let foam = WHITECAP_ALBEDO * (sky_light() + sun_light() * max(scene.sun.y, 0.0));
-    let colour = mix(sea_colour(v, n, sqrt(removed)), foam, whitecap(in.jacobian) * sea.fog.w);
+    let colour = mix(sea_colour(v, n, sqrt(removed)), foam, whitecap(in.jacobian) * sea.waves.z);
     return finish(through_haze(colour, v, dist));
 }
 
@@ -215,7 +216,7 @@ fn fs_sea_sky(in: FullscreenOut) -> @location(0) vec4<f32> {
     let dir = normalize(sea.forward.xyz + ndc.x * sea.right.xyz + ndc.y * sea.up.xyz);
     let below = dir.y < 0.0;
     let level = vec3<f32>(0.0, 1.0, 0.0);
-    let colour = select(sky_colour(dir), sea_colour(dir, level, sqrt(sea.fog.z)), below);
+    let colour = select(sky_colour(dir), sea_colour(dir, level, sqrt(sea.waves.y)), below);
     let dist = select(FAR_AWAY, sea.eye.y / -dir.y, below);
     return finish(through_haze(colour, dir, dist));
 }

@@ -262,7 +262,10 @@ fn render(o: &RenderArgs) -> Result<(), String> {
     demo.camera.clamp();
     let radius = demo.params.get(ParamId::DropRadius);
     let strength = demo.params.get(ParamId::DropStrength);
-    for d in random_drops(o.seed, o.drops, HALF_WIDTH, radius, strength) {
+    // In the sea the drops fall over its patch (grown there as the patch is wider).
+    let sea = demo.drawn_scene() == wavepool::sea::SceneKind::Sea;
+    let over = if sea { wavepool::sea::PATCH_HALF_WIDTH } else { HALF_WIDTH };
+    for d in random_drops(o.seed, o.drops, over, radius, strength) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);
     }
     let (width, height) = (o.frame.width, o.frame.height);

@@ -6,7 +6,7 @@
 
 use glam::Vec3;
 
-use crate::ambient::cascades::WHITECAP_JACOBIAN;
+use crate::ambient::cascades::{CASCADE_COUNT, WHITECAP_JACOBIAN};
 use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -55,6 +55,10 @@ pub const SEA_BACKSCATTER: f32 = 0.002;
 pub fn deep_water_albedo() -> [f32; 3] {
     SEA_ABSORPTION.map(|a| 0.33 * SEA_BACKSCATTER / (a + SEA_BACKSCATTER))
 }
+
+/// How far under the horizon (rad, about 2°) a ray down to the sea takes the haze of the ray
+/// as far above it, so that water and sky meet in one colour there.
+pub const HORIZON_HAZE_BAND: f32 = 0.035;
 
 /// The fog's scale height (m): its density falls by e every this much above the sea.
 pub const FOG_HEIGHT: f32 = 100.0;
@@ -215,7 +219,8 @@ pub fn wgsl_constants() -> String {
     format!(
         "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
          const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\n\
-         const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\n\
+         const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
+         const HORIZON_HAZE_BAND: f32 = {HORIZON_HAZE_BAND:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
     )
 }

@@ -512,14 +512,9 @@ impl WebDemo {
         camera.distance = finite(distance, camera.distance);
         camera.clamp();
         if !yaw.is_finite() || camera.pitch != pitch || camera.distance != distance {
-            warn(&format!(
-                "wavepool: camera ({yaw}, {pitch}, {distance}) is outside yaw any, pitch {:?}, distance {:?}; using ({}, {}, {})",
-                camera.limits.pitch,
-                camera.limits.distance,
-                camera.yaw,
-                camera.pitch,
-                camera.distance
-            ));
+            let (limits, (y, p, d)) = (camera.limits, (camera.yaw, camera.pitch, camera.distance));
+            let ranges = format!("yaw any, pitch {:?}, distance {:?}", limits.pitch, limits.distance);
+            warn(&format!("wavepool: camera ({yaw}, {pitch}, {distance}) is outside {ranges}; using ({y}, {p}, {d})"));
         }
         self.demo.camera = camera;
     }

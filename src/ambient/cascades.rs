@@ -68,6 +68,8 @@ const CASCADES: [CascadeSpec; 5] = [
     },
     CascadeSpec { tile: 15.1, longest: MIDDLE_SHORTEST, shortest: 0.0, shared_with: [0.0; 2], angle_deg: 33.1 },
 ];
+/// How many cascades the sea sums.
+pub const CASCADE_COUNT: usize = CASCADES.len();
 /// Side of each cascade's tile (m).
 pub const CASCADE_TILES: [f32; 5] =
     [CASCADES[0].tile, CASCADES[1].tile, CASCADES[2].tile, CASCADES[3].tile, CASCADES[4].tile];

@@ -61,14 +61,9 @@ impl WaterDemo {
         if !(x.is_finite() && z.is_finite()) {
             return;
         }
-        if let Some(patch) = self.sea_patch_mut() {
-            let (w, k) = (sea::PATCH_HALF_WIDTH, sea::patch_scale());
-            patch.add_drop(Drop {
-                x: x.clamp(-w, w),
-                z: z.clamp(-w, w),
-                radius: r * k,
-                strength: s * k * sea::PATCH_DROP_HEIGHT,
-            });
+        let (w, k) = (sea::PATCH_HALF_WIDTH, sea::patch_scale());
+        let (radius, strength) = (r * k, s * k * sea::PATCH_DROP_HEIGHT);
+        if self.drop_in_sea(Drop { x: x.clamp(-w, w), z: z.clamp(-w, w), radius, strength }) {
             return;
         }
         let w = scene::HALF_WIDTH;

@@ -85,6 +85,8 @@ pub struct WaterDemo {
     sea: Option<sea::Sea>,
     /// The sea draws its whitecaps (off only in tests).
     sea_whitecaps: bool,
+    /// Drops asked for in the sea before its first frame made its patch.
+    early_sea_drops: Vec<crate::sim::Drop>,
 }
 
 /// A demo made in steps, each short enough to leave a browser's thread responsive (at most
@@ -170,6 +172,7 @@ impl WaterDemo {
             other_camera: crate::sea::default_camera(),
             sea: None,
             sea_whitecaps: true,
+            early_sea_drops: Vec::new(),
         };
         demo.refresh_ambient();
         demo.place_bodies_at_start();
@@ -255,6 +258,7 @@ impl WaterDemo {
     /// Flattens the water and puts the bodies back where they started, at rest.
     pub fn reset(&mut self, queue: &wgpu::Queue) {
         self.water.reset(queue);
+        self.reset_sea(queue);
         self.place_bodies_at_start();
     }
 

@@ -8,7 +8,7 @@ use crate::ambient::cascades::SeaWaves;
 use crate::params::ParamId;
 use crate::render::{AmbientView, SeaView, View, SEA_CASCADES};
 use crate::sea::{self, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
-use crate::sim::{HeightField, WaveSettings};
+use crate::sim::{Drop, HeightField, WaveSettings};
 
 /// The sea's waves and the settings they were made for, and the patch of simulated water.
 pub(super) struct Sea {
@@ -37,8 +37,12 @@ impl WaterDemo {
             self.camera_scene = wanted;
         }
         if wanted == SceneKind::Sea {
-            let crest = self.sea_settings().crest_bound();
-            self.camera.keep_eye_above(crest + EYE_OVER_CRESTS);
+            // Over the crests: by a steeper view, and where the steepest is not enough (a
+            // high sea, the camera near), from farther away.
+            let clearance = self.sea_settings().crest_bound() + EYE_OVER_CRESTS;
+            self.camera.keep_eye_above(clearance);
+            let highest = self.camera.limits.pitch.1.to_radians().sin();
+            self.camera.distance = self.camera.distance.max(clearance / highest);
         }
     }
 
@@ -61,14 +65,18 @@ impl WaterDemo {
     fn sea(&mut self, device: &wgpu::Device) -> &mut Sea {
         let settings = self.sea_settings();
         match &mut self.sea {
-            Some(sea) if sea.settings != settings => {
+            // The fog is drawn, not in the waves: a change of it makes nothing again.
+            Some(sea) if sea.settings.waves() != settings.waves() => {
                 sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
                 sea.settings = settings;
             }
             Some(_) => {}
             None => {
                 let engine = self.water.engine();
-                let patch = HeightField::new_on(device, sea::PATCH_CELLS, sea::PATCH_HALF_WIDTH, engine);
+                let mut patch = HeightField::new_on(device, sea::PATCH_CELLS, sea::PATCH_HALF_WIDTH, engine);
+                for drop in self.early_sea_drops.drain(..) {
+                    patch.add_drop(drop);
+                }
                 self.sea = Some(Sea { waves: SeaWaves::new(&settings.waves(), SEA_LATTICE), settings, patch });
             }
         }
@@ -81,13 +89,27 @@ impl WaterDemo {
         self.sea_whitecaps = on;
     }
 
-    /// The open sea's patch of simulated water while the sea is drawn (for drops), and once
-    /// made (for tests).
-    pub(super) fn sea_patch_mut(&mut self) -> Option<&mut HeightField> {
-        let drawn = self.camera_scene == SceneKind::Sea;
-        self.sea.as_mut().filter(|_| drawn).map(|s| &mut s.patch)
+    /// Puts `drop` (sea coordinates, m) in the sea's patch if the sea is drawn (kept for the
+    /// patch until its first frame makes it); false in the pool.
+    pub(super) fn drop_in_sea(&mut self, drop: Drop) -> bool {
+        if self.camera_scene != SceneKind::Sea {
+            return false;
+        }
+        match &mut self.sea {
+            Some(sea) => sea.patch.add_drop(drop),
+            None => self.early_sea_drops.push(drop),
+        }
+        true
     }
 
+    /// Flattens the sea's patch (with the pool's water, [`WaterDemo::reset`]).
+    pub(super) fn reset_sea(&mut self, queue: &wgpu::Queue) {
+        if let Some(sea) = &mut self.sea {
+            sea.patch.reset(queue);
+        }
+    }
+
+    /// The sea's patch of simulated water, once the sea has been drawn (for tests).
     pub fn sea_patch(&self) -> Option<&HeightField> {
         self.sea.as_ref().map(|s| &s.patch)
     }

@@ -15,7 +15,10 @@ use crate::sea::{FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE
 use crate::sim::HeightField;
 
 /// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
-pub const SEA_CASCADES: usize = 5;
+pub const SEA_CASCADES: usize = crate::ambient::cascades::CASCADE_COUNT;
+/// The most the grid reaches past the screen's edges (NDC): a camera low over a storm asks
+/// about one screen; past that the cells spread thin.
+const MAX_GRID_MARGIN: f32 = 1.5;
 
 const WGSL: &str = crate::wgsl!("sea.wgsl");
 
@@ -50,6 +53,7 @@ struct SeaUniforms {
     forward: [f32; 4],
     grid: [f32; 4],
     cells: [f32; 4],
+    waves: [f32; 4],
     fog: [f32; 4],
     cascades: [[f32; 4]; SEA_CASCADES],
 }
@@ -187,7 +191,7 @@ fn grid_layout(camera: &OrbitCamera, reach: f32, size: (u32, u32)) -> ([f32; 4],
     // The margin: the largest sideways carry and heave, seen at the nearest water in view.
     let bottom = (forward - up).normalize();
     let nearest = if bottom.y < 0.0 { eye.y / -bottom.y } else { GRID_FAR };
-    let margin = (reach / (nearest * up.length())).clamp(0.02, 0.5);
+    let margin = (reach / (nearest * up.length())).clamp(0.02, MAX_GRID_MARGIN);
     // The horizon of the grid's far edge, straight ahead.
     let ahead = Vec2::new(forward.x, forward.z).normalize_or(Vec2::X) * GRID_FAR;
     let far_edge = Vec3::new(ahead.x, -eye.y, ahead.y);
@@ -252,13 +256,9 @@ impl Renderer {
             up: up.extend(0.0).to_array(),
             forward: forward.extend(0.0).to_array(),
             grid: rect,
-            cells: [cells.0 as f32, cells.1 as f32, sea.choppiness, angle],
-            fog: [
-                sea.fog_distance.map_or(0.0, |d| 1.0 / d),
-                FOG_HEIGHT,
-                sea.cascades.iter().map(|c| c.2).sum(),
-                if sea.whitecaps { 1.0 } else { 0.0 },
-            ],
+            cells: [cells.0 as f32, cells.1 as f32, angle, 0.0],
+            waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), if sea.whitecaps { 1.0 } else { 0.0 }, 0.0],
+            fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
         };
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
