@@ -264,12 +264,20 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
             .await;
         let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
         let spread = browser.screenshot().await.luma_spread(rect);
+        // The open sea is in the single file too.
+        browser.js("window.demo.set('scene', 'sea'); return true;").await;
+        let at_sea = browser.wait_for("window.demo.stats().scene === 'sea'", Duration::from_secs(30)).await;
+        let sea_spread = browser.screenshot().await.luma_spread(rect);
+        assert!(
+            at_sea && sea_spread > 12.0,
+            "the sea did not draw from the single file on {backend} ({sea_spread:.1})"
+        );
         browser.goto(&server.url(&format!("/?backend={backend}&quality=1"))).await;
         let took_http = browser.wait_ready("#pool", READY).await;
         let http_first = browser.js("return window.demo.stats().firstFrameMs;").await;
         println!(
             "file:// on {backend}: {size} bytes, ready in {took:?} (first frame {:.0} ms after mount), luma spread {spread:.1}, \
-             fetched {}; dist/ over HTTP: ready in {took_http:?} (first frame {:.0} ms after mount)",
+             fetched {}, the sea's luma spread {sea_spread:.1}; dist/ over HTTP: ready in {took_http:?} (first frame {:.0} ms after mount)",
             r["firstFrameMs"].as_f64().unwrap_or(f64::NAN),
             r["resources"],
             http_first.as_f64().unwrap_or(f64::NAN)
