@@ -93,16 +93,19 @@ fn haze_depth(dir: vec3<f32>, dist: f32) -> f32 {
 }
 
 // Light arriving at the eye from `colour` `dist` m away along dir through the haze, which
-// glows with the sky's colour at the horizon in that direction.
+// glows with the sky's colour at the horizon in that direction (the deck's fit of it).
 fn through_haze(colour: vec3<f32>, dir: vec3<f32>, dist: f32) -> vec3<f32> {
-    let horizon = normalize(vec3<f32>(dir.x, HORIZON_LIFT * length(dir.xz), dir.z));
-    let haze = textureSampleLevel(sky_cube, clamp_sampler, horizon, 0.0).rgb * SKY_RANGE;
-    return mix(haze, colour, exp(-haze_depth(dir, dist)));
+    return mix(horizon_colour(dir.xz), colour, exp(-haze_depth(dir, dist)));
 }
 
-// The light the deep water sends back up: what it scatters of the sun's and the sky's light.
+// The sun's and the sky's light falling on the level sea.
+fn light_on_sea() -> vec3<f32> {
+    return sky_light() + sun_light() * max(scene.sun.y, 0.0);
+}
+
+// The light the deep water sends back up: what it scatters of the light falling on it.
 fn deep_water() -> vec3<f32> {
-    return DEEP_WATER_ALBEDO * (sky_light() + sun_light() * max(scene.sun.y, 0.0));
+    return DEEP_WATER_ALBEDO * light_on_sea();
 }
 
 // The sea's colour seen along unit v with surface normal n: the mirrored sky and sun by
@@ -203,7 +206,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
     let v = to_point / dist;
-    let foam = WHITECAP_ALBEDO * (sky_light() + sun_light() * max(scene.sun.y, 0.0));
+    let foam = WHITECAP_ALBEDO * light_on_sea();
     let colour = mix(sea_colour(v, n, sqrt(removed)), foam, whitecap(in.jacobian) * sea.waves.z);
     return finish(through_haze(colour, v, dist));
 }
