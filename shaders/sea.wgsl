@@ -15,8 +15,11 @@ struct Sea {
     forward: vec4<f32>,            // camera's forward
     grid: vec4<f32>,               // the grid's screen rectangle (NDC): x from, x to, y from, y to
     cells: vec4<f32>,              // columns, rows, a cell's angle (rad)
-    waves: vec4<f32>,              // choppiness lambda, all cascades' slope variance, whitecaps
-                                   // drawn (1) or not (0, for tests)
+    waves: vec4<f32>,              // choppiness lambda, all cascades' slope variance
+    foam: vec4<f32>,               // whitecaps drawn (1) or not (0, for tests), the shore's
+                                   // foam drawn or not, the highest crest (m)
+    mirror: vec4<f32>,             // 1 / the target's width and height (px): a pixel's place
+                                   // in the island's mirror (sea_island.wgsl)
     fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m)
     cascades: array<vec4<f32>, CASCADES>, // cos, sin of the turn, tile (m), slope variance
 }
@@ -108,16 +111,18 @@ fn deep_water() -> vec3<f32> {
     return DEEP_WATER_ALBEDO * light_on_sea();
 }
 
-// The sea's colour seen along unit v with surface normal n: the mirrored sky and sun by
-// Fresnel's reflectance, over the deep water's light. rough: the rms slope of the waves too
+// The sea's colour seen along unit v with surface normal n: the mirrored sky (or the island,
+// `mirrored`: its colour and coverage) and sun by Fresnel's reflectance, over `under`, the
+// light coming up out of the water. rough: the rms slope of the waves too
 // small to be drawn here; their facets face the eye by about that much even where the drawn
 // surface is seen edge-on, so a rough sea mirrors less at grazing than a smooth one (the sea
 // at the horizon is darker than the sky above it).
-fn sea_colour(v: vec3<f32>, n: vec3<f32>, rough: f32) -> vec3<f32> {
+fn sea_colour(v: vec3<f32>, n: vec3<f32>, rough: f32, under: vec3<f32>, mirrored: vec4<f32>) -> vec3<f32> {
     var r = reflect(v, n);
     r.y = abs(r.y); // a ray mirrored down runs into the next wave: it sees the sky as well
     let f = reflectance(max(dot(-v, n), rough), IOR_AIR / IOR_WATER);
-    return mix(deep_water(), sky_colour(r) + sun_specular(r, n), f);
+    let seen = mix(sky_colour(r), mirrored.rgb, mirrored.a);
+    return mix(under, seen + sun_specular(r, n), f);
 }
 
 struct SeaOut {
@@ -206,8 +211,21 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
     let v = to_point / dist;
-    let foam = WHITECAP_ALBEDO * light_on_sea();
-    let colour = mix(sea_colour(v, n, sqrt(removed)), foam, whitecap(in.jacobian) * sea.waves.z);
+    var under = deep_water();
+    var foam = whitecap(in.jacobian) * sea.foam.x;
+    var mirrored = vec4<f32>(0.0);
+    if ISLAND {
+        mirrored = mirrored_land(in.clip.xy, n);
+    }
+    if ISLAND && on_island_map(in.world.xz) {
+        let ground = ground_at(in.world.xz);
+        let depth = in.world.y - ground.x;
+        if depth < SEE_DEPTH {
+            under = seen_through_water(v, n, depth, ground);
+        }
+        foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), in.world.xz) * sea.foam.y);
+    }
+    let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_sea(), foam);
     return finish(through_haze(colour, v, dist));
 }
 
@@ -219,7 +237,7 @@ fn fs_sea_sky(in: FullscreenOut) -> @location(0) vec4<f32> {
     let dir = normalize(sea.forward.xyz + ndc.x * sea.right.xyz + ndc.y * sea.up.xyz);
     let below = dir.y < 0.0;
     let level = vec3<f32>(0.0, 1.0, 0.0);
-    let colour = select(sky_colour(dir), sea_colour(dir, level, sqrt(sea.waves.y)), below);
+    let colour = select(sky_colour(dir), sea_colour(dir, level, sqrt(sea.waves.y), deep_water(), vec4<f32>(0.0)), below);
     let dist = select(FAR_AWAY, sea.eye.y / -dir.y, below);
     return finish(through_haze(colour, dir, dist));
 }

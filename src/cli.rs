@@ -125,8 +125,17 @@ struct RenderArgs {
     /// 1.5..12, the sea's 3..600).
     #[arg(long, value_name = "M", value_parser = |s: &str| number(s, POOL_LIMITS.distance.0, SEA_LIMITS.distance.1))]
     distance: Option<f32>,
+    /// The point the camera orbits (m, "x,y,z"; in the sea y is the water's mean level at 0).
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = point)]
+    target: Option<glam::Vec3>,
     #[command(flatten)]
     frame: FrameArgs,
+}
+
+/// A point "x,y,z" (m), each within 10 km.
+fn point(s: &str) -> Result<glam::Vec3, String> {
+    let parts: Vec<f32> = s.split(',').map(|p| number(p.trim(), -10_000.0f32, 10_000.0)).collect::<Result<_, _>>()?;
+    <[f32; 3]>::try_from(parts).map(glam::Vec3::from).map_err(|_| format!("{s}: three numbers x,y,z"))
 }
 
 #[derive(Args, Debug)]
@@ -258,6 +267,9 @@ fn render(o: &RenderArgs) -> Result<(), String> {
     }
     if let Some(d) = o.distance {
         demo.camera.distance = d;
+    }
+    if let Some(target) = o.target {
+        demo.camera.target = target;
     }
     demo.camera.clamp();
     let radius = demo.params.get(ParamId::DropRadius);

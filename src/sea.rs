@@ -4,6 +4,8 @@
 //! at the horizon. This file holds the scene's choice, its parameters and its camera's limits.
 //! Lengths in metres, angles in degrees.
 
+pub mod island;
+
 use glam::Vec3;
 
 use crate::ambient::cascades::{CASCADE_COUNT, WHITECAP_JACOBIAN};
@@ -48,6 +50,9 @@ pub const SEA_LATTICE: usize = 64;
 /// 530 and 450 nm), and the share of light its molecules and particles scatter back (1/m).
 pub const SEA_ABSORPTION: [f32; 3] = [0.35, 0.05, 0.015];
 pub const SEA_BACKSCATTER: f32 = 0.002;
+/// What the water's particles scatter out of a beam (1/m, all colours): with the absorption,
+/// how far down the floor can be seen (a few tens of metres in clear coastal water).
+pub const SEA_SCATTERING: f32 = 0.05;
 
 /// The deep sea's albedo per channel: as a diffuse reflector it sends back about a third of
 /// b_b / (a + b_b) of the light falling on it (Gordon's approximation of the irradiance
@@ -88,9 +93,10 @@ pub fn patch_scale() -> f32 {
 }
 pub const PATCH_DROP_HEIGHT: f32 = 3.0;
 
-/// The camera the sea starts with: 40 m from a target on the water, 9° above the horizon.
+/// The camera the sea starts with: 40 m from a target on the water, 9° above the horizon,
+/// looking towards the island.
 pub fn default_camera() -> OrbitCamera {
-    OrbitCamera { yaw: -25.0, pitch: 9.0, distance: 40.0, target: Vec3::ZERO, fov_y: 45.0, limits: SEA_LIMITS }
+    OrbitCamera { yaw: 160.0, pitch: 9.0, distance: 40.0, target: Vec3::ZERO, fov_y: 45.0, limits: SEA_LIMITS }
 }
 
 /// The sea's settings, from its parameters.
@@ -105,6 +111,8 @@ pub struct SeaSettings {
     pub choppiness: f32,
     /// The fog's distance at sea level (m): light over it is dimmed to 1/e; `None`: no fog.
     pub fog_distance: Option<f32>,
+    /// Whether the island ([`island`]) stands in the sea.
+    pub island: bool,
 }
 
 impl SeaSettings {
@@ -116,6 +124,7 @@ impl SeaSettings {
             wave_height: value("sea_wave_height"),
             choppiness: value("sea_choppiness"),
             fog_distance: (value("sea_fog") >= 0.5).then(|| value("sea_fog_distance")),
+            island: value("sea_island") >= 0.5,
         }
     }
 
@@ -208,21 +217,37 @@ pub const PARAMS: &[ParamSpec] = &[
         default: 4000.0,
         help: "Distance over which the haze at sea level dims light to 37 %.",
     },
+    ParamSpec {
+        name: "sea_island",
+        label: "Island",
+        group: "Scene",
+        unit: "",
+        control: Control::Toggle,
+        default: 1.0,
+        help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore.",
+    },
 ];
 
 /// The whitecaps' albedo: foam sends back most of the light falling on it.
 pub const WHITECAP_ALBEDO: f32 = 0.75;
 
-/// The sea's WGSL constants.
-pub fn wgsl_constants() -> String {
+/// The sea's WGSL constants, with the island (`ISLAND`) or without.
+pub fn wgsl_constants(island: bool) -> String {
     let [r, g, b] = deep_water_albedo();
-    format!(
-        "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
+    let [ar, ag, ab] = SEA_ABSORPTION;
+    let absorption = format!(
+        "const SEA_ABSORPTION: vec3<f32> = vec3<f32>({ar:?}, {ag:?}, {ab:?});\nconst SEA_SCATTERING: f32 = {SEA_SCATTERING:?};\n"
+    );
+    let island = format!("const ISLAND: bool = {island};\n{}", island::wgsl_constants());
+    absorption
+        + &island
+        + &format!(
+            "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
          const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\n\
          const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
          const HORIZON_HAZE_BAND: f32 = {HORIZON_HAZE_BAND:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
-    )
+        )
 }
 
 #[cfg(test)]

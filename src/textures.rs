@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::sky::Daylight;
+use crate::util::hash01;
 
 /// Tiles per metre along each axis (12.5 cm tiles).
 pub const TILES_PER_METRE: u32 = 8;
@@ -68,15 +69,6 @@ impl SrgbEncoder {
     }
 }
 
-/// Small integer hash to a value in [0, 1).
-fn hash(a: u32, b: u32) -> f32 {
-    let mut h = a.wrapping_mul(0x9E37_79B9) ^ b.wrapping_mul(0x85EB_CA6B);
-    h ^= h >> 15;
-    h = h.wrapping_mul(0x2C1B_3C6D);
-    h ^= h >> 12;
-    (h & 0xFFFF) as f32 / 65536.0
-}
-
 /// Linear RGB of the tile texture at texel (x, y): pale blue-white glazed tiles, each a
 /// little different, a soft bevel at their edges and grey grout between them.
 fn tile_texel(x: u32, y: u32) -> [f32; 3] {
@@ -88,9 +80,9 @@ fn tile_texel(x: u32, y: u32) -> [f32; 3] {
     if edge < grout_width {
         return [0.42, 0.46, 0.47].map(srgb_to_linear);
     }
-    let variation = (hash(tx, ty) - 0.5) * 0.06;
+    let variation = (hash01(tx, ty) - 0.5) * 0.06;
     let bevel = 1.0 - 0.10 * (1.0 - ((edge - grout_width) / 3.0).min(1.0));
-    let speckle = (hash(x, y ^ 0x5bd1) - 0.5) * 0.015;
+    let speckle = (hash01(x, y ^ 0x5bd1) - 0.5) * 0.015;
     let base = [0.80, 0.89, 0.93];
     base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0)))
 }

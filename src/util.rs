@@ -1,4 +1,4 @@
-//! Small helpers every layer may use: building triangle meshes on the CPU.
+//! Small helpers every layer may use: building triangle meshes on the CPU, a lattice hash.
 
 use glam::Vec3;
 
@@ -38,4 +38,13 @@ pub fn unit_sphere(stacks: u32, slices: u32) -> (Vec<[f32; 3]>, Vec<u32>) {
         }
     }
     (positions.iter().map(|p| p.to_array()).collect(), indices)
+}
+
+/// Small integer hash to a value in [0, 1).
+pub fn hash01(a: u32, b: u32) -> f32 {
+    let mut h = a.wrapping_mul(0x9E37_79B9) ^ b.wrapping_mul(0x85EB_CA6B);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x2C1B_3C6D);
+    h ^= h >> 12;
+    (h & 0xFFFF) as f32 / 65536.0
 }

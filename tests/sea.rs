@@ -1,24 +1,29 @@
 //! The open sea (`scene` = sea) on the headless GPU: the horizon where water meets sky, the
-//! picture, the clicks' ripples, the whitecaps, and the pool coming back unchanged after it.
+//! picture, the clicks' ripples, the whitecaps, the island's shore foam and mirror image, and
+//! the pool coming back unchanged after it.
 // The tests read the sea's patch back from the GPU, waiting for it.
 #![allow(clippy::disallowed_methods)]
 
 mod common;
 
 use common::{demo, render, Frame, Rect};
+use glam::{Vec2, Vec3, Vec4};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::params::ParamId;
+use wavepool::sea::island;
 
 const SIZE: (u32, u32) = (320, 240);
 
-/// A sea demo with its camera at `pitch` (degrees down) and `distance` (m) from its target.
+/// A sea demo with its camera at `pitch` (degrees down) and `distance` (m) from its target,
+/// looking away from the island, which is left out (these tests are about the open water),
+/// across the wind (its waves run from the left).
 fn sea(pitch: f32, distance: f32, fog: bool) -> WaterDemo {
     let mut d = demo(DemoOptions::default());
     d.params.set(ParamId::Scene, 1.0);
+    d.params.set(ParamId::SeaIsland, 0.0);
     d.params.set(ParamId::SeaFog, if fog { 1.0 } else { 0.0 });
     d.sync_scene();
-    d.camera.pitch = pitch;
-    d.camera.distance = distance;
+    (d.camera.yaw, d.camera.pitch, d.camera.distance) = (-25.0, pitch, distance);
     d.camera.clamp();
     d
 }
@@ -177,7 +182,7 @@ fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
         for caps in [true, false] {
             let mut d = demo(DemoOptions::default());
             d.apply_preset(wavepool::presets::find(name).expect("a preset"));
-            d.set_sea_whitecaps(caps);
+            d.set_sea_foam(caps, true);
             // At the page's size: on a coarser grid the finest cascades, the steepest, fade.
             frames.push(render(&mut d, 800, 600, 10, 0.1));
         }
@@ -195,4 +200,117 @@ fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
     );
     assert!(shares[0] > 0.002, "no whitecaps in the storm");
     assert!(shares[1] == 0.0, "whitecaps on a calm sea");
+}
+
+/// Where the eye's ray through pixel (x, y) of a `size` frame meets the mean sea plane (x, z in
+/// m), if it does.
+fn rest_point(d: &WaterDemo, size: (u32, u32), x: u32, y: u32) -> Option<Vec2> {
+    let inverse = d.camera.view_projection(size.0 as f32 / size.1 as f32).inverse();
+    let ndc = Vec2::new((x as f32 + 0.5) / size.0 as f32 * 2.0 - 1.0, 1.0 - (y as f32 + 0.5) / size.1 as f32 * 2.0);
+    let far = inverse * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
+    let eye = d.camera.eye();
+    let dir = (far.truncate() / far.w - eye).normalize();
+    (dir.y < 0.0).then(|| {
+        let p = eye + dir * (eye.y / -dir.y);
+        Vec2::new(p.x, p.z)
+    })
+}
+
+/// The water's depth (m) at a point of the sea plane: the island's ground under it.
+fn depth_at(p: Vec2) -> f32 {
+    -island::height(p)
+}
+
+#[test]
+fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
+    // Seen from 60 m above the coast, where the island's ground first dips under the sea on the
+    // way out from its middle towards the origin.
+    let centre = Vec2::from(island::CENTRE);
+    let out = -centre.normalize();
+    let coast = (0..400).map(|r| centre + out * r as f32).find(|&p| island::height(p) < 0.0).expect("a coast");
+    let mut frames = Vec::new();
+    let mut d = demo(DemoOptions::default());
+    for shore in [true, false] {
+        d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 1.0);
+        d.sync_scene();
+        (d.camera.pitch, d.camera.distance, d.camera.yaw) = (55.0, 70.0, 20.0);
+        d.camera.target = Vec3::new(coast.x, 0.0, coast.y);
+        d.camera.clamp();
+        d.set_sea_foam(false, shore);
+        frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
+    }
+    let (mut foamed, mut foamed_shallow, mut deep, mut deep_foamed, mut edge, mut edge_foamed) = (0, 0, 0, 0, 0, 0);
+    for (x, y) in Rect::ALL.pixels(&frames[0]) {
+        let Some(depth) = rest_point(&d, SIZE, x, y).map(depth_at) else { continue };
+        let whiter = frames[0].luma(x, y) > frames[1].luma(x, y) + 0.05;
+        foamed += usize::from(whiter);
+        // The waves (1.2 m significant height) lift and lower the water over the rest plane.
+        foamed_shallow += usize::from(whiter && depth < island::SHORE_FOAM_DEPTH + 1.2);
+        deep += usize::from(depth > 5.0);
+        deep_foamed += usize::from(whiter && depth > 5.0);
+        edge += usize::from(depth > 0.0 && depth < 0.5);
+        edge_foamed += usize::from(whiter && depth > 0.0 && depth < 0.5);
+    }
+    let share = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
+    println!(
+        "{foamed} pixels foamed: {:.1} % of them over the shallows; {:.1} % of the water within 0.5 m of the \
+         line foamed; {deep_foamed} of {deep} pixels of deep water",
+        share(foamed_shallow, foamed),
+        share(edge_foamed, edge)
+    );
+    assert!(foamed > 100 && edge > 50, "the coast is not in view: {foamed} foamed, {edge} at the waterline");
+    assert!(share(foamed_shallow, foamed) > 95.0, "foam away from the shallows");
+    assert!(share(edge_foamed, edge) > 30.0, "the waterline does not foam");
+    assert!(deep > 1000 && deep_foamed == 0, "foam on deep water: {deep_foamed}");
+}
+
+#[test]
+fn the_island_is_mirrored_in_the_sea_below_it() {
+    // The lesson's view of the island, drawn with it and without it.
+    let mut frames = Vec::new();
+    let mut d = demo(DemoOptions::default());
+    for shown in [1.0, 0.0] {
+        d = demo(DemoOptions::default());
+        d.apply_preset(wavepool::presets::find("sea").expect("the sea preset"));
+        d.params.set(ParamId::SeaIsland, shown);
+        d.sync_scene();
+        frames.push(render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0));
+    }
+    let changed = |x: u32, y: u32| {
+        let (a, b) = (frames[0].pixel(x, y), frames[1].pixel(x, y));
+        (0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f32::max) > 4.0 / 255.0
+    };
+    // The island's columns: where it stands over the horizon.
+    let row = horizon_row(&d, SIZE.1).floor() as u32;
+    let island_columns: Vec<bool> = (0..SIZE.0).map(|x| (0..row.saturating_sub(2)).any(|y| changed(x, y))).collect();
+    // Deep water (the floor out of sight) under the horizon: in those columns, and in those
+    // clear of them by 10 pixels.
+    let (mut under, mut under_changed, mut clear, mut clear_changed) = (0, 0, 0, 0);
+    for x in 0..SIZE.0 {
+        let near = (x.saturating_sub(10)..(x + 10).min(SIZE.0)).any(|c| island_columns[c as usize]);
+        for y in row + 2..SIZE.1 {
+            let deep = rest_point(&d, SIZE, x, y).is_some_and(|p| depth_at(p) > island::SEE_DEPTH);
+            if !deep {
+                continue;
+            }
+            if island_columns[x as usize] && y < row + SIZE.1 / 6 {
+                under += 1;
+                under_changed += usize::from(changed(x, y));
+            } else if !near {
+                clear += 1;
+                clear_changed += usize::from(changed(x, y));
+            }
+        }
+    }
+    let share = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
+    let columns = island_columns.iter().filter(|&&c| c).count();
+    println!(
+        "island over {columns} columns; hiding it changes {:.1} % of the deep water below it and {:.2} % elsewhere",
+        share(under_changed, under),
+        share(clear_changed, clear)
+    );
+    assert!(columns > SIZE.0 as usize / 10, "the island is not in view");
+    assert!(under > 200 && share(under_changed, under) > 40.0, "no mirror image of the island");
+    assert!(clear > 1000 && share(clear_changed, clear) < 0.5, "hiding the island changes the open sea");
 }

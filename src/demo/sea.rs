@@ -7,7 +7,7 @@ use super::{Stage, WaterDemo, STEP_DT};
 use crate::ambient::cascades::SeaWaves;
 use crate::params::ParamId;
 use crate::render::{AmbientView, SeaView, View, SEA_CASCADES};
-use crate::sea::{self, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
+use crate::sea::{self, island, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
 use crate::sim::{Drop, HeightField, WaveSettings};
 
 /// The sea's waves and the settings they were made for, and the patch of simulated water.
@@ -39,8 +39,17 @@ impl WaterDemo {
         if wanted == SceneKind::Sea {
             // Over the crests: by a steeper view, and where the steepest is not enough (a
             // high sea, the camera near), from farther away.
-            let clearance = self.sea_settings().crest_bound() + EYE_OVER_CRESTS;
+            let settings = self.sea_settings();
+            let clearance = settings.crest_bound() + EYE_OVER_CRESTS;
             self.camera.keep_eye_above(clearance);
+            if settings.island {
+                // And over the land: the ground under the eye moves as the view steepens;
+                // twice is close enough for the hill's slopes.
+                for _ in 0..2 {
+                    let eye = self.camera.eye();
+                    self.camera.keep_eye_above(island::height(glam::Vec2::new(eye.x, eye.z)) + EYE_OVER_CRESTS);
+                }
+            }
             let highest = self.camera.limits.pitch.1.to_radians().sin();
             self.camera.distance = self.camera.distance.max(clearance / highest);
         }
@@ -83,10 +92,11 @@ impl WaterDemo {
         self.sea.as_mut().expect("made above")
     }
 
-    /// Whether the sea draws its whitecaps (the default) or not (for tests to compare with).
+    /// Whether the sea draws its whitecaps and its shore's foam (the default) or not (for
+    /// tests to compare with).
     #[doc(hidden)]
-    pub fn set_sea_whitecaps(&mut self, on: bool) {
-        self.sea_whitecaps = on;
+    pub fn set_sea_foam(&mut self, whitecaps: bool, shore: bool) {
+        self.sea_foam = [whitecaps, shore];
     }
 
     /// Puts `drop` (sea coordinates, m) in the sea's patch if the sea is drawn (kept for the
@@ -175,7 +185,9 @@ impl WaterDemo {
             surface: &surface,
             displacement: &displacement,
             patch: &sea.patch,
-            whitecaps: self.sea_whitecaps,
+            whitecaps: self.sea_foam[0],
+            shore_foam: self.sea_foam[1],
+            island: settings.island,
         };
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn);
         mark(encoder, Stage::AfterScene);

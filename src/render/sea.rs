@@ -8,6 +8,7 @@
 use glam::{Vec2, Vec3};
 
 use super::resources::water_bind_groups;
+use super::sea_island::{island_map, mesh_pipeline, mirror_layout, IslandDrawing, IslandPipelines, MirrorTarget};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
@@ -21,6 +22,7 @@ pub const SEA_CASCADES: usize = crate::ambient::cascades::CASCADE_COUNT;
 const MAX_GRID_MARGIN: f32 = 1.5;
 
 const WGSL: &str = crate::wgsl!("sea.wgsl");
+const ISLAND_WGSL: &str = crate::wgsl!("sea_island.wgsl");
 
 /// What a frame of the sea depends on besides the scene's [`super::View`].
 pub struct SeaView<'a> {
@@ -37,8 +39,11 @@ pub struct SeaView<'a> {
     /// dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
     pub surface: &'a [[f32; 4]],
     pub displacement: &'a [[f32; 4]],
-    /// Whether whitecaps are drawn (off only for tests to compare with).
+    /// Whether whitecaps and the shore's foam are drawn (off only for tests to compare with).
     pub whitecaps: bool,
+    pub shore_foam: bool,
+    /// Whether the island stands in the sea.
+    pub island: bool,
     /// The patch of simulated water round the target (`sea::PATCH_HALF_WIDTH`), whose
     /// ripples are added to the waves.
     pub patch: &'a HeightField,
@@ -54,6 +59,8 @@ struct SeaUniforms {
     grid: [f32; 4],
     cells: [f32; 4],
     waves: [f32; 4],
+    foam: [f32; 4],
+    mirror: [f32; 4],
     fog: [f32; 4],
     cascades: [[f32; 4]; SEA_CASCADES],
 }
@@ -63,34 +70,57 @@ pub struct SeaRenderer {
     uniforms: wgpu::Buffer,
     maps: [wgpu::Texture; 2],
     group: wgpu::BindGroup,
-    /// The feature set (optics models) the pipelines were built for.
+    /// The feature set (optics models) and the island's presence the pipelines were built for.
     features: Features,
+    island: bool,
     grid: wgpu::RenderPipeline,
+    /// The island's drawing, when it is in the sea.
+    island_drawing: Option<IslandDrawing>,
+    /// The layout of group 3, and the mirror of the island at half the frame's size (a texel
+    /// without the island).
+    mirror_layout: wgpu::BindGroupLayout,
+    mirror: MirrorTarget,
     sky: FullscreenPass,
     /// Group 0 (the scene's uniforms) with the patch's state, one per ping-pong texture.
     patch_groups: [wgpu::BindGroup; 2],
 }
 
 impl SeaRenderer {
-    fn new(renderer: &Renderer, device: &wgpu::Device, features: Features, patch: &HeightField) -> Self {
+    fn new(
+        renderer: &Renderer,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        key: (Features, bool),
+        patch: &HeightField,
+    ) -> Self {
+        let (features, island) = key;
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let filterable = wgpu::TextureSampleType::Float { filterable: true };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sea layout"),
-            entries: &[gpu::uniform_entry(0, vis), layers_entry(1), layers_entry(2)],
+            entries: &[
+                gpu::uniform_entry(0, vis),
+                layers_entry(1),
+                layers_entry(2),
+                gpu::texture_entry(3, vis, filterable, wgpu::TextureViewDimension::D2),
+            ],
         });
         let uniforms = gpu::uniform_buffer(device, "sea uniforms", &<SeaUniforms as bytemuck::Zeroable>::zeroed());
+        let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
         let map = |label| {
-            let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
             let (n, layers) = (SEA_LATTICE as u32, SEA_CASCADES as u32);
             gpu::texture_2d(device, label, n, n, layers, 1, wgpu::TextureFormat::Rgba16Float, usage)
         };
         let maps = [map("sea surface"), map("sea displacement")];
+        let island_map = island_map(device, queue, island);
+        let mirror_layout = mirror_layout(device);
         let views = maps.each_ref().map(|m| {
             m.create_view(&wgpu::TextureViewDescriptor {
                 dimension: Some(wgpu::TextureViewDimension::D2Array),
                 ..Default::default()
             })
         });
+        let island_view = island_map.create_view(&Default::default());
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("sea"),
             layout: &layout,
@@ -98,50 +128,43 @@ impl SeaRenderer {
                 wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
                 wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&views[0]) },
                 wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&views[1]) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&island_view) },
             ],
         });
         let format = renderer.settings.target_format;
-        let prelude = [shaders::scene_prelude(features, format), crate::sea::wgsl_constants()].join("\n");
-        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout];
-        let module = gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude, WGSL]);
-        let grid = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("sea grid"),
-            layout: Some(&gpu::pipeline_layout(device, "sea grid", &layouts)),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_sea"),
-                compilation_options: Default::default(),
-                buffers: &[],
-            },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: wgpu::MultisampleState::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_sea"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
-            }),
-            multiview_mask: None,
-            cache: None,
+        let base = shaders::scene_prelude(features, format);
+        let prelude = |with_island| {
+            let constants = [crate::sea::wgsl_constants(with_island), super::sea_island::wgsl_constants()];
+            [base.clone(), constants.concat()].join("\n")
+        };
+        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &mirror_layout];
+        let module = |with_island| {
+            gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude(with_island), WGSL, ISLAND_WGSL])
+        };
+        let with_mirror = gpu::pipeline_layout(device, "sea", &layouts);
+        let without_mirror = gpu::pipeline_layout(device, "island", &layouts[..3]);
+        let plain = module(false);
+        let grid = IslandPipelines { layouts: [&with_mirror, &without_mirror], module: &plain, format };
+        let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
+        // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
+        // grid that can show them are drawn with its own (see `rows_near_island`).
+        let island_drawing = island.then(|| {
+            let module = module(true);
+            let pipelines = IslandPipelines { layouts: [&with_mirror, &without_mirror], module: &module, format };
+            IslandDrawing::new(device, island_map, &pipelines)
         });
+        let mirror = MirrorTarget::new(device, &mirror_layout, (1, 1));
         let sky = FullscreenPass::new(
             device,
             "sea sky",
-            &[&prelude, WGSL],
+            &[&prelude(false), WGSL, ISLAND_WGSL],
             "fs_sea_sky",
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
         let patch_groups =
             water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
-        Self { uniforms, maps, group, features, grid, sky, patch_groups }
+        Self { uniforms, maps, group, features, island, grid, island_drawing, mirror_layout, mirror, sky, patch_groups }
     }
 }
 
@@ -155,7 +178,7 @@ fn layers_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
 /// largest to infinity: the waves' heights and slopes lie well between). Half floats are
 /// filterable on every backend, so the shader reads each cascade in one bilinear fetch that
 /// wraps round its tile (32-bit floats are not).
-fn f16_bits(x: f32) -> u16 {
+pub(super) fn f16_bits(x: f32) -> u16 {
     let bits = x.to_bits();
     let sign = ((bits >> 16) & 0x8000) as u16;
     let exponent = ((bits >> 23) & 0xff) as i32 - 127 + 15;
@@ -224,8 +247,8 @@ impl Renderer {
         sea: &SeaView<'_>,
     ) {
         let features = Features::of(view);
-        if self.sea.as_ref().is_none_or(|s| s.features != features) {
-            self.sea = Some(SeaRenderer::new(self, device, features, sea.patch));
+        if self.sea.as_ref().is_none_or(|s| (s.features, s.island) != (features, sea.island)) {
+            self.sea = Some(SeaRenderer::new(self, device, queue, (features, sea.island), sea.patch));
         }
         let scaled = self.scaled_size(view, size);
         if scaled != size {
@@ -247,7 +270,11 @@ impl Renderer {
         size: (u32, u32),
         sea: &SeaView<'_>,
     ) {
-        let drawn = self.sea.as_ref().expect("made by encode_sea");
+        let drawn = self.sea.as_mut().expect("made by encode_sea");
+        let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
+        if drawn.island_drawing.is_some() && drawn.mirror.size() != mirror_size {
+            drawn.mirror = MirrorTarget::new(device, &drawn.mirror_layout, mirror_size);
+        }
         let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
         let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
         let u = SeaUniforms {
@@ -257,7 +284,9 @@ impl Renderer {
             forward: forward.extend(0.0).to_array(),
             grid: rect,
             cells: [cells.0 as f32, cells.1 as f32, angle, 0.0],
-            waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), if sea.whitecaps { 1.0 } else { 0.0 }, 0.0],
+            waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), 0.0, 0.0],
+            foam: [f32::from(u8::from(sea.whitecaps)), f32::from(u8::from(sea.shore_foam)), sea.crest, 0.0],
+            mirror: [1.0 / size.0.max(1) as f32, 1.0 / size.1.max(1) as f32, 0.0, 0.0],
             fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
         };
@@ -268,13 +297,28 @@ impl Renderer {
         }
         let depth = self.depth_view(device, size).clone();
         let drawn = self.sea.as_ref().expect("made by encode_sea");
+        let groups =
+            [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group, &drawn.mirror.group];
+        if let Some(island) = &drawn.island_drawing {
+            island.draw_mirrored(encoder, &drawn.mirror, &groups[..3]);
+        }
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
-        let groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
         pass.set_pipeline(&drawn.grid);
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
-        pass.draw(0..cells.0 * cells.1 * 6, 0..1);
+        let row = cells.0 * 6;
+        match &drawn.island_drawing {
+            Some(island) => {
+                let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
+                let near = island.rows_near(view_proj, rect, cells.1, sea.crest);
+                pass.draw(0..near.start * row, 0..1);
+                pass.draw(near.end * row..cells.1 * row, 0..1);
+                island.draw_shallows(&mut pass, near.start * row..near.end * row);
+                island.draw_land(&mut pass);
+            }
+            None => pass.draw(0..cells.1 * row, 0..1),
+        }
         drawn.sky.draw(&mut pass, &groups);
     }
 }

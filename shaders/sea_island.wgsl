@@ -1,0 +1,133 @@
+// The island in the open sea (sea/island.rs makes its heightmap). Its land is a grid over the
+// map lifted to the ground's height, sand by the water, grass above, rock where it is steep,
+// lit by the sun and the sky and seen through the haze. Under the water the sea reads the same
+// map: light reaching the floor and coming back is dimmed by Beer-Lambert along its path
+// (exp(-a L) per channel), so the shallows take the floor's colour, turning to the deep sea's
+// own light with depth; where the water is shallowest it foams on the crests.
+
+// Height (m), dh/dx, dh/dz of the ground, ISLAND_MAP_TEXELS a side over the map's square.
+@group(2) @binding(3) var island_map: texture_2d<f32>;
+// The land mirrored in the sea plane, at half the frame's size: sqrt(colour / MIRROR_RANGE),
+// coverage in alpha.
+@group(3) @binding(0) var mirror_map: texture_2d<f32>;
+
+// How far (a fraction of the screen per unit of slope) the waves move the mirror's image.
+const MIRROR_WOBBLE: f32 = 0.04;
+
+const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);
+const WET_SAND: vec3<f32> = vec3<f32>(0.30, 0.24, 0.15);
+const GRASS: vec3<f32> = vec3<f32>(0.09, 0.16, 0.04);
+const ROCK: vec3<f32> = vec3<f32>(0.30, 0.28, 0.25);
+fn on_island_map(p: vec2<f32>) -> bool {
+    return all(abs(p - ISLAND_CENTRE) < vec2<f32>(ISLAND_MAP_HALF_WIDTH));
+}
+
+// The ground's height and slopes at (x, z) on the map (on_island_map).
+fn ground_at(p: vec2<f32>) -> vec3<f32> {
+    let uv = (p - ISLAND_CENTRE) / (2.0 * ISLAND_MAP_HALF_WIDTH) + 0.5;
+    return textureSampleLevel(island_map, clamp_sampler, uv, 0.0).xyz;
+}
+
+fn ground_normal(ground: vec3<f32>) -> vec3<f32> {
+    return normalize(vec3<f32>(-ground.y, 1.0, -ground.z));
+}
+
+// The land's albedo at height h (m) with slope `rise` (rise over run): wet sand at the water,
+// then dry sand, grass, and rock on steep ground.
+fn land_albedo(h: f32, rise: f32) -> vec3<f32> {
+    let sand = mix(WET_SAND, SAND, smoothstep(0.0, 0.6, h));
+    let land = mix(sand, GRASS, smoothstep(BEACH_TOP - 0.5, BEACH_TOP + 0.5, h));
+    return mix(land, ROCK, smoothstep(ROCK_SLOPE - 0.2, ROCK_SLOPE + 0.2, rise));
+}
+
+// Sunlight and skylight on ground facing n (the sky's light by how much of the sky it sees).
+fn light_on_ground(n: vec3<f32>) -> vec3<f32> {
+    return sun_light() * max(dot(n, scene.sun.xyz), 0.0) + sky_light() * (0.5 + 0.5 * n.y);
+}
+
+// What the eye sees under the surface along unit v refracted by normal n where the water is
+// `depth` m deep over `ground`: the lit floor dimmed along the light's way down and the view's
+// way back (absorbed and scattered out of the beam), and the deep water's light over the rest.
+fn seen_through_water(v: vec3<f32>, n: vec3<f32>, depth: f32, ground: vec3<f32>) -> vec3<f32> {
+    let down = refract(v, n, IOR_AIR / IOR_WATER);
+    let path = depth / max(-down.y, 0.2) + depth / max(scene.sun.y, 0.2);
+    let fade = 1.0 - smoothstep(0.6 * SEE_DEPTH, SEE_DEPTH, depth); // SEE_DEPTH: island.rs
+    let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * max(path, 0.0)) * fade;
+    let floor = SAND * light_on_ground(ground_normal(ground));
+    return mix(deep_water(), floor, through);
+}
+
+// Foam along the shore where the water at p (m, as the waves carry it) is `depth` deep: at the
+// waterline, and out to SHORE_FOAM_DEPTH on the crests (`lift`: the wave's height over the
+// crest's, about -1 to 1), so it moves with the waves, broken into patches by noise.
+fn shore_foam(depth: f32, lift: f32, p: vec2<f32>) -> f32 {
+    if depth > SHORE_FOAM_DEPTH {
+        return 0.0;
+    }
+    let shallow = 1.0 - max(depth, 0.0) / SHORE_FOAM_DEPTH;
+    let patches = value_noise(vec3<f32>(p * 0.4, 0.0)) - 0.5;
+    return smoothstep(0.45, 0.8, shallow + 0.35 * lift + 0.5 * patches);
+}
+
+struct IslandOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+}
+
+// Vertex `index` of the land's grid over the map's square, LAND_GRID + 1 a row (the mesh's
+// indices, island.rs land_indices, name the quads above the water).
+fn land_vertex(index: u32) -> vec3<f32> {
+    let g = vec2<f32>(f32(index % (LAND_GRID + 1u)), f32(index / (LAND_GRID + 1u))) / f32(LAND_GRID);
+    let p = ISLAND_CENTRE + (g * 2.0 - 1.0) * ISLAND_MAP_HALF_WIDTH;
+    return vec3<f32>(p.x, ground_at(p).x, p.y);
+}
+
+// The land's colour at a point of it, lit, before the haze.
+fn land_colour(world: vec3<f32>) -> vec3<f32> {
+    let ground = ground_at(world.xz);
+    return land_albedo(world.y, length(ground.yz)) * light_on_ground(ground_normal(ground));
+}
+
+@vertex
+fn vs_island(@builtin(vertex_index) index: u32) -> IslandOut {
+    var out: IslandOut;
+    out.world = land_vertex(index);
+    out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
+    return out;
+}
+
+@fragment
+fn fs_island(in: IslandOut) -> @location(0) vec4<f32> {
+    let to_point = in.world - sea.eye.xyz;
+    let dist = length(to_point);
+    return finish(through_haze(land_colour(in.world), to_point / dist, dist));
+}
+
+// The land upside down under the sea plane, seen by the same camera: what a level sea mirrors.
+@vertex
+fn vs_island_mirrored(@builtin(vertex_index) index: u32) -> IslandOut {
+    var out: IslandOut;
+    out.world = land_vertex(index);
+    out.clip = scene.view_proj * vec4<f32>(out.world * vec3<f32>(1.0, -1.0, 1.0), 1.0);
+    return out;
+}
+
+// Only what stands above the water is mirrored; its light comes the whole way from the land
+// through the haze (the eye's way to the land's mirror image).
+@fragment
+fn fs_island_mirrored(in: IslandOut) -> @location(0) vec4<f32> {
+    if in.world.y < 0.0 {
+        discard;
+    }
+    let to_image = in.world * vec3<f32>(1.0, -1.0, 1.0) - sea.eye.xyz;
+    let dist = length(to_image);
+    let colour = through_haze(land_colour(in.world), to_image / dist, dist);
+    return vec4<f32>(sqrt(colour / MIRROR_RANGE), 1.0);
+}
+
+// The mirrored land seen by the sea's pixel at `pixel` (px) with normal n, moved by the
+// waves' slopes: its colour and coverage.
+fn mirrored_land(pixel: vec2<f32>, n: vec3<f32>) -> vec4<f32> {
+    let m = textureSampleLevel(mirror_map, clamp_sampler, pixel * sea.mirror.xy + MIRROR_WOBBLE * n.xz, 0.0);
+    return vec4<f32>(m.rgb * m.rgb * MIRROR_RANGE, m.a);
+}

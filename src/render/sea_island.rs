@@ -1,0 +1,221 @@
+//! Drawing the sea's island (`shaders/sea_island.wgsl`): its heightmap as a texture the sea
+//! reads its floor from, its land's mesh (the quads above the water), and the mirror: the land
+//! drawn upside down in the sea plane into a texture at half the frame's size, which the sea
+//! reads at its own pixel, moved by its waves' slopes, wherever it mirrors the island (a planar
+//! reflection).
+
+use glam::{Mat4, Vec3};
+use wgpu::util::DeviceExt;
+
+use super::DEPTH_FORMAT;
+use crate::gpu;
+use crate::sea::island;
+
+/// The mirror's texels: colours stored as sqrt(c / MIRROR_RANGE) (8 bits hold the land's
+/// shade as a gamma would, on every backend), coverage in alpha.
+const MIRROR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+pub const MIRROR_RANGE: f32 = 16.0;
+
+/// The island's WGSL constants for the renderer.
+pub fn wgsl_constants() -> String {
+    format!("const MIRROR_RANGE: f32 = {MIRROR_RANGE:?};\n")
+}
+
+/// The island's texture, pipelines and mesh, made with the sea's pipelines when the island is
+/// in the sea.
+pub(super) struct IslandDrawing {
+    _map: wgpu::Texture,
+    /// The sea's grid with the shallows and the mirror, the land, and the land mirrored.
+    shallows: wgpu::RenderPipeline,
+    land: wgpu::RenderPipeline,
+    mirrored: wgpu::RenderPipeline,
+    /// The land's index buffer and its length.
+    mesh: (wgpu::Buffer, u32),
+    /// Boxes (least and most corner, m) round what the sea can show of the island: the water
+    /// over floor within [`island::SEE_DEPTH`] (at the sea level), and the land's mirror image.
+    shown: [(Vec3, Vec3); 2],
+}
+
+/// The mirror's texture at one size and the bind group (group 3) the sea reads it through.
+pub(super) struct MirrorTarget {
+    size: (u32, u32),
+    view: wgpu::TextureView,
+    depth: wgpu::TextureView,
+    pub group: wgpu::BindGroup,
+}
+
+/// The layout of the sea's group 3: the mirror.
+pub(super) fn mirror_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("sea mirror layout"),
+        entries: &[gpu::filtered_texture_entry(0, wgpu::ShaderStages::FRAGMENT)],
+    })
+}
+
+impl MirrorTarget {
+    /// A mirror of `size` texels (a texel and no depth to draw into for a sea without island).
+    pub(super) fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: (u32, u32)) -> Self {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let colour = gpu::texture_2d(device, "sea mirror", size.0, size.1, 1, 1, MIRROR_FORMAT, usage);
+        let depth = gpu::texture_2d(device, "sea mirror depth", size.0, size.1, 1, 1, DEPTH_FORMAT, usage);
+        let view = colour.create_view(&Default::default());
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sea mirror"),
+            layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) }],
+        });
+        Self { size, view, depth: depth.create_view(&Default::default()), group }
+    }
+
+    pub(super) fn size(&self) -> (u32, u32) {
+        self.size
+    }
+}
+
+/// The island's heightmap ([`island::map`]) in half floats, or a texel of sea floor when there
+/// is no island.
+pub(super) fn island_map(device: &wgpu::Device, queue: &wgpu::Queue, with_island: bool) -> wgpu::Texture {
+    let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+    let n = if with_island { island::MAP_TEXELS } else { 1 };
+    let texture = gpu::texture_2d(device, "island", n, n, 1, 1, wgpu::TextureFormat::Rgba16Float, usage);
+    let texels = if with_island { island::map() } else { vec![[-island::FLOOR_DEPTH, 0.0, 0.0, 0.0]] };
+    let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::sea::f16_bits)).collect();
+    gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&halves));
+    texture
+}
+
+/// What the island needs from the sea's pipelines' making: the layouts with the mirror (group
+/// 3) and without (to draw into the mirror), the module, the frame's format.
+pub(super) struct IslandPipelines<'a> {
+    pub layouts: [&'a wgpu::PipelineLayout; 2],
+    pub module: &'a wgpu::ShaderModule,
+    pub format: wgpu::TextureFormat,
+}
+
+impl IslandDrawing {
+    pub(super) fn new(device: &wgpu::Device, map: wgpu::Texture, p: &IslandPipelines<'_>) -> Self {
+        let indices = island::land_indices();
+        let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("island land"),
+            contents: bytemuck::cast_slice(&indices),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        let shallows = mesh_pipeline(device, p, "sea shallows", ["vs_sea", "fs_sea"], (p.format, None));
+        let land = mesh_pipeline(device, p, "island", ["vs_island", "fs_island"], (p.format, Some(wgpu::Face::Back)));
+        let into_mirror = IslandPipelines { layouts: [p.layouts[1]; 2], ..*p };
+        let entries = ["vs_island_mirrored", "fs_island_mirrored"];
+        let mirrored =
+            mesh_pipeline(device, &into_mirror, "island mirrored", entries, (MIRROR_FORMAT, Some(wgpu::Face::Front)));
+        let (least, most, _) = island::extent_above(-island::SEE_DEPTH);
+        let water = (Vec3::new(least[0], 0.0, least[1]), Vec3::new(most[0], 0.0, most[1]));
+        let (least, most, top) = island::extent_above(0.0);
+        let image = (Vec3::new(least[0], -top, least[1]), Vec3::new(most[0], 0.0, most[1]));
+        Self { _map: map, shallows, land, mirrored, mesh: (buffer, indices.len() as u32), shown: [water, image] }
+    }
+
+    /// Draws `vertices` of the sea's grid (whole rows) with the shallows and the mirror.
+    pub(super) fn draw_shallows(&self, pass: &mut wgpu::RenderPass<'_>, vertices: std::ops::Range<u32>) {
+        pass.set_pipeline(&self.shallows);
+        pass.draw(vertices, 0..1);
+    }
+
+    /// Draws the land into the sea's pass (after the water: the ground under the surface fails
+    /// the depth test unshaded).
+    pub(super) fn draw_land(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_pipeline(&self.land);
+        self.draw_mesh(pass);
+    }
+
+    /// Draws the land mirrored into `mirror`, with the sea's groups 0-2.
+    pub(super) fn draw_mirrored(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mirror: &MirrorTarget,
+        groups: &[&wgpu::BindGroup],
+    ) {
+        let clear = wgpu::Color::TRANSPARENT;
+        let mut pass =
+            super::passes::begin_scene_pass(encoder, "island mirrored", &mirror.view, &mirror.depth, Some(clear));
+        for (i, group) in groups.iter().enumerate() {
+            pass.set_bind_group(i as u32, Some(*group), &[]);
+        }
+        pass.set_pipeline(&self.mirrored);
+        self.draw_mesh(&mut pass);
+    }
+
+    fn draw_mesh(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_index_buffer(self.mesh.0.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..self.mesh.1, 0, 0..1);
+    }
+}
+
+impl IslandDrawing {
+    /// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that
+    /// can show the island's shallows or its mirror image: those across the screen's span of
+    /// the boxes round them, grown by the crests' height, and two rows more each way for the
+    /// waves' sideways carry. All of them when a box reaches behind the eye.
+    pub(super) fn rows_near(&self, view_proj: Mat4, rect: [f32; 4], rows: u32, crest: f32) -> std::ops::Range<u32> {
+        let mut span = (f32::INFINITY, f32::NEG_INFINITY);
+        for (least, most) in self.shown {
+            let (least, most) = (least - Vec3::Y * crest, most + Vec3::Y * crest);
+            for corner in 0..8 {
+                let pick = |bit: u32, lo: f32, hi: f32| if corner & bit == 0 { lo } else { hi };
+                let p = Vec3::new(pick(1, least.x, most.x), pick(2, least.y, most.y), pick(4, least.z, most.z));
+                let clip = view_proj * p.extend(1.0);
+                if clip.w <= 1.0e-3 {
+                    return 0..rows;
+                }
+                span = (span.0.min(clip.y / clip.w), span.1.max(clip.y / clip.w));
+            }
+        }
+        rows_across(span, rect, rows)
+    }
+}
+
+/// The rows of a grid over `rect` (NDC, `rows` rows up it) across the NDC heights `span`, and
+/// two more each way.
+fn rows_across(span: (f32, f32), rect: [f32; 4], rows: u32) -> std::ops::Range<u32> {
+    let row_of = |ndc: f32| (ndc - rect[2]) / (rect[3] - rect[2]) * rows as f32;
+    let first = (row_of(span.0).floor() - 2.0).clamp(0.0, rows as f32) as u32;
+    let last = (row_of(span.1).ceil() + 2.0).clamp(0.0, rows as f32) as u32;
+    first..last.max(first)
+}
+
+/// A pipeline drawing triangles from `entries` (vertex, fragment) of the sea's module into
+/// `format`, with depth, no vertex buffers (their vertices come from the index); `cull`: the
+/// side of the triangles left out (the land's back faces; mirrored, their fronts).
+pub(super) fn mesh_pipeline(
+    device: &wgpu::Device,
+    p: &IslandPipelines<'_>,
+    label: &str,
+    entries: [&str; 2],
+    (format, cull): (wgpu::TextureFormat, Option<wgpu::Face>),
+) -> wgpu::RenderPipeline {
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(label),
+        layout: Some(p.layouts[0]),
+        vertex: wgpu::VertexState {
+            module: p.module,
+            entry_point: Some(entries[0]),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        primitive: wgpu::PrimitiveState { cull_mode: cull, ..Default::default() },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: wgpu::MultisampleState::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: p.module,
+            entry_point: Some(entries[1]),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
