@@ -226,7 +226,24 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), in.world.xz) * sea.foam.y);
     }
     let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_sea(), foam);
-    return finish(through_haze(colour, v, dist));
+    var seen = through_haze(colour, v, dist);
+    if GRID_LINES {
+        seen = mix(seen, GRID_LINE_COLOUR * light_on_sea(), 0.6 * grid_line(in.rest));
+    }
+    return finish(seen);
+}
+
+// The grid's cells outlined (the debug view): how near rest point p lies to a cell's edge (1 on
+// it, 0 a pixel away), in the cell coordinates found by taking its ray back onto the screen.
+const GRID_LINE_COLOUR: vec3<f32> = vec3<f32>(0.9, 0.7, 0.15);
+fn grid_line(p: vec2<f32>) -> f32 {
+    let to_point = vec3<f32>(p.x, 0.0, p.y) - sea.eye.xyz;
+    let ahead = dot(to_point, sea.forward.xyz);
+    let right = dot(to_point, sea.right.xyz) / dot(sea.right.xyz, sea.right.xyz);
+    let up = dot(to_point, sea.up.xyz) / dot(sea.up.xyz, sea.up.xyz);
+    let g = (vec2<f32>(right, up) / ahead - sea.grid.xz) / (sea.grid.yw - sea.grid.xz) * sea.cells.xy;
+    let edge = abs(fract(g + 0.5) - 0.5) / max(fwidth(g), vec2<f32>(1.0e-6));
+    return 1.0 - clamp(min(edge.x, edge.y), 0.0, 1.0);
 }
 
 // Where the grid drew nothing: the sky, and between the grid's far edge and the horizon the sea

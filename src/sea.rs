@@ -113,6 +113,8 @@ pub struct SeaSettings {
     pub fog_distance: Option<f32>,
     /// Whether the island ([`island`]) stands in the sea.
     pub island: bool,
+    /// Whether the projected grid's cells are outlined on the water (a debug view).
+    pub grid_lines: bool,
 }
 
 impl SeaSettings {
@@ -125,6 +127,7 @@ impl SeaSettings {
             choppiness: value("sea_choppiness"),
             fog_distance: (value("sea_fog") >= 0.5).then(|| value("sea_fog_distance")),
             island: value("sea_island") >= 0.5,
+            grid_lines: value("sea_grid") >= 0.5,
         }
     }
 
@@ -226,19 +229,57 @@ pub const PARAMS: &[ParamSpec] = &[
         default: 1.0,
         help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore.",
     },
+    ParamSpec {
+        name: "sea_grid",
+        label: "Show the grid",
+        group: "Scene",
+        unit: "",
+        control: Control::Toggle,
+        default: 0.0,
+        help: "Outline the cells of the grid the sea is drawn on: it is laid over the screen and projected onto the water, so its cells stay about the same size on screen, small near you and long towards the horizon.",
+    },
 ];
+
+/// The pool's parameters the sea reads too (the controls show the others only in the pool):
+/// the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
+/// running and the frame's quality.
+pub const USES_OF_THE_POOL: &[&str] = &[
+    "drop_radius",
+    "drop_strength",
+    "sun_azimuth",
+    "sun_elevation",
+    "sun_size",
+    "exposure",
+    "fresnel",
+    "specular",
+    "shininess",
+    "paused",
+    "quality",
+    "frame_budget",
+];
+
+/// Which variant of the sea's shaders a frame needs: a feature left out costs nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SeaVariant {
+    /// The island's shallows and mirror image.
+    pub island: bool,
+    /// The grid's cells outlined.
+    pub grid_lines: bool,
+}
 
 /// The whitecaps' albedo: foam sends back most of the light falling on it.
 pub const WHITECAP_ALBEDO: f32 = 0.75;
 
-/// The sea's WGSL constants, with the island (`ISLAND`) or without.
-pub fn wgsl_constants(island: bool) -> String {
+/// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`).
+pub fn wgsl_constants(variant: SeaVariant) -> String {
+    let SeaVariant { island, grid_lines } = variant;
     let [r, g, b] = deep_water_albedo();
     let [ar, ag, ab] = SEA_ABSORPTION;
     let absorption = format!(
         "const SEA_ABSORPTION: vec3<f32> = vec3<f32>({ar:?}, {ag:?}, {ab:?});\nconst SEA_SCATTERING: f32 = {SEA_SCATTERING:?};\n"
     );
-    let island = format!("const ISLAND: bool = {island};\n{}", island::wgsl_constants());
+    let island =
+        format!("const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\n{}", island::wgsl_constants());
     absorption
         + &island
         + &format!(

@@ -188,16 +188,19 @@ impl Viewer {
                     groups.push(p.group);
                 }
             }
-            for group in groups {
+            // A model's own settings only while that model is chosen, a scene's in that scene;
+            // a group with none of them shown not at all.
+            let params = &self.demo.params;
+            let shown = |spec: &&params::Param| {
+                params::shown_when(spec.name).iter().all(|(on, values)| {
+                    values.contains(&params.get_by_name(on).expect("a parameter of the table"))
+                })
+            };
+            let shown: Vec<&params::Param> = table().iter().filter(shown).collect();
+            for group in groups.into_iter().filter(|g| shown.iter().any(|p| p.group == *g)) {
                 egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
-                    for spec in table().iter().filter(|p| p.group == group) {
-                        // A model's own settings only while that model is chosen.
-                        let shown = params::shown_when(spec.name).is_none_or(|(on, values)| {
-                            values.contains(&self.demo.params.get_by_name(on).expect("a parameter of the table"))
-                        });
-                        if shown {
-                            self.control(ui, spec);
-                        }
+                    for spec in shown.iter().filter(|p| p.group == group) {
+                        self.control(ui, spec);
                     }
                     if group == "Optics" {
                         let model = FresnelModel::from_param(self.demo.params.get(ParamId::Fresnel));

@@ -967,20 +967,30 @@ async fn the_sea_runs_in_the_page_on_both_backends_and_gives_the_pool_back() {
         let controls = browser
             .js("const root = document.querySelector('#pool').shadowRoot;
                  const shown = n => !root.querySelector(`[name=${n}]`).closest('.row').hidden;
-                 return { wind: shown('sea_wind'), fog: shown('sea_fog') };")
+                 return { wind: shown('sea_wind'), fog: shown('sea_fog'), sun: shown('sun_elevation'),
+                          waveSpeed: shown('wave_speed'), ambient: shown('ambient') };")
             .await;
         println!("{backend}: sky {sky:.0?}, sea {sea:.0?}, sea controls {controls}");
         assert!(sky[2] > sky[0] && sea[2] > sea[0], "{backend}: sky and sea are not blue");
         assert!(sea.iter().sum::<f64>() < sky.iter().sum::<f64>(), "{backend}: the sea is not darker than the sky");
         assert!(controls["wind"] == true && controls["fog"] == true, "{backend}: the sea's controls are hidden");
+        assert!(controls["sun"] == true, "{backend}: the sun's controls, which the sea reads, are hidden");
+        assert!(
+            controls["waveSpeed"] == false && controls["ambient"] == false,
+            "{backend}: the pool's controls show in the sea"
+        );
         browser.js("window.demo.set('scene', 0); return true;").await;
         assert!(browser.wait_for("window.demo.stats().scene === 'pool'", Duration::from_secs(20)).await);
         let state = browser
             .js("const root = document.querySelector('#pool').shadowRoot;
                  return { error: document.querySelector('#pool').dataset.error || null,
-                          wind: !root.querySelector('[name=sea_wind]').closest('.row').hidden };")
+                          wind: !root.querySelector('[name=sea_wind]').closest('.row').hidden,
+                          waveSpeed: !root.querySelector('[name=wave_speed]').closest('.row').hidden };")
             .await;
-        assert!(state["error"].is_null() && state["wind"] == false, "{backend}: back in the pool: {state}");
+        assert!(
+            state["error"].is_null() && state["wind"] == false && state["waveSpeed"] == true,
+            "{backend}: back in the pool: {state}"
+        );
         browser.close().await;
     }
 }

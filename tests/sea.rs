@@ -314,3 +314,34 @@ fn the_island_is_mirrored_in_the_sea_below_it() {
     assert!(under > 200 && share(under_changed, under) > 40.0, "no mirror image of the island");
     assert!(clear > 1000 && share(clear_changed, clear) < 0.5, "hiding the island changes the open sea");
 }
+
+#[test]
+fn the_grid_view_outlines_cells_of_the_same_size_on_screen() {
+    let mut frames = Vec::new();
+    let mut d = demo(DemoOptions::default());
+    for lines in [1.0, 0.0] {
+        d = sea(9.0, 40.0, true);
+        d.params.set(ParamId::SeaGrid, lines);
+        frames.push(render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0));
+    }
+    let row = horizon_row(&d, SIZE.1) / SIZE.1 as f32;
+    let water = frames[0].changed_fraction(&frames[1], Rect(0.0, row + 0.05, 1.0, 1.0), 8);
+    let sky = frames[0].changed_fraction(&frames[1], Rect(0.0, 0.0, 1.0, row - 0.05), 8);
+    // Along the bottom row: the spacing of the lines crossing it (pixels).
+    let y = SIZE.1 - 4;
+    let on: Vec<u32> = (0..SIZE.0).filter(|&x| frames[0].luma(x, y) > frames[1].luma(x, y) + 0.03).collect();
+    let mut starts: Vec<u32> = on.windows(2).filter(|w| w[1] > w[0] + 1).map(|w| w[1]).collect();
+    starts.insert(0, on.first().copied().unwrap_or(0));
+    let mut gaps: Vec<u32> = starts.windows(2).map(|w| w[1] - w[0]).collect();
+    gaps.sort_unstable();
+    let spacing = gaps.get(gaps.len() / 2).copied().unwrap_or(0) as f32;
+    println!(
+        "grid lines change {:.0} % of the water, {:.1} % of the sky; {} lines cross the bottom row, {spacing} px apart",
+        water * 100.0,
+        sky * 100.0,
+        starts.len()
+    );
+    assert!(water > 0.1 && water < 0.6 && sky == 0.0, "the lines are not on the water alone");
+    let cell = wavepool::sea::GRID_CELL_PX;
+    assert!((spacing - cell).abs() <= 0.25 * cell, "cells {spacing} px across, the grid's are {cell} px");
+}

@@ -57,6 +57,7 @@ export const controlMethods = {
       }
       groups.get(p.group).append(this._control(p));
     }
+    for (const fieldset of groups.values()) hideEmptyGroup(fieldset);
     if (groups.has("Flat water")) {
       // What each render mode costs, measured while it is shown, under its control.
       // Not a live region: the figures change twice a second, which a screen reader would
@@ -194,13 +195,14 @@ export const controlMethods = {
       else input.value = String(v);
       output.textContent = formatValue(p, v);
       if (input.type === "range") input.setAttribute("aria-valuetext", output.textContent);
-      // A model's own settings show only while that model is chosen.
-      if (p.shownWhen) row.hidden = !p.shownWhen.values.includes(this.get(p.shownWhen.param));
+      // A model's own settings show only while that model is chosen, a scene's in that scene.
+      row.hidden = !p.shownWhen.every((w) => w.values.includes(this.get(w.param)));
+      if (row.parentElement) hideEmptyGroup(row.parentElement);
     };
     this._controls.set(p.name, update);
-    if (p.shownWhen) {
-      const list = this._dependants.get(p.shownWhen.param) || [];
-      this._dependants.set(p.shownWhen.param, [...list, update]);
+    for (const w of p.shownWhen) {
+      const list = this._dependants.get(w.param) || [];
+      this._dependants.set(w.param, [...list, update]);
     }
     update();
     row.append(label, input, output);
@@ -298,3 +300,8 @@ export const controlMethods = {
     this._stage.append(bar);
   }
 };
+
+// A group of controls none of which is shown (the pool's bodies in the sea) is hidden whole.
+function hideEmptyGroup(fieldset) {
+  fieldset.hidden = [...fieldset.querySelectorAll(":scope > .row")].every((row) => row.hidden);
+}

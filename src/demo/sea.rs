@@ -187,7 +187,7 @@ impl WaterDemo {
             patch: &sea.patch,
             whitecaps: self.sea_foam[0],
             shore_foam: self.sea_foam[1],
-            island: settings.island,
+            variant: sea::SeaVariant { island: settings.island, grid_lines: settings.grid_lines },
         };
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn);
         mark(encoder, Stage::AfterScene);

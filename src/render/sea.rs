@@ -12,7 +12,7 @@ use super::sea_island::{island_map, mesh_pipeline, mirror_layout, IslandDrawing,
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
-use crate::sea::{FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE};
+use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE};
 use crate::sim::HeightField;
 
 /// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
@@ -42,8 +42,8 @@ pub struct SeaView<'a> {
     /// Whether whitecaps and the shore's foam are drawn (off only for tests to compare with).
     pub whitecaps: bool,
     pub shore_foam: bool,
-    /// Whether the island stands in the sea.
-    pub island: bool,
+    /// Whether the island stands in the sea, and the grid's cells are outlined.
+    pub variant: SeaVariant,
     /// The patch of simulated water round the target (`sea::PATCH_HALF_WIDTH`), whose
     /// ripples are added to the waves.
     pub patch: &'a HeightField,
@@ -70,9 +70,9 @@ pub struct SeaRenderer {
     uniforms: wgpu::Buffer,
     maps: [wgpu::Texture; 2],
     group: wgpu::BindGroup,
-    /// The feature set (optics models) and the island's presence the pipelines were built for.
+    /// The feature set (optics models) and the sea's variant the pipelines were built for.
     features: Features,
-    island: bool,
+    variant: SeaVariant,
     grid: wgpu::RenderPipeline,
     /// The island's drawing, when it is in the sea.
     island_drawing: Option<IslandDrawing>,
@@ -90,10 +90,11 @@ impl SeaRenderer {
         renderer: &Renderer,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        key: (Features, bool),
+        key: (Features, SeaVariant),
         patch: &HeightField,
     ) -> Self {
-        let (features, island) = key;
+        let (features, variant) = key;
+        let island = variant.island;
         let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let filterable = wgpu::TextureSampleType::Float { filterable: true };
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -134,7 +135,8 @@ impl SeaRenderer {
         let format = renderer.settings.target_format;
         let base = shaders::scene_prelude(features, format);
         let prelude = |with_island| {
-            let constants = [crate::sea::wgsl_constants(with_island), super::sea_island::wgsl_constants()];
+            let variant = SeaVariant { island: with_island, ..variant };
+            let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
             [base.clone(), constants.concat()].join("\n")
         };
         let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &mirror_layout];
@@ -164,7 +166,19 @@ impl SeaRenderer {
         );
         let patch_groups =
             water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
-        Self { uniforms, maps, group, features, island, grid, island_drawing, mirror_layout, mirror, sky, patch_groups }
+        Self {
+            uniforms,
+            maps,
+            group,
+            features,
+            variant,
+            grid,
+            island_drawing,
+            mirror_layout,
+            mirror,
+            sky,
+            patch_groups,
+        }
     }
 }
 
@@ -247,8 +261,8 @@ impl Renderer {
         sea: &SeaView<'_>,
     ) {
         let features = Features::of(view);
-        if self.sea.as_ref().is_none_or(|s| (s.features, s.island) != (features, sea.island)) {
-            self.sea = Some(SeaRenderer::new(self, device, queue, (features, sea.island), sea.patch));
+        if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, sea.variant)) {
+            self.sea = Some(SeaRenderer::new(self, device, queue, (features, sea.variant), sea.patch));
         }
         let scaled = self.scaled_size(view, size);
         if scaled != size {

@@ -82,8 +82,8 @@ pub(super) fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>)
 /// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
 /// choices, choiceNames, default, help, shownWhen }` (`choices`: the allowed values of a
 /// choice, else empty; `choiceNames`: what to show for them, or empty to show the numbers;
-/// `shownWhen`: `{ param, values }` when the control matters only for those values of
-/// another parameter, else null).
+/// `shownWhen`: the conditions `{ param, values }` that must all hold for the control to
+/// matter: those values of another parameter, e.g. the scene it belongs to).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
     table()
@@ -107,12 +107,19 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "step", to_js_number(step));
             set(&o, "default", to_js_number(p.default));
             set(&o, "help", p.help);
-            let shown_when = params::shown_when(p.name).map_or(JsValue::NULL, |(on, values)| {
-                let w = js_sys::Object::new();
-                set(&w, "param", on);
-                set(&w, "values", values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
-                JsValue::from(w)
-            });
+            let shown_when = params::shown_when(p.name)
+                .into_iter()
+                .map(|(on, values)| {
+                    let w = js_sys::Object::new();
+                    set(&w, "param", on);
+                    set(
+                        &w,
+                        "values",
+                        values.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>(),
+                    );
+                    JsValue::from(w)
+                })
+                .collect::<js_sys::Array>();
             set(&o, "shownWhen", shown_when);
             JsValue::from(o)
         })
