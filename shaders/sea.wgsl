@@ -17,7 +17,8 @@ struct Sea {
     cells: vec4<f32>,              // columns, rows, a cell's angle (rad)
     waves: vec4<f32>,              // choppiness lambda, all cascades' slope variance
     foam: vec4<f32>,               // whitecaps drawn (1) or not (0, for tests), the shore's
-                                   // foam drawn or not, the highest crest (m)
+                                   // foam drawn or not, the highest crest (m), the share of
+                                   // the kept whitecaps left after this frame's steps
     mirror: vec4<f32>,             // 1 / the target's width and height (px): a pixel's place
                                    // in the island's mirror (sea_island.wgsl)
     fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m)
@@ -153,6 +154,31 @@ fn whitecap(jacobian: f32) -> f32 {
     return 1.0 - smoothstep(WHITECAP_JACOBIAN, WHITECAP_JACOBIAN + 0.15, jacobian);
 }
 
+// The cascades at rest point p (m) seen at a footprint of `footprint` m: the height (m), the
+// sideways carry D (m; the water moves by -lambda D) and the Jacobian of the choppy map.
+struct WavesAt {
+    height: f32,
+    carry: vec2<f32>,
+    jacobian: f32,
+}
+
+fn waves_at(rest: vec2<f32>, footprint: f32) -> WavesAt {
+    var height = 0.0;
+    var carry = vec2<f32>(0.0);
+    var gradient = vec3<f32>(0.0);
+    for (var c = 0; c < CASCADES; c++) {
+        let w = cascade_weight(c, footprint);
+        let local = to_cascade(c, rest);
+        let surface = cascade_texel(sea_surface, c, local, sea.cascades[c].z);
+        let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
+        height += w * surface.x;
+        carry += w * from_cascade(c, displacement.xy);
+        gradient = add_gradient(gradient, c, w, displacement, surface);
+    }
+    let l = sea.waves.x * gradient;
+    return WavesAt(height, carry, (1.0 - l.x) * (1.0 - l.z) - l.y * l.y);
+}
+
 // Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
 @vertex
 fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
@@ -168,23 +194,11 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
     // The cell's length on the water along the ray (m): its angle over the grazing angle.
     let dist = distance(rest, sea.eye.xz);
     let footprint = sea.cells.z * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
-    var height = 0.0;
-    var carry = vec2<f32>(0.0);
-    var gradient = vec3<f32>(0.0);
-    for (var c = 0; c < CASCADES; c++) {
-        let w = cascade_weight(c, footprint);
-        let local = to_cascade(c, rest);
-        let surface = cascade_texel(sea_surface, c, local, sea.cascades[c].z);
-        let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
-        height += w * surface.x;
-        carry += w * from_cascade(c, displacement.xy);
-        gradient = add_gradient(gradient, c, w, displacement, surface);
-    }
+    let waves = waves_at(rest, footprint);
     var out: SeaOut;
-    let l = sea.waves.x * gradient;
-    out.jacobian = (1.0 - l.x) * (1.0 - l.z) - l.y * l.y;
-    let moved = rest - sea.waves.x * carry;
-    out.world = vec3<f32>(moved.x, height + ripples_at(rest, footprint).x, moved.y);
+    out.jacobian = waves.jacobian;
+    let moved = rest - sea.waves.x * waves.carry;
+    out.world = vec3<f32>(moved.x, waves.height + ripples_at(rest, footprint).x, moved.y);
     out.rest = rest;
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
     return out;
@@ -212,7 +226,11 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let dist = length(to_point);
     let v = to_point / dist;
     var under = deep_water();
-    var foam = whitecap(in.jacobian) * sea.foam.x;
+    var foam = whitecap(in.jacobian);
+    if WHITECAP_MAP {
+        foam = max(foam, kept_whitecaps(in.rest));
+    }
+    foam *= sea.foam.x;
     var mirrored = vec4<f32>(0.0);
     if ISLAND {
         mirrored = mirrored_land(in.clip.xy, n);

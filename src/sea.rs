@@ -265,21 +265,32 @@ pub struct SeaVariant {
     pub island: bool,
     /// The grid's cells outlined.
     pub grid_lines: bool,
+    /// The whitecaps kept over time (where the device renders into float textures).
+    pub whitecap_map: bool,
 }
 
 /// The whitecaps' albedo: foam sends back most of the light falling on it.
 pub const WHITECAP_ALBEDO: f32 = 0.75;
+/// The whitecaps are kept over time on a map of the sea round the origin (the clicks' patch):
+/// its half width (m) and texels a side (2 m each), and the time (s) their foam takes to fade
+/// to 1/e.
+pub const WHITECAP_MAP_HALF_WIDTH: f32 = 128.0;
+pub const WHITECAP_MAP_TEXELS: u32 = 128;
+pub const WHITECAP_LIFETIME: f32 = 1.0;
 
 /// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`).
 pub fn wgsl_constants(variant: SeaVariant) -> String {
-    let SeaVariant { island, grid_lines } = variant;
+    let SeaVariant { island, grid_lines, whitecap_map } = variant;
     let [r, g, b] = deep_water_albedo();
     let [ar, ag, ab] = SEA_ABSORPTION;
     let absorption = format!(
         "const SEA_ABSORPTION: vec3<f32> = vec3<f32>({ar:?}, {ag:?}, {ab:?});\nconst SEA_SCATTERING: f32 = {SEA_SCATTERING:?};\n"
     );
-    let island =
-        format!("const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\n{}", island::wgsl_constants());
+    let switches = format!(
+        "const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
+         const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n"
+    );
+    let island = switches + &island::wgsl_constants();
     absorption
         + &island
         + &format!(

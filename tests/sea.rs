@@ -182,7 +182,7 @@ fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
         for caps in [true, false] {
             let mut d = demo(DemoOptions::default());
             d.apply_preset(wavepool::presets::find(name).expect("a preset"));
-            d.set_sea_foam(caps, true);
+            d.set_sea_foam(caps, caps, true);
             // At the page's size: on a coarser grid the finest cascades, the steepest, fade.
             frames.push(render(&mut d, 800, 600, 10, 0.1));
         }
@@ -237,7 +237,7 @@ fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
         (d.camera.pitch, d.camera.distance, d.camera.yaw) = (55.0, 70.0, 20.0);
         d.camera.target = Vec3::new(coast.x, 0.0, coast.y);
         d.camera.clamp();
-        d.set_sea_foam(false, shore);
+        d.set_sea_foam(false, false, shore);
         frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
     }
     let (mut foamed, mut foamed_shallow, mut deep, mut deep_foamed, mut edge, mut edge_foamed) = (0, 0, 0, 0, 0, 0);
@@ -390,4 +390,32 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     assert!(cells.iter().all(|c| c.iter().all(|v| v.is_finite())), "NaN or infinity in the patch");
     assert!(peak <= bound, "the patch's height {peak} m beyond its bound {bound} m");
     assert!(finite(&surface) && finite(&displacement) && waves.jacobian(0.0, 0.0, t).is_finite());
+}
+
+#[test]
+fn a_storm_keeps_its_whitecaps_a_while_and_the_same_at_every_frame_rate() {
+    // The storm two seconds in, drawn at 30, 60 and 144 frames a second.
+    let storm = |fps: u32, whitecaps: bool, kept: bool| {
+        let mut d = demo(DemoOptions::default());
+        d.apply_preset(wavepool::presets::find("storm").expect("the storm preset"));
+        d.set_sea_foam(whitecaps, kept, true);
+        render(&mut d, SIZE.0, SIZE.1, 2 * fps, 1.0 / fps as f32)
+    };
+    let bare = storm(30, false, false);
+    let whitened = |f: &Frame| {
+        let count = Rect::ALL.pixels(f).into_iter().filter(|&(x, y)| f.luma(x, y) > bare.luma(x, y) + 0.05).count();
+        count as f64 / (SIZE.0 * SIZE.1) as f64
+    };
+    let moment = whitened(&storm(30, true, false));
+    let kept: Vec<f64> = [30, 60, 144].iter().map(|&fps| whitened(&storm(fps, true, true))).collect();
+    let (least, most) = (kept.iter().cloned().fold(f64::MAX, f64::min), kept.iter().cloned().fold(0.0, f64::max));
+    println!(
+        "whitecaps of the moment {:.2} % of the frame; kept {:.2} / {:.2} / {:.2} % at 30 / 60 / 144 frames a second",
+        moment * 100.0,
+        kept[0] * 100.0,
+        kept[1] * 100.0,
+        kept[2] * 100.0
+    );
+    assert!(kept[1] > 1.5 * moment, "the whitecaps are not kept");
+    assert!(most < 1.15 * least, "the kept whitecaps differ with the frame rate");
 }

@@ -194,6 +194,31 @@ impl SeaWaves {
         out
     }
 
+    /// Whether the choppy waves can break anywhere: the Jacobian det(I − M) of the map
+    /// x₀ ↦ x₀ − λ D (M symmetric, Frobenius norm s) is at least (1 − s/√2)², so whitecaps
+    /// (below [`WHITECAP_JACOBIAN`] and a little over) need s past about a half. M is the
+    /// cascades' λ ∂D/∂x₀ summed; taking them as independent, s seldom passes 3.5 times its
+    /// rms, from the lattices at one time (the sea's statistics do not change with time).
+    pub fn may_break(&self) -> bool {
+        let [surface, displacement] = self.layers(0.0);
+        let lattice = surface.len() / self.cascades.len().max(1);
+        let mean_square: f64 = self
+            .cascades
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                let lambda = c.ocean.choppiness as f64;
+                let texels = (i * lattice..(i + 1) * lattice).map(|k| {
+                    let (xx, zz, xz) = (displacement[k][2] as f64, displacement[k][3] as f64, surface[k][3] as f64);
+                    lambda * lambda * (xx * xx + zz * zz + 2.0 * xz * xz)
+                });
+                texels.sum::<f64>() / lattice as f64
+            })
+            .sum();
+        let edge = std::f64::consts::SQRT_2 * (1.0 - (WHITECAP_JACOBIAN as f64 + 0.15).sqrt());
+        3.5 * mean_square.sqrt() > edge
+    }
+
     /// Each cascade's slope variance (mean of (∂h/∂x)² + (∂h/∂z)²) over a surface's layers of
     /// `count` cascades ([`SeaWaves::layers`]).
     pub fn slope_variances(surface: &[[f32; 4]], count: usize) -> Vec<f32> {
@@ -348,17 +373,18 @@ mod tests {
                 lowest = lowest.min(j);
                 capped += (j < WHITECAP_JACOBIAN) as u32;
             }
-            (capped as f32 / 1600.0, lowest)
+            (capped as f32 / 1600.0, lowest, sea.may_break())
         };
-        let (storm, storm_lowest) = caps(20.0, 6.0);
-        let (calm, calm_lowest) = caps(3.0, 0.1);
+        let (storm, storm_lowest, storm_breaks) = caps(20.0, 6.0);
+        let (calm, calm_lowest, calm_breaks) = caps(3.0, 0.1);
         println!(
-            "whitecaps: storm {:.1} % (lowest Jacobian {storm_lowest:.2}), calm {:.1} % ({calm_lowest:.2})",
+            "whitecaps: storm {:.1} % (lowest Jacobian {storm_lowest:.2}, may break: {storm_breaks}), \
+             calm {:.1} % ({calm_lowest:.2}, may break: {calm_breaks})",
             storm * 100.0,
             calm * 100.0
         );
-        assert!(storm > 0.01, "a storm with {:.2} % whitecaps", storm * 100.0);
-        assert_eq!(calm, 0.0, "calm water with whitecaps");
+        assert!(storm > 0.01 && storm_breaks, "a storm with {:.2} % whitecaps", storm * 100.0);
+        assert!(calm == 0.0 && !calm_breaks, "calm water with whitecaps");
     }
 
     #[test]

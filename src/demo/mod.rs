@@ -83,8 +83,8 @@ pub struct WaterDemo {
     other_camera: OrbitCamera,
     /// The open sea's waves, once the sea has been shown.
     sea: Option<sea::Sea>,
-    /// The sea draws its whitecaps and its shore's foam (off only in tests).
-    sea_foam: [bool; 2],
+    /// The sea draws its whitecaps, keeps them, and draws its shore's foam (off only in tests).
+    sea_foam: [bool; 3],
     /// Drops asked for in the sea before its first frame made its patch.
     early_sea_drops: Vec<crate::sim::Drop>,
 }
@@ -171,7 +171,7 @@ impl WaterDemo {
             camera_scene: crate::sea::SceneKind::Pool,
             other_camera: crate::sea::default_camera(),
             sea: None,
-            sea_foam: [true; 2],
+            sea_foam: [true; 3],
             early_sea_drops: Vec::new(),
         };
         demo.refresh_ambient();

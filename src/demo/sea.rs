@@ -14,6 +14,8 @@ use crate::sim::{Drop, HeightField, WaveSettings};
 pub(super) struct Sea {
     settings: SeaSettings,
     waves: SeaWaves,
+    /// Whether its waves can break (`SeaWaves::may_break`): only then are whitecaps kept.
+    may_break: bool,
     patch: HeightField,
 }
 
@@ -77,6 +79,7 @@ impl WaterDemo {
             // The fog is drawn, not in the waves: a change of it makes nothing again.
             Some(sea) if sea.settings.waves() != settings.waves() => {
                 sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
+                sea.may_break = sea.waves.may_break();
                 sea.settings = settings;
             }
             Some(_) => {}
@@ -86,17 +89,18 @@ impl WaterDemo {
                 for drop in self.early_sea_drops.drain(..) {
                     patch.add_drop(drop);
                 }
-                self.sea = Some(Sea { waves: SeaWaves::new(&settings.waves(), SEA_LATTICE), settings, patch });
+                let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
+                self.sea = Some(Sea { may_break: waves.may_break(), waves, settings, patch });
             }
         }
         self.sea.as_mut().expect("made above")
     }
 
-    /// Whether the sea draws its whitecaps and its shore's foam (the default) or not (for
-    /// tests to compare with).
+    /// Whether the sea draws its whitecaps, keeps them over time, and draws its shore's foam
+    /// (the default: all three) or not (for tests to compare with).
     #[doc(hidden)]
-    pub fn set_sea_foam(&mut self, whitecaps: bool, shore: bool) {
-        self.sea_foam = [whitecaps, shore];
+    pub fn set_sea_foam(&mut self, whitecaps: bool, kept: bool, shore: bool) {
+        self.sea_foam = [whitecaps, kept, shore];
     }
 
     /// Puts `drop` (sea coordinates, m) in the sea's patch if the sea is drawn (kept for the
@@ -186,8 +190,13 @@ impl WaterDemo {
             displacement: &displacement,
             patch: &sea.patch,
             whitecaps: self.sea_foam[0],
-            shore_foam: self.sea_foam[1],
-            variant: sea::SeaVariant { island: settings.island, grid_lines: settings.grid_lines },
+            shore_foam: self.sea_foam[2],
+            variant: sea::SeaVariant {
+                island: settings.island,
+                grid_lines: settings.grid_lines,
+                whitecap_map: sea.may_break && self.sea_foam[1],
+            },
+            whitecaps_kept: (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp(),
         };
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn);
         mark(encoder, Stage::AfterScene);

@@ -8,7 +8,8 @@
 use glam::{Vec2, Vec3};
 
 use super::resources::water_bind_groups;
-use super::sea_island::{island_map, mesh_pipeline, mirror_layout, IslandDrawing, IslandPipelines, MirrorTarget};
+use super::sea_foam::{no_map, WhitecapMaps};
+use super::sea_island::{island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
@@ -23,6 +24,7 @@ const MAX_GRID_MARGIN: f32 = 1.5;
 
 const WGSL: &str = crate::wgsl!("sea.wgsl");
 const ISLAND_WGSL: &str = crate::wgsl!("sea_island.wgsl");
+const FOAM_WGSL: &str = crate::wgsl!("sea_foam.wgsl");
 
 /// What a frame of the sea depends on besides the scene's [`super::View`].
 pub struct SeaView<'a> {
@@ -42,8 +44,11 @@ pub struct SeaView<'a> {
     /// Whether whitecaps and the shore's foam are drawn (off only for tests to compare with).
     pub whitecaps: bool,
     pub shore_foam: bool,
-    /// Whether the island stands in the sea, and the grid's cells are outlined.
+    /// Whether the island stands in the sea, the grid's cells are outlined, the whitecaps kept
+    /// (where the device renders into float textures).
     pub variant: SeaVariant,
+    /// How much of the kept whitecaps' foam is left after this frame's fixed steps (0-1).
+    pub whitecaps_kept: f32,
     /// The patch of simulated water round the target (`sea::PATCH_HALF_WIDTH`), whose
     /// ripples are added to the waves.
     pub patch: &'a HeightField,
@@ -76,10 +81,15 @@ pub struct SeaRenderer {
     grid: wgpu::RenderPipeline,
     /// The island's drawing, when it is in the sea.
     island_drawing: Option<IslandDrawing>,
-    /// The layout of group 3, and the mirror of the island at half the frame's size (a texel
-    /// without the island).
-    mirror_layout: wgpu::BindGroupLayout,
+    /// The whitecaps kept over time, when the variant keeps them.
+    whitecaps: Option<WhitecapMaps>,
+    /// Group 3, what the frame made for the sea to read: the island's mirror at half the
+    /// frame's size (a texel without the island) and each of the whitecap maps (one texel
+    /// for both without them).
+    frame_layout: wgpu::BindGroupLayout,
     mirror: MirrorTarget,
+    no_whitecap_map: wgpu::TextureView,
+    frame_groups: [wgpu::BindGroup; 2],
     sky: FullscreenPass,
     /// Group 0 (the scene's uniforms) with the patch's state, one per ping-pong texture.
     patch_groups: [wgpu::BindGroup; 2],
@@ -94,18 +104,7 @@ impl SeaRenderer {
         patch: &HeightField,
     ) -> Self {
         let (features, variant) = key;
-        let island = variant.island;
-        let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
-        let filterable = wgpu::TextureSampleType::Float { filterable: true };
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("sea layout"),
-            entries: &[
-                gpu::uniform_entry(0, vis),
-                layers_entry(1),
-                layers_entry(2),
-                gpu::texture_entry(3, vis, filterable, wgpu::TextureViewDimension::D2),
-            ],
-        });
+        let layout = sea_layout(device);
         let uniforms = gpu::uniform_buffer(device, "sea uniforms", &<SeaUniforms as bytemuck::Zeroable>::zeroed());
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
         let map = |label| {
@@ -113,23 +112,13 @@ impl SeaRenderer {
             gpu::texture_2d(device, label, n, n, layers, 1, wgpu::TextureFormat::Rgba16Float, usage)
         };
         let maps = [map("sea surface"), map("sea displacement")];
-        let island_map = island_map(device, queue, island);
-        let mirror_layout = mirror_layout(device);
-        let views = maps.each_ref().map(|m| {
-            m.create_view(&wgpu::TextureViewDescriptor {
-                dimension: Some(wgpu::TextureViewDimension::D2Array),
-                ..Default::default()
-            })
-        });
-        let island_view = island_map.create_view(&Default::default());
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("sea"),
-            layout: &layout,
+        let island_map = island_map(device, queue, variant.island);
+        let group = sea_group(device, &layout, &uniforms, &maps, &island_map);
+        let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("sea frame layout"),
             entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&views[0]) },
-                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&views[1]) },
-                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&island_view) },
+                gpu::filtered_texture_entry(0, wgpu::ShaderStages::FRAGMENT),
+                gpu::filtered_texture_entry(1, wgpu::ShaderStages::FRAGMENT),
             ],
         });
         let format = renderer.settings.target_format;
@@ -139,33 +128,30 @@ impl SeaRenderer {
             let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
             [base.clone(), constants.concat()].join("\n")
         };
-        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &mirror_layout];
+        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &frame_layout];
         let module = |with_island| {
-            gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude(with_island), WGSL, ISLAND_WGSL])
+            gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude(with_island), WGSL, ISLAND_WGSL, FOAM_WGSL])
         };
-        let with_mirror = gpu::pipeline_layout(device, "sea", &layouts);
-        let without_mirror = gpu::pipeline_layout(device, "island", &layouts[..3]);
+        let with_frame = gpu::pipeline_layout(device, "sea", &layouts);
+        let without_frame = gpu::pipeline_layout(device, "island", &layouts[..3]);
         let plain = module(false);
-        let grid = IslandPipelines { layouts: [&with_mirror, &without_mirror], module: &plain, format };
+        let grid = IslandPipelines { layouts: [&with_frame, &without_frame], module: &plain, format };
         let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
-        // grid that can show them are drawn with its own (see `rows_near_island`).
-        let island_drawing = island.then(|| {
+        // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
+        let island_drawing = variant.island.then(|| {
             let module = module(true);
-            let pipelines = IslandPipelines { layouts: [&with_mirror, &without_mirror], module: &module, format };
+            let pipelines = IslandPipelines { layouts: [&with_frame, &without_frame], module: &module, format };
             IslandDrawing::new(device, island_map, &pipelines)
         });
-        let mirror = MirrorTarget::new(device, &mirror_layout, (1, 1));
-        let sky = FullscreenPass::new(
-            device,
-            "sea sky",
-            &[&prelude(false), WGSL, ISLAND_WGSL],
-            "fs_sea_sky",
-            &layouts,
-            FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
-        );
+        let parts = [&prelude(false) as &str, WGSL, ISLAND_WGSL, FOAM_WGSL];
+        let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
+        let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
+        let sky = FullscreenPass::new(device, "sea sky", &parts, "fs_sea_sky", &layouts, sky);
         let patch_groups =
             water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
+        let (mirror, no_whitecap_map) = (MirrorTarget::new(device, (1, 1)), no_map(device));
+        let frame_groups = frame_groups(device, &frame_layout, &mirror, whitecaps.as_ref(), &no_whitecap_map);
         Self {
             uniforms,
             maps,
@@ -174,12 +160,77 @@ impl SeaRenderer {
             variant,
             grid,
             island_drawing,
-            mirror_layout,
+            whitecaps,
+            frame_layout,
             mirror,
+            no_whitecap_map,
+            frame_groups,
             sky,
             patch_groups,
         }
     }
+}
+
+/// The layout of the sea's group 2: its uniforms, the cascades' maps, the island's map.
+fn sea_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
+    let vis = wgpu::ShaderStages::VERTEX_FRAGMENT;
+    let filterable = wgpu::TextureSampleType::Float { filterable: true };
+    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("sea layout"),
+        entries: &[
+            gpu::uniform_entry(0, vis),
+            layers_entry(1),
+            layers_entry(2),
+            gpu::texture_entry(3, vis, filterable, wgpu::TextureViewDimension::D2),
+        ],
+    })
+}
+
+fn sea_group(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    uniforms: &wgpu::Buffer,
+    maps: &[wgpu::Texture; 2],
+    island_map: &wgpu::Texture,
+) -> wgpu::BindGroup {
+    let views = maps.each_ref().map(|m| {
+        m.create_view(&wgpu::TextureViewDescriptor {
+            dimension: Some(wgpu::TextureViewDimension::D2Array),
+            ..Default::default()
+        })
+    });
+    let island_view = island_map.create_view(&Default::default());
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("sea"),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: uniforms.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(&views[0]) },
+            wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(&views[1]) },
+            wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(&island_view) },
+        ],
+    })
+}
+
+/// The sea's group 3 reading the mirror and each whitecap map in turn.
+fn frame_groups(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    mirror: &MirrorTarget,
+    whitecaps: Option<&WhitecapMaps>,
+    no_map: &wgpu::TextureView,
+) -> [wgpu::BindGroup; 2] {
+    [0, 1].map(|i| {
+        let map = whitecaps.map_or(no_map, |w| &w.views[i]);
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("sea frame"),
+            layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&mirror.view) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(map) },
+            ],
+        })
+    })
 }
 
 /// A filterable array texture binding: the cascades' maps, one layer each.
@@ -261,8 +312,10 @@ impl Renderer {
         sea: &SeaView<'_>,
     ) {
         let features = Features::of(view);
-        if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, sea.variant)) {
-            self.sea = Some(SeaRenderer::new(self, device, queue, (features, sea.variant), sea.patch));
+        let variant =
+            SeaVariant { whitecap_map: sea.variant.whitecap_map && self.settings.float_targets, ..sea.variant };
+        if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, variant)) {
+            self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch));
         }
         let scaled = self.scaled_size(view, size);
         if scaled != size {
@@ -287,7 +340,10 @@ impl Renderer {
         let drawn = self.sea.as_mut().expect("made by encode_sea");
         let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
         if drawn.island_drawing.is_some() && drawn.mirror.size() != mirror_size {
-            drawn.mirror = MirrorTarget::new(device, &drawn.mirror_layout, mirror_size);
+            drawn.mirror = MirrorTarget::new(device, mirror_size);
+            let whitecaps = drawn.whitecaps.as_ref();
+            drawn.frame_groups =
+                frame_groups(device, &drawn.frame_layout, &drawn.mirror, whitecaps, &drawn.no_whitecap_map);
         }
         let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
         let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
@@ -299,7 +355,12 @@ impl Renderer {
             grid: rect,
             cells: [cells.0 as f32, cells.1 as f32, angle, 0.0],
             waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), 0.0, 0.0],
-            foam: [f32::from(u8::from(sea.whitecaps)), f32::from(u8::from(sea.shore_foam)), sea.crest, 0.0],
+            foam: [
+                f32::from(u8::from(sea.whitecaps)),
+                f32::from(u8::from(sea.shore_foam)),
+                sea.crest,
+                sea.whitecaps_kept,
+            ],
             mirror: [1.0 / size.0.max(1) as f32, 1.0 / size.1.max(1) as f32, 0.0, 0.0],
             fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
@@ -310,9 +371,14 @@ impl Renderer {
             gpu::write_texture_2d(queue, map, 0, bytemuck::cast_slice(&halves));
         }
         let depth = self.depth_view(device, size).clone();
-        let drawn = self.sea.as_ref().expect("made by encode_sea");
-        let groups =
-            [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group, &drawn.mirror.group];
+        let drawn = self.sea.as_mut().expect("made by encode_sea");
+        let scene_groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
+        if let Some(whitecaps) = &mut drawn.whitecaps {
+            whitecaps.update(encoder, scene_groups, &drawn.frame_groups);
+        }
+        let frame_group = &drawn.frame_groups[drawn.whitecaps.as_ref().map_or(0, WhitecapMaps::current)];
+        let [a, b, c] = scene_groups;
+        let groups = [a, b, c, frame_group];
         if let Some(island) = &drawn.island_drawing {
             island.draw_mirrored(encoder, &drawn.mirror, &groups[..3]);
         }

@@ -36,35 +36,20 @@ pub(super) struct IslandDrawing {
     shown: [(Vec3, Vec3); 2],
 }
 
-/// The mirror's texture at one size and the bind group (group 3) the sea reads it through.
+/// The mirror's texture at one size (the sea reads it in its group 3, binding 0).
 pub(super) struct MirrorTarget {
     size: (u32, u32),
-    view: wgpu::TextureView,
+    pub view: wgpu::TextureView,
     depth: wgpu::TextureView,
-    pub group: wgpu::BindGroup,
-}
-
-/// The layout of the sea's group 3: the mirror.
-pub(super) fn mirror_layout(device: &wgpu::Device) -> wgpu::BindGroupLayout {
-    device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some("sea mirror layout"),
-        entries: &[gpu::filtered_texture_entry(0, wgpu::ShaderStages::FRAGMENT)],
-    })
 }
 
 impl MirrorTarget {
-    /// A mirror of `size` texels (a texel and no depth to draw into for a sea without island).
-    pub(super) fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, size: (u32, u32)) -> Self {
+    /// A mirror of `size` texels (a texel for a sea without island).
+    pub(super) fn new(device: &wgpu::Device, size: (u32, u32)) -> Self {
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
         let colour = gpu::texture_2d(device, "sea mirror", size.0, size.1, 1, 1, MIRROR_FORMAT, usage);
         let depth = gpu::texture_2d(device, "sea mirror depth", size.0, size.1, 1, 1, DEPTH_FORMAT, usage);
-        let view = colour.create_view(&Default::default());
-        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("sea mirror"),
-            layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) }],
-        });
-        Self { size, view, depth: depth.create_view(&Default::default()), group }
+        Self { size, view: colour.create_view(&Default::default()), depth: depth.create_view(&Default::default()) }
     }
 
     pub(super) fn size(&self) -> (u32, u32) {
