@@ -209,9 +209,11 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let footprint = max(length(dpdx(in.rest)), length(dpdy(in.rest)));
     var slope = vec2<f32>(0.0);
     var removed = 0.0;
+    var finest = vec2<f32>(0.0); // the last cascade's slope in its frame (shallows_caustics)
     for (var c = 0; c < CASCADES; c++) {
         let w = cascade_weight(c, footprint);
         let s = cascade_texel(sea_surface, c, to_cascade(c, in.rest), sea.cascades[c].z).yz;
+        finest = s;
         slope += w * from_cascade(c, s);
         removed += (1.0 - w * w) * sea.cascades[c].w;
     }
@@ -239,7 +241,11 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         let ground = ground_at(in.world.xz);
         let depth = in.world.y - ground.x;
         if depth < SEE_DEPTH {
-            under = seen_through_water(v, n, depth, ground);
+            var focus = 1.0;
+            if SHALLOW_CAUSTICS {
+                focus = shallows_caustics(in.rest, finest, depth, footprint);
+            }
+            under = seen_through_water(v, n, depth, ground, focus);
         }
         foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), in.world.xz) * sea.foam.y);
     }

@@ -45,16 +45,42 @@ fn light_on_ground(n: vec3<f32>) -> vec3<f32> {
     return sun_light() * max(dot(n, scene.sun.xyz), 0.0) + sky_light() * (0.5 + 0.5 * n.y);
 }
 
+// Sunlight on the floor `depth` m under rest point p, focused by the waves (caustics, with the
+// sun overhead): the point a refracted ray reaches moves by k grad h, k = depth (1 - 1/n), so
+// the light is spread by det(I + k H), H the surface's Hessian: here the finest cascade's (the
+// short waves that make a floor's caustics), from its slope `s` at p (in its frame) and its
+// slopes a texel on, turned to the world as its carry gradient is, faded as the pixel's
+// footprint (m) outgrows it.
+fn shallows_caustics(p: vec2<f32>, s: vec2<f32>, depth: f32, footprint: f32) -> f32 {
+    let c = CASCADES - 1;
+    let tile = sea.cascades[c].z;
+    let step = tile / f32(SEA_LATTICE);
+    let local = to_cascade(c, p);
+    let sx = (cascade_texel(sea_surface, c, local + vec2<f32>(step, 0.0), tile).yz - s) / step;
+    let sz = (cascade_texel(sea_surface, c, local + vec2<f32>(0.0, step), tile).yz - s) / step;
+    let local_hessian = vec4<f32>(0.0, 0.0, sx.x, sz.y);
+    let cross = vec4<f32>(0.0, 0.0, 0.0, 0.5 * (sx.y + sz.x));
+    let hessian = add_gradient(vec3<f32>(0.0), c, cascade_weight(c, footprint), local_hessian, cross);
+    let k = depth * (1.0 - IOR_AIR / IOR_WATER);
+    let spread = (1.0 + k * hessian.x) * (1.0 + k * hessian.z) - k * k * hessian.y * hessian.y;
+    return min(1.0 / max(abs(spread), 0.05), SHALLOWS_CAUSTICS_PEAK);
+}
+
+// The caustics' brightest, against the floor's mean light.
+const SHALLOWS_CAUSTICS_PEAK: f32 = 6.0;
+
 // What the eye sees under the surface along unit v refracted by normal n where the water is
-// `depth` m deep over `ground`: the lit floor dimmed along the light's way down and the view's
-// way back (absorbed and scattered out of the beam), and the deep water's light over the rest.
-fn seen_through_water(v: vec3<f32>, n: vec3<f32>, depth: f32, ground: vec3<f32>) -> vec3<f32> {
+// `depth` m deep over `ground`: the floor lit by the sun (times `focus`, its caustics) and the
+// sky, dimmed along the light's way down and the view's way back (absorbed and scattered out
+// of the beam), and the deep water's light over the rest.
+fn seen_through_water(v: vec3<f32>, n: vec3<f32>, depth: f32, ground: vec3<f32>, focus: f32) -> vec3<f32> {
     let down = refract(v, n, IOR_AIR / IOR_WATER);
     let path = depth / max(-down.y, 0.2) + depth / max(scene.sun.y, 0.2);
     let fade = 1.0 - smoothstep(0.6 * SEE_DEPTH, SEE_DEPTH, depth); // SEE_DEPTH: island.rs
     let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * max(path, 0.0)) * fade;
-    let floor = SAND * light_on_ground(ground_normal(ground));
-    return mix(deep_water(), floor, through);
+    let g = ground_normal(ground);
+    let light = sun_light() * max(dot(g, scene.sun.xyz), 0.0) * focus + sky_light() * (0.5 + 0.5 * g.y);
+    return mix(deep_water(), SAND * light, through);
 }
 
 // Foam along the shore where the water at p (m, as the waves carry it) is `depth` deep: at the

@@ -241,9 +241,10 @@ pub const PARAMS: &[ParamSpec] = &[
 ];
 
 /// The pool's parameters the sea reads too (the controls show the others only in the pool):
-/// the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
+/// the caustics (on the shallows' floor), the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
 /// running and the frame's quality.
 pub const USES_OF_THE_POOL: &[&str] = &[
+    "caustics",
     "drop_radius",
     "drop_strength",
     "sun_azimuth",
@@ -267,6 +268,9 @@ pub struct SeaVariant {
     pub grid_lines: bool,
     /// The whitecaps kept over time (where the device renders into float textures).
     pub whitecap_map: bool,
+    /// The waves' caustics on the shallows' floor (with the island and the `caustics`
+    /// parameter).
+    pub shallow_caustics: bool,
 }
 
 /// The whitecaps' albedo: foam sends back most of the light falling on it.
@@ -280,7 +284,7 @@ pub const WHITECAP_LIFETIME: f32 = 1.0;
 
 /// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`).
 pub fn wgsl_constants(variant: SeaVariant) -> String {
-    let SeaVariant { island, grid_lines, whitecap_map } = variant;
+    let SeaVariant { island, grid_lines, whitecap_map, shallow_caustics } = variant;
     let [r, g, b] = deep_water_albedo();
     let [ar, ag, ab] = SEA_ABSORPTION;
     let absorption = format!(
@@ -288,6 +292,7 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
     );
     let switches = format!(
         "const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
+         const SHALLOW_CAUSTICS: bool = {shallow_caustics};\n\
          const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n"
     );
     let island = switches + &island::wgsl_constants();

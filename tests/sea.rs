@@ -419,3 +419,45 @@ fn a_storm_keeps_its_whitecaps_a_while_and_the_same_at_every_frame_rate() {
     assert!(kept[1] > 1.5 * moment, "the whitecaps are not kept");
     assert!(most < 1.15 * least, "the kept whitecaps differ with the frame rate");
 }
+
+#[test]
+fn the_waves_focus_sunlight_into_caustics_on_the_shallows_floor() {
+    // Looking down 60° at water about 5 m deep off the island's coast, the sun 70° up.
+    let centre = Vec2::from(island::CENTRE);
+    let out = -centre.normalize();
+    let spot = (0..400).map(|r| centre + out * r as f32).find(|&p| depth_at(p) > 5.0).expect("deep enough water");
+    let mut frames = Vec::new();
+    let mut d = demo(DemoOptions::default());
+    for caustics in [1.0, 0.0] {
+        d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 1.0);
+        d.params.set(ParamId::SunElevation, 70.0);
+        d.params.set(ParamId::Caustics, caustics);
+        d.sync_scene();
+        (d.camera.pitch, d.camera.distance, d.camera.yaw) = (60.0, 25.0, 20.0);
+        d.camera.target = Vec3::new(spot.x, 0.0, spot.y);
+        d.camera.clamp();
+        d.set_sea_foam(false, false, false);
+        frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
+    }
+    // Over water 2-10 m deep, the floor's light with the caustics against without, pixel by
+    // pixel: focused here, spread thin there, about as much in all.
+    let ratios: Vec<f64> = Rect::ALL
+        .pixels(&frames[0])
+        .into_iter()
+        .filter(|&(x, y)| rest_point(&d, SIZE, x, y).map(depth_at).is_some_and(|depth| depth > 2.0 && depth < 10.0))
+        .map(|(x, y)| (frames[0].luma(x, y) / frames[1].luma(x, y).max(1e-3)) as f64)
+        .collect();
+    let n = ratios.len().max(1) as f64;
+    let mean = ratios.iter().sum::<f64>() / n;
+    let spread = (ratios.iter().map(|r| (r - mean).powi(2)).sum::<f64>() / n).sqrt();
+    let brightest = ratios.iter().cloned().fold(0.0, f64::max);
+    println!(
+        "{} pixels over 2-10 m of water: their luma with caustics over without, mean {mean:.3}, std {spread:.3}, \
+         brightest {brightest:.2}",
+        ratios.len()
+    );
+    assert!(ratios.len() > 5000, "the shallows are not in view");
+    assert!(spread > 0.08 && brightest > 1.3, "no caustics on the floor");
+    assert!(mean > 0.85 && mean < 1.3, "caustics should move light, not make it");
+}

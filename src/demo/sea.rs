@@ -195,6 +195,7 @@ impl WaterDemo {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
                 whitecap_map: sea.may_break && self.sea_foam[1],
+                shallow_caustics: settings.island && self.params.get(ParamId::Caustics) >= 0.5,
             },
             whitecaps_kept: (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp(),
         };
