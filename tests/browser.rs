@@ -958,10 +958,17 @@ async fn flat_water_splits_and_the_divider_drags_on_webgl2() {
 async fn the_sea_runs_in_the_page_on_both_backends_and_gives_the_pool_back() {
     let _g = serial();
     for (graphics, backend) in [(Graphics::WebGpu, "webgpu"), (Graphics::WebGl2Only, "webgl2")] {
-        let (browser, _server) = open_demo(graphics, &format!("?backend={backend}&scene=sea&quality=1"), backend).await;
+        // As a shared link opens it: the scene and the sea camera's view.
+        let link = format!("?backend={backend}&scene=sea&quality=1&camera=150,12,60");
+        let (browser, _server) = open_demo(graphics, &link, backend).await;
         assert!(browser.wait_for("window.demo.stats().scene === 'sea'", Duration::from_secs(20)).await);
+        let view = browser.js("return { camera: window.demo.camera(), link: window.demo.shareLink() };").await;
+        let camera: Vec<f64> = view["camera"].as_array().into_iter().flatten().filter_map(Value::as_f64).collect();
+        assert!(camera == [150.0, 12.0, 60.0], "{backend}: the link's view is lost: {view}");
+        assert!(view["link"].as_str().is_some_and(|l| l.contains("scene=sea") && l.contains("camera=150,12,60")));
         let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
         let shot = browser.screenshot().await;
+        shot.dump(&format!("sea-{backend}"));
         let band = |from: u32, to: u32| Rect { y: rect.y + rect.h * from / 10, h: rect.h * (to - from) / 10, ..rect };
         let (sky, sea) = (shot.mean(band(0, 2)), shot.mean(band(7, 10)));
         let controls = browser

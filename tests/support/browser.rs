@@ -841,6 +841,17 @@ pub struct Shot {
 }
 
 impl Shot {
+    /// With WAVEPOOL_DUMP_FRAMES=DIR, writes the screenshot there as `name`.png, to look at
+    /// what a test saw.
+    pub fn dump(&self, name: &str) {
+        if let Some(dir) = std::env::var_os("WAVEPOOL_DUMP_FRAMES") {
+            let dir = std::path::PathBuf::from(dir);
+            let _ = std::fs::create_dir_all(&dir);
+            let path = dir.join(format!("{name}.png"));
+            wavepool::headless::write_png(&path, self.width, self.height, &self.rgba).expect("dump screenshot");
+        }
+    }
+
     pub fn decode(png_bytes: &[u8]) -> Self {
         let mut decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
         decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
