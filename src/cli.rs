@@ -388,6 +388,7 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     };
     let info = gpu.adapter.get_info();
     let round = |v: f64| (v * 1e3).round() / 1e3;
+    let sea = (demo.drawn_scene() == wavepool::sea::SceneKind::Sea).then(|| sea_stages(&demo, &stage, round));
     let report = serde_json::json!({
         "adapter": info.name,
         "backend": format!("{:?}", info.backend),
@@ -404,9 +405,33 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
             "cpu wall clock: each stage submitted and waited for separately"
         },
         "frame_timing": "cpu wall clock from encode to GPU idle, one frame in flight",
+        "sea": sea,
     });
     println!("{report}");
     Ok(())
+}
+
+/// The sea's stages under their own names (its frame marks the same three), and the CPU's
+/// time to sum its cascades for a frame (`SeaWaves::layers`, timed here apart: the median of
+/// ten). The middle stage runs from the patch's end to the sea pass: the GPU waits there for
+/// the CPU's cascades and their upload, then draws the island's mirror and the kept whitecaps.
+fn sea_stages(demo: &WaterDemo, stage: &dyn Fn(usize) -> f64, round: impl Fn(f64) -> f64) -> serde_json::Value {
+    let settings = wavepool::sea::SeaSettings::from_values(|n| demo.params.get_by_name(n).expect("a sea parameter"));
+    let waves = wavepool::ambient::cascades::SeaWaves::new(&settings.waves(), wavepool::sea::SEA_LATTICE);
+    let times: Vec<f64> = (0..10)
+        .map(|i| {
+            let start = Instant::now();
+            std::hint::black_box(waves.layers(i as f64 * 0.1));
+            start.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    serde_json::json!({
+        "fft_cpu_ms": round(percentile(&times, 0.5)),
+        "patch_ms": round(stage(0)),
+        "maps_ms": round(stage(1)),
+        "maps": "waiting for the cascades (CPU) and their upload, the island's mirror, the kept whitecaps",
+        "sea_and_sky_ms": round(stage(2)),
+    })
 }
 
 fn viewer_options(args: ViewerArgs) -> Result<crate::viewer::ViewerOptions, clap::Error> {

@@ -179,7 +179,6 @@ impl WaterDemo {
         }
         let sea = self.sea.as_ref().expect("made above");
         self.renderer.prepare(queue, encoder, &view, &sea.patch);
-        mark(encoder, Stage::AfterCaustics);
         let drawn = SeaView {
             camera: &self.camera,
             fog_distance: settings.fog_distance,
@@ -199,7 +198,10 @@ impl WaterDemo {
             },
             whitecaps_kept: (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp(),
         };
-        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn);
+        // The sea's middle stage is the frame's maps: the island's mirror and the kept
+        // whitecaps (where the pool's is its caustics).
+        let mut maps_done = |encoder: &mut wgpu::CommandEncoder| mark(encoder, Stage::AfterCaustics);
+        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
         mark(encoder, Stage::AfterScene);
     }
 }

@@ -310,6 +310,7 @@ impl Renderer {
         size: (u32, u32),
         view: &super::View,
         sea: &SeaView<'_>,
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder),
     ) {
         let features = Features::of(view);
         let variant =
@@ -320,22 +321,23 @@ impl Renderer {
         let scaled = self.scaled_size(view, size);
         if scaled != size {
             let image = self.upscale.image(device, self.settings.target_format, scaled);
-            self.draw_sea(device, queue, encoder, &image, scaled, sea);
+            self.draw_sea(device, queue, encoder, (&image, scaled), sea, mark);
             self.upscale.run(encoder, target);
         } else {
-            self.draw_sea(device, queue, encoder, target, size, sea);
+            self.draw_sea(device, queue, encoder, (target, size), sea, mark);
         }
     }
 
-    /// The sea's grid and sky into `target` of `size` pixels.
+    /// The sea's grid and sky into `target` of `size` pixels, after the passes that make the
+    /// frame's maps (the island's mirror, the kept whitecaps) and then `mark`.
     fn draw_sea(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
+        (target, size): (&wgpu::TextureView, (u32, u32)),
         sea: &SeaView<'_>,
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder),
     ) {
         let drawn = self.sea.as_mut().expect("made by encode_sea");
         let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
@@ -382,6 +384,7 @@ impl Renderer {
         if let Some(island) = &drawn.island_drawing {
             island.draw_mirrored(encoder, &drawn.mirror, &groups[..3]);
         }
+        mark(encoder);
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
         pass.set_pipeline(&drawn.grid);
         for (i, group) in groups.iter().enumerate() {
