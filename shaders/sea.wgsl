@@ -235,7 +235,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     foam *= sea.foam.x;
     var mirrored = vec4<f32>(0.0);
     if ISLAND {
-        mirrored = mirrored_land(in.clip.xy, n);
+        mirrored = mirrored_land(in.clip.xy, n, sqrt(removed));
     }
     if ISLAND && on_island_map(in.world.xz) {
         let ground = ground_at(in.world.xz);

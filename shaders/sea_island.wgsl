@@ -11,8 +11,11 @@
 // coverage in alpha.
 @group(3) @binding(0) var mirror_map: texture_2d<f32>; // (binding 1: sea_foam.wgsl)
 
-// How far (a fraction of the screen per unit of slope) the waves move the mirror's image.
+// How far (a fraction of the screen per unit of slope) the waves move the mirror's image, and
+// how far up and down its three taps spread per unit of the unresolved rms slope (a tenth of
+// the angle it turns a ray by: three taps further apart show as ghosts).
 const MIRROR_WOBBLE: f32 = 0.04;
+const MIRROR_BLUR: f32 = 0.05;
 
 const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);
 const WET_SAND: vec3<f32> = vec3<f32>(0.30, 0.24, 0.15);
@@ -152,8 +155,14 @@ fn fs_island_mirrored(in: IslandOut) -> @location(0) vec4<f32> {
 }
 
 // The mirrored land seen by the sea's pixel at `pixel` (px) with normal n, moved by the
-// waves' slopes: its colour and coverage.
-fn mirrored_land(pixel: vec2<f32>, n: vec3<f32>) -> vec4<f32> {
-    let m = textureSampleLevel(mirror_map, clamp_sampler, pixel * sea.mirror.xy + MIRROR_WOBBLE * n.xz, 0.0);
+// waves' slopes and blurred up and down the screen by `rough`, the rms slope of the waves too
+// small to draw there (a mirrored ray spreads by about that angle; the far sea's image is
+// smeared as a rough sea's is): its colour and coverage.
+fn mirrored_land(pixel: vec2<f32>, n: vec3<f32>, rough: f32) -> vec4<f32> {
+    let centre = pixel * sea.mirror.xy + MIRROR_WOBBLE * n.xz;
+    let spread = vec2<f32>(0.0, MIRROR_BLUR * rough / length(sea.up.xyz));
+    let m = (textureSampleLevel(mirror_map, clamp_sampler, centre - spread, 0.0)
+        + textureSampleLevel(mirror_map, clamp_sampler, centre, 0.0)
+        + textureSampleLevel(mirror_map, clamp_sampler, centre + spread, 0.0)) / 3.0;
     return vec4<f32>(m.rgb * m.rgb * MIRROR_RANGE, m.a);
 }
