@@ -11,11 +11,6 @@
 // coverage in alpha.
 @group(3) @binding(0) var mirror_map: texture_2d<f32>; // (binding 1: sea_foam.wgsl)
 
-// How far (a fraction of the screen per unit of slope) the waves move the mirror's image, and
-// how far up and down its three taps spread per unit of the unresolved rms slope (a tenth of
-// the angle it turns a ray by: three taps further apart show as ghosts).
-const MIRROR_WOBBLE: f32 = 0.04;
-const MIRROR_BLUR: f32 = 0.05;
 
 const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);
 const WET_SAND: vec3<f32> = vec3<f32>(0.30, 0.24, 0.15);
@@ -158,11 +153,18 @@ fn fs_island_mirrored(in: IslandOut) -> @location(0) vec4<f32> {
 // waves' slopes and blurred up and down the screen by `rough`, the rms slope of the waves too
 // small to draw there (a mirrored ray spreads by about that angle; the far sea's image is
 // smeared as a rough sea's is): its colour and coverage.
+// The slope tilts the image across the screen and along the view (up the screen for a slope
+// towards the eye). The mirror's texels are cleared to nothing, so a filtered texel is
+// weighted by its coverage: its colour is taken back out of it before it is squared.
 fn mirrored_land(pixel: vec2<f32>, n: vec3<f32>, rough: f32) -> vec4<f32> {
-    let centre = pixel * sea.mirror.xy + MIRROR_WOBBLE * n.xz;
+    let across = normalize(sea.right.xyz);
+    let ahead = normalize(vec3<f32>(sea.forward.x, 0.0, sea.forward.z));
+    let tilt = vec2<f32>(dot(n, across), dot(n, ahead));
+    let centre = pixel * sea.mirror.xy + MIRROR_WOBBLE * tilt;
     let spread = vec2<f32>(0.0, MIRROR_BLUR * rough / length(sea.up.xyz));
     let m = (textureSampleLevel(mirror_map, clamp_sampler, centre - spread, 0.0)
         + textureSampleLevel(mirror_map, clamp_sampler, centre, 0.0)
         + textureSampleLevel(mirror_map, clamp_sampler, centre + spread, 0.0)) / 3.0;
-    return vec4<f32>(m.rgb * m.rgb * MIRROR_RANGE, m.a);
+    let shade = m.rgb / max(m.a, 1.0e-3);
+    return vec4<f32>(shade * shade * MIRROR_RANGE, m.a);
 }

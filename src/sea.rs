@@ -8,7 +8,7 @@ pub mod island;
 
 use glam::Vec3;
 
-use crate::ambient::cascades::{CASCADE_COUNT, WHITECAP_JACOBIAN};
+use crate::ambient::cascades::{CASCADE_COUNT, WHITECAP_JACOBIAN, WHITECAP_SOFTNESS};
 use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -93,10 +93,14 @@ pub fn patch_scale() -> f32 {
 }
 pub const PATCH_DROP_HEIGHT: f32 = 3.0;
 
-/// The camera the sea starts with: 40 m from a target on the water, 9° above the horizon,
-/// looking towards the island.
+/// The view the sea starts with (yaw °, pitch °, distance m): 40 m from a target on the water,
+/// 9° above the horizon, looking towards the island.
+pub const DEFAULT_VIEW: [f32; 3] = [160.0, 9.0, 40.0];
+
+/// The camera the sea starts with ([`DEFAULT_VIEW`]).
 pub fn default_camera() -> OrbitCamera {
-    OrbitCamera { yaw: 160.0, pitch: 9.0, distance: 40.0, target: Vec3::ZERO, fov_y: 45.0, limits: SEA_LIMITS }
+    let [yaw, pitch, distance] = DEFAULT_VIEW;
+    OrbitCamera { yaw, pitch, distance, target: Vec3::ZERO, fov_y: 45.0, limits: SEA_LIMITS }
 }
 
 /// The sea's settings, from its parameters.
@@ -300,7 +304,7 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
         + &island
         + &format!(
             "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
-         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\n\
+         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\n\
          const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
          const HORIZON_HAZE_BAND: f32 = {HORIZON_HAZE_BAND:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"

@@ -394,7 +394,8 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
 
 #[test]
 fn a_storm_keeps_its_whitecaps_a_while_and_the_same_at_every_frame_rate() {
-    // The storm two seconds in, drawn at 30, 60 and 144 frames a second.
+    // The storm two seconds in, drawn at 30, 60 and 144 frames a second; the moment's foam on
+    // the same map, not kept from one frame to the next.
     let storm = |fps: u32, whitecaps: bool, kept: bool| {
         let mut d = demo(DemoOptions::default());
         d.apply_preset(wavepool::presets::find("storm").expect("the storm preset"));
@@ -459,5 +460,6 @@ fn the_waves_focus_sunlight_into_caustics_on_the_shallows_floor() {
     );
     assert!(ratios.len() > 5000, "the shallows are not in view");
     assert!(spread > 0.08 && brightest > 1.3, "no caustics on the floor");
-    assert!(mean > 0.85 && mean < 1.3, "caustics should move light, not make it");
+    // 1/|det| taken at the surface rather than over the floor averages a little over 1.
+    assert!(mean > 0.85 && mean < 1.15, "caustics should move light, not make it");
 }

@@ -80,6 +80,10 @@ pub const SEA_FETCH: f32 = 50_000.0;
 /// Whitecaps where the choppy surface's Jacobian determinant falls below this: the water is
 /// squeezed to this share of its area at rest, about to fold over and break.
 pub const WHITECAP_JACOBIAN: f32 = 0.3;
+/// The foam fades out over this much above [`WHITECAP_JACOBIAN`].
+pub const WHITECAP_SOFTNESS: f32 = 0.15;
+// `may_break`'s bound holds for a norm up to 1/√2, which the foam's edge must lie within.
+const _: () = assert!(WHITECAP_JACOBIAN + WHITECAP_SOFTNESS >= 0.25);
 
 /// One cascade: its lattice and how far it is turned from the world's axes.
 #[derive(Clone, Debug)]
@@ -195,8 +199,9 @@ impl SeaWaves {
     }
 
     /// Whether the choppy waves can break anywhere: the Jacobian det(I − M) of the map
-    /// x₀ ↦ x₀ − λ D (M symmetric, Frobenius norm s) is at least (1 − s/√2)², so whitecaps
-    /// (below [`WHITECAP_JACOBIAN`] and a little over) need s past about a half. M is the
+    /// x₀ ↦ x₀ − λ D (M symmetric, Frobenius norm s) is at least (1 − s/√2)² while s ≤ 1/√2
+    /// (then at least 1/4; past it (1 − s²)/2), so whitecaps (below [`WHITECAP_JACOBIAN`]
+    /// and [`WHITECAP_SOFTNESS`] over, at least 1/4) need s past about a half. M is the
     /// cascades' λ ∂D/∂x₀ summed; taking them as independent, s seldom passes 3.5 times its
     /// rms, from the lattices at one time (the sea's statistics do not change with time).
     pub fn may_break(&self) -> bool {
@@ -215,7 +220,7 @@ impl SeaWaves {
                 texels.sum::<f64>() / lattice as f64
             })
             .sum();
-        let edge = std::f64::consts::SQRT_2 * (1.0 - (WHITECAP_JACOBIAN as f64 + 0.15).sqrt());
+        let edge = std::f64::consts::SQRT_2 * (1.0 - ((WHITECAP_JACOBIAN + WHITECAP_SOFTNESS) as f64).sqrt());
         3.5 * mean_square.sqrt() > edge
     }
 

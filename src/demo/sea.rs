@@ -96,8 +96,9 @@ impl WaterDemo {
         self.sea.as_mut().expect("made above")
     }
 
-    /// Whether the sea draws its whitecaps, keeps them over time, and draws its shore's foam
-    /// (the default: all three) or not (for tests to compare with).
+    /// Whether the sea draws its whitecaps, keeps them over time (else its map holds only each
+    /// frame's own), and draws its shore's foam (the default: all three) or not (for tests to
+    /// compare with).
     #[doc(hidden)]
     pub fn set_sea_foam(&mut self, whitecaps: bool, kept: bool, shore: bool) {
         self.sea_foam = [whitecaps, kept, shore];
@@ -193,10 +194,15 @@ impl WaterDemo {
             variant: sea::SeaVariant {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
-                whitecap_map: sea.may_break && self.sea_foam[1],
+                whitecap_map: sea.may_break,
                 shallow_caustics: settings.island && self.params.get(ParamId::Caustics) >= 0.5,
             },
-            whitecaps_kept: (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp(),
+            // Not kept (tests): the map holds only the frame's own foam.
+            whitecaps_kept: if self.sea_foam[1] {
+                (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp()
+            } else {
+                0.0
+            },
         };
         // The sea's middle stage is the frame's maps: the island's mirror and the kept
         // whitecaps (where the pool's is its caustics).

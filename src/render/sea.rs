@@ -25,6 +25,7 @@ const MAX_GRID_MARGIN: f32 = 1.5;
 const WGSL: &str = crate::wgsl!("sea.wgsl");
 const ISLAND_WGSL: &str = crate::wgsl!("sea_island.wgsl");
 const FOAM_WGSL: &str = crate::wgsl!("sea_foam.wgsl");
+const WAVES_WGSL: &str = crate::wgsl!("sea_waves.wgsl");
 
 /// What a frame of the sea depends on besides the scene's [`super::View`].
 pub struct SeaView<'a> {
@@ -130,7 +131,8 @@ impl SeaRenderer {
         };
         let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &frame_layout];
         let module = |with_island| {
-            gpu::shader(device, "sea", &[gpu::wgsl::FULLSCREEN, &prelude(with_island), WGSL, ISLAND_WGSL, FOAM_WGSL])
+            let parts = [gpu::wgsl::FULLSCREEN, &prelude(with_island), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
+            gpu::shader(device, "sea", &parts)
         };
         let with_frame = gpu::pipeline_layout(device, "sea", &layouts);
         let without_frame = gpu::pipeline_layout(device, "island", &layouts[..3]);
@@ -144,7 +146,7 @@ impl SeaRenderer {
             let pipelines = IslandPipelines { layouts: [&with_frame, &without_frame], module: &module, format };
             IslandDrawing::new(device, island_map, &pipelines)
         });
-        let parts = [&prelude(false) as &str, WGSL, ISLAND_WGSL, FOAM_WGSL];
+        let parts = [&prelude(false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
         let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
         let sky = FullscreenPass::new(device, "sea sky", &parts, "fs_sea_sky", &layouts, sky);
@@ -394,7 +396,7 @@ impl Renderer {
         match &drawn.island_drawing {
             Some(island) => {
                 let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
-                let near = island.rows_near(view_proj, rect, cells.1, sea.crest);
+                let near = island.rows_near(view_proj, rect, cells.1, (sea.crest, up.length()));
                 pass.draw(0..near.start * row, 0..1);
                 pass.draw(near.end * row..cells.1 * row, 0..1);
                 island.draw_shallows(&mut pass, near.start * row..near.end * row);

@@ -15,10 +15,21 @@ use crate::sea::island;
 /// shade as a gamma would, on every backend), coverage in alpha.
 const MIRROR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub const MIRROR_RANGE: f32 = 16.0;
+/// How far (a fraction of the screen per unit of slope) the waves move the mirror's image, and
+/// how far up and down its three taps spread per unit of the unresolved rms slope (a tenth of
+/// the angle that turns a ray by: three taps further apart show as ghosts).
+const MIRROR_WOBBLE: f32 = 0.04;
+const MIRROR_BLUR: f32 = 0.05;
+/// The most the unresolved waves' rms slope reaches (the storm's far sea): with the wobble and
+/// the blur it says how far past the island's image the sea can show it.
+const ROUGHEST: f32 = 0.5;
 
 /// The island's WGSL constants for the renderer.
 pub fn wgsl_constants() -> String {
-    format!("const MIRROR_RANGE: f32 = {MIRROR_RANGE:?};\n")
+    format!(
+        "const MIRROR_RANGE: f32 = {MIRROR_RANGE:?};\nconst MIRROR_WOBBLE: f32 = {MIRROR_WOBBLE:?};\n\
+         const MIRROR_BLUR: f32 = {MIRROR_BLUR:?};\n"
+    )
 }
 
 /// The island's texture, pipelines and mesh, made with the sea's pipelines when the island is
@@ -137,23 +148,41 @@ impl IslandDrawing {
 impl IslandDrawing {
     /// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that
     /// can show the island's shallows or its mirror image: those across the screen's span of
-    /// the boxes round them, grown by the crests' height, and two rows more each way for the
-    /// waves' sideways carry. All of them when a box reaches behind the eye.
-    pub(super) fn rows_near(&self, view_proj: Mat4, rect: [f32; 4], rows: u32, crest: f32) -> std::ops::Range<u32> {
+    /// the boxes round them, grown by the crests' height and by how far the waves move and
+    /// smear the mirror's image (`up`: the tangent of half the field of view), and two rows
+    /// more each way for the waves' sideways carry. None when both boxes lie wholly behind the
+    /// eye; all of them when one reaches behind it.
+    pub(super) fn rows_near(
+        &self,
+        view_proj: Mat4,
+        rect: [f32; 4],
+        rows: u32,
+        (crest, up): (f32, f32),
+    ) -> std::ops::Range<u32> {
         let mut span = (f32::INFINITY, f32::NEG_INFINITY);
+        let (mut behind, mut corners) = (0, 0);
         for (least, most) in self.shown {
             let (least, most) = (least - Vec3::Y * crest, most + Vec3::Y * crest);
             for corner in 0..8 {
                 let pick = |bit: u32, lo: f32, hi: f32| if corner & bit == 0 { lo } else { hi };
                 let p = Vec3::new(pick(1, least.x, most.x), pick(2, least.y, most.y), pick(4, least.z, most.z));
                 let clip = view_proj * p.extend(1.0);
+                corners += 1;
                 if clip.w <= 1.0e-3 {
-                    return 0..rows;
+                    behind += 1;
+                    continue;
                 }
                 span = (span.0.min(clip.y / clip.w), span.1.max(clip.y / clip.w));
             }
         }
-        rows_across(span, rect, rows)
+        match behind {
+            0 => {}
+            b if b == corners => return 0..0,
+            _ => return 0..rows,
+        }
+        // In NDC (twice the texture's units): the wobble's and the blur's reach.
+        let reach = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
+        rows_across((span.0 - reach, span.1 + reach), rect, rows)
     }
 }
 
