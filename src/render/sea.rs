@@ -134,16 +134,15 @@ impl SeaRenderer {
             let parts = [gpu::wgsl::FULLSCREEN, &prelude(with_island), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
             gpu::shader(device, "sea", &parts)
         };
-        let with_frame = gpu::pipeline_layout(device, "sea", &layouts);
-        let without_frame = gpu::pipeline_layout(device, "island", &layouts[..3]);
+        let (with_frame, without_frame) = (&layouts[..], &layouts[..3]);
         let plain = module(false);
-        let grid = IslandPipelines { layouts: [&with_frame, &without_frame], module: &plain, format };
+        let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
         let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
         let island_drawing = variant.island.then(|| {
             let module = module(true);
-            let pipelines = IslandPipelines { layouts: [&with_frame, &without_frame], module: &module, format };
+            let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             IslandDrawing::new(device, island_map, &pipelines)
         });
         let parts = [&prelude(false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];

@@ -80,10 +80,10 @@ pub(super) fn island_map(device: &wgpu::Device, queue: &wgpu::Queue, with_island
     texture
 }
 
-/// What the island needs from the sea's pipelines' making: the layouts with the mirror (group
-/// 3) and without (to draw into the mirror), the module, the frame's format.
+/// What the island needs from the sea's pipelines' making: the groups' layouts with the
+/// frame's maps (group 3) and without (to draw into the mirror), the module, the frame's format.
 pub(super) struct IslandPipelines<'a> {
-    pub layouts: [&'a wgpu::PipelineLayout; 2],
+    pub layouts: [&'a [&'a wgpu::BindGroupLayout]; 2],
     pub module: &'a wgpu::ShaderModule,
     pub format: wgpu::TextureFormat,
 }
@@ -205,31 +205,23 @@ pub(super) fn mesh_pipeline(
     entries: [&str; 2],
     (format, cull): (wgpu::TextureFormat, Option<wgpu::Face>),
 ) -> wgpu::RenderPipeline {
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(label),
-        layout: Some(p.layouts[0]),
-        vertex: wgpu::VertexState {
+    let [vertex_entry, fragment_entry] = entries;
+    super::variants::mesh_pipeline(
+        device,
+        super::variants::MeshPipeline {
+            label,
             module: p.module,
-            entry_point: Some(entries[0]),
-            compilation_options: Default::default(),
-            buffers: &[],
+            vertex_entry,
+            fragment_entry,
+            layouts: p.layouts[0],
+            attributes: &[],
+            stride: 0,
+            cull,
+            front_face: wgpu::FrontFace::Ccw,
+            format,
+            blend: None,
+            write_mask: wgpu::ColorWrites::ALL,
+            depth: super::variants::DepthUse::TestAndWrite,
         },
-        primitive: wgpu::PrimitiveState { cull_mode: cull, ..Default::default() },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: wgpu::MultisampleState::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: p.module,
-            entry_point: Some(entries[1]),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState { format, blend: None, write_mask: wgpu::ColorWrites::ALL })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
+    )
 }

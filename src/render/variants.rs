@@ -365,6 +365,13 @@ pub enum DepthUse {
 
 pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipeline {
     let layout = gpu::pipeline_layout(device, p.label, p.layouts);
+    let buffer = Some(wgpu::VertexBufferLayout {
+        array_stride: p.stride,
+        step_mode: wgpu::VertexStepMode::Vertex,
+        attributes: p.attributes,
+    });
+    // Without attributes, no vertex buffer: the shader makes its vertices from their index.
+    let buffers = if p.attributes.is_empty() { &[][..] } else { std::slice::from_ref(&buffer) };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(p.label),
         layout: Some(&layout),
@@ -372,11 +379,7 @@ pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::Render
             module: p.module,
             entry_point: Some(p.vertex_entry),
             compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: p.stride,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: p.attributes,
-            })],
+            buffers,
         },
         primitive: wgpu::PrimitiveState { cull_mode: p.cull, front_face: p.front_face, ..Default::default() },
         depth_stencil: (p.depth != DepthUse::None).then(|| wgpu::DepthStencilState {
