@@ -174,7 +174,8 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
             }
             under = seen_through_water(v, n, depth, ground, focus);
         }
-        foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), in.world.xz) * sea.foam.y);
+        let ripple = finest.x / sqrt(max(sea.cascades[CASCADES - 1].w, 1.0e-8));
+        foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), ripple) * sea.foam.y);
     }
     let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_sea(), foam);
     var seen = through_haze(colour, v, dist);

@@ -81,15 +81,16 @@ fn seen_through_water(v: vec3<f32>, n: vec3<f32>, depth: f32, ground: vec3<f32>,
     return mix(deep_water(), SAND * light, through);
 }
 
-// Foam along the shore where the water at p (m, as the waves carry it) is `depth` deep: at the
-// waterline, and out to SHORE_FOAM_DEPTH on the crests (`lift`: the wave's height over the
-// crest's, about -1 to 1), so it moves with the waves, broken into patches by noise.
-fn shore_foam(depth: f32, lift: f32, p: vec2<f32>) -> f32 {
+// Foam along the shore where the water is `depth` deep: at the waterline, and out to
+// SHORE_FOAM_DEPTH on the crests (`lift`: the wave's height over the crest's, about -1 to 1),
+// so it moves with the waves, broken into patches by the short waves (`ripple`: the finest
+// cascade's slope over its rms, about -2 to 2, already read for the pixel).
+fn shore_foam(depth: f32, lift: f32, ripple: f32) -> f32 {
     if depth > SHORE_FOAM_DEPTH {
         return 0.0;
     }
     let shallow = 1.0 - max(depth, 0.0) / SHORE_FOAM_DEPTH;
-    let patches = value_noise(vec3<f32>(p * 0.4, 0.0)) - 0.5;
+    let patches = clamp(0.25 * ripple, -0.5, 0.5);
     return smoothstep(0.45, 0.8, shallow + 0.35 * lift + 0.5 * patches);
 }
 
