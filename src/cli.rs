@@ -319,6 +319,7 @@ fn time_with_timestamps(
     timer.finish(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
     timer.after_submit();
+    demo.after_submit();
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
     let frame_ms = start.elapsed().as_secs_f64() * 1e3;
     // The frame waited for the GPU, so its timestamps are ready now.
@@ -344,6 +345,7 @@ fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &Offscre
         last = Instant::now();
     });
     gpu.queue.submit([encoder.finish()]);
+    demo.after_submit();
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
     FrameTimes { frame_ms: start.elapsed().as_secs_f64() * 1e3, stage_ms: Some([times[0], times[1], times[2]]) }
 }

@@ -282,9 +282,11 @@ impl WaterDemo {
 
     /// Call after submitting a frame recorded with [`WaterDemo::encode_frame`]: starts any
     /// asynchronous read of the water statistics ([`WaterDemo::water_level`]) and the
-    /// objects' water samples not yet started (encode_frame starts them already).
-    pub fn after_submit(&self) {
+    /// objects' water samples not yet started (encode_frame starts them already); in the sea,
+    /// sums the next frame's waves while the GPU draws this one.
+    pub fn after_submit(&mut self) {
         self.water.after_submit();
+        self.sum_sea_ahead();
     }
 
     /// Mean and largest |height| of the water (m), read back asynchronously, a frame or

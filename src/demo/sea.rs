@@ -17,6 +17,11 @@ pub(super) struct Sea {
     /// Whether its waves can break (`SeaWaves::may_break`): only then are whitecaps kept.
     may_break: bool,
     patch: HeightField,
+    /// The cascades summed ahead, after the last frame was submitted (while the GPU drew it),
+    /// for the fixed step the next frame was expected at: used when it comes then.
+    ahead: Option<(u64, [Vec<[f32; 4]>; 2])>,
+    /// The fixed steps the last frame took (the next is expected to take as many).
+    last_steps: u32,
 }
 
 impl WaterDemo {
@@ -80,6 +85,7 @@ impl WaterDemo {
             Some(sea) if sea.settings.waves() != settings.waves() => {
                 sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
                 sea.may_break = sea.waves.may_break();
+                sea.ahead = None;
                 sea.settings = settings;
             }
             Some(_) => {}
@@ -90,7 +96,8 @@ impl WaterDemo {
                     patch.add_drop(drop);
                 }
                 let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
-                self.sea = Some(Sea { may_break: waves.may_break(), waves, settings, patch });
+                self.sea =
+                    Some(Sea { may_break: waves.may_break(), waves, settings, patch, ahead: None, last_steps: 0 });
             }
         }
         self.sea.as_mut().expect("made above")
@@ -115,6 +122,20 @@ impl WaterDemo {
             None => self.early_sea_drops.push(drop),
         }
         true
+    }
+
+    /// After a sea frame was submitted: sums the cascades for the time the next frame is
+    /// expected at (as many fixed steps on), while the GPU draws this one, so the next frame
+    /// need not wait for them (it sums them itself if it comes at another time).
+    pub(super) fn sum_sea_ahead(&mut self) {
+        let steps_taken = self.steps_taken;
+        if let Some(sea) = self.sea.as_mut().filter(|_| self.camera_scene == SceneKind::Sea) {
+            let next = steps_taken + sea.last_steps as u64;
+            if sea.ahead.as_ref().is_none_or(|(at, _)| *at != next) {
+                // The time sim_time gives at that step.
+                sea.ahead = Some((next, sea.waves.layers(next as f64 / super::STEPS_PER_SECOND as f64)));
+            }
+        }
     }
 
     /// Flattens the sea's patch (with the pool's water, [`WaterDemo::reset`]).
@@ -160,7 +181,7 @@ impl WaterDemo {
     ) {
         self.choose_render_scale(frame_time);
         let steps = self.take_steps(frame_time);
-        let t = self.sim_time();
+        let (t, step) = (self.sim_time(), self.steps_taken);
         let settings = self.sea_settings();
         let view = self.sea_scene_view();
         let sea = self.sea(device);
@@ -172,7 +193,11 @@ impl WaterDemo {
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         sea.patch.after_submit();
-        let [surface, displacement] = sea.waves.layers(t);
+        let [surface, displacement] = match sea.ahead.take() {
+            Some((at, layers)) if at == step => layers,
+            _ => sea.waves.layers(t),
+        };
+        sea.last_steps = steps;
         let variances = SeaWaves::slope_variances(&surface, sea.waves.cascades.len());
         let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
         for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
