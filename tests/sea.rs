@@ -221,23 +221,36 @@ fn depth_at(p: Vec2) -> f32 {
     -island::height(p)
 }
 
+/// The first point, walking out from the island's middle towards the origin, where `found`.
+fn out_from_the_island(found: impl Fn(Vec2) -> bool) -> Vec2 {
+    let centre = Vec2::from(island::CENTRE);
+    let out = -centre.normalize();
+    (0..400).map(|r| centre + out * r as f32).find(|&p| found(p)).expect("such a point off the island")
+}
+
+/// A sea demo (set up further by `setup`) looking `pitch` degrees down from `distance` m at
+/// `spot` on the water, only the shore's foam drawn if `shore`.
+fn sea_over(spot: Vec2, (pitch, distance): (f32, f32), shore: bool, setup: impl FnOnce(&mut WaterDemo)) -> WaterDemo {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 1.0);
+    setup(&mut d);
+    d.sync_scene();
+    (d.camera.pitch, d.camera.distance, d.camera.yaw) = (pitch, distance, 20.0);
+    d.camera.target = Vec3::new(spot.x, 0.0, spot.y);
+    d.camera.clamp();
+    d.set_sea_foam(false, false, shore);
+    d
+}
+
 #[test]
 fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
     // Seen from 60 m above the coast, where the island's ground first dips under the sea on the
     // way out from its middle towards the origin.
-    let centre = Vec2::from(island::CENTRE);
-    let out = -centre.normalize();
-    let coast = (0..400).map(|r| centre + out * r as f32).find(|&p| island::height(p) < 0.0).expect("a coast");
+    let coast = out_from_the_island(|p| island::height(p) < 0.0);
     let mut frames = Vec::new();
     let mut d = demo(DemoOptions::default());
     for shore in [true, false] {
-        d = demo(DemoOptions::default());
-        d.params.set(ParamId::Scene, 1.0);
-        d.sync_scene();
-        (d.camera.pitch, d.camera.distance, d.camera.yaw) = (55.0, 70.0, 20.0);
-        d.camera.target = Vec3::new(coast.x, 0.0, coast.y);
-        d.camera.clamp();
-        d.set_sea_foam(false, false, shore);
+        d = sea_over(coast, (55.0, 70.0), shore, |_| {});
         frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
     }
     let (mut foamed, mut foamed_shallow, mut deep, mut deep_foamed, mut edge, mut edge_foamed) = (0, 0, 0, 0, 0, 0);
@@ -424,21 +437,14 @@ fn a_storm_keeps_its_whitecaps_a_while_and_the_same_at_every_frame_rate() {
 #[test]
 fn the_waves_focus_sunlight_into_caustics_on_the_shallows_floor() {
     // Looking down 60° at water about 5 m deep off the island's coast, the sun 70° up.
-    let centre = Vec2::from(island::CENTRE);
-    let out = -centre.normalize();
-    let spot = (0..400).map(|r| centre + out * r as f32).find(|&p| depth_at(p) > 5.0).expect("deep enough water");
+    let spot = out_from_the_island(|p| depth_at(p) > 5.0);
     let mut frames = Vec::new();
     let mut d = demo(DemoOptions::default());
     for caustics in [1.0, 0.0] {
-        d = demo(DemoOptions::default());
-        d.params.set(ParamId::Scene, 1.0);
-        d.params.set(ParamId::SunElevation, 70.0);
-        d.params.set(ParamId::Caustics, caustics);
-        d.sync_scene();
-        (d.camera.pitch, d.camera.distance, d.camera.yaw) = (60.0, 25.0, 20.0);
-        d.camera.target = Vec3::new(spot.x, 0.0, spot.y);
-        d.camera.clamp();
-        d.set_sea_foam(false, false, false);
+        d = sea_over(spot, (60.0, 25.0), false, |d| {
+            d.params.set(ParamId::SunElevation, 70.0);
+            d.params.set(ParamId::Caustics, caustics);
+        });
         frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
     }
     // Over water 2-10 m deep, the floor's light with the caustics against without, pixel by
