@@ -1,6 +1,7 @@
 // What every kind of floating body shares in the scene's rays: the hit a kind's tracer returns,
-// the diffuse lighting of its surface, its wet band and glossy coat, and its blended outline. Each kind's own tracing and colour is in
-// body_<kind>.wgsl; the code that asks every kind present (hit_bodies, body_colour,
+// its wet band and glossy coat over the diffuse light of the scene it is in (object_colour,
+// scene_seen.wgsl in the pool), and its blended outline. Each kind's own tracing and colour is
+// in body_<kind>.wgsl; the code that asks every kind present (hit_bodies, body_colour,
 // objects_visibility, bodies_occlusion) is written by bodies::wgsl from the table of kinds.
 
 // What a ray hits on an object: distance (NO_HIT for nothing), outward normal, colour.
@@ -9,28 +10,6 @@ struct ObjectHit {
     normal: vec3<f32>,
     albedo: vec3<f32>,
 };
-
-// Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
-// sunlight (through the caustics under water),
-// ambient darkened where the floor and walls are close (ambient occlusion). under: whether p
-// is under the water's rest level; a traced ray's hits are on its own side, and passing that
-// side as a constant compiles the other side's light away (software rasterisers run every
-// branch); a surface drawn directly passes p.y < 0.
-fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> vec3<f32> {
-    var direct: f32;
-    if (under) {
-        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
-    } else {
-        direct = max(dot(n, scene.sun.xyz), 0.0);
-    }
-    // Occlusion by the floor and walls falls off with distance from each plane.
-    let w = half_width();
-    var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
-    occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
-    occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
-    let ambient = sky_light_at(under) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
-    return albedo * (ambient + direct * sun_light());
-}
 
 // How wet a body's surface at p is: 1 at the water's rest level and under it, 0 from `band`
 // (m) above it, where the water it rides up and down on has not reached.

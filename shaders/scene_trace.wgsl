@@ -61,32 +61,6 @@ fn as_displayed(v: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(srgb_to_linear(g), 1.0);
 }
 
-// A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to
-// the target: dimmed by the water between it and the eye. In the flat water's textures
-// (CLIP_SIDE, flat.rs) only the side of the water plane the texture keeps; the refraction
-// texture holds the water path in alpha (m / FLAT_PATH_SCALE), the reflection 0 (the sky, 1,
-// is where the sun's highlight may show).
-fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
-    var out = finish(through_water(colour, scene.eye.xyz, p));
-    if (CLIP_SIDE != 0) {
-        if (f32(CLIP_SIDE) * (p.y - scene.flat.x) < 0.0) {
-            discard;
-        }
-        let path = water_path(scene.eye.xyz, p, half_width(), depth()) / FLAT_PATH_SCALE;
-        out.a = select(0.0, min(path, 1.0), CLIP_SIDE < 0);
-    }
-    return out;
-}
-
-// Whether a point p of a surface drawn directly (the pool's walls, a body) is lit as under the
-// water. With the deck the eye stays above the water, and what it sees directly is above the
-// surface (the water's own pass draws what lies under it): never, a constant, so software
-// rasterisers do not shade the caustics for every such pixel as well. The flat water's
-// refraction texture (CLIP_SIDE) shows what is under the plane: there by the rest level.
-fn lit_under(p: vec3<f32>) -> bool {
-    return (!HAS_DECK || CLIP_SIDE != 0) && p.y < 0.0;
-}
-
 fn finish(c: vec3<f32>) -> vec4<f32> {
     let mapped = clamp(tone_map(max(c, vec3<f32>(0.0))), vec3<f32>(0.0), vec3<f32>(1.0));
     if (ENCODE_SRGB) {

@@ -105,6 +105,11 @@ fn unit_ball_below(delta: f32) -> (f32, f32) {
 }
 
 impl Ellipsoid {
+    /// The ellipsoid `factor` times larger about its frame's origin.
+    pub fn scaled(self, factor: f32) -> Self {
+        Self { centre: self.centre * factor, radii: self.radii * factor }
+    }
+
     pub fn volume(&self) -> f32 {
         4.0 / 3.0 * std::f32::consts::PI * self.radii.x * self.radii.y * self.radii.z
     }
@@ -243,12 +248,12 @@ impl FloatingBody {
         self.spin = Vec3::ZERO;
     }
 
-    /// Advances the body one step of `dt` seconds. With gravity, buoyancy pushes along the
+    /// Advances the body one step of `dt` seconds, kept within `bounds`. With gravity, buoyancy pushes along the
     /// water plane's normal with the weight of the water displaced (so a body on a slope drifts
     /// down it) and acts at the centre of buoyancy (so a body tilts with the waves and rights
     /// itself when its centre of mass is low). Without gravity a body only coasts to a stop.
     /// Returns the submerged volume (m³).
-    pub fn step(&mut self, shape: &Shape, gravity: bool, water: &WaterPlane, dt: f32) -> f32 {
+    pub fn step(&mut self, shape: &Shape, gravity: bool, water: &WaterPlane, dt: f32, bounds: &Bounds) -> f32 {
         let mass = shape.mass().max(1e-6);
         let volume = shape.volume();
         let (submerged, buoyancy_centre) = shape.submerged(&self.pose, water);
@@ -281,7 +286,7 @@ impl FloatingBody {
         let offset = self.pose.rotation * shape.centre_of_mass;
         self.pose.rotation = (turn * self.pose.rotation).normalize();
         self.pose.position += offset - self.pose.rotation * shape.centre_of_mass + self.velocity * dt;
-        let bounced = keep_in_pool(&mut self.pose, shape.hull);
+        let bounced = bounds.keep(&mut self.pose, shape.hull);
         for (axis, bounced) in bounced.into_iter().enumerate() {
             if bounced {
                 self.velocity[axis] *= -RESTITUTION;
@@ -291,31 +296,50 @@ impl FloatingBody {
     }
 }
 
-/// Moves a body back inside the pool box (floor and walls, and not far above the rim), by its
-/// hull's support in each direction. Returns, per axis, whether it had to be moved.
-pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
-    let w = scene::HALF_WIDTH;
-    let mut moved = [false; 3];
-    if !pose.position.is_finite() {
-        pose.position = Vec3::ZERO;
+/// A box a body is kept in (m): the pool's (its floor and walls, and not far above the rim),
+/// or the part of the sea's patch whose water takes its pushes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    pub least: Vec3,
+    pub most: Vec3,
+}
+
+impl Bounds {
+    pub fn pool() -> Self {
+        let w = scene::HALF_WIDTH;
+        Self { least: Vec3::new(-w, -scene::DEPTH, -w), most: Vec3::new(w, scene::RIM + 0.5, w) }
     }
-    for (axis, (dir, moved)) in Vec3::AXES.into_iter().zip(&mut moved).enumerate() {
-        let reach_plus = hull.iter().map(|p| p.support(pose, dir)).fold(f32::NEG_INFINITY, f32::max);
-        let reach_minus = hull.iter().map(|p| -p.support(pose, -dir)).fold(f32::INFINITY, f32::min);
-        let (lo, hi) = if axis == 1 { (-scene::DEPTH, scene::RIM + 0.5) } else { (-w, w) };
-        let shift = if reach_minus < lo {
-            lo - reach_minus
-        } else if reach_plus > hi {
-            hi - reach_plus
-        } else {
-            0.0
-        };
-        if shift != 0.0 {
-            pose.position[axis] += shift;
-            *moved = true;
+
+    /// Moves a body back inside the box, by its hull's support in each direction. Returns, per
+    /// axis, whether it had to be moved.
+    pub fn keep(&self, pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
+        let mut moved = [false; 3];
+        if !pose.position.is_finite() {
+            pose.position = Vec3::ZERO;
         }
+        for (axis, (dir, moved)) in Vec3::AXES.into_iter().zip(&mut moved).enumerate() {
+            let reach_plus = hull.iter().map(|p| p.support(pose, dir)).fold(f32::NEG_INFINITY, f32::max);
+            let reach_minus = hull.iter().map(|p| -p.support(pose, -dir)).fold(f32::INFINITY, f32::min);
+            let (lo, hi) = (self.least[axis], self.most[axis]);
+            let shift = if reach_minus < lo {
+                lo - reach_minus
+            } else if reach_plus > hi {
+                hi - reach_plus
+            } else {
+                0.0
+            };
+            if shift != 0.0 {
+                pose.position[axis] += shift;
+                *moved = true;
+            }
+        }
+        moved
     }
-    moved
+}
+
+/// Moves a body back inside the pool box ([`Bounds::pool`]).
+pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
+    Bounds::pool().keep(pose, hull)
 }
 
 /// Pushes two bodies, approximated by balls of the given radii (m) around their positions,
@@ -420,7 +444,7 @@ mod tests {
             let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density };
             let mut body = FloatingBody::at(Pose::at(Vec3::new(0.0, 0.5, 0.0)));
             for _ in 0..120 * 20 {
-                body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0);
+                body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
             }
             let expected = shape.floating_height(0.0);
             // The cap formula: pi h^2 (3r - h) / 3 = mass / water density, h = r - y.
@@ -442,7 +466,7 @@ mod tests {
         let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 1500.0 };
         let mut body = FloatingBody::at(Pose::at(Vec3::new(0.2, 0.0, 0.0)));
         for _ in 0..120 * 10 {
-            body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0);
+            body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
         }
         let y = body.pose.position.y;
         assert!((y - (-scene::DEPTH + 0.2)).abs() < 1e-3, "{y}");
@@ -458,7 +482,7 @@ mod tests {
         // Water rising towards +x: the body slides towards -x.
         let water = WaterPlane { level: 0.0, normal: Vec3::new(-0.05, 1.0, 0.0).normalize() };
         for _ in 0..60 {
-            body.step(&shape, true, &water, 1.0 / 120.0);
+            body.step(&shape, true, &water, 1.0 / 120.0, &Bounds::pool());
         }
         assert!(body.velocity.x < -0.01, "{}", body.velocity);
     }

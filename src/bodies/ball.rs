@@ -33,7 +33,7 @@ pub const KIND: BodyKind = BodyKind {
     },
     drawn: |pose, v| {
         let s = super::sphere::drawn(pose, v("ball_radius"));
-        BodyView { pose: Pose { position: s.centre, rotation: pose.rotation }, size: s.radius }
+        BodyView::at(Pose { position: s.centre, rotation: pose.rotation }, s.radius)
     },
     bound: |b| b.size,
     uniform_slots: 4,

@@ -30,7 +30,7 @@ pub const KIND: BodyKind = BodyKind {
     pick: |pose, _, origin, dir| {
         TRACED_PARTS.iter().filter_map(|p| p.shape.ray_hit(pose, origin, dir)).min_by(|a, b| a.total_cmp(b))
     },
-    drawn: |pose, _| BodyView { pose: *pose, size: 0.0 },
+    drawn: |pose, _| BodyView::at(*pose, 0.0),
     bound: |_| bounding_radius(),
     uniform_slots: 5 + 3 * TRACED_PARTS.len(),
     uniform: write_uniform,
@@ -47,12 +47,15 @@ pub const KIND: BodyKind = BodyKind {
 };
 
 /// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame (rotation
-/// and position), a ball holding it (radius 0: no duck), then per traced part its centre and
-/// semi-axes in the duck's frame (m) and its colour.
+/// times its scale, and position), a ball holding it (radius 0: no duck), then per traced part
+/// its centre and semi-axes in the duck's frame (m) and its colour. (Its traced parts are
+/// taken back into its frame by the rotation's transpose: they are traced at scale 1 only.)
 fn write_uniform(body: Option<&BodyView>, out: &mut [[f32; 4]]) {
-    let frame = body.map_or(Mat4::IDENTITY, |b| Mat4::from_rotation_translation(b.pose.rotation, b.pose.position));
+    let frame = body.map_or(Mat4::IDENTITY, |b| {
+        Mat4::from_scale_rotation_translation(Vec3::splat(b.scale), b.pose.rotation, b.pose.position)
+    });
     out[..4].copy_from_slice(&frame.to_cols_array_2d());
-    out[4] = body.map_or([0.0; 4], |b| b.pose.position.extend(bounding_radius()).to_array());
+    out[4] = body.map_or([0.0; 4], |b| b.pose.position.extend(bounding_radius() * b.scale).to_array());
     for (slots, part) in out[5..].chunks_mut(3).zip(&TRACED_PARTS) {
         slots[0] = part.shape.centre.extend(0.0).to_array();
         slots[1] = part.shape.radii.extend(0.0).to_array();

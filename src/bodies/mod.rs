@@ -11,7 +11,7 @@ use glam::Vec3;
 
 use crate::param_spec::{Control, ParamSpec};
 use crate::physics::{Ellipsoid, FloatingBody, Pose};
-use crate::sim::{HullSlot, MAX_HULL_MOVES, MAX_PROBES};
+use crate::sim::{HullMove, HullSlot, MAX_HULL_MOVES, MAX_PROBES};
 
 /// A parameter's value by its name (the app reads them from its table).
 pub type Values<'a> = &'a dyn Fn(&str) -> f32;
@@ -64,12 +64,28 @@ pub struct BodyKind {
     pub edge: bool,
 }
 
-/// A body as the renderer draws it: where (its pose; the sphere's kept inside the pool) and
-/// its size parameter where it has one (m; 0 otherwise).
+/// A body as the renderer draws it: where (its pose; the sphere's kept inside the pool), its
+/// size parameter where it has one (m; 0 otherwise), and how many times larger than its kind's
+/// own frame it is drawn (1 in the pool; the open sea holds the bodies enlarged).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BodyView {
     pub pose: Pose,
     pub size: f32,
+    pub scale: f32,
+}
+
+impl BodyView {
+    /// Drawn at its own size at `pose`.
+    pub fn at(pose: Pose, size: f32) -> Self {
+        Self { pose, size, scale: 1.0 }
+    }
+
+    /// The same body `factor` times larger about the world's origin: its place, its size and
+    /// its frame (a body of a world `factor` times the pool's).
+    pub fn enlarged(self, factor: f32) -> Self {
+        let pose = Pose { position: self.pose.position * factor, rotation: self.pose.rotation };
+        Self { pose, size: self.size * factor, scale: self.scale * factor }
+    }
 }
 
 /// A kind's mesh: vertex bytes (laid out as [`BodyKind::vertex`] says) and triangle indices.
@@ -147,6 +163,20 @@ impl Body {
     /// At rest at `pose`, not yet felt by the water.
     pub fn at(pose: Pose) -> Self {
         Self { motion: FloatingBody::at(pose), pushed: None, submerged: 0.0 }
+    }
+
+    /// Adds to `moves` how its `hull` moved since the water last took it in, if it moved
+    /// enough to push the water ([`HullSlot::moved_from`]), and records where it is now. The
+    /// first time it only records its place.
+    pub fn take_moves(&mut self, hull: &[Ellipsoid], moves: &mut Vec<HullMove>) {
+        let current: Vec<HullSlot> = hull.iter().map(|e| e.hull_slot(&self.motion.pose)).collect();
+        if let Some(previous) = &self.pushed {
+            if !previous.iter().zip(&current).any(|(before, now)| now.moved_from(before)) {
+                return;
+            }
+            moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
+        }
+        self.pushed = Some(current);
     }
 }
 

@@ -27,7 +27,7 @@ pub const KIND: BodyKind = BodyKind {
     },
     drawn: |pose, v| {
         let s = drawn(pose, v("sphere_radius"));
-        BodyView { pose: Pose::at(s.centre), size: s.radius }
+        BodyView::at(Pose::at(s.centre), s.radius)
     },
     bound: |b| b.size,
     uniform_slots: 1,

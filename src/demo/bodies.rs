@@ -10,7 +10,7 @@ use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
 use crate::params::ParamId;
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::scene::{self, Sphere};
-use crate::sim::{self, BodyCoupling, HullMove, HullSlot};
+use crate::sim::{self, BodyCoupling, HullMove};
 
 /// Radius (m) of the ring on which a body feels the ambient waves (about the duck's and a
 /// small sphere's waterline).
@@ -18,7 +18,7 @@ const AMBIENT_RING_RADIUS: f32 = 0.05;
 
 impl WaterDemo {
     /// A parameter's value by name, for the body kinds' table entries.
-    fn value(&self, name: &str) -> f32 {
+    pub(super) fn value(&self, name: &str) -> f32 {
         self.params.get_by_name(name).expect("a body kind reads its own parameters")
     }
 
@@ -171,18 +171,12 @@ impl WaterDemo {
                     }
                     shapes[k].submerged(&body.motion.pose, &planes[k]).0
                 } else {
-                    body.motion.step(&shapes[k], gravity, &planes[k], STEP_DT)
+                    body.motion.step(&shapes[k], gravity, &planes[k], STEP_DT, &physics::Bounds::pool())
                 };
             }
             if shown.len() > 1 {
                 let mass = |id: BodyId| if held == Some(id) { f32::INFINITY } else { shapes[id.0].mass() };
-                for (i, &a) in shown.iter().enumerate() {
-                    for &b in &shown[i + 1..] {
-                        let (first, second) = self.bodies.split_at_mut(b.0);
-                        let (a_motion, b_motion) = (&mut first[a.0].motion, &mut second[0].motion);
-                        physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
-                    }
-                }
+                bump_apart(&mut self.bodies, &shown, &bump, &mass);
                 for id in BodyId::all() {
                     physics::keep_in_pool(&mut self.bodies[id.0].motion.pose, &hulls[id.0]);
                 }
@@ -199,19 +193,12 @@ impl WaterDemo {
     pub(super) fn take_pushes(&mut self) -> Vec<HullMove> {
         let mut moves = Vec::new();
         for id in BodyId::all() {
-            if !self.shows(id) {
+            if self.shows(id) {
+                let hull = self.hull(id);
+                self.bodies[id.0].take_moves(&hull, &mut moves);
+            } else {
                 self.bodies[id.0].pushed = None;
-                continue;
             }
-            let pose = self.bodies[id.0].motion.pose;
-            let current: Vec<HullSlot> = self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect();
-            if let Some(previous) = &self.bodies[id.0].pushed {
-                if !previous.iter().zip(&current).any(|(before, now)| now.moved_from(before)) {
-                    continue;
-                }
-                moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
-            }
-            self.bodies[id.0].pushed = Some(current);
         }
         moves
     }
@@ -234,5 +221,17 @@ impl WaterDemo {
         }
         let rest_level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
+    }
+}
+
+/// Pushes every two of the `shown` bodies apart where their bumping balls (radii `bump`, m, by
+/// kind) overlap, the lighter more (`mass`, kg; infinite for one held in place).
+pub(super) fn bump_apart(bodies: &mut [Body], shown: &[BodyId], bump: &[f32], mass: &dyn Fn(BodyId) -> f32) {
+    for (i, &a) in shown.iter().enumerate() {
+        for &b in &shown[i + 1..] {
+            let (first, second) = bodies.split_at_mut(b.0);
+            let (a_motion, b_motion) = (&mut first[a.0].motion, &mut second[0].motion);
+            physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
+        }
     }
 }

@@ -6,6 +6,7 @@ mod bodies;
 mod input;
 mod options;
 mod sea;
+mod sea_bodies;
 mod view;
 
 use glam::{Vec2, Vec3};

@@ -13,15 +13,19 @@ use crate::sim::{Drop, HeightField, WaveSettings};
 /// The sea's waves and the settings they were made for, and the patch of simulated water.
 pub(super) struct Sea {
     settings: SeaSettings,
-    waves: SeaWaves,
+    pub(super) waves: SeaWaves,
     /// Whether its waves can break (`SeaWaves::may_break`): only then are whitecaps kept.
     may_break: bool,
-    patch: HeightField,
+    pub(super) patch: HeightField,
     /// The cascades summed ahead, after the last frame was submitted (while the GPU drew it),
     /// for the fixed step the next frame was expected at: used when it comes then.
     ahead: Option<(u64, [Vec<[f32; 4]>; 2])>,
     /// The fixed steps the last frame took (the next is expected to take as many).
     last_steps: u32,
+    /// The last frame's lattices of the cascades (`SeaWaves::layers`), kept for tests.
+    layers: [Vec<[f32; 4]>; 2],
+    /// The floating bodies in the sea, one per kind (demo/sea_bodies.rs).
+    pub(super) bodies: Vec<crate::bodies::Body>,
 }
 
 impl WaterDemo {
@@ -96,8 +100,9 @@ impl WaterDemo {
                     patch.add_drop(drop);
                 }
                 let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
-                self.sea =
-                    Some(Sea { may_break: waves.may_break(), waves, settings, patch, ahead: None, last_steps: 0 });
+                let bodies = self.sea_bodies_at_start();
+                let (may_break, layers) = (waves.may_break(), [Vec::new(), Vec::new()]);
+                self.sea = Some(Sea { may_break, waves, settings, patch, ahead: None, last_steps: 0, layers, bodies });
             }
         }
         self.sea.as_mut().expect("made above")
@@ -140,9 +145,18 @@ impl WaterDemo {
 
     /// Flattens the sea's patch (with the pool's water, [`WaterDemo::reset`]).
     pub(super) fn reset_sea(&mut self, queue: &wgpu::Queue) {
+        let bodies = self.sea_bodies_at_start();
         if let Some(sea) = &mut self.sea {
             sea.patch.reset(queue);
+            sea.bodies = bodies;
         }
+    }
+
+    /// Height (m) of the sea's waves above world (x, z) in the last frame drawn (without the
+    /// patch's ripples), once the sea has been drawn (for tests).
+    pub fn sea_height_at(&self, x: f32, z: f32) -> Option<f32> {
+        let sea = self.sea.as_ref().filter(|s| !s.layers[0].is_empty())?;
+        Some(sea.waves.height_on([&sea.layers[0], &sea.layers[1]], x, z))
     }
 
     /// The sea's patch of simulated water, once the sea has been drawn (for tests).
@@ -150,12 +164,12 @@ impl WaterDemo {
         self.sea.as_ref().map(|s| &s.patch)
     }
 
-    /// What the sea's frame shows of the scene: the sea camera, the sun and optics; no
-    /// bodies, caustics, ambient waves, foam, flat water or deck (the pool's).
+    /// What the sea's frame shows of the scene: the sea camera, the sun and optics, the sea's
+    /// bodies; no caustics, ambient waves, foam, flat water or deck (the pool's).
     fn sea_scene_view(&self) -> View {
         let pool = self.view();
         View {
-            bodies: [None; crate::bodies::KINDS.len()],
+            bodies: self.sea_drawn_bodies(),
             caustics: false,
             ambient: AmbientView::default(),
             foam: false,
@@ -183,8 +197,15 @@ impl WaterDemo {
         let steps = self.take_steps(frame_time);
         let (t, step) = (self.sim_time(), self.steps_taken);
         let settings = self.sea_settings();
-        let view = self.sea_scene_view();
         let sea = self.sea(device);
+        let [surface, displacement] = match sea.ahead.take() {
+            Some((at, layers)) if at == step => layers,
+            _ => sea.waves.layers(t),
+        };
+        sea.last_steps = steps;
+        self.step_sea_bodies(steps, [&surface, &displacement]);
+        let view = self.sea_scene_view();
+        let sea = self.sea.as_mut().expect("made above");
         let mut sim_encoder = device.create_command_encoder(&Default::default());
         mark(&mut sim_encoder, Stage::Start);
         let ripples =
@@ -193,11 +214,6 @@ impl WaterDemo {
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         sea.patch.after_submit();
-        let [surface, displacement] = match sea.ahead.take() {
-            Some((at, layers)) if at == step => layers,
-            _ => sea.waves.layers(t),
-        };
-        sea.last_steps = steps;
         let variances = SeaWaves::slope_variances(&surface, sea.waves.cascades.len());
         let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
         for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
@@ -234,5 +250,6 @@ impl WaterDemo {
         let mut maps_done = |encoder: &mut wgpu::CommandEncoder| mark(encoder, Stage::AfterCaustics);
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
         mark(encoder, Stage::AfterScene);
+        self.sea.as_mut().expect("made above").layers = [surface, displacement];
     }
 }

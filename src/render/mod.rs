@@ -11,6 +11,7 @@ mod passes;
 mod regions;
 mod resources;
 mod sea;
+mod sea_bodies;
 mod sea_foam;
 mod sea_island;
 mod shaders;

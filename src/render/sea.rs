@@ -80,6 +80,8 @@ pub struct SeaRenderer {
     features: Features,
     variant: SeaVariant,
     grid: wgpu::RenderPipeline,
+    /// Per kind of body, its mesh's pipeline if the kind is in the sea.
+    bodies: Vec<Option<wgpu::RenderPipeline>>,
     /// The island's drawing, when it is in the sea.
     island_drawing: Option<IslandDrawing>,
     /// The whitecaps kept over time, when the variant keeps them.
@@ -123,7 +125,7 @@ impl SeaRenderer {
             ],
         });
         let format = renderer.settings.target_format;
-        let base = shaders::scene_prelude(features, format);
+        let base = shaders::scene_prelude_in(features, format, super::sea_bodies::WGSL);
         let prelude = |with_island| {
             let variant = SeaVariant { island: with_island, ..variant };
             let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
@@ -138,6 +140,7 @@ impl SeaRenderer {
         let plain = module(false);
         let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
         let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
+        let bodies = super::sea_bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
         let island_drawing = variant.island.then(|| {
@@ -160,6 +163,7 @@ impl SeaRenderer {
             features,
             variant,
             grid,
+            bodies,
             island_drawing,
             whitecaps,
             frame_layout,
@@ -387,10 +391,16 @@ impl Renderer {
         }
         mark(encoder);
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
-        pass.set_pipeline(&drawn.grid);
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
+        for (pipeline, mesh) in drawn.bodies.iter().zip(&self.body_meshes) {
+            if let Some(pipeline) = pipeline {
+                pass.set_pipeline(pipeline);
+                mesh.draw(&mut pass);
+            }
+        }
+        pass.set_pipeline(&drawn.grid);
         let row = cells.0 * 6;
         match &drawn.island_drawing {
             Some(island) => {

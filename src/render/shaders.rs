@@ -16,6 +16,9 @@ pub const SCENE: [&str; 7] = [
     crate::wgsl!("scene_trace.wgsl"),
     crate::wgsl!("deck_shade.wgsl"),
 ];
+/// How the pool lights a surface drawn directly and what lies between it and the eye (what
+/// the bodies' meshes ask of the scene they are in).
+pub const POOL_SEEN: &str = crate::wgsl!("scene_seen.wgsl");
 pub const SKY: &str = crate::wgsl!("sky.wgsl");
 pub const POOL: &str = crate::wgsl!("pool.wgsl");
 pub const WATER: &str = crate::wgsl!("water.wgsl");
@@ -29,6 +32,13 @@ pub const DEBUG_VIEW: &str = crate::wgsl!("debug_view.wgsl");
 /// `target`: the format the scene is finally drawn in; without hardware sRGB encoding the
 /// shaders encode (ENCODE_SRGB, a constant: software rasterisers run both sides of a branch).
 pub fn scene_prelude(features: Features, target: wgpu::TextureFormat) -> String {
+    scene_prelude_in(features, target, POOL_SEEN)
+}
+
+/// [`scene_prelude`] for a scene of its own (the open sea): `seen` says how that scene lights
+/// a surface drawn directly and what lies between it and the eye, in place of the pool's
+/// [`POOL_SEEN`] (`object_colour`, `lit_under`, `seen_directly`).
+pub fn scene_prelude_in(features: Features, target: wgpu::TextureFormat, seen: &str) -> String {
     let numbers = format!(
         "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
         crate::scene::IOR_WATER,
@@ -46,6 +56,7 @@ pub fn scene_prelude(features: Features, target: wgpu::TextureFormat) -> String 
         gpu::wgsl::MATH.to_owned(),
         COMMON.to_owned(),
         SCENE.join("\n"),
+        seen.to_owned(),
         crate::bodies::wgsl(features.bodies as u32),
     ]
     .join("\n")

@@ -100,8 +100,15 @@ pub const CPU_COPY_SIZE: u32 = 128;
 /// Most points the water is sampled at for the bodies each frame: room for a ring around a
 /// body of every kind (`bodies::PROBES_PER_BODY` each, checked there).
 pub const MAX_PROBES: usize = 48;
-/// Depth (m) over which a body's push on the surface fades (see [`displaced_column`]).
+/// Depth (m) over which a body's push on the surface fades in the pool (see
+/// [`displaced_column`]); a wider field's grows with it ([`displacement_depth`]).
 pub const DISPLACEMENT_DEPTH: f32 = 0.1;
+
+/// The depth a body's push fades over in a field of `half_width` (m): the pool's, grown with
+/// the field as its bodies are (the open sea's patch holds bodies as much larger).
+pub fn displacement_depth(half_width: f32) -> f32 {
+    DISPLACEMENT_DEPTH * super::plan::scale_of(half_width)
+}
 /// Area of the pool's water surface (m²) for a half width of 1 m; scale by half width².
 pub fn pool_area(half_width: f32) -> f32 {
     4.0 * half_width * half_width
@@ -109,11 +116,11 @@ pub fn pool_area(half_width: f32) -> f32 {
 
 /// How much water (m, a column height) a body's ellipsoid pushes up at pool point (x, z): the
 /// part of the vertical line through (x, z) inside the ellipsoid and below the rest level,
-/// each depth y weighted by exp(y / [`DISPLACEMENT_DEPTH`]). A body moving from `from` to `to`
+/// each depth y weighted by exp(y / `depth`) ([`displacement_depth`]). A body moving from `from` to `to`
 /// raises the surface by column(to) - column(from): water ahead of it and above it rises and
 /// falls behind it, fully submerged too (weaker the deeper it is), and a body entering the
 /// water pushes its volume out around itself. (`shaders/sim_drop.wgsl` mirrors this.)
-pub fn displaced_column(x: f32, z: f32, hull: &HullSlot) -> f32 {
+pub fn displaced_column(x: f32, z: f32, hull: &HullSlot, depth: f32) -> f32 {
     let u0 = hull.unit_from_world * (Vec3::new(x, 0.0, z) - hull.centre);
     let d = hull.unit_from_world.col(1);
     let (a, b, c) = (d.dot(d), u0.dot(d), u0.dot(u0) - 1.0);
@@ -127,7 +134,7 @@ pub fn displaced_column(x: f32, z: f32, hull: &HullSlot) -> f32 {
     if y1 <= y0 {
         return 0.0;
     }
-    DISPLACEMENT_DEPTH * ((y1 / DISPLACEMENT_DEPTH).exp() - (y0 / DISPLACEMENT_DEPTH).exp())
+    depth * ((y1 / depth).exp() - (y0 / depth).exp())
 }
 
 /// What the bodies in the pool do to the water in a frame, set before

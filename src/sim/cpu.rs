@@ -256,6 +256,7 @@ impl CpuHeightField {
                 }
             }
         }
+        let depth = super::displacement_depth(self.half_width);
         for m in plan.moves.get(step).into_iter().flatten() {
             let cells = CellRange::under(&[m.from, m.to], self.size, self.half_width);
             for j in cells.z.0..=cells.z.1 {
@@ -263,7 +264,7 @@ impl CpuHeightField {
                 for i in cells.x.0..=cells.x.1 {
                     let x = self.centre(i);
                     self.height[j as usize * n + i as usize] +=
-                        displaced_column(x, z, &m.to) - displaced_column(x, z, &m.from);
+                        displaced_column(x, z, &m.to, depth) - displaced_column(x, z, &m.from, depth);
                 }
             }
         }

@@ -4,7 +4,7 @@
 
 use bytemuck::Zeroable;
 
-use super::coupling::{CPU_COPY_SIZE, DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PUSH_STEPS};
+use super::coupling::{displacement_depth, CPU_COPY_SIZE, MAX_HULL_MOVES, MAX_PUSH_STEPS};
 use super::plan::{StepPlan, MAX_DROPS_PER_PASS};
 use super::{cpu, WaterLevel, STATE_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
@@ -252,7 +252,7 @@ impl GpuSim {
             *slot = [d.x, d.z, d.radius, d.strength];
         }
         let per_step = plan.moves.iter().map(Vec::len).max().unwrap_or(0);
-        u.bodies = [per_step as f32, plan.rest_level, DISPLACEMENT_DEPTH, 0.0];
+        u.bodies = [per_step as f32, plan.rest_level, displacement_depth(half_width), 0.0];
         for (step, moves) in plan.moves.iter().enumerate().take(MAX_PUSH_STEPS) {
             let slots = &mut u.hulls[step * MAX_HULL_MOVES * 8..][..MAX_HULL_MOVES * 8];
             // Steps with fewer moves keep zero entries: a zero matrix displaces nothing.

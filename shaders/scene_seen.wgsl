@@ -1,0 +1,52 @@
+// How the pool lights a surface drawn directly (its walls, a body) and what lies between it
+// and the eye: the pool's answers to what every body's mesh asks (object_colour, lit_under,
+// seen_directly). A scene drawing the bodies elsewhere brings its own in place of this file
+// (render::shaders::scene_prelude_in).
+
+// Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
+// sunlight (through the caustics under water),
+// ambient darkened where the floor and walls are close (ambient occlusion). under: whether p
+// is under the water's rest level; a traced ray's hits are on its own side, and passing that
+// side as a constant compiles the other side's light away (software rasterisers run every
+// branch); a surface drawn directly passes p.y < 0.
+fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> vec3<f32> {
+    var direct: f32;
+    if (under) {
+        direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, false);
+    } else {
+        direct = max(dot(n, scene.sun.xyz), 0.0);
+    }
+    // Occlusion by the floor and walls falls off with distance from each plane.
+    let w = half_width();
+    var occlusion = max(-n.y, 0.0) * exp(-4.0 * (p.y + depth()));
+    occlusion += max(n.x, 0.0) * exp(-4.0 * (w - p.x)) + max(-n.x, 0.0) * exp(-4.0 * (p.x + w));
+    occlusion += max(n.z, 0.0) * exp(-4.0 * (w - p.z)) + max(-n.z, 0.0) * exp(-4.0 * (p.z + w));
+    let ambient = sky_light_at(under) * (1.0 - 0.6 * clamp(occlusion, 0.0, 1.0));
+    return albedo * (ambient + direct * sun_light());
+}
+
+// A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to
+// the target: dimmed by the water between it and the eye. In the flat water's textures
+// (CLIP_SIDE, flat.rs) only the side of the water plane the texture keeps; the refraction
+// texture holds the water path in alpha (m / FLAT_PATH_SCALE), the reflection 0 (the sky, 1,
+// is where the sun's highlight may show).
+fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
+    var out = finish(through_water(colour, scene.eye.xyz, p));
+    if (CLIP_SIDE != 0) {
+        if (f32(CLIP_SIDE) * (p.y - scene.flat.x) < 0.0) {
+            discard;
+        }
+        let path = water_path(scene.eye.xyz, p, half_width(), depth()) / FLAT_PATH_SCALE;
+        out.a = select(0.0, min(path, 1.0), CLIP_SIDE < 0);
+    }
+    return out;
+}
+
+// Whether a point p of a surface drawn directly (the pool's walls, a body) is lit as under the
+// water. With the deck the eye stays above the water, and what it sees directly is above the
+// surface (the water's own pass draws what lies under it): never, a constant, so software
+// rasterisers do not shade the caustics for every such pixel as well. The flat water's
+// refraction texture (CLIP_SIDE) shows what is under the plane: there by the rest level.
+fn lit_under(p: vec3<f32>) -> bool {
+    return (!HAS_DECK || CLIP_SIDE != 0) && p.y < 0.0;
+}

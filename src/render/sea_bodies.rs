@@ -1,0 +1,44 @@
+//! The floating bodies drawn in the open sea: each present kind's mesh with its own entry
+//! points, built in the sea's shader module, where `shaders/sea_bodies.wgsl` lights them as the
+//! sea is lit and hazes them with it. Drawn before the sea's grid, so that the water's costly
+//! fragments behind their parts above it fail the depth test (their parts under it are then
+//! hidden by the water).
+
+use super::variants::{mesh_pipeline, DepthUse, MeshPipeline};
+use crate::bodies::BodyId;
+
+pub(super) const WGSL: &str = crate::wgsl!("sea_bodies.wgsl");
+
+/// Per kind of `bodies::KINDS`, its mesh's pipeline if it is among `present` (bits of the kinds).
+pub(super) fn body_pipelines(
+    device: &wgpu::Device,
+    module: &wgpu::ShaderModule,
+    layouts: &[&wgpu::BindGroupLayout],
+    format: wgpu::TextureFormat,
+    present: u8,
+) -> Vec<Option<wgpu::RenderPipeline>> {
+    BodyId::all()
+        .map(|id| {
+            let kind = id.kind();
+            let entries = [format!("vs_{}", kind.name), format!("fs_{}", kind.name)];
+            (present & id.bit() as u8 != 0).then(|| {
+                let p = MeshPipeline {
+                    label: kind.name,
+                    module,
+                    vertex_entry: &entries[0],
+                    fragment_entry: &entries[1],
+                    layouts,
+                    attributes: kind.vertex,
+                    stride: kind.vertex_stride,
+                    cull: Some(wgpu::Face::Back),
+                    front_face: wgpu::FrontFace::Ccw,
+                    format,
+                    blend: None,
+                    write_mask: wgpu::ColorWrites::ALL,
+                    depth: DepthUse::TestAndWrite,
+                };
+                mesh_pipeline(device, p)
+            })
+        })
+        .collect()
+}
