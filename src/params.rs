@@ -47,6 +47,7 @@ param_ids! {
     SeaFog,
     SeaFogDistance,
     SeaIsland,
+    SeaObjects,
     SeaGrid,
     Setting,
     Caustics,
@@ -166,6 +167,7 @@ pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
     (ParamId::SeaFog, ParamId::Scene, &["sea"]),
     (ParamId::SeaFogDistance, ParamId::Scene, &["sea"]),
     (ParamId::SeaIsland, ParamId::Scene, &["sea"]),
+    (ParamId::SeaObjects, ParamId::Scene, &["sea"]),
     (ParamId::SeaGrid, ParamId::Scene, &["sea"]),
     (ParamId::WindSpeed, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
     (ParamId::WindDirection, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
@@ -222,7 +224,8 @@ pub fn shown_when(name: &str) -> Vec<(&'static str, Vec<f32>)> {
         .map(|&(_, on, names)| condition(on, names))
         .collect();
     let the_sea_s = crate::sea::SCENE_PARAMS.iter().chain(crate::sea::PARAMS).any(|p| p.name == name);
-    if !the_sea_s && !crate::sea::USES_OF_THE_POOL.contains(&name) {
+    let read_by_the_sea = crate::sea::USES_OF_THE_POOL.contains(&name) || bodies::kind_params().any(|n| n == name);
+    if !the_sea_s && !read_by_the_sea {
         conditions.push(condition(ParamId::Scene, &["pool"]));
     }
     conditions
@@ -334,6 +337,9 @@ mod tests {
         assert_eq!(scene_of("sea_wind"), Some(vec![1.0]), "the sea's own");
         assert_eq!(scene_of("sun_elevation"), None, "read by both");
         assert_eq!(scene_of("scene"), None);
+        assert_eq!(scene_of("objects"), Some(vec![0.0]), "the pool's bodies");
+        assert_eq!(scene_of("sea_objects"), Some(vec![1.0]), "the sea's bodies");
+        assert_eq!(scene_of("duck_density"), None, "a kind's own, read by both");
         assert_eq!(shown_when("wind_speed").len(), 2, "an ambient model's own setting, in the pool");
     }
 

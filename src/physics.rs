@@ -172,6 +172,10 @@ pub struct Shape<'a> {
     pub hull: &'a [Ellipsoid],
     pub centre_of_mass: Vec3,
     pub density: f32,
+    /// How many times larger than the pool's toy it is (1 in the pool). The damping that stands
+    /// in for the waves a toy sends out slows as 1/√scale: a body n times larger moves as a
+    /// toy filmed √n times slower (Froude's similarity, which gravity waves keep).
+    pub scale: f32,
 }
 
 impl Shape<'_> {
@@ -275,9 +279,10 @@ impl FloatingBody {
         force -= 0.5 * fluid_density * DRAG_COEFFICIENT * area * speed * self.velocity;
         // Semi-implicit Euler; the linear dampings are applied exactly so they cannot overshoot.
         self.velocity += force / mass * dt;
-        self.velocity *= (-WAVE_DAMPING * wet * dt).exp();
+        let slower = shape.scale.max(1e-3).sqrt();
+        self.velocity *= (-WAVE_DAMPING * wet * dt / slower).exp();
         self.spin += torque / shape.inertia().max(1e-9) * dt;
-        self.spin *= (-(SPIN_DAMPING_WATER * wet + SPIN_DAMPING_AIR) * dt).exp();
+        self.spin *= (-(SPIN_DAMPING_WATER * wet + SPIN_DAMPING_AIR) * dt / slower).exp();
         if !self.velocity.is_finite() || !self.spin.is_finite() {
             self.hold();
         }
@@ -441,7 +446,7 @@ mod tests {
         let r = 0.25;
         let hull = ball(r);
         for density in [300.0, 500.0, 800.0] {
-            let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density };
+            let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density, scale: 1.0 };
             let mut body = FloatingBody::at(Pose::at(Vec3::new(0.0, 0.5, 0.0)));
             for _ in 0..120 * 20 {
                 body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
@@ -463,7 +468,7 @@ mod tests {
     #[test]
     fn a_dense_sphere_sinks_to_the_floor() {
         let hull = ball(0.2);
-        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 1500.0 };
+        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 1500.0, scale: 1.0 };
         let mut body = FloatingBody::at(Pose::at(Vec3::new(0.2, 0.0, 0.0)));
         for _ in 0..120 * 10 {
             body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
@@ -476,7 +481,7 @@ mod tests {
     #[test]
     fn a_body_drifts_down_a_sloping_surface() {
         let hull = ball(0.15);
-        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0 };
+        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0, scale: 1.0 };
         let y = shape.floating_height(0.0);
         let mut body = FloatingBody::at(Pose::at(Vec3::new(0.0, y, 0.0)));
         // Water rising towards +x: the body slides towards -x.

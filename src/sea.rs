@@ -74,9 +74,13 @@ pub const EYE_OVER_CRESTS: f32 = 1.0;
 /// click makes ripples there: its half width (m), cells per side, depth (m; its ripples run at
 /// shallow water's sqrt(g d)) and the fading of its ripples (1/s). Its walls absorb (the
 /// pool's sponge, grown with the patch to 4 m), so the ripples run out and do not come back.
+/// At 0.6 m deep they run at 2.4 m/s: the pool's default 0.6 m/s in a pool enlarged 16 times,
+/// by Froude's similarity (speeds grow as the root of the lengths), as its bodies are, so
+/// that a body and the ripples it makes keep the pool's timing (and a ripple a metre long on
+/// deep water runs about as fast).
 pub const PATCH_HALF_WIDTH: f32 = 16.0;
 pub const PATCH_CELLS: u32 = 256;
-pub const PATCH_DEPTH: f32 = 2.0;
+pub const PATCH_DEPTH: f32 = 0.6;
 pub const PATCH_DAMPING: f32 = 0.05;
 
 /// The speed of the patch's ripples (m/s): shallow water's sqrt(g d).
@@ -234,6 +238,15 @@ pub const PARAMS: &[ParamSpec] = &[
         help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore.",
     },
     ParamSpec {
+        name: "sea_objects",
+        label: "Objects",
+        group: "Objects",
+        unit: "",
+        control: crate::bodies::OBJECT_CHOICES,
+        default: 2.0,
+        help: "What floats in the sea: the pool's sphere, duck and beach ball, as much larger as the patch of simulated water is than the pool. They ride the waves and leave wakes in the patch.",
+    },
+    ParamSpec {
         name: "sea_grid",
         label: "Show the grid",
         group: "Scene",
@@ -246,7 +259,8 @@ pub const PARAMS: &[ParamSpec] = &[
 
 /// The pool's parameters the sea reads too (the controls show the others only in the pool):
 /// the caustics (on the shallows' floor), the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
-/// running and the frame's quality.
+/// bodies' gravity, the running and the frame's quality. (The kinds of body's own sizes and
+/// densities are read by both as well: `params::shown_when`.)
 pub const USES_OF_THE_POOL: &[&str] = &[
     "caustics",
     "drop_radius",
@@ -258,6 +272,7 @@ pub const USES_OF_THE_POOL: &[&str] = &[
     "fresnel",
     "specular",
     "shininess",
+    "gravity",
     "paused",
     "quality",
     "frame_budget",

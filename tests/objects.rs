@@ -66,7 +66,7 @@ fn a_released_sphere_falls_enters_and_rests_at_its_floating_line() {
     let sphere = demo.sphere().unwrap();
     let level = demo.submerged_volume() / pool_area(1.0);
     let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(0.2) }];
-    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0 }.floating_height(level);
+    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 500.0, scale: 1.0 }.floating_height(level);
     let speed = demo.body(BodyId::named("sphere").unwrap()).velocity.length();
     println!(
         "sphere: lowest {lowest:.3} m, rests at {:.4} m (floating line {expected:.4} m, water level {level:.4} m), \
@@ -311,7 +311,7 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
         (demo.params.get_by_name("ball_radius").unwrap(), demo.params.get_by_name("ball_density").unwrap());
     let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(radius) }];
     let level = demo.submerged_volume() / pool_area(1.0);
-    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density }.floating_height(level);
+    let expected = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density, scale: 1.0 }.floating_height(level);
     let y = demo.body(ball).pose.position.y;
     println!(
         "ball: waves up to {:.1} mm a second after it fell in; rests at {y:.4} m (floating line {expected:.4} m)",

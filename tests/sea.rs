@@ -15,12 +15,13 @@ use wavepool::sea::island;
 const SIZE: (u32, u32) = (320, 240);
 
 /// A sea demo with its camera at `pitch` (degrees down) and `distance` (m) from its target,
-/// looking away from the island, which is left out (these tests are about the open water),
+/// looking away from the island, which is left out with the bodies (these tests are about the open water),
 /// across the wind (its waves run from the left).
 fn sea(pitch: f32, distance: f32, fog: bool) -> WaterDemo {
     let mut d = demo(DemoOptions::default());
     d.params.set(ParamId::Scene, 1.0);
     d.params.set(ParamId::SeaIsland, 0.0);
+    d.params.set(ParamId::SeaObjects, 0.0);
     d.params.set(ParamId::SeaFog, if fog { 1.0 } else { 0.0 });
     d.sync_scene();
     (d.camera.yaw, d.camera.pitch, d.camera.distance) = (-25.0, pitch, distance);
@@ -233,6 +234,7 @@ fn out_from_the_island(found: impl Fn(Vec2) -> bool) -> Vec2 {
 fn sea_over(spot: Vec2, (pitch, distance): (f32, f32), shore: bool, setup: impl FnOnce(&mut WaterDemo)) -> WaterDemo {
     let mut d = demo(DemoOptions::default());
     d.params.set(ParamId::Scene, 1.0);
+    d.params.set(ParamId::SeaObjects, 0.0);
     setup(&mut d);
     d.sync_scene();
     (d.camera.pitch, d.camera.distance, d.camera.yaw) = (pitch, distance, 20.0);

@@ -20,7 +20,7 @@ pub const KIND: BodyKind = BodyKind {
     centre_of_mass: Vec3::ZERO,
     start: |v| {
         let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(v("ball_radius")) }];
-        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: v("ball_density") };
+        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: v("ball_density"), scale: 1.0 };
         Pose::at(Vec3::new(START_XZ[0], shape.floating_height(0.0), START_XZ[1]))
     },
     // Wide: a light ball's own push on the water near it would otherwise lift and drop it

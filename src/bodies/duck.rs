@@ -111,7 +111,7 @@ pub fn bounding_radius() -> f32 {
 
 /// The duck's physical shape for a density (kg/m³).
 pub fn shape(density: f32) -> Shape<'static> {
-    Shape { hull: &HULL, centre_of_mass: CENTRE_OF_MASS, density }
+    Shape { hull: &HULL, centre_of_mass: CENTRE_OF_MASS, density, scale: 1.0 }
 }
 
 /// Mesh vertex: position and normal in the duck's frame, colour (linear RGB).

@@ -180,6 +180,18 @@ impl Body {
     }
 }
 
+/// Any set of the kinds, as a choice: bit `i` of its value for kind `i` (the pool's `objects`,
+/// the open sea's `sea_objects`).
+pub const OBJECT_CHOICES: Control = Control::Choice {
+    values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0],
+    names: &["none", "sphere", "duck", "both", "ball", "sphere,ball", "duck,ball", "all"],
+};
+
+/// The parameters of the kinds of body (their size and density), read wherever they float.
+pub fn kind_params() -> impl Iterator<Item = &'static str> {
+    KINDS.iter().flat_map(|k| k.params.iter().map(|p| p.name))
+}
+
 /// Which bodies float in the pool. (The parameter table, `params::table`, lists it first of
 /// the Objects group; the kinds' own parameters follow.)
 pub const PARAMS: &[ParamSpec] = &[ParamSpec {
@@ -187,10 +199,7 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
     label: "Objects",
     group: "Objects",
     unit: "",
-    control: Control::Choice {
-        values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0],
-        names: &["none", "sphere", "duck", "both", "ball", "sphere,ball", "duck,ball", "all"],
-    },
+    control: OBJECT_CHOICES,
     default: 3.0,
     help: "What floats in the pool: any of the sphere, a rubber duck and a beach ball (as a list, e.g. sphere,duck), all or none.",
 }];

@@ -14,7 +14,7 @@ use crate::sim::{self, BodyCoupling, HullMove};
 
 /// Radius (m) of the ring on which a body feels the ambient waves (about the duck's and a
 /// small sphere's waterline).
-const AMBIENT_RING_RADIUS: f32 = 0.05;
+pub(super) const AMBIENT_RING_RADIUS: f32 = 0.05;
 
 impl WaterDemo {
     /// A parameter's value by name, for the body kinds' table entries.
@@ -157,6 +157,7 @@ impl WaterDemo {
                 hull: &hulls[id.0],
                 centre_of_mass: id.kind().centre_of_mass,
                 density: (id.kind().density)(&value),
+                scale: 1.0,
             })
             .collect();
         let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value)).collect();

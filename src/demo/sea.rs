@@ -22,8 +22,9 @@ pub(super) struct Sea {
     ahead: Option<(u64, [Vec<[f32; 4]>; 2])>,
     /// The fixed steps the last frame took (the next is expected to take as many).
     last_steps: u32,
-    /// The last frame's lattices of the cascades (`SeaWaves::layers`), kept for tests.
-    layers: [Vec<[f32; 4]>; 2],
+    /// The last frame's lattices of the cascades (`SeaWaves::layers`): the waves the next
+    /// frame's bodies start from (and the tests' sea).
+    pub(super) layers: [Vec<[f32; 4]>; 2],
     /// The floating bodies in the sea, one per kind (demo/sea_bodies.rs).
     pub(super) bodies: Vec<crate::bodies::Body>,
 }

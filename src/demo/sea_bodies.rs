@@ -7,6 +7,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::bodies::AMBIENT_RING_RADIUS;
 use super::{WaterDemo, STEP_DT};
 use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
 use crate::params::ParamId;
@@ -32,6 +33,11 @@ pub(super) fn ring(centre: Vec2, radius: f32) -> impl Iterator<Item = Vec2> {
 }
 
 impl WaterDemo {
+    /// Whether a body floats in the sea (its bit in the `sea_objects` parameter).
+    pub fn in_sea(&self, id: BodyId) -> bool {
+        (self.params.get(ParamId::SeaObjects) as u32) & id.bit() != 0
+    }
+
     /// Every kind's hull in the sea: its ellipsoids enlarged (in its own frame, m).
     fn sea_hulls(&self) -> Vec<Vec<Ellipsoid>> {
         let s = sea::patch_scale();
@@ -51,6 +57,7 @@ impl WaterDemo {
                     hull: &hull,
                     centre_of_mass: id.kind().centre_of_mass,
                     density: (id.kind().density)(&value),
+                    scale: 1.0,
                 };
                 let at = Vec3::new(start.position.x, shape.floating_height(0.0), start.position.z) * s;
                 Body::at(Pose { position: at, rotation: start.rotation })
@@ -58,13 +65,15 @@ impl WaterDemo {
             .collect()
     }
 
-    /// Moves the sea's bodies through `steps` fixed steps on the water under them: the waves of
-    /// this frame (`layers`, `SeaWaves::layers`) and the patch's ripples as the frame starts
-    /// (its probes, sampled last frame on the rings then). Then tells the patch how their
-    /// hulls moved in each step, to push its water by, and where to sample it for next frame.
+    /// Moves the sea's bodies through `steps` fixed steps on the water under them: the waves
+    /// at each step, between the last frame's and this frame's (`layers`, `SeaWaves::layers`,
+    /// read on a ring at each body's waterline and taken linearly between the two: the same
+    /// heave at any frame rate), and the patch's ripples as the frame starts (its probes,
+    /// sampled last frame on the kinds' wider rings). Then tells the patch how their hulls moved in each step, to push its
+    /// water by, and where to sample it for next frame.
     pub(super) fn step_sea_bodies(&mut self, steps: u32, layers: [&[[f32; 4]]; 2]) {
         let s = sea::patch_scale();
-        let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.shows(id)).collect();
+        let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.in_sea(id)).collect();
         let hulls = self.sea_hulls();
         let value = |name: &str| self.value(name);
         let shapes: Vec<Shape> = BodyId::all()
@@ -72,30 +81,43 @@ impl WaterDemo {
                 hull: &hulls[id.0],
                 centre_of_mass: id.kind().centre_of_mass * s,
                 density: (id.kind().density)(&value),
+                scale: s,
             })
             .collect();
         let rings: Vec<f32> = BodyId::all().map(|id| (id.kind().probe_ring)(&value) * s).collect();
         let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value) * s).collect();
         let gravity = self.params.flag(ParamId::Gravity);
         let Some(sea) = self.sea.as_mut() else { return };
-        let planes: Vec<WaterPlane> = BodyId::all()
+        // The last frame's waves, where there was one (else this frame's at both ends).
+        let before = if sea.layers[0].is_empty() { layers } else { [&sea.layers[0][..], &sea.layers[1][..]] };
+        let planes: Vec<[WaterPlane; 2]> = BodyId::all()
             .map(|id| {
                 let p = sea.bodies[id.0].motion.pose.position;
                 let ripples =
                     sea.patch.probes().and_then(|r| r.heights.get(id.0 * PROBES_PER_BODY..)?.get(..PROBES_PER_BODY));
-                let heights: Vec<f32> = ring(Vec2::new(p.x, p.z), rings[id.0])
-                    .enumerate()
-                    .map(|(i, q)| sea.waves.height_on(layers, q.x, q.y) + ripples.map_or(0.0, |r| r[i]))
-                    .collect();
-                WaterPlane::from_ring(&heights, rings[id.0])
+                // The patch's ripples on the wide ring, clear of those the body makes itself;
+                // the waves on a ring at its waterline, as the pool's ambient waves.
+                let ripples: Vec<f32> = (0..PROBES_PER_BODY).map(|i| ripples.map_or(0.0, |r| r[i])).collect();
+                let ripples = WaterPlane::from_ring(&ripples, rings[id.0]);
+                let waterline = AMBIENT_RING_RADIUS * s;
+                [before, layers].map(|waves| {
+                    let heights: Vec<f32> =
+                        ring(Vec2::new(p.x, p.z), waterline).map(|q| sea.waves.height_on(waves, q.x, q.y)).collect();
+                    WaterPlane::from_ring(&heights, waterline).plus(ripples)
+                })
             })
             .collect();
         let bounds = sea_bounds();
         let mut moves = Vec::with_capacity(steps as usize);
-        for _ in 0..steps {
+        for k in 1..=steps {
+            let along = k as f32 / steps as f32;
             for &id in &shown {
-                let body = &mut sea.bodies[id.0];
-                body.submerged = body.motion.step(&shapes[id.0], gravity, &planes[id.0], STEP_DT, &bounds);
+                let ([from, to], body) = (planes[id.0], &mut sea.bodies[id.0]);
+                let plane = WaterPlane {
+                    level: from.level + (to.level - from.level) * along,
+                    normal: from.normal.lerp(to.normal, along).normalize(),
+                };
+                body.submerged = body.motion.step(&shapes[id.0], gravity, &plane, STEP_DT, &bounds);
             }
             super::bodies::bump_apart(&mut sea.bodies, &shown, &bump, &|id| shapes[id.0].mass());
             let mut step = Vec::new();
@@ -129,7 +151,7 @@ impl WaterDemo {
             let (id, sea) = (BodyId(k), self.sea.as_ref()?);
             let pose = sea.bodies[k].motion.pose;
             let shrunk = Pose { position: pose.position / s, rotation: pose.rotation };
-            self.shows(id).then(|| (id.kind().drawn)(&shrunk, &value).enlarged(s))
+            self.in_sea(id).then(|| (id.kind().drawn)(&shrunk, &value).enlarged(s))
         })
     }
 

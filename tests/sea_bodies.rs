@@ -1,0 +1,215 @@
+//! The floating bodies in the open sea (`sea_objects`) on the headless GPU: they float at their
+//! line and heave with the waves, the same at every frame rate, stay on the water in a storm,
+//! leave wakes in the patch and are drawn in the sea's light.
+// The tests read the sea's patch back from the GPU, waiting for it.
+#![allow(clippy::disallowed_methods)]
+
+mod common;
+
+use common::{demo, render, Rect};
+use glam::Vec3;
+use wavepool::bodies::{BodyId, KINDS};
+use wavepool::demo::{DemoOptions, WaterDemo};
+use wavepool::params::ParamId;
+use wavepool::physics::{Shape, WaterPlane};
+use wavepool::sea::patch_scale;
+
+/// A sea demo with the bodies of `objects` (bits of the kinds) and no island, looking at the
+/// patch's middle from `distance` m, 20° down.
+fn sea_with(objects: u32, distance: f32) -> WaterDemo {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 1.0);
+    d.params.set(ParamId::SeaIsland, 0.0);
+    d.params.set(ParamId::SeaObjects, objects as f32);
+    d.sync_scene();
+    (d.camera.yaw, d.camera.pitch, d.camera.distance) = (-25.0, 20.0, distance);
+    d.camera.clamp();
+    d
+}
+
+/// Height (m) above the water at rest at which a kind floats upright in the sea: the pool's,
+/// enlarged with the patch.
+fn floating_height(d: &WaterDemo, id: BodyId) -> f32 {
+    let value = |name: &str| d.params.get_by_name(name).expect("a kind's parameter");
+    let kind = &KINDS[id.0];
+    let hull = (kind.hull)(&value);
+    let shape = Shape { hull: &hull, centre_of_mass: kind.centre_of_mass, density: (kind.density)(&value), scale: 1.0 };
+    shape.floating_height(0.0) * patch_scale()
+}
+
+/// Radius (m) of a ball round a body of the kind in the sea.
+fn bump_radius(d: &WaterDemo, id: BodyId) -> f32 {
+    (KINDS[id.0].bump_radius)(&|n| d.params.get_by_name(n).expect("a parameter")) * patch_scale()
+}
+
+/// Pearson's correlation of two series.
+fn correlation(a: &[f32], b: &[f32]) -> f32 {
+    let mean = |v: &[f32]| v.iter().sum::<f32>() / v.len() as f32;
+    let (ma, mb) = (mean(a), mean(b));
+    let (mut ab, mut aa, mut bb) = (0.0, 0.0, 0.0);
+    for (x, y) in a.iter().zip(b) {
+        ab += (x - ma) * (y - mb);
+        aa += (x - ma) * (x - ma);
+        bb += (y - mb) * (y - mb);
+    }
+    ab / (aa * bb).sqrt().max(1e-12)
+}
+
+fn std_dev(v: &[f32]) -> f32 {
+    let mean = v.iter().sum::<f32>() / v.len() as f32;
+    (v.iter().map(|x| (x - mean) * (x - mean)).sum::<f32>() / v.len() as f32).sqrt()
+}
+
+#[test]
+fn bodies_float_at_their_line_on_the_sea_and_heave_with_its_waves() {
+    let mut d = sea_with(7, 40.0);
+    // Two seconds to settle, then six seconds of the body's height against the sea's there.
+    render(&mut d, 64, 48, 120, 1.0 / 60.0);
+    let mut series: Vec<(Vec<f32>, Vec<f32>)> = vec![(Vec::new(), Vec::new()); KINDS.len()];
+    for _ in 0..360 {
+        render(&mut d, 64, 48, 1, 1.0 / 60.0);
+        for id in BodyId::all() {
+            let p = d.sea_body(id).expect("the sea's bodies").pose.position;
+            let sea = d.sea_height_at(p.x, p.z).expect("the sea's waves");
+            series[id.0].0.push(p.y);
+            series[id.0].1.push(sea);
+        }
+    }
+    for id in BodyId::all() {
+        let (body, sea) = &series[id.0];
+        // A body answers the waves a little late (its mass): the best correlation within
+        // half a second of lag.
+        let r = (0..=30).map(|lag| correlation(&body[lag..], &sea[..sea.len() - lag])).fold(f32::MIN, f32::max);
+        let line: Vec<f32> = body.iter().zip(sea).map(|(y, h)| y - h).collect();
+        let mean_line = line.iter().sum::<f32>() / line.len() as f32;
+        let expected = floating_height(&d, id);
+        let (heave, waves) = (std_dev(body), std_dev(sea));
+        let size = bump_radius(&d, id);
+        println!(
+            "{}: heave {heave:.2} m rms against the waves' {waves:.2} m there, correlation {r:.3}; \
+             {mean_line:.2} m above the water on average, {expected:.2} m on calm water",
+            KINDS[id.0].name
+        );
+        // It follows the waves; a light body rides up past them near its own heave period (its
+        // damping is the pool's, slowed by Froude's similarity), but not much more.
+        assert!(r > 0.7, "{} does not follow the waves: correlation {r}", KINDS[id.0].name);
+        assert!(heave > 0.5 * waves && heave < 2.5 * waves, "{} heaves {heave} m against {waves} m", KINDS[id.0].name);
+        assert!(
+            (mean_line - expected).abs() < 0.15 * size,
+            "{} floats {mean_line} m up, not {expected} m",
+            KINDS[id.0].name
+        );
+    }
+}
+
+#[test]
+fn the_sea_s_bodies_ride_the_same_at_30_60_and_144_frames_a_second() {
+    let ride = |fps: u32| {
+        let mut d = sea_with(7, 40.0);
+        let frame = render(&mut d, 160, 120, 2 * fps, 1.0 / fps as f32);
+        let places: Vec<Vec3> =
+            BodyId::all().map(|id| d.sea_body(id).expect("the sea's bodies").pose.position).collect();
+        (places, frame)
+    };
+    let (at_60, frame_60) = ride(60);
+    let mut worst = 0.0f32;
+    let mut differs = 0.0f64;
+    for fps in [30, 144] {
+        let (places, frame) = ride(fps);
+        worst = places.iter().zip(&at_60).map(|(a, b)| a.distance(*b)).fold(worst, f32::max);
+        differs = differs.max(frame.mean_abs_diff(&frame_60, Rect::ALL));
+    }
+    println!(
+        "after 2 s at 30 and 144 against 60 frames a second: bodies {worst:.4} m apart, frames {differs:.3}/255 apart"
+    );
+    assert!(worst < 0.02, "the bodies ride differently at another frame rate: {worst} m");
+    assert!(differs < 0.5, "the picture differs with the frame rate: {differs}/255");
+}
+
+#[test]
+fn a_storm_tosses_the_bodies_but_keeps_them_on_the_water() {
+    // A minute of the storm at 15 frames a second (eight fixed steps each): each frame, how
+    // much of each body is under the sea's surface there (taken level at its centre).
+    let mut d = sea_with(7, 40.0);
+    d.apply_preset(wavepool::presets::find("storm").expect("the storm preset"));
+    d.params.set(ParamId::SeaObjects, 7.0);
+    let frames = 900;
+    let mut afloat = [0u32; KINDS.len()];
+    for _ in 0..frames {
+        render(&mut d, 32, 24, 1, 1.0 / 15.0);
+        for id in BodyId::all() {
+            let body = d.sea_body(id).expect("the sea's bodies");
+            let p = body.pose.position;
+            let name = KINDS[id.0].name;
+            assert!(p.is_finite() && body.velocity.is_finite(), "{name}: {p} moving at {}", body.velocity);
+            let value = |n: &str| d.params.get_by_name(n).expect("a kind's parameter");
+            let hull: Vec<_> = (KINDS[id.0].hull)(&value).into_iter().map(|e| e.scaled(patch_scale())).collect();
+            let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 1.0, scale: 1.0 };
+            let water = WaterPlane::flat(d.sea_height_at(p.x, p.z).expect("the sea's waves"));
+            let under = shape.submerged(&body.pose, &water).0 / shape.volume();
+            afloat[id.0] += u32::from(under > 0.0 && under < 1.0);
+        }
+    }
+    for id in BodyId::all() {
+        let share = afloat[id.0] as f32 / frames as f32;
+        println!(
+            "a minute of storm: the {} partly in the water in {:.1} % of the frames",
+            KINDS[id.0].name,
+            share * 100.0
+        );
+        assert!(
+            share > 0.95,
+            "the {} left the water or sank in {:.1} % of the frames",
+            KINDS[id.0].name,
+            100.0 - share * 100.0
+        );
+    }
+}
+
+#[test]
+fn a_body_moving_through_the_sea_leaves_a_wake_in_the_patch() {
+    let g = common::gpu();
+    let ball = BodyId::named("ball").expect("the ball");
+    // The ball sent across the patch's middle at 3 m/s, and the same sea without it.
+    let wake = |objects: u32| {
+        let mut d = sea_with(objects, 40.0);
+        render(&mut d, 32, 24, 1, 1.0 / 60.0);
+        d.set_sea_body(ball, Vec3::new(-6.0, 0.0, 0.0), Vec3::new(3.0, 0.0, 0.0));
+        render(&mut d, 32, 24, 60, 1.0 / 60.0);
+        let n = wavepool::sea::PATCH_CELLS as usize;
+        let w = wavepool::sea::PATCH_HALF_WIDTH;
+        let state = d.sea_patch().expect("the sea's patch").read_state(&g.device, &g.queue);
+        // The rms height of the patch within 4 m of the ball's path.
+        let cell = |i: usize| (i as f32 + 0.5) / n as f32 * 2.0 * w - w;
+        let near: Vec<f32> = (0..n * n)
+            .filter(|&k| cell(k / n).abs() < 4.0 && cell(k % n) > -8.0 && cell(k % n) < 6.0)
+            .map(|k| state[k][0])
+            .collect();
+        (near.iter().map(|h| h * h).sum::<f32>() / near.len() as f32).sqrt()
+    };
+    let (with, without) = (wake(ball.bit()), wake(0));
+    println!("patch along the ball's path: {:.1} mm rms with it, {:.2} mm without", with * 1e3, without * 1e3);
+    assert!(with > 0.005, "no wake: {with} m rms");
+    assert!(with > 20.0 * without.max(1e-5), "the wake does not stand out: {with} against {without} m");
+}
+
+#[test]
+fn the_sea_draws_its_bodies_in_its_light() {
+    let duck = BodyId::named("duck").expect("the duck");
+    let frame = |objects: u32| render(&mut sea_with(objects, 20.0), 320, 240, 30, 1.0 / 60.0);
+    let (with, without) = (frame(duck.bit()), frame(0));
+    let changed: Vec<(u32, u32)> = Rect::ALL
+        .pixels(&with)
+        .into_iter()
+        .filter(|&(x, y)| (0..3).any(|c| (with.pixel(x, y)[c] - without.pixel(x, y)[c]).abs() > 0.1))
+        .collect();
+    let share = changed.len() as f64 / (320.0 * 240.0);
+    let mean = changed.iter().fold([0.0f32; 3], |m, &(x, y)| {
+        let p = with.pixel(x, y);
+        [m[0] + p[0], m[1] + p[1], m[2] + p[2]]
+    });
+    let mean = mean.map(|c| c / changed.len().max(1) as f32);
+    println!("the duck covers {:.2} % of the frame, mean colour {mean:.2?}", share * 100.0);
+    assert!(share > 0.003, "the duck does not show: {share}");
+    assert!(mean[0] > mean[2] + 0.2 && mean[1] > mean[2] + 0.1, "the duck is not yellow: {mean:?}");
+}
