@@ -123,8 +123,10 @@ ensure_host_tools() {
 build_web() {
     echo "==> building the browser demo (trunk build --release)"
     TRUNK_SKIP_VERSION_CHECK=true trunk build --release --offline || return 1
-    # The same page as one file that opens from disk and in sandboxed frames.
     command -v python3 >/dev/null 2>&1 || ensure_apt_packages python3
+    # The JavaScript without its comments, line for line (the download is budgeted).
+    python3 scripts/strip_js_comments.py dist || return 1
+    # The same page as one file that opens from disk and in sandboxed frames.
     python3 scripts/standalone.py dist || return 1
     local wasm=dist/wavepool_bg.wasm js
     js=$(ls dist/*.js)
