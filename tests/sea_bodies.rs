@@ -214,3 +214,30 @@ fn the_sea_draws_its_bodies_in_its_light() {
     assert!(share > 0.003, "the duck does not show: {share}");
     assert!(mean[0] > mean[2] + 0.2 && mean[1] > mean[2] + 0.1, "the duck is not yellow: {mean:?}");
 }
+
+#[test]
+fn a_body_in_the_sea_can_be_dragged_across_it() {
+    let duck = BodyId::named("duck").expect("the duck");
+    let mut d = sea_with(duck.bit(), 20.0);
+    let size = (320u32, 240u32);
+    render(&mut d, size.0, size.1, 30, 1.0 / 60.0);
+    d.set_viewport(size.0, size.1);
+    let on_screen = |d: &WaterDemo, p: Vec3| {
+        let clip = d.camera.view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
+        let ndc = clip.truncate() / clip.w;
+        ((ndc.x + 1.0) * 0.5 * size.0 as f32, (1.0 - ndc.y) * 0.5 * size.1 as f32)
+    };
+    let start = d.sea_body(duck).expect("the sea's bodies").pose.position;
+    let (x, y) = on_screen(&d, start);
+    d.pointer_down(x, y);
+    d.pointer_move(x + 60.0, y);
+    render(&mut d, size.0, size.1, 10, 1.0 / 60.0);
+    let held = d.sea_body(duck).expect("the sea's bodies").pose.position;
+    d.pointer_up();
+    let (x_held, _) = on_screen(&d, held);
+    println!(
+        "the duck dragged 60 px from ({x:.0}, {y:.0}): moved {:.2} m, now at x = {x_held:.0} px",
+        start.distance(held)
+    );
+    assert!((x_held - (x + 60.0)).abs() < 15.0 && start.distance(held) > 2.0, "the duck did not follow the pointer");
+}

@@ -105,11 +105,17 @@ impl WaterDemo {
             && self.flat_water_drawn()
     }
 
-    /// Pointer pressed at pixel (x, y): on the split view's divider moves it; on the sphere or the duck starts moving it, on the
-    /// water starts drawing ripples, elsewhere starts orbiting.
+    /// Pointer pressed at pixel (x, y): on the split view's divider moves it; on a body (in
+    /// the pool or the sea) starts moving it, on the water starts drawing ripples, elsewhere
+    /// starts orbiting.
     pub fn pointer_down(&mut self, x: f32, y: f32) {
         let p = Vec2::new(x, y);
         if self.drawn_scene() == SceneKind::Sea {
+            if let Some((id, hit, centre)) = self.pick_sea_body(p) {
+                let plane_normal = (self.camera.eye() - hit).normalize();
+                self.drag = Drag::Body { id, offset: centre - hit, plane_normal, plane_point: hit };
+                return;
+            }
             self.drag = match self.pick_water(p) {
                 Pick::Water { x, z } => {
                     self.click_drop(x, z);
@@ -173,7 +179,9 @@ impl WaterDemo {
                 let denom = ray.dir.dot(plane_normal);
                 if denom.abs() > 1e-5 {
                     let t = (plane_point - ray.origin).dot(plane_normal) / denom;
-                    if t > 0.0 {
+                    if t > 0.0 && self.drawn_scene() == SceneKind::Sea {
+                        self.set_sea_body(id, ray.origin + ray.dir * t + offset, Vec3::ZERO);
+                    } else if t > 0.0 {
                         let rotation = self.bodies[id.0].motion.pose.rotation;
                         self.set_body_pose(id, Pose { position: ray.origin + ray.dir * t + offset, rotation });
                     }

@@ -8,6 +8,7 @@
 use glam::{Vec2, Vec3};
 
 use super::bodies::AMBIENT_RING_RADIUS;
+use super::input::Drag;
 use super::{WaterDemo, STEP_DT};
 use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
 use crate::params::ParamId;
@@ -87,6 +88,10 @@ impl WaterDemo {
         let rings: Vec<f32> = BodyId::all().map(|id| (id.kind().probe_ring)(&value) * s).collect();
         let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value) * s).collect();
         let gravity = self.params.flag(ParamId::Gravity);
+        let held = match self.drag {
+            Drag::Body { id, .. } => Some(id),
+            _ => None,
+        };
         let Some(sea) = self.sea.as_mut() else { return };
         // The last frame's waves, where there was one (else this frame's at both ends).
         let before = if sea.layers[0].is_empty() { layers } else { [&sea.layers[0][..], &sea.layers[1][..]] };
@@ -113,13 +118,23 @@ impl WaterDemo {
             let along = k as f32 / steps as f32;
             for &id in &shown {
                 let ([from, to], body) = (planes[id.0], &mut sea.bodies[id.0]);
+                if held == Some(id) {
+                    body.motion.hold();
+                    continue;
+                }
                 let plane = WaterPlane {
                     level: from.level + (to.level - from.level) * along,
                     normal: from.normal.lerp(to.normal, along).normalize(),
                 };
                 body.submerged = body.motion.step(&shapes[id.0], gravity, &plane, STEP_DT, &bounds);
             }
-            super::bodies::bump_apart(&mut sea.bodies, &shown, &bump, &|id| shapes[id.0].mass());
+            super::bodies::bump_apart(&mut sea.bodies, &shown, &bump, &|id| {
+                if held == Some(id) {
+                    f32::INFINITY
+                } else {
+                    shapes[id.0].mass()
+                }
+            });
             let mut step = Vec::new();
             for id in BodyId::all() {
                 let body = &mut sea.bodies[id.0];
@@ -155,14 +170,28 @@ impl WaterDemo {
         })
     }
 
+    /// The nearest of the sea's bodies under pixel `pixel`: its id, the point hit and its
+    /// frame's origin (m). Each kind picks its pool body, the ray shrunk into the pool.
+    pub(super) fn pick_sea_body(&self, pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {
+        let (ray, s) = (self.camera.ray(pixel, self.viewport), sea::patch_scale());
+        let value = |name: &str| self.value(name);
+        let sea = self.sea.as_ref()?;
+        let hits = BodyId::all().filter(|&id| self.in_sea(id)).filter_map(|id| {
+            let pose = sea.bodies[id.0].motion.pose;
+            let shrunk = Pose { position: pose.position / s, rotation: pose.rotation };
+            (id.kind().pick)(&shrunk, &value, ray.origin / s, ray.dir).map(|t| (id, t * s, pose.position))
+        });
+        let (id, t, centre) = hits.min_by(|a, b| a.1.total_cmp(&b.1))?;
+        Some((id, ray.origin + ray.dir * t, centre))
+    }
+
     /// A body's motion in the sea, once the sea has been drawn (for tests).
     pub fn sea_body(&self, id: BodyId) -> Option<&FloatingBody> {
         self.sea.as_ref().map(|s| &s.bodies[id.0].motion)
     }
 
     /// Puts a body of the sea somewhere (kept over the patch's middle) and sets it moving at
-    /// `velocity` (m/s), once the sea has been drawn (for tests).
-    #[doc(hidden)]
+    /// `velocity` (m/s), once the sea has been drawn (dragged, and for tests).
     pub fn set_sea_body(&mut self, id: BodyId, position: Vec3, velocity: Vec3) {
         let hull = &self.sea_hulls()[id.0];
         if let Some(sea) = self.sea.as_mut().filter(|_| position.is_finite() && velocity.is_finite()) {
