@@ -1,7 +1,8 @@
 // The rubber duck (bodies/duck.rs): its traced parts, ellipsoids in the duck's frame, hit and
 // shading the scene's rays, and its mesh drawn directly, turned and moved to its pose. Its
-// uniform (DUCK_SLOT on): the frame's rotation in slots 0-2, position in slot 3, a ball
-// holding it in slot 4 (radius 0: no duck), then per part centre, semi-axes and colour.
+// uniform (DUCK_SLOT on): the frame's rotation in slots 0-2, position in slot 3 (w: the scale
+// its mesh is drawn at), a ball holding it in slot 4 (radius 0: no duck), then per part centre,
+// semi-axes (both scaled) and colour.
 
 fn duck_rotation() -> mat3x3<f32> {
     return mat3x3<f32>(scene.bodies[DUCK_SLOT].xyz, scene.bodies[DUCK_SLOT + 1].xyz, scene.bodies[DUCK_SLOT + 2].xyz);
@@ -95,7 +96,7 @@ struct DuckOut {
 @vertex
 fn vs_duck(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) colour: vec3<f32>) -> DuckOut {
     var out: DuckOut;
-    out.world = duck_rotation() * position + scene.bodies[DUCK_SLOT + 3].xyz;
+    out.world = duck_rotation() * (position * scene.bodies[DUCK_SLOT + 3].w) + scene.bodies[DUCK_SLOT + 3].xyz;
     out.normal = duck_rotation() * normal;
     out.colour = colour;
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);

@@ -151,18 +151,21 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     // The slopes left out, and those varying within the pixel, spread the glint (Toksvig).
     let dn = dot(dpdx(n), dpdx(n)) + dot(dpdy(n), dpdy(n));
     specular_spread = 1.0 / (1.0 + scene.optics.x * (0.5 * removed + dn / 24.0));
-    let to_point = in.world - sea.eye.xyz;
-    let dist = length(to_point);
-    let v = to_point / dist;
     var under = deep_water();
     var foam = whitecap(in.jacobian);
     if WHITECAP_MAP {
         foam = max(foam, kept_whitecaps(in.rest));
     }
     foam *= sea.foam.x;
+    let to_point = in.world - sea.eye.xyz;
+    let dist = length(to_point);
+    let v = to_point / dist;
     var mirrored = vec4<f32>(0.0);
     if ISLAND {
         mirrored = mirrored_land(in.clip.xy, n, sqrt(removed));
+    }
+    if MIRRORED_BODIES {
+        mirrored = mirrored_bodies(in.world, reflect(v, n), mirrored);
     }
     if ISLAND && on_island_map(in.world.xz) {
         let ground = ground_at(in.world.xz);

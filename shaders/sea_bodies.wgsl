@@ -2,7 +2,8 @@
 // body's mesh asks of the scene it is in, in place of the pool's (scene_seen.wgsl). A body is
 // lit by the sun and by the sky above it, and from below by the little light the deep water
 // sends back up; it is seen through the haze like the sea around it. Its part under the water
-// is hidden by the sea's surface, drawn after it, so it is always lit as above the water.
+// is hidden by the sea's surface, drawn after it, so it is always lit as above the water. The
+// water mirrors the bodies (MIRRORED_BODIES): its reflected rays are traced to them.
 
 fn lit_under(p: vec3<f32>) -> bool {
     return false;
@@ -21,4 +22,16 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
     let to_point = p - sea.eye.xyz;
     let dist = length(to_point);
     return finish(through_haze(colour, to_point / dist, dist));
+}
+
+// What the water at p mirrors of the bodies along the reflected ray r (turned up, as
+// sea_colour's): the body the ray hits, lit as seen in a mirror, or else `behind` (the
+// island's image, or nothing).
+fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
+    let up = vec3<f32>(r.x, abs(r.y), r.z);
+    let hit = hit_bodies(p, up);
+    if (hit.t >= NO_HIT) {
+        return behind;
+    }
+    return vec4<f32>(body_colour(hit, p + up * hit.t, up, false), 1.0);
 }

@@ -290,6 +290,9 @@ pub struct SeaVariant {
     /// The waves' caustics on the shallows' floor (with the island and the `caustics`
     /// parameter).
     pub shallow_caustics: bool,
+    /// The floating bodies mirrored in the water: the reflected ray traced to them, on the
+    /// grid's rows that can show them.
+    pub mirrored_bodies: bool,
 }
 
 /// The whitecaps' albedo: foam sends back most of the light falling on it.
@@ -301,9 +304,10 @@ pub const WHITECAP_MAP_HALF_WIDTH: f32 = 128.0;
 pub const WHITECAP_MAP_TEXELS: u32 = 128;
 pub const WHITECAP_LIFETIME: f32 = 1.0;
 
-/// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`).
+/// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`, `WHITECAP_MAP`,
+/// `SHALLOW_CAUSTICS`, `MIRRORED_BODIES`).
 pub fn wgsl_constants(variant: SeaVariant) -> String {
-    let SeaVariant { island, grid_lines, whitecap_map, shallow_caustics } = variant;
+    let SeaVariant { island, grid_lines, whitecap_map, shallow_caustics, mirrored_bodies } = variant;
     let [r, g, b] = deep_water_albedo();
     let [ar, ag, ab] = SEA_ABSORPTION;
     let absorption = format!(
@@ -311,7 +315,7 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
     );
     let switches = format!(
         "const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
-         const SHALLOW_CAUSTICS: bool = {shallow_caustics};\n\
+         const SHALLOW_CAUSTICS: bool = {shallow_caustics};\nconst MIRRORED_BODIES: bool = {mirrored_bodies};\n\
          const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n"
     );
     let island = switches + &island::wgsl_constants();

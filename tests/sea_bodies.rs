@@ -241,3 +241,39 @@ fn a_body_in_the_sea_can_be_dragged_across_it() {
     );
     assert!((x_held - (x + 60.0)).abs() < 15.0 && start.distance(held) > 2.0, "the duck did not follow the pointer");
 }
+
+#[test]
+fn the_water_mirrors_the_bodies_floating_on_it() {
+    let duck = BodyId::named("duck").expect("the duck");
+    let size = (320u32, 240u32);
+    // Low over the water, where it mirrors much: the duck with and without its mirror image.
+    let frame = |mirror: bool| {
+        let mut d = sea_with(duck.bit(), 25.0);
+        (d.camera.pitch, d.camera.yaw) = (8.0, 160.0);
+        d.camera.clamp();
+        d.set_sea_body_mirror(mirror);
+        let frame = render(&mut d, size.0, size.1, 30, 1.0 / 60.0);
+        let p = d.sea_body(duck).expect("the sea's bodies").pose.position;
+        let clip = d.camera.view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
+        let ndc = clip.truncate() / clip.w;
+        (frame, ((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5))
+    };
+    let ((with, (x, y)), (without, _)) = (frame(true), frame(false));
+    let below = Rect(x - 0.1, y, x + 0.1, y + 0.15);
+    // The water beyond the duck mirrors only the sky: its reflected rays run away from it.
+    let elsewhere = [Rect(0.0, 0.0, 1.0, y - 0.15)];
+    let changed = with.changed_fraction(&without, below, 8);
+    let stray = elsewhere.iter().map(|&r| with.changed_fraction(&without, r, 0)).fold(0.0, f64::max);
+
+    let (lit, bare) = (with.mean_colour(below), without.mean_colour(below));
+    println!(
+        "under the duck {:.1} % of the pixels change with its mirror image (red - blue {:.3} -> {:.3}); {:.2} % beyond it",
+        changed * 100.0,
+        bare[0] - bare[2],
+        lit[0] - lit[2],
+        stray * 100.0
+    );
+    assert!(changed > 0.1, "the duck's mirror image does not show: {changed}");
+    assert!(lit[0] - lit[2] > bare[0] - bare[2] + 0.02, "the mirror image is not the duck's yellow");
+    assert!(stray == 0.0, "the mirror changes the water beyond the duck: {stray}");
+}

@@ -46,19 +46,18 @@ pub const KIND: BodyKind = BodyKind {
     edge: false,
 };
 
-/// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame (rotation
-/// times its scale, and position), a ball holding it (radius 0: no duck), then per traced part
-/// its centre and semi-axes in the duck's frame (m) and its colour. (Its traced parts are
-/// taken back into its frame by the rotation's transpose: they are traced at scale 1 only.)
+/// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame's rotation
+/// and position with its scale (w), a ball holding it (radius 0: no duck), then per traced
+/// part its centre and semi-axes in the duck's frame, times its scale (m), and its colour.
 fn write_uniform(body: Option<&BodyView>, out: &mut [[f32; 4]]) {
-    let frame = body.map_or(Mat4::IDENTITY, |b| {
-        Mat4::from_scale_rotation_translation(Vec3::splat(b.scale), b.pose.rotation, b.pose.position)
-    });
+    let frame = body.map_or(Mat4::IDENTITY, |b| Mat4::from_rotation_translation(b.pose.rotation, b.pose.position));
     out[..4].copy_from_slice(&frame.to_cols_array_2d());
+    let scale = body.map_or(1.0, |b| b.scale);
+    out[3][3] = scale;
     out[4] = body.map_or([0.0; 4], |b| b.pose.position.extend(bounding_radius() * b.scale).to_array());
     for (slots, part) in out[5..].chunks_mut(3).zip(&TRACED_PARTS) {
-        slots[0] = part.shape.centre.extend(0.0).to_array();
-        slots[1] = part.shape.radii.extend(0.0).to_array();
+        slots[0] = (part.shape.centre * scale).extend(0.0).to_array();
+        slots[1] = (part.shape.radii * scale).extend(0.0).to_array();
         slots[2] = part.colour.extend(1.0).to_array();
     }
 }

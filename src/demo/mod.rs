@@ -84,8 +84,9 @@ pub struct WaterDemo {
     other_camera: OrbitCamera,
     /// The open sea's waves, once the sea has been shown.
     sea: Option<sea::Sea>,
-    /// The sea draws its whitecaps, keeps them, and draws its shore's foam (off only in tests).
-    sea_foam: [bool; 3],
+    /// The sea draws its whitecaps, keeps them, draws its shore's foam and mirrors its bodies
+    /// (off only in tests).
+    sea_foam: [bool; 4],
     /// Drops asked for in the sea before its first frame made its patch.
     early_sea_drops: Vec<crate::sim::Drop>,
 }
@@ -172,7 +173,7 @@ impl WaterDemo {
             camera_scene: crate::sea::SceneKind::Pool,
             other_camera: crate::sea::default_camera(),
             sea: None,
-            sea_foam: [true; 3],
+            sea_foam: [true; 4],
             early_sea_drops: Vec::new(),
         };
         demo.refresh_ambient();

@@ -114,7 +114,14 @@ impl WaterDemo {
     /// compare with).
     #[doc(hidden)]
     pub fn set_sea_foam(&mut self, whitecaps: bool, kept: bool, shore: bool) {
-        self.sea_foam = [whitecaps, kept, shore];
+        self.sea_foam[..3].copy_from_slice(&[whitecaps, kept, shore]);
+    }
+
+    /// Whether the sea mirrors its floating bodies (the default) or not (for tests to compare
+    /// with).
+    #[doc(hidden)]
+    pub fn set_sea_body_mirror(&mut self, on: bool) {
+        self.sea_foam[3] = on;
     }
 
     /// Puts `drop` (sea coordinates, m) in the sea's patch if the sea is drawn (kept for the
@@ -238,6 +245,7 @@ impl WaterDemo {
                 grid_lines: settings.grid_lines,
                 whitecap_map: sea.may_break,
                 shallow_caustics: settings.island && self.params.get(ParamId::Caustics) >= 0.5,
+                mirrored_bodies: self.sea_foam[3] && view.bodies.iter().any(Option::is_some),
             },
             // Not kept (tests): the map holds only the frame's own foam.
             whitecaps_kept: if self.sea_foam[1] {

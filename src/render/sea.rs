@@ -9,7 +9,7 @@ use glam::{Vec2, Vec3};
 
 use super::resources::water_bind_groups;
 use super::sea_foam::{no_map, WhitecapMaps};
-use super::sea_island::{island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
+use super::sea_island::{island_map, mesh_pipeline, rows_showing, IslandDrawing, IslandPipelines, MirrorTarget};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
@@ -82,6 +82,8 @@ pub struct SeaRenderer {
     grid: wgpu::RenderPipeline,
     /// Per kind of body, its mesh's pipeline if the kind is in the sea.
     bodies: Vec<Option<wgpu::RenderPipeline>>,
+    /// The grid's rows near the bodies, which mirror them, when the variant does.
+    near_bodies: Option<wgpu::RenderPipeline>,
     /// The island's drawing, when it is in the sea.
     island_drawing: Option<IslandDrawing>,
     /// The whitecaps kept over time, when the variant keeps them.
@@ -126,29 +128,38 @@ impl SeaRenderer {
         });
         let format = renderer.settings.target_format;
         let base = shaders::scene_prelude_in(features, format, super::sea_bodies::WGSL);
-        let prelude = |with_island| {
-            let variant = SeaVariant { island: with_island, ..variant };
+        // The plain grid's variant leaves out the island and the bodies' mirror images: the
+        // rows that can show them are drawn with variants of their own.
+        let prelude = |island, mirrored_bodies| {
+            let variant = SeaVariant { island, mirrored_bodies, ..variant };
             let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
             [base.clone(), constants.concat()].join("\n")
         };
         let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &frame_layout];
-        let module = |with_island| {
-            let parts = [gpu::wgsl::FULLSCREEN, &prelude(with_island), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
+        let module = |island, bodies| {
+            let parts = [gpu::wgsl::FULLSCREEN, &prelude(island, bodies), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
             gpu::shader(device, "sea", &parts)
         };
         let (with_frame, without_frame) = (&layouts[..], &layouts[..3]);
-        let plain = module(false);
+        let plain = module(false, false);
         let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
         let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
         let bodies = super::sea_bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
         let island_drawing = variant.island.then(|| {
-            let module = module(true);
+            let module = module(true, false);
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             IslandDrawing::new(device, island_map, &pipelines)
         });
-        let parts = [&prelude(false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
+        // The rows that can show the bodies' mirror images trace them (and the island's, if
+        // any: they may be the island's rows as well).
+        let near_bodies = variant.mirrored_bodies.then(|| {
+            let module = module(variant.island, true);
+            let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
+            mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None))
+        });
+        let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
         let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
         let sky = FullscreenPass::new(device, "sea sky", &parts, "fs_sea_sky", &layouts, sky);
@@ -164,6 +175,7 @@ impl SeaRenderer {
             variant,
             grid,
             bodies,
+            near_bodies,
             island_drawing,
             whitecaps,
             frame_layout,
@@ -324,24 +336,26 @@ impl Renderer {
             self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch));
         }
         let scaled = self.scaled_size(view, size);
+        let bodies = super::sea_bodies::mirror_boxes(view);
         if scaled != size {
             let image = self.upscale.image(device, self.settings.target_format, scaled);
-            self.draw_sea(device, queue, encoder, (&image, scaled), sea, mark);
+            self.draw_sea(device, queue, encoder, (&image, scaled), (sea, &bodies), mark);
             self.upscale.run(encoder, target);
         } else {
-            self.draw_sea(device, queue, encoder, (target, size), sea, mark);
+            self.draw_sea(device, queue, encoder, (target, size), (sea, &bodies), mark);
         }
     }
 
     /// The sea's grid and sky into `target` of `size` pixels, after the passes that make the
-    /// frame's maps (the island's mirror, the kept whitecaps) and then `mark`.
+    /// frame's maps (the island's mirror, the kept whitecaps) and then `mark`; `bodies`: boxes
+    /// round the floating bodies and their mirror images.
     fn draw_sea(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         (target, size): (&wgpu::TextureView, (u32, u32)),
-        sea: &SeaView<'_>,
+        (sea, bodies): (&SeaView<'_>, &[(Vec3, Vec3)]),
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder),
     ) {
         let drawn = self.sea.as_mut().expect("made by encode_sea");
@@ -400,18 +414,30 @@ impl Renderer {
                 mesh.draw(&mut pass);
             }
         }
-        pass.set_pipeline(&drawn.grid);
-        let row = cells.0 * 6;
-        match &drawn.island_drawing {
-            Some(island) => {
-                let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
-                let near = island.rows_near(view_proj, rect, cells.1, (sea.crest, up.length()));
-                pass.draw(0..near.start * row, 0..1);
-                pass.draw(near.end * row..cells.1 * row, 0..1);
-                island.draw_shallows(&mut pass, near.start * row..near.end * row);
-                island.draw_land(&mut pass);
+        // Row by row up the grid: the bodies' variant where it can show their mirror images,
+        // else the island's where it can show the island, else the plain grid's.
+        let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
+        let reach = (sea.crest, up.length());
+        let island_rows = drawn.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
+        let body_rows = match drawn.near_bodies {
+            Some(_) => rows_showing(bodies, view_proj, rect, cells.1, reach),
+            None => 0..0,
+        };
+        let kind = |r: u32| if body_rows.contains(&r) { 2 } else { u8::from(island_rows.contains(&r)) };
+        let (row, mut start) = (cells.0 * 6, 0);
+        while start < cells.1 {
+            let end = (start + 1..cells.1).find(|&r| kind(r) != kind(start)).unwrap_or(cells.1);
+            let vertices = start * row..end * row;
+            match (kind(start), &drawn.near_bodies, &drawn.island_drawing) {
+                (2, Some(near_bodies), _) => pass.set_pipeline(near_bodies),
+                (1, _, Some(island)) => island.set_shallows(&mut pass),
+                _ => pass.set_pipeline(&drawn.grid),
             }
-            None => pass.draw(0..cells.1 * row, 0..1),
+            pass.draw(vertices, 0..1);
+            start = end;
+        }
+        if let Some(island) = &drawn.island_drawing {
+            island.draw_land(&mut pass);
         }
         drawn.sky.draw(&mut pass, &groups);
     }

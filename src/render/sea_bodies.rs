@@ -4,8 +4,11 @@
 //! fragments behind their parts above it fail the depth test (their parts under it are then
 //! hidden by the water).
 
+use glam::Vec3;
+
 use super::variants::{mesh_pipeline, DepthUse, MeshPipeline};
-use crate::bodies::BodyId;
+use super::View;
+use crate::bodies::{BodyId, KINDS};
 
 pub(super) const WGSL: &str = crate::wgsl!("sea_bodies.wgsl");
 
@@ -39,6 +42,19 @@ pub(super) fn body_pipelines(
                 };
                 mesh_pipeline(device, p)
             })
+        })
+        .collect()
+}
+
+/// Boxes (least and most corner, m) round each body of `view` and its mirror image in the sea
+/// plane, the image grown down by three times the body's size (the waves' slopes turn the
+/// mirrored rays and move the image: a storm's steep ones, that far).
+pub(super) fn mirror_boxes(view: &View) -> Vec<(Vec3, Vec3)> {
+    let drawn = view.bodies.iter().zip(&KINDS).filter_map(|(b, kind)| b.as_ref().map(|b| (b, (kind.bound)(b))));
+    drawn
+        .map(|(body, r)| {
+            let c = body.pose.position;
+            (Vec3::new(c.x - r, -(c.y + 4.0 * r), c.z - r), c + Vec3::splat(r))
         })
         .collect()
 }

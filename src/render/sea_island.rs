@@ -109,10 +109,9 @@ impl IslandDrawing {
         Self { _map: map, shallows, land, mirrored, mesh: (buffer, indices.len() as u32), shown: [water, image] }
     }
 
-    /// Draws `vertices` of the sea's grid (whole rows) with the shallows and the mirror.
-    pub(super) fn draw_shallows(&self, pass: &mut wgpu::RenderPass<'_>, vertices: std::ops::Range<u32>) {
+    /// Sets the pipeline drawing the sea's grid with the shallows and the mirror.
+    pub(super) fn set_shallows(&self, pass: &mut wgpu::RenderPass<'_>) {
         pass.set_pipeline(&self.shallows);
-        pass.draw(vertices, 0..1);
     }
 
     /// Draws the land into the sea's pass (after the water: the ground under the surface fails
@@ -146,44 +145,57 @@ impl IslandDrawing {
 }
 
 impl IslandDrawing {
-    /// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that
-    /// can show the island's shallows or its mirror image: those across the screen's span of
-    /// the boxes round them, grown by the crests' height and by how far the waves move and
-    /// smear the mirror's image (`up`: the tangent of half the field of view), and two rows
-    /// more each way for the waves' sideways carry. None when both boxes lie wholly behind the
-    /// eye; all of them when one reaches behind it.
+    /// The rows of the sea's grid that can show the island's shallows or its mirror image
+    /// ([`rows_showing`] the boxes round them).
     pub(super) fn rows_near(
         &self,
         view_proj: Mat4,
         rect: [f32; 4],
         rows: u32,
-        (crest, up): (f32, f32),
+        reach: (f32, f32),
     ) -> std::ops::Range<u32> {
-        let mut span = (f32::INFINITY, f32::NEG_INFINITY);
-        let (mut behind, mut corners) = (0, 0);
-        for (least, most) in self.shown {
-            let (least, most) = (least - Vec3::Y * crest, most + Vec3::Y * crest);
-            for corner in 0..8 {
-                let pick = |bit: u32, lo: f32, hi: f32| if corner & bit == 0 { lo } else { hi };
-                let p = Vec3::new(pick(1, least.x, most.x), pick(2, least.y, most.y), pick(4, least.z, most.z));
-                let clip = view_proj * p.extend(1.0);
-                corners += 1;
-                if clip.w <= 1.0e-3 {
-                    behind += 1;
-                    continue;
-                }
-                span = (span.0.min(clip.y / clip.w), span.1.max(clip.y / clip.w));
-            }
-        }
-        match behind {
-            0 => {}
-            b if b == corners => return 0..0,
-            _ => return 0..rows,
-        }
-        // In NDC (twice the texture's units): the wobble's and the blur's reach.
-        let reach = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
-        rows_across((span.0 - reach, span.1 + reach), rect, rows)
+        rows_showing(&self.shown, view_proj, rect, rows, reach)
     }
+}
+
+/// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that can
+/// show what lies in `boxes` (least and most corner, m) or is mirrored from there: the rows
+/// across the boxes' screen span, grown by the crests' height and by how far the waves move and
+/// smear a mirror's image (`up`: the tangent of half the field of view), and two rows more each
+/// way for the waves' sideways carry. None when the boxes lie wholly behind the eye; all of
+/// them when one reaches behind it.
+pub(super) fn rows_showing(
+    boxes: &[(Vec3, Vec3)],
+    view_proj: Mat4,
+    rect: [f32; 4],
+    rows: u32,
+    (crest, up): (f32, f32),
+) -> std::ops::Range<u32> {
+    let mut span = (f32::INFINITY, f32::NEG_INFINITY);
+    let (mut behind, mut corners) = (0, 0);
+    for &(least, most) in boxes {
+        let (least, most) = (least - Vec3::Y * crest, most + Vec3::Y * crest);
+        for corner in 0..8 {
+            let pick = |bit: u32, lo: f32, hi: f32| if corner & bit == 0 { lo } else { hi };
+            let p = Vec3::new(pick(1, least.x, most.x), pick(2, least.y, most.y), pick(4, least.z, most.z));
+            let clip = view_proj * p.extend(1.0);
+            corners += 1;
+            if clip.w <= 1.0e-3 {
+                behind += 1;
+                continue;
+            }
+            span = (span.0.min(clip.y / clip.w), span.1.max(clip.y / clip.w));
+        }
+    }
+    match behind {
+        _ if corners == 0 => return 0..0,
+        0 => {}
+        b if b == corners => return 0..0,
+        _ => return 0..rows,
+    }
+    // In NDC (twice the texture's units): the wobble's and the blur's reach.
+    let reach = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
+    rows_across((span.0 - reach, span.1 + reach), rect, rows)
 }
 
 /// The rows of a grid over `rect` (NDC, `rows` rows up it) across the NDC heights `span`, and
