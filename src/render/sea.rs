@@ -9,7 +9,7 @@ use glam::{Vec2, Vec3};
 
 use super::resources::water_bind_groups;
 use super::sea_foam::{no_map, WhitecapMaps};
-use super::sea_island::{island_map, mesh_pipeline, rows_showing, IslandDrawing, IslandPipelines, MirrorTarget};
+use super::sea_island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
@@ -82,8 +82,9 @@ pub struct SeaRenderer {
     grid: wgpu::RenderPipeline,
     /// Per kind of body, its mesh's pipeline if the kind is in the sea.
     bodies: Vec<Option<wgpu::RenderPipeline>>,
-    /// The grid's rows near the bodies, which mirror them, when the variant does.
-    near_bodies: Option<wgpu::RenderPipeline>,
+    /// The grid's cells near the bodies, which mirror them, when the variant does: away from
+    /// the island and near it.
+    near_bodies: Option<[wgpu::RenderPipeline; 2]>,
     /// The island's drawing, when it is in the sea.
     island_drawing: Option<IslandDrawing>,
     /// The whitecaps kept over time, when the variant keeps them.
@@ -152,13 +153,14 @@ impl SeaRenderer {
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             IslandDrawing::new(device, island_map, &pipelines)
         });
-        // The rows that can show the bodies' mirror images trace them (and the island's, if
-        // any: they may be the island's rows as well).
-        let near_bodies = variant.mirrored_bodies.then(|| {
-            let module = module(variant.island, true);
+        // The cells that can show the bodies' mirror images trace them: with the island's
+        // shallows and mirror where they are the island's rows as well.
+        let near_bodies = |with_island: bool| {
+            let module = module(with_island, true);
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None))
-        });
+        };
+        let near_bodies = variant.mirrored_bodies.then(|| [near_bodies(false), near_bodies(variant.island)]);
         let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
         let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
@@ -414,26 +416,45 @@ impl Renderer {
                 mesh.draw(&mut pass);
             }
         }
-        // Row by row up the grid: the bodies' variant where it can show their mirror images,
-        // else the island's where it can show the island, else the plain grid's.
+        // Row by row up the grid: the bodies' variant where it can show their mirror images
+        // (the columns across them in those rows), else the island's where it can show the
+        // island, else the plain grid's.
         let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
         let reach = (sea.crest, up.length());
         let island_rows = drawn.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
-        let body_rows = match drawn.near_bodies {
-            Some(_) => rows_showing(bodies, view_proj, rect, cells.1, reach),
-            None => 0..0,
+        let (body_columns, body_rows) = match drawn.near_bodies {
+            Some(_) => cells_showing(bodies, view_proj, rect, cells, reach),
+            None => (0..0, 0..0),
         };
-        let kind = |r: u32| if body_rows.contains(&r) { 2 } else { u8::from(island_rows.contains(&r)) };
-        let (row, mut start) = (cells.0 * 6, 0);
+        let kind = |r: u32| (body_rows.contains(&r) && !body_columns.is_empty(), island_rows.contains(&r));
+        let row = cells.0 * 6;
+        let mut start = 0;
         while start < cells.1 {
             let end = (start + 1..cells.1).find(|&r| kind(r) != kind(start)).unwrap_or(cells.1);
-            let vertices = start * row..end * row;
-            match (kind(start), &drawn.near_bodies, &drawn.island_drawing) {
-                (2, Some(near_bodies), _) => pass.set_pipeline(near_bodies),
-                (1, _, Some(island)) => island.set_shallows(&mut pass),
+            let (near_bodies, near_island) = kind(start);
+            match &drawn.island_drawing {
+                Some(island) if near_island => island.set_shallows(&mut pass),
                 _ => pass.set_pipeline(&drawn.grid),
             }
-            pass.draw(vertices, 0..1);
+            let (first, last) = (start * row, end * row);
+            match &drawn.near_bodies {
+                Some(bodies_pipelines) if near_bodies => {
+                    // Each row's cells across the bodies with their variant; between them (the
+                    // rest of one row and the start of the next, one run of vertices) the base.
+                    let columns = (body_columns.start * 6, body_columns.end * 6);
+                    let mut from = first;
+                    for r in start..end {
+                        pass.draw(from..r * row + columns.0, 0..1);
+                        from = r * row + columns.1;
+                    }
+                    pass.draw(from..last, 0..1);
+                    pass.set_pipeline(&bodies_pipelines[usize::from(near_island)]);
+                    for r in start..end {
+                        pass.draw(r * row + columns.0..r * row + columns.1, 0..1);
+                    }
+                }
+                _ => pass.draw(first..last, 0..1),
+            }
             start = end;
         }
         if let Some(island) = &drawn.island_drawing {

@@ -47,14 +47,17 @@ pub(super) fn body_pipelines(
 }
 
 /// Boxes (least and most corner, m) round each body of `view` and its mirror image in the sea
-/// plane, the image grown down by three times the body's size (the waves' slopes turn the
-/// mirrored rays and move the image: a storm's steep ones, that far).
+/// plane, the image grown down by three times the body's size and sideways by once (the waves'
+/// slopes turn the mirrored rays and move the image: a storm's steep ones, that far).
 pub(super) fn mirror_boxes(view: &View) -> Vec<(Vec3, Vec3)> {
     let drawn = view.bodies.iter().zip(&KINDS).filter_map(|(b, kind)| b.as_ref().map(|b| (b, (kind.bound)(b))));
     drawn
         .map(|(body, r)| {
             let c = body.pose.position;
-            (Vec3::new(c.x - r, -(c.y + 4.0 * r), c.z - r), c + Vec3::splat(r))
+            (
+                Vec3::new(c.x - 2.0 * r, -(c.y + 4.0 * r), c.z - 2.0 * r),
+                Vec3::new(c.x + 2.0 * r, c.y + r, c.z + 2.0 * r),
+            )
         })
         .collect()
 }

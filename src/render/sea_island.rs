@@ -159,19 +159,32 @@ impl IslandDrawing {
 }
 
 /// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that can
-/// show what lies in `boxes` (least and most corner, m) or is mirrored from there: the rows
-/// across the boxes' screen span, grown by the crests' height and by how far the waves move and
-/// smear a mirror's image (`up`: the tangent of half the field of view), and two rows more each
-/// way for the waves' sideways carry. None when the boxes lie wholly behind the eye; all of
-/// them when one reaches behind it.
+/// show what lies in `boxes` (least and most corner, m) or is mirrored from there
+/// ([`cells_showing`]).
 pub(super) fn rows_showing(
     boxes: &[(Vec3, Vec3)],
     view_proj: Mat4,
     rect: [f32; 4],
     rows: u32,
-    (crest, up): (f32, f32),
+    reach: (f32, f32),
 ) -> std::ops::Range<u32> {
-    let mut span = (f32::INFINITY, f32::NEG_INFINITY);
+    cells_showing(boxes, view_proj, rect, (1, rows), reach).1
+}
+
+/// The columns and rows of the sea's grid (its screen rectangle `rect` in NDC, `cells` across
+/// and up it) that can show what lies in `boxes` (least and most corner, m) or is mirrored from
+/// there: those across the boxes' screen span, grown by the crests' height and by how far the
+/// waves move and smear a mirror's image (`up`: the tangent of half the field of view), and two
+/// more each way for the waves' sideways carry. None when the boxes lie wholly behind the eye;
+/// all of them when one reaches behind it.
+pub(super) fn cells_showing(
+    boxes: &[(Vec3, Vec3)],
+    view_proj: Mat4,
+    rect: [f32; 4],
+    cells: (u32, u32),
+    (crest, up): (f32, f32),
+) -> (std::ops::Range<u32>, std::ops::Range<u32>) {
+    let mut span = [f32::INFINITY, f32::NEG_INFINITY, f32::INFINITY, f32::NEG_INFINITY];
     let (mut behind, mut corners) = (0, 0);
     for &(least, most) in boxes {
         let (least, most) = (least - Vec3::Y * crest, most + Vec3::Y * crest);
@@ -184,27 +197,25 @@ pub(super) fn rows_showing(
                 behind += 1;
                 continue;
             }
-            span = (span.0.min(clip.y / clip.w), span.1.max(clip.y / clip.w));
+            let ndc = clip.truncate() / clip.w;
+            span = [span[0].min(ndc.x), span[1].max(ndc.x), span[2].min(ndc.y), span[3].max(ndc.y)];
         }
     }
     match behind {
-        _ if corners == 0 => return 0..0,
+        _ if corners == 0 => return (0..0, 0..0),
         0 => {}
-        b if b == corners => return 0..0,
-        _ => return 0..rows,
+        b if b == corners => return (0..0, 0..0),
+        _ => return (0..cells.0, 0..cells.1),
     }
     // In NDC (twice the texture's units): the wobble's and the blur's reach.
     let reach = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
-    rows_across((span.0 - reach, span.1 + reach), rect, rows)
-}
-
-/// The rows of a grid over `rect` (NDC, `rows` rows up it) across the NDC heights `span`, and
-/// two more each way.
-fn rows_across(span: (f32, f32), rect: [f32; 4], rows: u32) -> std::ops::Range<u32> {
-    let row_of = |ndc: f32| (ndc - rect[2]) / (rect[3] - rect[2]) * rows as f32;
-    let first = (row_of(span.0).floor() - 2.0).clamp(0.0, rows as f32) as u32;
-    let last = (row_of(span.1).ceil() + 2.0).clamp(0.0, rows as f32) as u32;
-    first..last.max(first)
+    let across = |from: f32, to: f32, lo: f32, hi: f32, count: u32| {
+        let at = |ndc: f32| (ndc - lo) / (hi - lo) * count as f32;
+        let first = (at(from - reach).floor() - 2.0).clamp(0.0, count as f32) as u32;
+        let last = (at(to + reach).ceil() + 2.0).clamp(0.0, count as f32) as u32;
+        first..last.max(first)
+    };
+    (across(span[0], span[1], rect[0], rect[1], cells.0), across(span[2], span[3], rect[2], rect[3], cells.1))
 }
 
 /// A pipeline drawing triangles from `entries` (vertex, fragment) of the sea's module into
