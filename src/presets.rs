@@ -146,7 +146,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "sea",
         label: "Lesson: the open sea",
-        help: "Open water to the horizon in a moderate breeze: five FFT cascades of different tile sizes, so no pattern repeats; the grid the sea is drawn on is projected from the screen, so its detail follows your view; the haze takes sea and sky to one colour at the horizon (turn Fog off to see the sea's edge); the island ahead stands in turquoise shallows with foam along its shore and is mirrored in the water (turn on Show the grid to see the grid). Click near the middle to make ripples in the patch of simulated water and watch them run out.",
+        help: "Open water to the horizon in a moderate breeze: five FFT cascades of different tile sizes, so no pattern repeats; the grid the sea is drawn on is projected from the screen, so its detail follows your view; the haze takes sea and sky to one colour at the horizon (turn Fog off to see the sea's edge); the island ahead stands in turquoise shallows with foam along its shore and is mirrored in the water (turn on Show the grid to see the grid). Click near the middle to make ripples in the patch of simulated water and watch them run out; the rubber duck there, as much larger as the patch is than the pool, rides the waves and leaves a wake: drag it to see one.",
         values: &[("scene", 1.0), ("sun_elevation", 30.0), ("sun_azimuth", 0.0)],
         camera: Some(crate::sea::DEFAULT_VIEW),
     },
@@ -168,7 +168,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "storm",
         label: "A storm at sea",
-        help: "A strong wind raises 5 m waves with sharpened crests under a low sun, in thick haze.",
+        help: "A strong wind raises 5 m waves with sharpened crests under a low sun, in thick haze; the duck is tossed among the whitecaps.",
         values: &[
             ("scene", 1.0),
             ("sea_wind", 20.0),
