@@ -51,12 +51,19 @@ def strip(text: str) -> str:
         if two == "/*":
             j = text.find("*/", i + 2)
             end = n if j < 0 else j + 2
-            out.append("\n" * text.count("\n", i, end))
+            # Its line breaks kept; on one line, a space (a/**/b is two tokens).
+            out.append("\n" * text.count("\n", i, end) or " ")
             i = end
+            continue
+        if two in ("++", "--"):
+            # x++ / 2 divides: the operator ends an operand.
+            out.append(two)
+            i += 2
+            last = "a"
             continue
         if c in "'\"":
             j = i + 1
-            while j < n and text[j] != c:
+            while j < n and text[j] != c and text[j] != "\n":
                 j += 2 if text[j] == "\\" else 1
             out.append(text[i : j + 1])
             i = j + 1
@@ -89,8 +96,7 @@ def strip(text: str) -> str:
         if not c.isspace():
             last = c if not (c.isalnum() or c in "_$.)]") else "a"
         i += 1
-    lines = "".join(out).split("\n")
-    return "\n".join(line.rstrip() for line in lines)
+    return "".join(out)
 
 
 def main() -> None:

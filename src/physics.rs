@@ -172,8 +172,8 @@ pub struct Shape<'a> {
     pub hull: &'a [Ellipsoid],
     pub centre_of_mass: Vec3,
     pub density: f32,
-    /// How many times larger than the pool's toy it is (1 in the pool). The damping that stands
-    /// in for the waves a toy sends out slows as 1/√scale: a body n times larger moves as a
+    /// How many times larger than the pool's toy it is (1 in the pool). The dampings of its
+    /// motion and its spin (which stand in for the waves a toy sends out) slow as 1/√scale: a body n times larger moves as a
     /// toy filmed √n times slower (Froude's similarity, which gravity waves keep).
     pub scale: f32,
 }

@@ -76,7 +76,7 @@ pub const EYE_OVER_CRESTS: f32 = 1.0;
 /// pool's sponge, grown with the patch to 4 m), so the ripples run out and do not come back.
 /// At 0.6 m deep they run at 2.4 m/s: the pool's default 0.6 m/s in a pool enlarged 16 times,
 /// by Froude's similarity (speeds grow as the root of the lengths), as its bodies are, so
-/// that a body and the ripples it makes keep the pool's timing (and a ripple a metre long on
+/// that a body and the ripples it makes keep the pool's timing (and a ripple about 4 m long on
 /// deep water runs about as fast).
 pub const PATCH_HALF_WIDTH: f32 = 16.0;
 pub const PATCH_CELLS: u32 = 256;
@@ -291,7 +291,7 @@ pub struct SeaVariant {
     /// parameter).
     pub shallow_caustics: bool,
     /// The floating bodies mirrored in the water: the reflected ray traced to them, on the
-    /// grid's rows that can show them.
+    /// grid's cells that can show them.
     pub mirrored_bodies: bool,
 }
 

@@ -394,8 +394,6 @@ mod tests {
         );
     }
 
-    /// Whitecaps (the Jacobian below [`WHITECAP_JACOBIAN`]) on a choppy storm sea, none on a
-    /// calm one: the share of 1,600 points over a 500 m patch.
     #[test]
     fn the_lattices_give_the_height_between_their_texels() {
         // Without choppiness the lattices' height is the waves' summed one by one.
@@ -415,6 +413,8 @@ mod tests {
         assert!(relative < 0.1, "{relative}");
     }
 
+    /// Whitecaps (the Jacobian below [`WHITECAP_JACOBIAN`]) on a choppy storm sea, none on a
+    /// calm one: the share of 1,600 points over a 500 m patch.
     #[test]
     fn a_storm_has_whitecaps_and_calm_water_none() {
         let caps = |wind_speed: f32, significant_height: f32| {

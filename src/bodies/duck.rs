@@ -31,7 +31,7 @@ pub const KIND: BodyKind = BodyKind {
         TRACED_PARTS.iter().filter_map(|p| p.shape.ray_hit(pose, origin, dir)).min_by(|a, b| a.total_cmp(b))
     },
     drawn: |pose, _| BodyView::at(*pose, 0.0),
-    bound: |_| bounding_radius(),
+    bound: |b| bounding_radius() * b.scale,
     uniform_slots: 5 + 3 * TRACED_PARTS.len(),
     uniform: write_uniform,
     mesh: || {

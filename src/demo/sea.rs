@@ -25,6 +25,9 @@ pub(super) struct Sea {
     /// The last frame's lattices of the cascades (`SeaWaves::layers`): the waves the next
     /// frame's bodies start from (and the tests' sea).
     pub(super) layers: [Vec<[f32; 4]>; 2],
+    /// The fixed step `layers` were made for; `None` once they no longer hold this sea's waves
+    /// (new waves, a reset).
+    pub(super) layers_step: Option<u64>,
     /// The floating bodies in the sea, one per kind (demo/sea_bodies.rs).
     pub(super) bodies: Vec<crate::bodies::Body>,
 }
@@ -91,6 +94,7 @@ impl WaterDemo {
                 sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
                 sea.may_break = sea.waves.may_break();
                 sea.ahead = None;
+                sea.layers_step = None;
                 sea.settings = settings;
             }
             Some(_) => {}
@@ -103,7 +107,9 @@ impl WaterDemo {
                 let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
                 let bodies = self.sea_bodies_at_start();
                 let (may_break, layers) = (waves.may_break(), [Vec::new(), Vec::new()]);
-                self.sea = Some(Sea { may_break, waves, settings, patch, ahead: None, last_steps: 0, layers, bodies });
+                let (ahead, last_steps, layers_step) = (None, 0, None);
+                self.sea =
+                    Some(Sea { may_break, waves, settings, patch, ahead, last_steps, layers, layers_step, bodies });
             }
         }
         self.sea.as_mut().expect("made above")
@@ -157,6 +163,7 @@ impl WaterDemo {
         if let Some(sea) = &mut self.sea {
             sea.patch.reset(queue);
             sea.bodies = bodies;
+            sea.layers_step = None;
         }
     }
 
@@ -211,7 +218,7 @@ impl WaterDemo {
             _ => sea.waves.layers(t),
         };
         sea.last_steps = steps;
-        self.step_sea_bodies(steps, [&surface, &displacement]);
+        self.step_sea_bodies((steps, step), [&surface, &displacement]);
         let view = self.sea_scene_view();
         let sea = self.sea.as_mut().expect("made above");
         let mut sim_encoder = device.create_command_encoder(&Default::default());
@@ -259,6 +266,7 @@ impl WaterDemo {
         let mut maps_done = |encoder: &mut wgpu::CommandEncoder| mark(encoder, Stage::AfterCaustics);
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
         mark(encoder, Stage::AfterScene);
-        self.sea.as_mut().expect("made above").layers = [surface, displacement];
+        let sea = self.sea.as_mut().expect("made above");
+        (sea.layers, sea.layers_step) = ([surface, displacement], Some(step));
     }
 }

@@ -66,13 +66,14 @@ impl WaterDemo {
             .collect()
     }
 
-    /// Moves the sea's bodies through `steps` fixed steps on the water under them: the waves
-    /// at each step, between the last frame's and this frame's (`layers`, `SeaWaves::layers`,
-    /// read on a ring at each body's waterline and taken linearly between the two: the same
-    /// heave at any frame rate), and the patch's ripples as the frame starts (its probes,
-    /// sampled last frame on the kinds' wider rings). Then tells the patch how their hulls moved in each step, to push its
-    /// water by, and where to sample it for next frame.
-    pub(super) fn step_sea_bodies(&mut self, steps: u32, layers: [&[[f32; 4]]; 2]) {
+    /// Moves the sea's bodies through this frame's `steps` fixed steps (up to fixed step `step`)
+    /// on the water under them: the waves at each step, between the last frame's, if it was
+    /// drawn where these steps start, and this frame's (`layers`, `SeaWaves::layers`, read on
+    /// a ring at each body's waterline and taken linearly between the two: the same heave at
+    /// any frame rate), and the patch's ripples as the frame starts (its probes, sampled last
+    /// frame on the kinds' wider rings). Then tells the patch how their hulls moved in each
+    /// step, to push its water by, and where to sample it for next frame.
+    pub(super) fn step_sea_bodies(&mut self, (steps, step): (u32, u64), layers: [&[[f32; 4]]; 2]) {
         let s = sea::patch_scale();
         let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.in_sea(id)).collect();
         let hulls = self.sea_hulls();
@@ -93,8 +94,14 @@ impl WaterDemo {
             _ => None,
         };
         let Some(sea) = self.sea.as_mut() else { return };
-        // The last frame's waves, where there was one (else this frame's at both ends).
-        let before = if sea.layers[0].is_empty() { layers } else { [&sea.layers[0][..], &sea.layers[1][..]] };
+        // The waves as this frame's steps start: the last frame's, if it drew them at that step
+        // (else this frame's at both ends).
+        let started = step.checked_sub(steps as u64);
+        let before = if sea.layers_step.is_some() && sea.layers_step == started {
+            [&sea.layers[0][..], &sea.layers[1][..]]
+        } else {
+            layers
+        };
         let planes: Vec<[WaterPlane; 2]> = BodyId::all()
             .map(|id| {
                 let p = sea.bodies[id.0].motion.pose.position;

@@ -160,7 +160,11 @@ impl SeaRenderer {
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None))
         };
-        let near_bodies = variant.mirrored_bodies.then(|| [near_bodies(false), near_bodies(variant.island)]);
+        let near_bodies = variant.mirrored_bodies.then(|| {
+            let away = near_bodies(false);
+            let near = if variant.island { near_bodies(true) } else { away.clone() };
+            [away, near]
+        });
         let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
         let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
@@ -318,7 +322,7 @@ fn grid_layout(camera: &OrbitCamera, reach: f32, size: (u32, u32)) -> ([f32; 4],
 impl Renderer {
     /// Draws the sea into `target` (`size` pixels) at the view's render scale, after
     /// [`Renderer::prepare`] wrote this frame's scene uniforms for `view` (the sea camera's,
-    /// with no bodies, caustics or deck).
+    /// with its bodies, no caustics or deck).
     #[allow(clippy::too_many_arguments)]
     pub fn encode_sea(
         &mut self,

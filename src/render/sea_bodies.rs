@@ -46,18 +46,22 @@ pub(super) fn body_pipelines(
         .collect()
 }
 
+/// How far past a body's bounding ball (in its radii) the waves' slopes can carry its mirror
+/// image: sideways and down. Found by drawing the mirroring variant on every cell instead: no
+/// pixel differed in the default sea, the `sea` preset, a view 4° over the water and a storm
+/// seen 5° down, with every body (2 sizes down and 1 sideways lost 20 pixels in the storm).
+const MIRROR_SIDE: f32 = 1.5;
+const MIRROR_DOWN: f32 = 2.0;
+
 /// Boxes (least and most corner, m) round each body of `view` and its mirror image in the sea
-/// plane, the image grown down by three times the body's size and sideways by once (the waves'
-/// slopes turn the mirrored rays and move the image: a storm's steep ones, that far).
+/// plane, grown as far as the waves can carry the image ([`MIRROR_SIDE`], [`MIRROR_DOWN`]).
 pub(super) fn mirror_boxes(view: &View) -> Vec<(Vec3, Vec3)> {
     let drawn = view.bodies.iter().zip(&KINDS).filter_map(|(b, kind)| b.as_ref().map(|b| (b, (kind.bound)(b))));
     drawn
         .map(|(body, r)| {
             let c = body.pose.position;
-            (
-                Vec3::new(c.x - 2.0 * r, -(c.y + 4.0 * r), c.z - 2.0 * r),
-                Vec3::new(c.x + 2.0 * r, c.y + r, c.z + 2.0 * r),
-            )
+            let (side, down) = (MIRROR_SIDE * r, MIRROR_DOWN * r);
+            (Vec3::new(c.x - side, -(c.y + r) - down, c.z - side), Vec3::new(c.x + side, c.y + r, c.z + side))
         })
         .collect()
 }
