@@ -215,10 +215,7 @@ impl WaterDemo {
                 self.bodies[id.0].pushed = Some(self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
             }
             let radius = (id.kind().probe_ring)(&|name: &str| self.value(name));
-            for i in 0..PROBES_PER_BODY {
-                let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
-                probes.push(Vec2::new(pose.position.x, pose.position.z) + radius * Vec2::new(a.cos(), a.sin()));
-            }
+            probes.extend(ring(Vec2::new(pose.position.x, pose.position.z), radius));
         }
         let rest_level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
@@ -235,4 +232,13 @@ pub(super) fn bump_apart(bodies: &mut [Body], shown: &[BodyId], bump: &[f32], ma
             physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
         }
     }
+}
+
+/// `PROBES_PER_BODY` points on a ring of `radius` (m) round `centre`: where the water is read
+/// for a body's buoyancy.
+pub(super) fn ring(centre: Vec2, radius: f32) -> impl Iterator<Item = Vec2> {
+    (0..PROBES_PER_BODY).map(move |i| {
+        let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
+        centre + radius * Vec2::new(a.cos(), a.sin())
+    })
 }

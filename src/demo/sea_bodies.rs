@@ -7,7 +7,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::bodies::AMBIENT_RING_RADIUS;
+use super::bodies::{ring, AMBIENT_RING_RADIUS};
 use super::input::Drag;
 use super::{WaterDemo, STEP_DT};
 use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
@@ -22,15 +22,6 @@ pub fn sea_bounds() -> Bounds {
     let (s, pool) = (sea::patch_scale(), Bounds::pool());
     let inner = sea::PATCH_HALF_WIDTH - SPONGE_WIDTH * s;
     Bounds { least: Vec3::new(-inner, pool.least.y * s, -inner), most: Vec3::new(inner, pool.most.y * s, inner) }
-}
-
-/// `PROBES_PER_BODY` points on a ring of `radius` (m) round `centre`: where the water is read
-/// for a body's buoyancy.
-pub(super) fn ring(centre: Vec2, radius: f32) -> impl Iterator<Item = Vec2> {
-    (0..PROBES_PER_BODY).map(move |i| {
-        let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
-        centre + radius * Vec2::new(a.cos(), a.sin())
-    })
 }
 
 impl WaterDemo {
