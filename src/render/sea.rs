@@ -342,7 +342,7 @@ impl Renderer {
             self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch));
         }
         let scaled = self.scaled_size(view, size);
-        let bodies = super::sea_bodies::mirror_boxes(view);
+        let bodies = super::sea_bodies::mirror_boxes(view, sea.crest * sea.choppiness);
         if scaled != size {
             let image = self.upscale.image(device, self.settings.target_format, scaled);
             self.draw_sea(device, queue, encoder, (&image, scaled), (sea, &bodies), mark);
@@ -427,7 +427,7 @@ impl Renderer {
         let reach = (sea.crest, up.length());
         let island_rows = drawn.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
         let (body_columns, body_rows) = match drawn.near_bodies {
-            Some(_) => cells_showing(bodies, view_proj, rect, cells, reach),
+            Some(_) => cells_showing(bodies, view_proj, rect, cells, (sea.crest, 0.0)),
             None => (0..0, 0..0),
         };
         let kind = |r: u32| (body_rows.contains(&r) && !body_columns.is_empty(), island_rows.contains(&r));

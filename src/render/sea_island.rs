@@ -146,43 +146,32 @@ impl IslandDrawing {
 
 impl IslandDrawing {
     /// The rows of the sea's grid that can show the island's shallows or its mirror image
-    /// ([`rows_showing`] the boxes round them).
+    /// ([`cells_showing`] the boxes round them, grown by how far the waves move and smear the
+    /// mirror's image; `up`: the tangent of half the field of view).
     pub(super) fn rows_near(
         &self,
         view_proj: Mat4,
         rect: [f32; 4],
         rows: u32,
-        reach: (f32, f32),
+        (crest, up): (f32, f32),
     ) -> std::ops::Range<u32> {
-        rows_showing(&self.shown, view_proj, rect, rows, reach)
+        // In NDC (twice the texture's units): the wobble's and the blur's reach.
+        let smear = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
+        cells_showing(&self.shown, view_proj, rect, (1, rows), (crest, smear)).1
     }
 }
 
-/// The rows of the sea's grid (its screen rectangle `rect` in NDC, `rows` rows up it) that can
-/// show what lies in `boxes` (least and most corner, m) or is mirrored from there
-/// ([`cells_showing`]).
-pub(super) fn rows_showing(
-    boxes: &[(Vec3, Vec3)],
-    view_proj: Mat4,
-    rect: [f32; 4],
-    rows: u32,
-    reach: (f32, f32),
-) -> std::ops::Range<u32> {
-    cells_showing(boxes, view_proj, rect, (1, rows), reach).1
-}
-
 /// The columns and rows of the sea's grid (its screen rectangle `rect` in NDC, `cells` across
-/// and up it) that can show what lies in `boxes` (least and most corner, m) or is mirrored from
-/// there: those across the boxes' screen span, grown by the crests' height and by how far the
-/// waves move and smear a mirror's image (`up`: the tangent of half the field of view), and two
-/// more each way for the waves' sideways carry. None when the boxes lie wholly behind the eye;
-/// all of them when one reaches behind it.
+/// and up it) that can show what lies in `boxes` (least and most corner, m): those across the
+/// boxes' screen span, grown by the crests' height and by `smear` (NDC), and two more each way
+/// for the waves' sideways carry. None when the boxes lie wholly behind the eye; all of them
+/// when one reaches behind it.
 pub(super) fn cells_showing(
     boxes: &[(Vec3, Vec3)],
     view_proj: Mat4,
     rect: [f32; 4],
     cells: (u32, u32),
-    (crest, up): (f32, f32),
+    (crest, smear): (f32, f32),
 ) -> (std::ops::Range<u32>, std::ops::Range<u32>) {
     let mut span = [f32::INFINITY, f32::NEG_INFINITY, f32::INFINITY, f32::NEG_INFINITY];
     let (mut behind, mut corners) = (0, 0);
@@ -207,12 +196,10 @@ pub(super) fn cells_showing(
         b if b == corners => return (0..0, 0..0),
         _ => return (0..cells.0, 0..cells.1),
     }
-    // In NDC (twice the texture's units): the wobble's and the blur's reach.
-    let reach = 2.0 * (MIRROR_WOBBLE + MIRROR_BLUR * ROUGHEST / up.max(1.0e-3));
     let across = |from: f32, to: f32, lo: f32, hi: f32, count: u32| {
         let at = |ndc: f32| (ndc - lo) / (hi - lo) * count as f32;
-        let first = (at(from - reach).floor() - 2.0).clamp(0.0, count as f32) as u32;
-        let last = (at(to + reach).ceil() + 2.0).clamp(0.0, count as f32) as u32;
+        let first = (at(from - smear).floor() - 2.0).clamp(0.0, count as f32) as u32;
+        let last = (at(to + smear).ceil() + 2.0).clamp(0.0, count as f32) as u32;
         first..last.max(first)
     };
     (across(span[0], span[1], rect[0], rect[1], cells.0), across(span[2], span[3], rect[2], rect[3], cells.1))
