@@ -48,6 +48,16 @@ fn ripples_at(p: vec2<f32>, footprint: f32) -> vec3<f32> {
     return keep * vec3<f32>(state.x, -normal.xz / normal.y);
 }
 
+// The clicks' ripples' curvature at rest point p (m): their slopes' change over a cell of the
+// patch, as (d2h/dx2, d2h/dxdz, d2h/dz2) (1/m), faded with the footprint (m) as ripples_at.
+fn ripples_hessian(p: vec2<f32>, footprint: f32) -> vec3<f32> {
+    let step = 2.0 * PATCH_HALF_WIDTH / scene.water.x;
+    let s = ripples_at(p, footprint).yz;
+    let sx = (ripples_at(p + vec2<f32>(step, 0.0), footprint).yz - s) / step;
+    let sz = (ripples_at(p + vec2<f32>(0.0, step), footprint).yz - s) / step;
+    return vec3<f32>(sx.x, 0.5 * (sx.y + sz.x), sz.y);
+}
+
 // Where the eye's ray along dir meets the sea plane (xz, m), at most GRID_FAR away across.
 fn rest_point(dir: vec3<f32>) -> vec2<f32> {
     let across = max(length(dir.xz), 1.0e-6);

@@ -48,7 +48,7 @@ fn light_on_ground(n: vec3<f32>) -> vec3<f32> {
 // the light is spread by det(I + k H), H the surface's Hessian: here the finest cascade's (the
 // short waves that make a floor's caustics), from its slope `s` at p (in its frame) and its
 // slopes a texel on, turned to the world as its carry gradient is, faded as the pixel's
-// footprint (m) outgrows it.
+// footprint (m) outgrows it; plus the clicks' ripples' where the shallows reach their patch.
 fn shallows_caustics(p: vec2<f32>, s: vec2<f32>, depth: f32, footprint: f32) -> f32 {
     let c = CASCADES - 1;
     let tile = sea.cascades[c].z;
@@ -58,7 +58,10 @@ fn shallows_caustics(p: vec2<f32>, s: vec2<f32>, depth: f32, footprint: f32) -> 
     let sz = (cascade_texel(sea_surface, c, local + vec2<f32>(0.0, step), tile).yz - s) / step;
     let local_hessian = vec4<f32>(0.0, 0.0, sx.x, sz.y);
     let cross = vec4<f32>(0.0, 0.0, 0.0, 0.5 * (sx.y + sz.x));
-    let hessian = add_gradient(vec3<f32>(0.0), c, cascade_weight(c, footprint), local_hessian, cross);
+    var hessian = add_gradient(vec3<f32>(0.0), c, cascade_weight(c, footprint), local_hessian, cross);
+    if ISLAND_AT_PATCH {
+        hessian += ripples_hessian(p, footprint);
+    }
     let k = depth * (1.0 - IOR_AIR / IOR_WATER);
     let spread = (1.0 + k * hessian.x) * (1.0 + k * hessian.z) - k * k * hessian.y * hessian.y;
     return min(1.0 / max(abs(spread), 0.05), SHALLOWS_CAUSTICS_PEAK);

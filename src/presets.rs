@@ -151,6 +151,20 @@ pub const PRESETS: &[Preset] = &[
         camera: Some(crate::sea::DEFAULT_VIEW),
     },
     Preset {
+        name: "shore",
+        label: "Lesson: ripples in the shallows",
+        help: "The island's beach by the patch of simulated water, in a light breeze under a high sun: the waves' slopes focus the sunlight into a net of caustics on the sand a few metres down. Click the water to make ripples: where the depth is right their rings focus into bright lines on the floor, which show them far better than the surface itself does. The duck's bobbing draws rings of its own.",
+        values: &[
+            ("scene", 1.0),
+            ("sea_island", 2.0),
+            ("sea_wind", 5.0),
+            ("sea_wave_height", 0.4),
+            ("sun_elevation", 60.0),
+            ("sun_azimuth", 20.0),
+        ],
+        camera: Some([160.0, 35.0, 30.0]),
+    },
+    Preset {
         name: "dawn",
         label: "A calm sea at dawn",
         help: "A low sun ahead over a calm sea: its glint spread into a long path of glitter on the small waves, the sky warm along the horizon.",

@@ -119,8 +119,8 @@ pub struct SeaSettings {
     pub choppiness: f32,
     /// The fog's distance at sea level (m): light over it is dimmed to 1/e; `None`: no fog.
     pub fog_distance: Option<f32>,
-    /// Whether the island ([`island`]) stands in the sea.
-    pub island: bool,
+    /// Where the island ([`island`]) stands in the sea, if it does.
+    pub island: Option<island::Place>,
     /// Whether the projected grid's cells are outlined on the water (a debug view).
     pub grid_lines: bool,
 }
@@ -134,7 +134,11 @@ impl SeaSettings {
             wave_height: value("sea_wave_height"),
             choppiness: value("sea_choppiness"),
             fog_distance: (value("sea_fog") >= 0.5).then(|| value("sea_fog_distance")),
-            island: value("sea_island") >= 0.5,
+            island: match value("sea_island").round() as i32 {
+                0 => None,
+                1 => Some(island::Place::Offshore),
+                _ => Some(island::Place::Shore),
+            },
             grid_lines: value("sea_grid") >= 0.5,
         }
     }
@@ -233,9 +237,9 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Island",
         group: "Scene",
         unit: "",
-        control: Control::Toggle,
+        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["none", "offshore", "shore"] },
         default: 1.0,
-        help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore.",
+        help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore: offshore in the haze, or at the shore, its shallows under the patch where clicks make ripples and the ripples' caustics light the sand.",
     },
     ParamSpec {
         name: "sea_objects",
@@ -281,8 +285,8 @@ pub const USES_OF_THE_POOL: &[&str] = &[
 /// Which variant of the sea's shaders a frame needs: a feature left out costs nothing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SeaVariant {
-    /// The island's shallows and mirror image.
-    pub island: bool,
+    /// The island's shallows and mirror image, and where it stands.
+    pub island: Option<island::Place>,
     /// The grid's cells outlined.
     pub grid_lines: bool,
     /// The whitecaps kept over time (where the device renders into float textures).
@@ -314,11 +318,12 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
         "const SEA_ABSORPTION: vec3<f32> = vec3<f32>({ar:?}, {ag:?}, {ab:?});\nconst SEA_SCATTERING: f32 = {SEA_SCATTERING:?};\n"
     );
     let switches = format!(
-        "const ISLAND: bool = {island};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
+        "const ISLAND: bool = {};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
          const SHALLOW_CAUSTICS: bool = {shallow_caustics};\nconst MIRRORED_BODIES: bool = {mirrored_bodies};\n\
-         const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n"
+         const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n",
+        island.is_some()
     );
-    let island = switches + &island::wgsl_constants();
+    let island = switches + &island::wgsl_constants(island.unwrap_or(island::Place::Offshore));
     absorption
         + &island
         + &format!(

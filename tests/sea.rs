@@ -219,7 +219,7 @@ fn rest_point(d: &WaterDemo, size: (u32, u32), x: u32, y: u32) -> Option<Vec2> {
 
 /// The water's depth (m) at a point of the sea plane: the island's ground under it.
 fn depth_at(p: Vec2) -> f32 {
-    -island::height(p)
+    -island::height(p, island::Place::Offshore)
 }
 
 /// The first point, walking out from the island's middle towards the origin, where `found`.
@@ -248,7 +248,7 @@ fn sea_over(spot: Vec2, (pitch, distance): (f32, f32), shore: bool, setup: impl 
 fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
     // Seen from 60 m above the coast, where the island's ground first dips under the sea on the
     // way out from its middle towards the origin.
-    let coast = out_from_the_island(|p| island::height(p) < 0.0);
+    let coast = out_from_the_island(|p| island::height(p, island::Place::Offshore) < 0.0);
     let mut frames = Vec::new();
     let mut d = demo(DemoOptions::default());
     for shore in [true, false] {
@@ -470,4 +470,45 @@ fn the_waves_focus_sunlight_into_caustics_on_the_shallows_floor() {
     assert!(spread > 0.08 && brightest > 1.3, "no caustics on the floor");
     // 1/|det| taken at the surface rather than over the floor averages a little over 1.
     assert!(mean > 0.85 && mean < 1.15, "caustics should move light, not make it");
+}
+
+#[test]
+fn a_click_in_the_shallows_lights_the_sand_under_it_with_the_ripples_caustics() {
+    // The island at the shore, its shallows across the patch; looking down 60° from 25 m at the
+    // patch's middle (about 6 m of water), the sun 70° up. The same sea clicked and unclicked,
+    // with the floor's caustics and without: how much the ripples change the water's light.
+    let mut changes = Vec::new();
+    for caustics in [1.0, 0.0] {
+        let (mut frames, mut view) = (Vec::new(), None);
+        for click in [true, false] {
+            let mut d = sea_over(Vec2::ZERO, (60.0, 25.0), false, |d| {
+                d.params.set(ParamId::SeaIsland, 2.0);
+                d.params.set(ParamId::SunElevation, 70.0);
+                d.params.set(ParamId::Caustics, caustics);
+            });
+            render(&mut d, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
+            if click {
+                d.pointer_down(SIZE.0 as f32 / 2.0, SIZE.1 as f32 / 2.0);
+                d.pointer_up();
+            }
+            frames.push(render(&mut d, SIZE.0, SIZE.1, 45, 1.0 / 60.0));
+            view = Some(d);
+        }
+        let view = view.expect("a demo");
+        let near = Rect(0.2, 0.2, 0.8, 0.8).pixels(&frames[0]);
+        let depth =
+            |&(x, y): &(u32, u32)| rest_point(&view, SIZE, x, y).map(|p| -island::height(p, island::Place::Shore));
+        let shallow: Vec<_> = near.into_iter().filter(|p| depth(p).is_some_and(|d| d > 1.0 && d < 12.0)).collect();
+        let mean =
+            shallow.iter().map(|&(x, y)| (frames[0].luma(x, y) - frames[1].luma(x, y)).abs() as f64).sum::<f64>()
+                / shallow.len().max(1) as f64;
+        changes.push((mean, shallow.len()));
+    }
+    println!(
+        "the ripples change the luma of {} pixels over 1-12 m of water by {:.4} on average with the floor's caustics, \
+         {:.4} without",
+        changes[0].1, changes[0].0, changes[1].0
+    );
+    assert!(changes[0].1 > 5000, "the shallows are not in view");
+    assert!(changes[0].0 > 2.0 * changes[1].0, "the ripples' caustics do not show on the sand");
 }

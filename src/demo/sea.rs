@@ -57,12 +57,12 @@ impl WaterDemo {
             let settings = self.sea_settings();
             let clearance = settings.crest_bound() + EYE_OVER_CRESTS;
             self.camera.keep_eye_above(clearance);
-            if settings.island {
+            if let Some(place) = settings.island {
                 // And over the land: the ground under the eye moves as the view steepens;
                 // twice is close enough for the hill's slopes.
                 for _ in 0..2 {
                     let eye = self.camera.eye();
-                    self.camera.keep_eye_above(island::height(glam::Vec2::new(eye.x, eye.z)) + EYE_OVER_CRESTS);
+                    self.camera.keep_eye_above(island::height(glam::Vec2::new(eye.x, eye.z), place) + EYE_OVER_CRESTS);
                 }
             }
             let highest = self.camera.limits.pitch.1.to_radians().sin();
@@ -251,7 +251,7 @@ impl WaterDemo {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
                 whitecap_map: sea.may_break,
-                shallow_caustics: settings.island && self.params.get(ParamId::Caustics) >= 0.5,
+                shallow_caustics: settings.island.is_some() && self.params.get(ParamId::Caustics) >= 0.5,
                 mirrored_bodies: self.sea_foam[3] && view.bodies.iter().any(Option::is_some),
             },
             // Not kept (tests): the map holds only the frame's own foam.

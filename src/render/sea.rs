@@ -118,7 +118,7 @@ impl SeaRenderer {
             gpu::texture_2d(device, label, n, n, layers, 1, wgpu::TextureFormat::Rgba16Float, usage)
         };
         let maps = [map("sea surface"), map("sea displacement")];
-        let island_map = island_map(device, queue, variant.island);
+        let island_map = island_map(device, queue, variant.island.is_some());
         let group = sea_group(device, &layout, &uniforms, &maps, &island_map);
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sea frame layout"),
@@ -131,8 +131,8 @@ impl SeaRenderer {
         let base = shaders::scene_prelude_in(features, format, super::sea_bodies::WGSL);
         // The plain grid's variant leaves out the island and the bodies' mirror images: the
         // rows that can show them are drawn with variants of their own.
-        let prelude = |island, mirrored_bodies| {
-            let variant = SeaVariant { island, mirrored_bodies, ..variant };
+        let prelude = |island: bool, mirrored_bodies| {
+            let variant = SeaVariant { island: variant.island.filter(|_| island), mirrored_bodies, ..variant };
             let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
             [base.clone(), constants.concat()].join("\n")
         };
@@ -148,10 +148,10 @@ impl SeaRenderer {
         let bodies = super::sea_bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
-        let island_drawing = variant.island.then(|| {
+        let island_drawing = variant.island.map(|place| {
             let module = module(true, false);
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
-            IslandDrawing::new(device, island_map, &pipelines)
+            IslandDrawing::new(device, island_map, &pipelines, place)
         });
         // The cells that can show the bodies' mirror images trace them: with the island's
         // shallows and mirror where they are the island's rows as well.
@@ -162,7 +162,7 @@ impl SeaRenderer {
         };
         let near_bodies = variant.mirrored_bodies.then(|| {
             let away = near_bodies(false);
-            let near = if variant.island { near_bodies(true) } else { away.clone() };
+            let near = if variant.island.is_some() { near_bodies(true) } else { away.clone() };
             [away, near]
         });
         let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];

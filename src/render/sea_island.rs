@@ -89,7 +89,12 @@ pub(super) struct IslandPipelines<'a> {
 }
 
 impl IslandDrawing {
-    pub(super) fn new(device: &wgpu::Device, map: wgpu::Texture, p: &IslandPipelines<'_>) -> Self {
+    pub(super) fn new(
+        device: &wgpu::Device,
+        map: wgpu::Texture,
+        p: &IslandPipelines<'_>,
+        place: island::Place,
+    ) -> Self {
         let indices = island::land_indices();
         let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("island land"),
@@ -102,9 +107,9 @@ impl IslandDrawing {
         let entries = ["vs_island_mirrored", "fs_island_mirrored"];
         let mirrored =
             mesh_pipeline(device, &into_mirror, "island mirrored", entries, (MIRROR_FORMAT, Some(wgpu::Face::Front)));
-        let (least, most, _) = island::extent_above(-island::SEE_DEPTH);
+        let (least, most, _) = island::extent_above(-island::SEE_DEPTH, place);
         let water = (Vec3::new(least[0], 0.0, least[1]), Vec3::new(most[0], 0.0, most[1]));
-        let (least, most, top) = island::extent_above(0.0);
+        let (least, most, top) = island::extent_above(0.0, place);
         let image = (Vec3::new(least[0], -top, least[1]), Vec3::new(most[0], 0.0, most[1]));
         Self { _map: map, shallows, land, mirrored, mesh: (buffer, indices.len() as u32), shown: [water, image] }
     }
