@@ -69,19 +69,25 @@ fn rest_point(dir: vec3<f32>) -> vec2<f32> {
 // (1/L) e^(-y0/H) times the integral of e^(-dir.y t / H) over the path, which for a ray into
 // the sky is H / dir.y. Just under the horizon (within HORIZON_HAZE_BAND rad) a ray down to the
 // sea takes at least the depth of the ray as far above it: both sides of the horizon meet in
-// the same haze, with no seam, from any height.
-fn haze_depth(dir: vec3<f32>, dist: f32) -> f32 {
+// the same haze, with no seam, from any height (`skims`: the sea's rays; the land and the
+// bodies take their own distance's).
+fn haze_depth(dir: vec3<f32>, dist: f32, skims: bool) -> f32 {
     let h = sea.fog.y;
     let k = max(dir.y * dist / h, -40.0);
     let shape = select((1.0 - exp(-k)) / k, 1.0 - 0.5 * k, abs(k) < 1.0e-3);
-    let skim = h / max(abs(dir.y), 1.0e-6) * (1.0 - smoothstep(0.0, HORIZON_HAZE_BAND, -dir.y));
+    let skim = select(0.0, h / max(-dir.y, 1.0e-6) * (1.0 - smoothstep(0.0, HORIZON_HAZE_BAND, -dir.y)), skims && dir.y < 0.0);
     return sea.fog.x * exp(-sea.eye.y / h) * max(dist * shape, skim);
 }
 
 // Light arriving at the eye from `colour` `dist` m away along dir through the haze, which
 // glows with the sky's colour at the horizon in that direction (the deck's fit of it).
 fn through_haze(colour: vec3<f32>, dir: vec3<f32>, dist: f32) -> vec3<f32> {
-    return mix(horizon_colour(dir.xz), colour, exp(-haze_depth(dir, dist)));
+    return mix(horizon_colour(dir.xz), colour, exp(-haze_depth(dir, dist, true)));
+}
+
+// The same for what stands on the sea (the land, the bodies): the haze over its own distance.
+fn through_air(colour: vec3<f32>, dir: vec3<f32>, dist: f32) -> vec3<f32> {
+    return mix(horizon_colour(dir.xz), colour, exp(-haze_depth(dir, dist, false)));
 }
 
 // The sun's and the sky's light falling on the level sea.

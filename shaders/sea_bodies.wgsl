@@ -21,7 +21,7 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> 
 fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
     let to_point = p - sea.eye.xyz;
     let dist = length(to_point);
-    return finish(through_haze(colour, to_point / dist, dist));
+    return finish(through_air(colour, to_point / dist, dist));
 }
 
 // What the water at p mirrors of the bodies along the reflected ray r (turned up, as

@@ -128,7 +128,7 @@ fn vs_island(@builtin(vertex_index) index: u32) -> IslandOut {
 fn fs_island(in: IslandOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
-    return finish(through_haze(land_colour(in.world), to_point / dist, dist));
+    return finish(through_air(land_colour(in.world), to_point / dist, dist));
 }
 
 // The land upside down under the sea plane, seen by the same camera: what a level sea mirrors.
