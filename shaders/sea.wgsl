@@ -191,6 +191,9 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
             if SHALLOW_CAUSTICS {
                 focus = shallows_caustics(in.rest, finest, depth, footprint);
             }
+            if ISLAND_AT_PATCH {
+                focus *= bodies_shade_on_floor(in.world, v, n, depth);
+            }
             under = seen_through_water(v, n, depth, ground, focus);
         }
         let ripple = finest.x / sqrt(max(sea.cascades[CASCADES - 1].w, 1.0e-8));

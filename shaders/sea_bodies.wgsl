@@ -3,7 +3,8 @@
 // lit by the sun and by the sky above it, and from below by the little light the deep water
 // sends back up; it is seen through the haze like the sea around it. Its part under the water
 // is hidden by the sea's surface, drawn after it, so it is always lit as above the water. The
-// water mirrors the bodies (MIRRORED_BODIES): its reflected rays are traced to them.
+// water mirrors the bodies (MIRRORED_BODIES): its reflected rays are traced to them; where the
+// shallows reach the patch (ISLAND_AT_PATCH) they shade the floor.
 
 fn lit_under(p: vec3<f32>) -> bool {
     return false;
@@ -34,4 +35,14 @@ fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
         return behind;
     }
     return vec4<f32>(body_colour(hit, p + up * hit.t, up, false), 1.0);
+}
+
+// The share of the sun's light on the floor `depth` m under the surface point p (seen along
+// unit v through normal n) that the bodies let through: the ray from that floor point to the
+// sun, bent into the water at a level surface, past their parts (their soft shadows).
+fn bodies_shade_on_floor(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, depth: f32) -> f32 {
+    let down = refract(v, n, IOR_AIR / IOR_WATER);
+    let floor = p + down * (depth / max(-down.y, 0.2));
+    let to_sun = -refract(-scene.sun.xyz, vec3<f32>(0.0, 1.0, 0.0), IOR_AIR / IOR_WATER);
+    return objects_visibility(floor, to_sun, FAR_AWAY);
 }

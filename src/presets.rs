@@ -153,14 +153,14 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "shore",
         label: "Lesson: ripples in the shallows",
-        help: "The island's beach by the patch of simulated water, in a light breeze under a high sun: the waves' slopes focus the sunlight into a net of caustics on the sand a few metres down. Click the water to make ripples: where the depth is right their rings focus into bright lines on the floor, which show them far better than the surface itself does. The duck's bobbing draws rings of its own.",
+        help: "The island's beach by the patch of simulated water, in a light breeze under a high sun: the waves' slopes focus the sunlight into a net of caustics on the sand a few metres down. Click the water to make ripples: where the depth is right their rings focus into bright lines on the floor, which show them far better than the surface itself does. The duck's bobbing draws rings of its own, and its shadow lies on the sand.",
         values: &[
             ("scene", 1.0),
             ("sea_island", 2.0),
             ("sea_wind", 5.0),
             ("sea_wave_height", 0.4),
-            ("sun_elevation", 60.0),
-            ("sun_azimuth", 20.0),
+            ("sun_elevation", 55.0),
+            ("sun_azimuth", 130.0),
         ],
         camera: Some([160.0, 35.0, 30.0]),
     },

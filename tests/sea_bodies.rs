@@ -277,3 +277,42 @@ fn the_water_mirrors_the_bodies_floating_on_it() {
     assert!(lit[0] - lit[2] > bare[0] - bare[2] + 0.02, "the mirror image is not the duck's yellow");
     assert!(stray == 0.0, "the mirror changes the water beyond the duck: {stray}");
 }
+
+#[test]
+fn a_body_over_the_shallows_shades_the_sand_under_it() {
+    // The island at the shore, its shelf under the patch; the duck held over the patch's middle
+    // (about 6 m of water), seen 75° down from 30 m with the sun 45° up behind the eye, so its
+    // shadow falls on the sand beyond it. No caustics: the duck's own ripples would move light.
+    let duck = BodyId::named("duck").expect("the duck");
+    let size = (320u32, 240u32);
+    let frame = |objects: u32| {
+        let mut d = sea_with(objects, 30.0);
+        d.params.set(ParamId::SeaIsland, 2.0);
+        d.params.set(ParamId::Caustics, 0.0);
+        d.params.set(ParamId::SunElevation, 45.0);
+        d.sync_scene();
+        (d.camera.pitch, d.camera.yaw) = (75.0, 160.0);
+        d.camera.clamp();
+        d.params.set(ParamId::SunAzimuth, d.camera.yaw);
+        render(&mut d, size.0, size.1, 1, 1.0 / 60.0);
+        d.set_sea_body(duck, Vec3::new(0.0, floating_height(&d, duck), 0.0), Vec3::ZERO);
+        render(&mut d, size.0, size.1, 20, 1.0 / 60.0)
+    };
+    let (with, without) = (frame(duck.bit()), frame(0));
+    // The water's pixels (bluer than red: the duck's are yellow) that the duck darkens.
+    let water = Rect::ALL.pixels(&with).into_iter().filter(|&(x, y)| {
+        let c = with.pixel(x, y);
+        c[2] >= c[0]
+    });
+    let (mut water_pixels, mut shaded) = (0, 0);
+    for (x, y) in water {
+        water_pixels += 1;
+        shaded += usize::from(with.luma(x, y) < 0.8 * without.luma(x, y));
+    }
+    let share = shaded as f64 / (size.0 * size.1) as f64;
+    println!(
+        "the duck over 6 m of water darkens {shaded} of {water_pixels} water pixels by over 20 % ({:.2} % of the frame)",
+        share * 100.0
+    );
+    assert!(share > 0.005, "no shadow of the duck on the sand: {share}");
+}
