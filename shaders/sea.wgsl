@@ -33,8 +33,9 @@ struct Sea {
 
 // The clicks' ripples at rest point p (m): height (m) and slopes dh/dx, dh/dz of the patch of
 // simulated water (the scene's water state, scene.water.x cells across PATCH_HALF_WIDTH each
-// way; its walls absorb, so it is calm at its edge), 0 outside it. Their waves are ten cells
-// long and more: they fade as the footprint (m) grows from four cells to eight.
+// way), 0 outside it. Their waves are ten cells long and more: they fade as the footprint (m)
+// grows from four cells to eight, and across the absorbing border (PATCH_SPONGE m), where what
+// the border has not yet taken would otherwise end at the patch's edge.
 fn ripples_at(p: vec2<f32>, footprint: f32) -> vec3<f32> {
     let n = i32(scene.water.x);
     let q = (p / PATCH_HALF_WIDTH * 0.5 + 0.5) * f32(n) - 0.5;
@@ -44,7 +45,9 @@ fn ripples_at(p: vec2<f32>, footprint: f32) -> vec3<f32> {
     let state = bilinear_load(water_state, MapTaps(i0, i1, q - base));
     let normal = water_normal(state);
     let cells = footprint * f32(n) / (2.0 * PATCH_HALF_WIDTH);
-    let keep = clamp(2.0 - cells / 4.0, 0.0, 1.0) * f32(all(abs(p) < vec2<f32>(PATCH_HALF_WIDTH)));
+    let from_middle = max(abs(p.x), abs(p.y));
+    let border = 1.0 - smoothstep(PATCH_HALF_WIDTH - PATCH_SPONGE, PATCH_HALF_WIDTH, from_middle);
+    let keep = clamp(2.0 - cells / 4.0, 0.0, 1.0) * border;
     return keep * vec3<f32>(state.x, -normal.xz / normal.y);
 }
 

@@ -323,12 +323,14 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
          const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n",
         island.is_some()
     );
+    // The patch's absorbing border (m), where its ripples are drawn fading out.
+    let sponge = crate::sim::SPONGE_WIDTH * patch_scale();
     let island = switches + &island::wgsl_constants(island.unwrap_or(island::Place::Offshore));
     absorption
         + &island
         + &format!(
             "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
-         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\n\
+         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst PATCH_SPONGE: f32 = {sponge:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\n\
          const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
          const HORIZON_HAZE_BAND: f32 = {HORIZON_HAZE_BAND:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
