@@ -390,7 +390,7 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     };
     let info = gpu.adapter.get_info();
     let round = |v: f64| (v * 1e3).round() / 1e3;
-    let sea = (demo.drawn_scene() == wavepool::sea::SceneKind::Sea).then(|| sea_stages(&demo, &stage, round));
+    let sea = (demo.drawn_scene() == wavepool::sea::SceneKind::Sea).then(|| sea_stages(&gpu, &demo, &stage, round));
     let report = serde_json::json!({
         "adapter": info.name,
         "backend": format!("{:?}", info.backend),
@@ -413,25 +413,56 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// The sea's stages under their own names (its frame marks the same three), and the CPU's
-/// time to sum its cascades for a frame (`SeaWaves::layers`, timed here apart: the median of
-/// ten). The middle stage runs from the patch's end to the sea pass: the GPU waits there for
-/// the CPU's cascades and their upload, then draws the island's mirror and the kept whitecaps.
-fn sea_stages(demo: &WaterDemo, stage: &dyn Fn(usize) -> f64, round: impl Fn(f64) -> f64) -> serde_json::Value {
+/// The sea's stages under their own names (its frame marks the same three), and, timed here
+/// apart (the median of ten): the GPU's FFT of its cascades alone (submitted and waited for),
+/// the CPU's FFT that devices without float targets take instead (`SeaWaves::layers`), and
+/// the CPU's sums for a body's probes (the waves at two moments on a ring of eight points).
+/// The middle stage runs from the patch's end to the sea pass: the cascades' FFT and their
+/// copy into the sea's maps, the island's mirror, the kept whitecaps.
+fn sea_stages(
+    gpu: &HeadlessGpu,
+    demo: &WaterDemo,
+    stage: &dyn Fn(usize) -> f64,
+    round: impl Fn(f64) -> f64,
+) -> serde_json::Value {
+    use wavepool::ambient::{cascades::SeaWaves, gpu_ocean::GpuOcean};
     let settings = wavepool::sea::SeaSettings::from_values(|n| demo.params.get_by_name(n).expect("a sea parameter"));
-    let waves = wavepool::ambient::cascades::SeaWaves::new(&settings.waves(), wavepool::sea::SEA_LATTICE);
-    let times: Vec<f64> = (0..10)
-        .map(|i| {
-            let start = Instant::now();
-            std::hint::black_box(waves.layers(i as f64 * 0.1));
-            start.elapsed().as_secs_f64() * 1e3
-        })
-        .collect();
+    let waves = SeaWaves::new(&settings.waves(), wavepool::sea::SEA_LATTICE);
+    let median_of_ten = |run: &mut dyn FnMut(f64)| {
+        let times: Vec<f64> = (0..10)
+            .map(|i| {
+                let start = Instant::now();
+                run(i as f64 * 0.1);
+                start.elapsed().as_secs_f64() * 1e3
+            })
+            .collect();
+        round(percentile(&times, 0.5))
+    };
+    let fft_cpu_ms = median_of_ten(&mut |t| {
+        std::hint::black_box(waves.layers(t));
+    });
+    let oceans: Vec<_> = waves.cascades.iter().map(|c| &c.ocean).collect();
+    let mut fft = GpuOcean::new(&gpu.device, wavepool::sea::SEA_LATTICE as u32, oceans.len() as u32);
+    let fft_gpu_ms = median_of_ten(&mut |t| {
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        fft.encode(&gpu.queue, &mut encoder, &oceans, 1.0 + t);
+        gpu.queue.submit([encoder.finish()]);
+        let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+    });
+    let body_cpu_ms = median_of_ten(&mut |t| {
+        for moment in [t, t + 1.0 / 60.0] {
+            let now = waves.at(moment);
+            let ring = (0..8).map(|i| (i as f32 * 0.785).sin_cos());
+            std::hint::black_box(ring.map(|(s, c)| now.height(0.5 * c, 0.5 * s)).sum::<f32>());
+        }
+    });
     serde_json::json!({
-        "fft_cpu_ms": round(percentile(&times, 0.5)),
+        "fft_gpu_ms": fft_gpu_ms,
+        "fft_cpu_ms": fft_cpu_ms,
+        "body_cpu_ms": body_cpu_ms,
         "patch_ms": round(stage(0)),
         "maps_ms": round(stage(1)),
-        "maps": "waiting for the cascades (CPU) and their upload, the island's mirror, the kept whitecaps",
+        "maps": "the cascades' FFT and their copy into the sea's maps, the island's mirror, the kept whitecaps",
         "sea_and_sky_ms": round(stage(2)),
     })
 }

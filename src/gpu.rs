@@ -177,10 +177,29 @@ impl FullscreenPass {
         layouts: &[&wgpu::BindGroupLayout],
         target: FullscreenTarget,
     ) -> Self {
+        Self::with_targets(device, label, parts, entry, layouts, &[target])
+    }
+
+    /// [`FullscreenPass::new`] writing several targets at once (its fragment entry's
+    /// locations 0, 1, …), all in the same depth state (the first's).
+    pub fn with_targets(
+        device: &wgpu::Device,
+        label: &str,
+        parts: &[&str],
+        entry: &str,
+        layouts: &[&wgpu::BindGroupLayout],
+        targets: &[FullscreenTarget],
+    ) -> Self {
         let mut all = vec![wgsl::FULLSCREEN];
         all.extend_from_slice(parts);
         let module = shader(device, label, &all);
         let layout = pipeline_layout(device, label, layouts);
+        let colour_targets: Vec<_> = targets
+            .iter()
+            .map(|t| {
+                Some(wgpu::ColorTargetState { format: t.format, blend: t.blend, write_mask: wgpu::ColorWrites::ALL })
+            })
+            .collect();
         let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(label),
             layout: Some(&layout),
@@ -191,7 +210,7 @@ impl FullscreenPass {
                 buffers: &[],
             },
             primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: target.depth.map(|format| wgpu::DepthStencilState {
+            depth_stencil: targets.first().and_then(|t| t.depth).map(|format| wgpu::DepthStencilState {
                 format,
                 depth_write_enabled: Some(false),
                 depth_compare: Some(wgpu::CompareFunction::LessEqual),
@@ -203,11 +222,7 @@ impl FullscreenPass {
                 module: &module,
                 entry_point: Some(entry),
                 compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: target.format,
-                    blend: target.blend,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
+                targets: &colour_targets,
             }),
             multiview_mask: None,
             cache: None,
@@ -245,7 +260,39 @@ impl FullscreenPass {
         target: &wgpu::TextureView,
         bind_groups: &[&wgpu::BindGroup],
     ) {
-        let mut pass = colour_pass(encoder, &self.label, target, wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT));
+        self.run_on(encoder, &[target], bind_groups);
+    }
+
+    /// [`FullscreenPass::run`] on each of `targets` at once (a pass made
+    /// [`FullscreenPass::with_targets`]).
+    pub fn run_on(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        targets: &[&wgpu::TextureView],
+        bind_groups: &[&wgpu::BindGroup],
+    ) {
+        let attachments: Vec<_> = targets
+            .iter()
+            .map(|view| {
+                Some(wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                        store: wgpu::StoreOp::Store,
+                    },
+                })
+            })
+            .collect();
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some(&self.label),
+            color_attachments: &attachments,
+            depth_stencil_attachment: None,
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
         self.draw(&mut pass, bind_groups);
     }
 }
@@ -311,6 +358,11 @@ impl PingPong {
 
     pub fn textures(&self) -> &[wgpu::Texture; 2] {
         &self.textures
+    }
+
+    /// The view of texture `i` (0 or 1).
+    pub fn view(&self, i: usize) -> &wgpu::TextureView {
+        &self.views[i]
     }
 
     /// One bind group per texture, built by `make` from that texture's view; pass the

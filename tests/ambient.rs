@@ -159,52 +159,61 @@ fn the_height_and_normals_views_show_the_ambient_waves() {
 }
 
 /// The GPU's FFT (spectrum pass and Stockham stages in fragment passes) against the CPU's
-/// (the same stages), for both lattice sizes of the pool and for a cascade of the sea (its own
-/// tile and depth), early and late (after several epochs), for the surface's chain and the
-/// choppy displacement's.
+/// (radix-2 stages: any two ways of summing the waves must agree to the floats' rounding),
+/// for both lattice sizes of the pool and for the sea's five cascades side by side (each its
+/// own tile and depth), early and late (after several epochs), for the surface's chain and
+/// the choppy displacement's.
 #[test]
 fn the_gpu_fft_matches_the_cpu_reference() {
     let g = common::gpu();
     let settings =
         |size| AmbientSettings { fft_size: size, choppiness: 1.5, ..AmbientSettings::default_for(AmbientModel::Fft) };
     let sea = SeaWaves::new(&AmbientSettings { significant_height: 1.0, wind_speed: 8.0, ..settings(64) }, 64);
-    let oceans = [
-        ("pool", Ocean::new(&settings(64), 64)),
-        ("pool", Ocean::new(&settings(128), 128)),
-        ("sea cascade", sea.cascades[1].ocean.clone()),
+    let cascades: Vec<Ocean> = sea.cascades.iter().map(|c| c.ocean.clone()).collect();
+    let batches = [
+        ("pool", vec![Ocean::new(&settings(64), 64)]),
+        ("pool", vec![Ocean::new(&settings(128), 128)]),
+        ("sea cascades", cascades),
     ];
-    for (what, ocean) in oceans {
-        let size = ocean.size;
-        let mut gpu_ocean = GpuOcean::new(&g.device, size as u32);
+    for (what, oceans) in batches {
+        let (size, count) = (oceans[0].size, oceans.len());
+        let mut gpu_ocean = GpuOcean::new(&g.device, size as u32, count as u32);
+        let batch: Vec<&Ocean> = oceans.iter().collect();
         for t in [2.3, 1234.56] {
             let mut encoder = g.device.create_command_encoder(&Default::default());
-            gpu_ocean.encode(&g.queue, &mut encoder, &ocean, t);
+            gpu_ocean.encode(&g.queue, &mut encoder, &batch, t);
             g.queue.submit([encoder.finish()]);
             let [surface, displacement] = gpu_ocean.output_textures();
-            for (name, texture, on_cpu) in
-                [("surface", surface, ocean.surface(t)), ("displacement", displacement, ocean.displacement(t))]
-            {
+            for (name, texture) in [("surface", surface), ("displacement", displacement)] {
                 let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, texture);
-                let on_gpu: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-                // Each field's largest difference, as a fraction of its largest value.
-                let relative: Vec<f32> = (0..4)
-                    .map(|c| {
-                        let largest = on_cpu.iter().map(|v| v[c].abs()).fold(0.0f32, f32::max);
-                        let off = on_gpu.iter().zip(&on_cpu).map(|(a, b)| (a[c] - b[c]).abs()).fold(0.0f32, f32::max);
-                        off / largest
-                    })
-                    .collect();
-                println!(
-                    "FFT {size}² ({what}, tile {} m) {name} at t = {t} s: GPU vs CPU, each field's largest \
-                     difference over its largest value: {:.1e} {:.1e} {:.1e} {:.1e}",
-                    2.0 * ocean.band.half_tile,
-                    relative[0],
-                    relative[1],
-                    relative[2],
-                    relative[3]
-                );
-                // Heights (and displacements) to 1e-5 of their peak; derivatives to 1e-4.
-                assert!(relative[0] < 1e-5 && relative[1..].iter().all(|r| *r < 1e-4), "{name}: {relative:?}");
+                let all: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+                for (i, ocean) in oceans.iter().enumerate() {
+                    let on_cpu = if name == "surface" { ocean.surface(t) } else { ocean.displacement(t) };
+                    // Lattice i's block of the rows `count` lattices wide.
+                    let on_gpu: Vec<[f32; 4]> =
+                        (0..size * size).map(|k| all[(k / size) * size * count + i * size + k % size]).collect();
+                    // Each field's largest difference, as a fraction of its largest value.
+                    let relative: Vec<f32> = (0..4)
+                        .map(|c| {
+                            let largest = on_cpu.iter().map(|v| v[c].abs()).fold(0.0f32, f32::max);
+                            let off =
+                                on_gpu.iter().zip(&on_cpu).map(|(a, b)| (a[c] - b[c]).abs()).fold(0.0f32, f32::max);
+                            off / largest
+                        })
+                        .collect();
+                    println!(
+                        "FFT {size}² ({what} {}/{count}, tile {} m) {name} at t = {t} s: GPU vs CPU, each \
+                         field's largest difference over its largest value: {:.1e} {:.1e} {:.1e} {:.1e}",
+                        i + 1,
+                        2.0 * ocean.band.half_tile,
+                        relative[0],
+                        relative[1],
+                        relative[2],
+                        relative[3]
+                    );
+                    // Heights (and displacements) to 1e-5 of their peak; derivatives to 1e-4.
+                    assert!(relative[0] < 1e-5 && relative[1..].iter().all(|r| *r < 1e-4), "{name}: {relative:?}");
+                }
             }
         }
     }

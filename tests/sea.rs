@@ -90,6 +90,39 @@ fn the_sea_shows_sky_above_and_moving_waves_below() {
     assert!(moved > 0.2, "the waves move");
 }
 
+/// The cascades' FFT on the GPU (fragment passes, each cascade's last stage written into its
+/// layer of the sea's half-float maps) draws the sea the CPU's FFT does: the default sea (its
+/// duck and island) and the storm (choppy, whitecaps). A quarter of a second later the same
+/// sea differs far more.
+#[test]
+fn the_gpus_fft_draws_the_sea_the_cpus_does() {
+    let frame = |preset: Option<&str>, on_gpu: bool, frames: u32| {
+        let mut d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 1.0);
+        if let Some(name) = preset {
+            d.apply_preset(wavepool::presets::find(name).expect("a preset"));
+        }
+        d.sync_scene();
+        d.set_sea_fft_on_gpu(on_gpu);
+        render(&mut d, SIZE.0, SIZE.1, frames, 1.0 / 60.0)
+    };
+    for preset in [None, Some("storm")] {
+        let (gpu, cpu, later) = (frame(preset, true, 20), frame(preset, false, 20), frame(preset, false, 35));
+        let all = Rect(0.0, 0.0, 1.0, 1.0);
+        let (same, moved) = (gpu.changed_fraction(&cpu, all, 8), later.changed_fraction(&cpu, all, 8));
+        println!(
+            "{}: GPU's FFT against the CPU's: {:.2} % of pixels differ by over 8/255 ({:.3}/255 on average); \
+             the CPU's 0.25 s later: {:.1} %",
+            preset.unwrap_or("default sea"),
+            same * 100.0,
+            gpu.mean_abs_diff(&cpu, all),
+            moved * 100.0
+        );
+        assert!(same < 0.002, "the GPU's FFT draws another sea: {same}");
+        assert!(moved > 0.1, "the sea did not move: {moved}");
+    }
+}
+
 #[test]
 fn the_pool_comes_back_byte_for_byte_after_the_sea() {
     let paused = |d: &mut WaterDemo| {

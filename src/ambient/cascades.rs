@@ -13,7 +13,7 @@
 //! cascades holding it add up to one, and the five are scaled together to the asked
 //! significant height. Lengths in metres, angles in degrees where named so.
 
-use super::ocean::{Band, Ocean, SHORTEST_WAVE_CELLS};
+use super::ocean::{Band, Ocean, OceanNow, SHORTEST_WAVE_CELLS};
 use super::AmbientSettings;
 
 /// One cascade's lattice: its tile's side, the longest and the shortest wave it holds (0 for
@@ -234,14 +234,20 @@ impl SeaWaves {
         out
     }
 
+    /// The sea at time `t` (s), to sample at a few points: see [`SeaNow`].
+    pub fn at(&self, t: f64) -> SeaNow {
+        SeaNow { cascades: self.cascades.iter().map(|c| (c.ocean.at(t), c.angle)).collect() }
+    }
+
     /// Whether the choppy waves can break anywhere: the Jacobian det(I − M) of the map
     /// x₀ ↦ x₀ − λ D (M symmetric, Frobenius norm s) is at least (1 − s/√2)² while s ≤ 1/√2
     /// (then at least 1/4; past it (1 − s²)/2), so whitecaps (below [`WHITECAP_JACOBIAN`]
     /// and [`WHITECAP_SOFTNESS`] over, at least 1/4) need s past about a half. M is the
     /// cascades' λ ∂D/∂x₀ summed; taking them as independent, s seldom passes 3.5 times its
-    /// rms, from the lattices at one time (the sea's statistics do not change with time).
-    pub fn may_break(&self) -> bool {
-        let [surface, displacement] = self.layers(0.0);
+    /// rms, from the lattices at one time (`layers`, as [`SeaWaves::layers`] gives them: the
+    /// sea's statistics do not change with time).
+    pub fn may_break(&self, layers: &[Vec<[f32; 4]>; 2]) -> bool {
+        let [surface, displacement] = layers;
         let lattice = surface.len() / self.cascades.len().max(1);
         let mean_square: f64 = self
             .cascades
@@ -276,6 +282,45 @@ impl SeaWaves {
     pub fn variance_shares(&self) -> Vec<f64> {
         let all: f64 = self.cascades.iter().map(|c| c.ocean.variance()).sum();
         self.cascades.iter().map(|c| c.ocean.variance() / all).collect()
+    }
+}
+
+/// The sea at one moment ([`SeaWaves::at`]), for sampling a few points each frame (the
+/// floating bodies' probes): each cascade's waves summed one by one at the point
+/// ([`OceanNow`]), so the CPU needs no lattice. The GPU's lattices give the same sea between
+/// their texels to their interpolation's error.
+#[derive(Clone, Debug)]
+pub struct SeaNow {
+    /// Each cascade's waves and its turn (rad).
+    cascades: Vec<(OceanNow, f32)>,
+}
+
+impl SeaNow {
+    /// Height (m) of the choppy sea above world (x, z): the rest point carried there is
+    /// x₀ ≈ x + λ D(x) (one fixed-point step, as [`SeaWaves::height_on`]), its height the
+    /// cascades' summed there.
+    pub fn height(&self, x: f32, z: f32) -> f32 {
+        let in_frame = |angle: f32, x: f32, z: f32| {
+            let (s, c) = angle.sin_cos();
+            (c * x + s * z, -s * x + c * z)
+        };
+        let (mut x0, mut z0) = (x, z);
+        for (now, angle) in &self.cascades {
+            if now.choppiness() > 0.0 {
+                let (u, v) = in_frame(*angle, x, z);
+                let f = now.fields_at(u, v);
+                let (s, c) = angle.sin_cos();
+                let (dx, dz) = (c * f[3] - s * f[4], s * f[3] + c * f[4]);
+                (x0, z0) = (x0 + now.choppiness() * dx, z0 + now.choppiness() * dz);
+            }
+        }
+        self.cascades
+            .iter()
+            .map(|(now, angle)| {
+                let (u, v) = in_frame(*angle, x0, z0);
+                now.fields_at(u, v)[0]
+            })
+            .sum()
     }
 }
 
@@ -413,6 +458,25 @@ mod tests {
         assert!(relative < 0.1, "{relative}");
     }
 
+    #[test]
+    fn the_sums_at_a_point_give_the_lattices_choppy_sea() {
+        // The floating bodies' sea (each wave summed at the point) against the renderer's
+        // (the lattices between their texels), both carried by the choppy displacement.
+        let sea = SeaWaves::new(&breeze(), 64);
+        let t = 5.2;
+        let (layers, now) = (sea.layers(t), sea.at(t));
+        let (mut error, mut total) = (0.0f64, 0.0f64);
+        for k in 0..200 {
+            let (x, z) = (k as f32 * 6.13 - 600.0, (k * k % 89) as f32 * 4.71 - 200.0);
+            let read = sea.height_on([&layers[0], &layers[1]], x, z);
+            error += ((now.height(x, z) - read) as f64).powi(2);
+            total += (read as f64).powi(2);
+        }
+        let relative = (error / total).sqrt();
+        println!("rms difference of the choppy sea summed at points from its lattices': {:.1}%", 100.0 * relative);
+        assert!(relative < 0.1, "{relative}");
+    }
+
     /// Whitecaps (the Jacobian below [`WHITECAP_JACOBIAN`]) on a choppy storm sea, none on a
     /// calm one: the share of 1,600 points over a 500 m patch.
     #[test]
@@ -433,7 +497,7 @@ mod tests {
                 lowest = lowest.min(j);
                 capped += (j < WHITECAP_JACOBIAN) as u32;
             }
-            (capped as f32 / 1600.0, lowest, sea.may_break())
+            (capped as f32 / 1600.0, lowest, sea.may_break(&sea.layers(0.0)))
         };
         let (storm, storm_lowest, storm_breaks) = caps(20.0, 6.0);
         let (calm, calm_lowest, calm_breaks) = caps(3.0, 0.1);

@@ -75,6 +75,11 @@ pub struct WaterDemo {
     ambient_settings: AmbientSettings,
     /// Whether the FFT ocean is summed on the GPU (float render targets) or on the CPU.
     ocean_on_gpu: bool,
+    /// Whether the sea's cascades are: with float render targets, unless the adapter is a
+    /// software rasteriser. There the GPU's passes run on the CPU as well, each paying for
+    /// every texel it writes, where the CPU's radix-2 stages sum the cascades ahead of the
+    /// next frame beside the drawing (on lavapipe 117–121 against 126–130 ms a sea frame).
+    sea_fft_on_gpu: bool,
     /// The GPU's FFT passes, made when the FFT ocean is first drawn on the GPU path.
     gpu_ocean: Option<GpuOcean>,
     /// Whether the renderer holds the current ambient waves' spectrum image.
@@ -127,7 +132,8 @@ impl DemoBuild {
             float_targets: options.float_targets,
         };
         let renderer = Renderer::new(device, queue, settings, &water, self.tile_mips.as_deref().unwrap_or_default());
-        Some(WaterDemo::assemble(water, renderer, options))
+        let software = device.adapter_info().device_type == wgpu::DeviceType::Cpu;
+        Some(WaterDemo::assemble(water, renderer, options, software))
     }
 }
 
@@ -147,7 +153,8 @@ impl WaterDemo {
         }
     }
 
-    fn assemble(water: HeightField, renderer: Renderer, options: DemoOptions) -> Self {
+    /// The demo from its parts; `software`: whether the adapter is a software rasteriser.
+    fn assemble(water: HeightField, renderer: Renderer, options: DemoOptions, software: bool) -> Self {
         let mut params = Params::default();
         let applied_sim_size = params.set(ParamId::SimSize, options.sim_size as f32).value;
         let mut demo = Self {
@@ -168,6 +175,7 @@ impl WaterDemo {
             ambient: AmbientWaves::new(&AmbientSettings::default()),
             ambient_settings: AmbientSettings::default(),
             ocean_on_gpu: options.float_targets,
+            sea_fft_on_gpu: options.float_targets && !software,
             gpu_ocean: None,
             spectrum_shown: false,
             camera_scene: crate::sea::SceneKind::Pool,
@@ -321,12 +329,12 @@ impl WaterDemo {
             if self.ocean_on_gpu {
                 let size = ocean.size as u32;
                 if self.gpu_ocean.as_ref().is_none_or(|g| g.size() != size) {
-                    let made = GpuOcean::new(device, size);
+                    let made = GpuOcean::new(device, size, 1);
                     self.renderer.use_ambient_views(device, &self.water, [made.surface(), made.displacement()]);
                     self.gpu_ocean = Some(made);
                 }
                 if let Some(gpu_ocean) = &mut self.gpu_ocean {
-                    gpu_ocean.encode(queue, encoder, ocean, t);
+                    gpu_ocean.encode(queue, encoder, &[ocean], t);
                 }
             } else {
                 let surface = ocean.surface(t);

@@ -1,12 +1,14 @@
 //! The demo in the open sea (`scene` = sea): its own camera, kept beside the pool's while the
 //! other scene is shown, and its frame: the patch of simulated water round the camera's target
-//! stepped (the clicks' ripples), the cascades summed on the CPU at the simulated time, both
-//! drawn by the renderer's sea pass. The pool's water and bodies wait, as they were.
+//! stepped (the clicks' ripples), the cascades' FFT at the simulated time (on the GPU where it
+//! renders into float textures, else on the CPU), both drawn by the renderer's sea pass; the
+//! bodies ride the waves summed at their probes on the CPU. The pool's water and bodies wait,
+//! as they were.
 
 use super::{Stage, WaterDemo, STEP_DT};
-use crate::ambient::cascades::SeaWaves;
+use crate::ambient::cascades::{SeaNow, SeaWaves};
 use crate::params::ParamId;
-use crate::render::{AmbientView, SeaView, View, SEA_CASCADES};
+use crate::render::{AmbientView, SeaLattices, SeaView, View, SEA_CASCADES};
 use crate::sea::{self, island, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
 use crate::sim::{Drop, HeightField, WaveSettings};
 
@@ -14,20 +16,23 @@ use crate::sim::{Drop, HeightField, WaveSettings};
 pub(super) struct Sea {
     settings: SeaSettings,
     pub(super) waves: SeaWaves,
-    /// Whether its waves can break (`SeaWaves::may_break`): only then are whitecaps kept.
+    /// What its waves are like, from their lattices at one moment (the sea's statistics do
+    /// not change with time): whether they can break (`SeaWaves::may_break`; only then are
+    /// whitecaps kept) and each cascade's slope variance.
     may_break: bool,
+    slope_variances: Vec<f32>,
     pub(super) patch: HeightField,
-    /// The cascades summed ahead, after the last frame was submitted (while the GPU drew it),
-    /// for the fixed step the next frame was expected at: used when it comes then.
+    /// Where the device renders into no float textures: the cascades summed ahead on the CPU,
+    /// after the last frame was submitted (while the GPU drew it), for the fixed step the next
+    /// frame was expected at: used when it comes then. (Elsewhere the renderer runs their FFT
+    /// on the GPU.)
     ahead: Option<(u64, [Vec<[f32; 4]>; 2])>,
     /// The fixed steps the last frame took (the next is expected to take as many).
     last_steps: u32,
-    /// The last frame's lattices of the cascades (`SeaWaves::layers`): the waves the next
-    /// frame's bodies start from (and the tests' sea).
-    pub(super) layers: [Vec<[f32; 4]>; 2],
-    /// The fixed step `layers` were made for; `None` once they no longer hold this sea's waves
-    /// (new waves, a reset).
-    pub(super) layers_step: Option<u64>,
+    /// The waves at the last frame's fixed step, to sum at points: where the next frame's
+    /// bodies start from (and the tests' sea). `None` once they no longer hold this sea's
+    /// waves (new waves, a reset).
+    pub(super) now: Option<(u64, SeaNow)>,
     /// The floating bodies in the sea, one per kind (demo/sea_bodies.rs).
     pub(super) bodies: Vec<crate::bodies::Body>,
 }
@@ -92,9 +97,9 @@ impl WaterDemo {
             // The fog is drawn, not in the waves: a change of it makes nothing again.
             Some(sea) if sea.settings.waves() != settings.waves() => {
                 sea.waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
-                sea.may_break = sea.waves.may_break();
+                (sea.may_break, sea.slope_variances) = statistics(&sea.waves);
                 sea.ahead = None;
-                sea.layers_step = None;
+                sea.now = None;
                 sea.settings = settings;
             }
             Some(_) => {}
@@ -106,10 +111,10 @@ impl WaterDemo {
                 }
                 let waves = SeaWaves::new(&settings.waves(), SEA_LATTICE);
                 let bodies = self.sea_bodies_at_start();
-                let (may_break, layers) = (waves.may_break(), [Vec::new(), Vec::new()]);
-                let (ahead, last_steps, layers_step) = (None, 0, None);
+                let (may_break, slope_variances) = statistics(&waves);
+                let (ahead, last_steps, now) = (None, 0, None);
                 self.sea =
-                    Some(Sea { may_break, waves, settings, patch, ahead, last_steps, layers, layers_step, bodies });
+                    Some(Sea { settings, waves, may_break, slope_variances, patch, ahead, last_steps, now, bodies });
             }
         }
         self.sea.as_mut().expect("made above")
@@ -130,6 +135,14 @@ impl WaterDemo {
         self.sea_foam[3] = on;
     }
 
+    /// Whether the sea's cascades take the GPU's FFT (where the device renders into float
+    /// textures; the default except on software rasterisers) or the CPU's (for tests to
+    /// compare with).
+    #[doc(hidden)]
+    pub fn set_sea_fft_on_gpu(&mut self, on: bool) {
+        self.sea_fft_on_gpu = on && self.ocean_on_gpu;
+    }
+
     /// Puts `drop` (sea coordinates, m) in the sea's patch if the sea is drawn (kept for the
     /// patch until its first frame makes it); false in the pool.
     pub(super) fn drop_in_sea(&mut self, drop: Drop) -> bool {
@@ -148,7 +161,8 @@ impl WaterDemo {
     /// need not wait for them (it sums them itself if it comes at another time).
     pub(super) fn sum_sea_ahead(&mut self) {
         let steps_taken = self.steps_taken;
-        if let Some(sea) = self.sea.as_mut().filter(|_| self.camera_scene == SceneKind::Sea) {
+        let on_cpu = self.camera_scene == SceneKind::Sea && !self.sea_fft_on_gpu;
+        if let Some(sea) = self.sea.as_mut().filter(|_| on_cpu) {
             let next = steps_taken + sea.last_steps as u64;
             if sea.ahead.as_ref().is_none_or(|(at, _)| *at != next) {
                 // The time sim_time gives at that step.
@@ -163,15 +177,14 @@ impl WaterDemo {
         if let Some(sea) = &mut self.sea {
             sea.patch.reset(queue);
             sea.bodies = bodies;
-            sea.layers_step = None;
+            sea.now = None;
         }
     }
 
     /// Height (m) of the sea's waves above world (x, z) in the last frame drawn (without the
     /// patch's ripples), once the sea has been drawn (for tests).
     pub fn sea_height_at(&self, x: f32, z: f32) -> Option<f32> {
-        let sea = self.sea.as_ref().filter(|s| !s.layers[0].is_empty())?;
-        Some(sea.waves.height_on([&sea.layers[0], &sea.layers[1]], x, z))
+        Some(self.sea.as_ref()?.now.as_ref()?.1.height(x, z))
     }
 
     /// The sea's patch of simulated water, once the sea has been drawn (for tests).
@@ -212,13 +225,21 @@ impl WaterDemo {
         let steps = self.take_steps(frame_time);
         let (t, step) = (self.sim_time(), self.steps_taken);
         let settings = self.sea_settings();
+        let on_gpu = self.sea_fft_on_gpu;
         let sea = self.sea(device);
-        let [surface, displacement] = match sea.ahead.take() {
-            Some((at, layers)) if at == step => layers,
-            _ => sea.waves.layers(t),
+        // The waves' lattices for the sea's shader: the GPU's FFT (the renderer's), or the
+        // CPU's.
+        let texels = if on_gpu {
+            None
+        } else {
+            Some(match sea.ahead.take() {
+                Some((at, layers)) if at == step => layers,
+                _ => sea.waves.layers(t),
+            })
         };
         sea.last_steps = steps;
-        self.step_sea_bodies((steps, step), [&surface, &displacement]);
+        let now = sea.waves.at(t);
+        self.step_sea_bodies((steps, step), &now);
         let view = self.sea_scene_view();
         let sea = self.sea.as_mut().expect("made above");
         let mut sim_encoder = device.create_command_encoder(&Default::default());
@@ -229,12 +250,16 @@ impl WaterDemo {
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         sea.patch.after_submit();
-        let variances = SeaWaves::slope_variances(&surface, sea.waves.cascades.len());
         let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
         for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
-            cascades[i] = (c.angle, 2.0 * c.ocean.band.half_tile, variances[i]);
+            cascades[i] = (c.angle, 2.0 * c.ocean.band.half_tile, sea.slope_variances[i]);
         }
         let sea = self.sea.as_ref().expect("made above");
+        let oceans: Vec<_> = sea.waves.cascades.iter().map(|c| &c.ocean).collect();
+        let lattices = match &texels {
+            Some([surface, displacement]) => SeaLattices::Texels([surface, displacement]),
+            None => SeaLattices::Fft { oceans: &oceans, t },
+        };
         self.renderer.prepare(queue, encoder, &view, &sea.patch);
         let drawn = SeaView {
             camera: &self.camera,
@@ -242,8 +267,7 @@ impl WaterDemo {
             choppiness: settings.choppiness,
             crest: settings.crest_bound(),
             cascades,
-            surface: &surface,
-            displacement: &displacement,
+            lattices,
             patch: &sea.patch,
             whitecaps: self.sea_foam[0],
             shore_foam: self.sea_foam[2],
@@ -267,6 +291,13 @@ impl WaterDemo {
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
         mark(encoder, Stage::AfterScene);
         let sea = self.sea.as_mut().expect("made above");
-        (sea.layers, sea.layers_step) = ([surface, displacement], Some(step));
+        sea.now = Some((step, now));
     }
+}
+
+/// Whether `waves` can break, and each cascade's slope variance: from their lattices at one
+/// moment.
+fn statistics(waves: &SeaWaves) -> (bool, Vec<f32>) {
+    let layers = waves.layers(0.0);
+    (waves.may_break(&layers), SeaWaves::slope_variances(&layers[0], waves.cascades.len()))
 }

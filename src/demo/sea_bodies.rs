@@ -10,6 +10,7 @@ use glam::{Vec2, Vec3};
 use super::bodies::{ring, AMBIENT_RING_RADIUS};
 use super::input::Drag;
 use super::{WaterDemo, STEP_DT};
+use crate::ambient::cascades::SeaNow;
 use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
 use crate::params::ParamId;
 use crate::physics::{Bounds, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
@@ -59,12 +60,12 @@ impl WaterDemo {
 
     /// Moves the sea's bodies through this frame's `steps` fixed steps (up to fixed step `step`)
     /// on the water under them: the waves at each step, between the last frame's, if it was
-    /// drawn where these steps start, and this frame's (`layers`, `SeaWaves::layers`, read on
-    /// a ring at each body's waterline and taken linearly between the two: the same heave at
-    /// any frame rate), and the patch's ripples as the frame starts (its probes, sampled last
+    /// drawn where these steps start, and this frame's (`now`, summed on a ring at each body's
+    /// waterline and taken linearly between the two: the same heave at any frame rate), and
+    /// the patch's ripples as the frame starts (its probes, sampled last
     /// frame on the kinds' wider rings). Then tells the patch how their hulls moved in each
     /// step, to push its water by, and where to sample it for next frame.
-    pub(super) fn step_sea_bodies(&mut self, (steps, step): (u32, u64), layers: [&[[f32; 4]]; 2]) {
+    pub(super) fn step_sea_bodies(&mut self, (steps, step): (u32, u64), now: &SeaNow) {
         let s = sea::patch_scale();
         let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.in_sea(id)).collect();
         let hulls = self.sea_hulls();
@@ -88,13 +89,16 @@ impl WaterDemo {
         // The waves as this frame's steps start: the last frame's, if it drew them at that step
         // (else this frame's at both ends).
         let started = step.checked_sub(steps as u64);
-        let before = if sea.layers_step.is_some() && sea.layers_step == started {
-            [&sea.layers[0][..], &sea.layers[1][..]]
-        } else {
-            layers
+        let before = match &sea.now {
+            Some((at, waves)) if Some(*at) == started => waves,
+            _ => now,
         };
+        let still = [WaterPlane::flat(0.0); 2];
         let planes: Vec<[WaterPlane; 2]> = BodyId::all()
             .map(|id| {
+                if !shown.contains(&id) {
+                    return still;
+                }
                 let p = sea.bodies[id.0].motion.pose.position;
                 let ripples =
                     sea.patch.probes().and_then(|r| r.heights.get(id.0 * PROBES_PER_BODY..)?.get(..PROBES_PER_BODY));
@@ -103,9 +107,9 @@ impl WaterDemo {
                 let ripples: Vec<f32> = (0..PROBES_PER_BODY).map(|i| ripples.map_or(0.0, |r| r[i])).collect();
                 let ripples = WaterPlane::from_ring(&ripples, rings[id.0]);
                 let waterline = AMBIENT_RING_RADIUS * s;
-                [before, layers].map(|waves| {
+                [before, now].map(|waves| {
                     let heights: Vec<f32> =
-                        ring(Vec2::new(p.x, p.z), waterline).map(|q| sea.waves.height_on(waves, q.x, q.y)).collect();
+                        ring(Vec2::new(p.x, p.z), waterline).map(|q| waves.height(q.x, q.y)).collect();
                     WaterPlane::from_ring(&heights, waterline).plus(ripples)
                 })
             })

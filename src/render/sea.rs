@@ -2,18 +2,19 @@
 //! (its vertices come from their index, a cell about every [`GRID_CELL_PX`] pixels), and the
 //! sky pass behind it. The grid covers the screen from a margin below its bottom edge up to
 //! the horizon of [`GRID_FAR`]; the margin is what the largest waves can pull the grid's edge
-//! in by, so the moved edge never uncovers the background. The cascades' maps are filled by
-//! the caller (the CPU's FFT) each frame.
+//! in by, so the moved edge never uncovers the background. The cascades' maps are filled
+//! each frame from the GPU's FFT or the CPU's (render/sea_lattices.rs).
 
 use glam::{Vec2, Vec3};
 
 use super::resources::water_bind_groups;
 use super::sea_foam::{no_map, WhitecapMaps};
 use super::sea_island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
+use super::sea_lattices::{LatticeMaps, SeaLattices};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
-use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS, SEA_LATTICE};
+use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS};
 use crate::sim::HeightField;
 
 /// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
@@ -38,10 +39,8 @@ pub struct SeaView<'a> {
     pub crest: f32,
     /// Per cascade: its turn from the world's axes (rad), its tile (m), its slopes' variance.
     pub cascades: [(f32, f32, f32); SEA_CASCADES],
-    /// The cascades' lattices one after the other (`SeaWaves::layers`): (h, dh/dx, dh/dz,
-    /// dDx/dz) and (Dx, Dz, dDx/dx, dDz/dz) in each cascade's frame.
-    pub surface: &'a [[f32; 4]],
-    pub displacement: &'a [[f32; 4]],
+    /// The cascades' lattices at this frame's time, from the GPU's FFT or the CPU's.
+    pub lattices: SeaLattices<'a>,
     /// Whether whitecaps and the shore's foam are drawn (off only for tests to compare with).
     pub whitecaps: bool,
     pub shore_foam: bool,
@@ -74,7 +73,7 @@ struct SeaUniforms {
 /// The sea's pipelines and maps, made the first time the sea is drawn.
 pub struct SeaRenderer {
     uniforms: wgpu::Buffer,
-    maps: [wgpu::Texture; 2],
+    lattices: LatticeMaps,
     group: wgpu::BindGroup,
     /// The feature set (optics models) and the sea's variant the pipelines were built for.
     features: Features,
@@ -108,18 +107,15 @@ impl SeaRenderer {
         queue: &wgpu::Queue,
         key: (Features, SeaVariant),
         patch: &HeightField,
+        lattices: Option<LatticeMaps>,
     ) -> Self {
         let (features, variant) = key;
         let layout = sea_layout(device);
         let uniforms = gpu::uniform_buffer(device, "sea uniforms", &<SeaUniforms as bytemuck::Zeroable>::zeroed());
-        let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-        let map = |label| {
-            let (n, layers) = (SEA_LATTICE as u32, SEA_CASCADES as u32);
-            gpu::texture_2d(device, label, n, n, layers, 1, wgpu::TextureFormat::Rgba16Float, usage)
-        };
-        let maps = [map("sea surface"), map("sea displacement")];
+        // The maps (and the FFT that fills them) outlive the pipelines.
+        let lattices = lattices.unwrap_or_else(|| LatticeMaps::new(device));
         let island_map = island_map(device, queue, variant.island.is_some());
-        let group = sea_group(device, &layout, &uniforms, &maps, &island_map);
+        let group = sea_group(device, &layout, &uniforms, &lattices.views(), &island_map);
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sea frame layout"),
             entries: &[
@@ -175,7 +171,7 @@ impl SeaRenderer {
         let frame_groups = frame_groups(device, &frame_layout, &mirror, whitecaps.as_ref(), &no_whitecap_map);
         Self {
             uniforms,
-            maps,
+            lattices,
             group,
             features,
             variant,
@@ -213,15 +209,9 @@ fn sea_group(
     device: &wgpu::Device,
     layout: &wgpu::BindGroupLayout,
     uniforms: &wgpu::Buffer,
-    maps: &[wgpu::Texture; 2],
+    views: &[wgpu::TextureView; 2],
     island_map: &wgpu::Texture,
 ) -> wgpu::BindGroup {
-    let views = maps.each_ref().map(|m| {
-        m.create_view(&wgpu::TextureViewDescriptor {
-            dimension: Some(wgpu::TextureViewDimension::D2Array),
-            ..Default::default()
-        })
-    });
     let island_view = island_map.create_view(&Default::default());
     device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: Some("sea"),
@@ -260,25 +250,6 @@ fn frame_groups(
 fn layers_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     let sample_type = wgpu::TextureSampleType::Float { filterable: true };
     gpu::texture_entry(binding, wgpu::ShaderStages::VERTEX_FRAGMENT, sample_type, wgpu::TextureViewDimension::D2Array)
-}
-
-/// The half-precision float nearest `x` (round half up; under 2^-14 flushed to zero, past the
-/// largest to infinity: the waves' heights and slopes lie well between). Half floats are
-/// filterable on every backend, so the shader reads each cascade in one bilinear fetch that
-/// wraps round its tile (32-bit floats are not).
-pub(super) fn f16_bits(x: f32) -> u16 {
-    let bits = x.to_bits();
-    let sign = ((bits >> 16) & 0x8000) as u16;
-    let exponent = ((bits >> 23) & 0xff) as i32 - 127 + 15;
-    if exponent <= 0 {
-        return sign;
-    }
-    if exponent >= 31 {
-        return sign | 0x7c00;
-    }
-    let mantissa = bits & 0x7f_ffff;
-    let rounded = (((exponent as u32) << 10) | (mantissa >> 13)) + ((mantissa >> 12) & 1);
-    sign | rounded.min(0x7c00) as u16
 }
 
 /// The camera's basis scaled to its field of view: right and up times the tangents of half the
@@ -339,7 +310,8 @@ impl Renderer {
         let variant =
             SeaVariant { whitecap_map: sea.variant.whitecap_map && self.settings.float_targets, ..sea.variant };
         if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, variant)) {
-            self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch));
+            let lattices = self.sea.take().map(|s| s.lattices);
+            self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch, lattices));
         }
         let scaled = self.scaled_size(view, size);
         let bodies = super::sea_bodies::mirror_boxes(view, sea.crest * sea.choppiness);
@@ -393,10 +365,7 @@ impl Renderer {
             cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
         };
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
-        for (map, texels) in drawn.maps.iter().zip([sea.surface, sea.displacement]) {
-            let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(f16_bits)).collect();
-            gpu::write_texture_2d(queue, map, 0, bytemuck::cast_slice(&halves));
-        }
+        drawn.lattices.fill(device, queue, encoder, sea.lattices);
         let depth = self.depth_view(device, size).clone();
         let drawn = self.sea.as_mut().expect("made by encode_sea");
         let scene_groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
@@ -471,20 +440,6 @@ impl Renderer {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn half_floats_keep_the_waves_numbers_to_three_decimal_digits() {
-        for x in [0.0f32, 1.0, -2.5, 0.3337, 1.0e-3, 7.99, -0.0123] {
-            let h = f16_bits(x);
-            // Back from half precision by its definition: sign, 5-bit exponent, 10-bit fraction.
-            let (e, f) = (((h >> 10) & 0x1f) as i32, (h & 0x3ff) as f32);
-            let back = if e == 0 { 0.0 } else { (1.0 + f / 1024.0) * 2f32.powi(e - 15) };
-            let back = if h & 0x8000 != 0 { -back } else { back };
-            assert!((back - x).abs() <= x.abs() / 1024.0 + 1.0e-7, "{x} came back as {back}");
-        }
-        assert_eq!(f16_bits(1.0), 0x3c00);
-        assert_eq!(f16_bits(-2.0), 0xc000);
-    }
 
     #[test]
     fn the_grid_reaches_below_the_screen_and_up_to_the_horizon() {

@@ -75,7 +75,7 @@ pub(super) fn island_map(device: &wgpu::Device, queue: &wgpu::Queue, with_island
     let n = if with_island { island::MAP_TEXELS } else { 1 };
     let texture = gpu::texture_2d(device, "island", n, n, 1, 1, wgpu::TextureFormat::Rgba16Float, usage);
     let texels = if with_island { island::map() } else { vec![[-island::FLOOR_DEPTH, 0.0, 0.0, 0.0]] };
-    let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::sea::f16_bits)).collect();
+    let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::sea_lattices::f16_bits)).collect();
     gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&halves));
     texture
 }
