@@ -250,10 +250,6 @@ impl WaterDemo {
         mark(&mut sim_encoder, Stage::AfterSimulation);
         queue.submit([sim_encoder.finish()]);
         sea.patch.after_submit();
-        let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
-        for (i, c) in sea.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
-            cascades[i] = (c.angle, 2.0 * c.ocean.band.half_tile, sea.slope_variances[i]);
-        }
         let sea = self.sea.as_ref().expect("made above");
         let oceans: Vec<_> = sea.waves.cascades.iter().map(|c| &c.ocean).collect();
         let lattices = match &texels {
@@ -266,7 +262,7 @@ impl WaterDemo {
             fog_distance: settings.fog_distance,
             choppiness: settings.choppiness,
             crest: settings.crest_bound(),
-            cascades,
+            cascades: sea.cascades_drawn(),
             lattices,
             patch: &sea.patch,
             whitecaps: self.sea_foam[0],
@@ -285,13 +281,24 @@ impl WaterDemo {
                 0.0
             },
         };
-        // The sea's middle stage is the frame's maps: the island's mirror and the kept
-        // whitecaps (where the pool's is its caustics).
+        // The sea's middle stage is the frame's maps: the cascades' FFT, the island's mirror
+        // and the kept whitecaps (where the pool's is its caustics).
         let mut maps_done = |encoder: &mut wgpu::CommandEncoder| mark(encoder, Stage::AfterCaustics);
         self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
         mark(encoder, Stage::AfterScene);
         let sea = self.sea.as_mut().expect("made above");
         sea.now = Some((step, now));
+    }
+}
+
+impl Sea {
+    /// Per cascade as the renderer takes it: its turn (rad), its tile (m), its slopes' variance.
+    fn cascades_drawn(&self) -> [(f32, f32, f32); SEA_CASCADES] {
+        let mut cascades = [(0.0, 1.0, 0.0); SEA_CASCADES];
+        for (i, c) in self.waves.cascades.iter().enumerate().take(SEA_CASCADES) {
+            cascades[i] = (c.angle, 2.0 * c.ocean.band.half_tile, self.slope_variances[i]);
+        }
+        cascades
     }
 }
 

@@ -9,6 +9,7 @@ use glam::{Vec2, Vec3};
 
 use super::bodies::{ring, AMBIENT_RING_RADIUS};
 use super::input::Drag;
+use super::sea::Sea;
 use super::{WaterDemo, STEP_DT};
 use crate::ambient::cascades::SeaNow;
 use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
@@ -93,25 +94,13 @@ impl WaterDemo {
             Some((at, waves)) if Some(*at) == started => waves,
             _ => now,
         };
-        let still = [WaterPlane::flat(0.0); 2];
         let planes: Vec<[WaterPlane; 2]> = BodyId::all()
             .map(|id| {
-                if !shown.contains(&id) {
-                    return still;
+                if shown.contains(&id) {
+                    water_under(sea, id, rings[id.0], [before, now])
+                } else {
+                    [WaterPlane::flat(0.0); 2]
                 }
-                let p = sea.bodies[id.0].motion.pose.position;
-                let ripples =
-                    sea.patch.probes().and_then(|r| r.heights.get(id.0 * PROBES_PER_BODY..)?.get(..PROBES_PER_BODY));
-                // The patch's ripples on the wide ring, clear of those the body makes itself;
-                // the waves on a ring at its waterline, as the pool's ambient waves.
-                let ripples: Vec<f32> = (0..PROBES_PER_BODY).map(|i| ripples.map_or(0.0, |r| r[i])).collect();
-                let ripples = WaterPlane::from_ring(&ripples, rings[id.0]);
-                let waterline = AMBIENT_RING_RADIUS * s;
-                [before, now].map(|waves| {
-                    let heights: Vec<f32> =
-                        ring(Vec2::new(p.x, p.z), waterline).map(|q| waves.height(q.x, q.y)).collect();
-                    WaterPlane::from_ring(&heights, waterline).plus(ripples)
-                })
             })
             .collect();
         let bounds = sea_bounds();
@@ -203,4 +192,20 @@ impl WaterDemo {
             motion.velocity = velocity;
         }
     }
+}
+
+/// The water under body `id` of `sea` as the frame's steps start and as they end (`waves` at
+/// those moments): the plane of the waves on a ring at its waterline (as the pool's ambient
+/// waves), plus the plane of the patch's ripples on its kind's wider `ring` (m), clear of those
+/// the body makes itself (the patch's probes, sampled last frame).
+fn water_under(sea: &Sea, id: BodyId, ring_radius: f32, waves: [&SeaNow; 2]) -> [WaterPlane; 2] {
+    let p = sea.bodies[id.0].motion.pose.position;
+    let ripples = sea.patch.probes().and_then(|r| r.heights.get(id.0 * PROBES_PER_BODY..)?.get(..PROBES_PER_BODY));
+    let ripples: Vec<f32> = (0..PROBES_PER_BODY).map(|i| ripples.map_or(0.0, |r| r[i])).collect();
+    let ripples = WaterPlane::from_ring(&ripples, ring_radius);
+    let waterline = AMBIENT_RING_RADIUS * sea::patch_scale();
+    waves.map(|waves| {
+        let heights: Vec<f32> = ring(Vec2::new(p.x, p.z), waterline).map(|q| waves.height(q.x, q.y)).collect();
+        WaterPlane::from_ring(&heights, waterline).plus(ripples)
+    })
 }

@@ -101,6 +101,8 @@ pub struct SeaRenderer {
 }
 
 impl SeaRenderer {
+    /// The sea's pipelines for `key` (each variant's module built here, in the order they
+    /// share their parts: hence its length) around `lattices` if kept from before.
     fn new(
         renderer: &Renderer,
         device: &wgpu::Device,
@@ -188,6 +190,76 @@ impl SeaRenderer {
             patch_groups,
         }
     }
+}
+
+/// The grid's cells (across, up) and which of them take a variant of their own: the rows that
+/// can show the island, and the columns and rows that can show the bodies' mirror images.
+struct GridRuns {
+    cells: (u32, u32),
+    island_rows: std::ops::Range<u32>,
+    body_columns: std::ops::Range<u32>,
+    body_rows: std::ops::Range<u32>,
+}
+
+impl SeaRenderer {
+    /// Draws the grid row by row up the screen: the bodies' variant on the cells that can show
+    /// their mirror images (the columns across them in those rows), else the island's in the
+    /// rows that can show the island, else the plain grid's. Six vertices a cell.
+    fn draw_grid(&self, pass: &mut wgpu::RenderPass<'_>, runs: GridRuns) {
+        let GridRuns { cells, island_rows, body_columns, body_rows } = runs;
+        let kind = |r: u32| (body_rows.contains(&r) && !body_columns.is_empty(), island_rows.contains(&r));
+        let row = cells.0 * 6;
+        let mut start = 0;
+        while start < cells.1 {
+            let end = (start + 1..cells.1).find(|&r| kind(r) != kind(start)).unwrap_or(cells.1);
+            let (near_bodies, near_island) = kind(start);
+            match &self.island_drawing {
+                Some(island) if near_island => island.set_shallows(pass),
+                _ => pass.set_pipeline(&self.grid),
+            }
+            let (first, last) = (start * row, end * row);
+            match &self.near_bodies {
+                Some(bodies_pipelines) if near_bodies => {
+                    // Each row's cells across the bodies with their variant; between them (the
+                    // rest of one row and the start of the next, one run of vertices) the base.
+                    let columns = (body_columns.start * 6, body_columns.end * 6);
+                    let mut from = first;
+                    for r in start..end {
+                        pass.draw(from..r * row + columns.0, 0..1);
+                        from = r * row + columns.1;
+                    }
+                    pass.draw(from..last, 0..1);
+                    pass.set_pipeline(&bodies_pipelines[usize::from(near_island)]);
+                    for r in start..end {
+                        pass.draw(r * row + columns.0..r * row + columns.1, 0..1);
+                    }
+                }
+                _ => pass.draw(first..last, 0..1),
+            }
+            start = end;
+        }
+    }
+}
+
+/// The sea's uniforms for a target of `size` pixels, the grid's layout (its screen rectangle
+/// and cells) and the camera's up vector scaled to the field of view.
+fn sea_uniforms(sea: &SeaView<'_>, size: (u32, u32)) -> (SeaUniforms, ([f32; 4], (u32, u32)), Vec3) {
+    let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
+    let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
+    let uniforms = SeaUniforms {
+        eye: sea.camera.eye().extend(1.0).to_array(),
+        right: right.extend(0.0).to_array(),
+        up: up.extend(0.0).to_array(),
+        forward: forward.extend(0.0).to_array(),
+        grid: rect,
+        cells: [cells.0 as f32, cells.1 as f32, angle, 0.0],
+        waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), 0.0, 0.0],
+        foam: [f32::from(u8::from(sea.whitecaps)), f32::from(u8::from(sea.shore_foam)), sea.crest, sea.whitecaps_kept],
+        mirror: [1.0 / size.0.max(1) as f32, 1.0 / size.1.max(1) as f32, 0.0, 0.0],
+        fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
+        cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
+    };
+    (uniforms, (rect, cells), up)
 }
 
 /// The layout of the sea's group 2: its uniforms, the cascades' maps, the island's map.
@@ -344,26 +416,7 @@ impl Renderer {
             drawn.frame_groups =
                 frame_groups(device, &drawn.frame_layout, &drawn.mirror, whitecaps, &drawn.no_whitecap_map);
         }
-        let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
-        let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
-        let u = SeaUniforms {
-            eye: sea.camera.eye().extend(1.0).to_array(),
-            right: right.extend(0.0).to_array(),
-            up: up.extend(0.0).to_array(),
-            forward: forward.extend(0.0).to_array(),
-            grid: rect,
-            cells: [cells.0 as f32, cells.1 as f32, angle, 0.0],
-            waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), 0.0, 0.0],
-            foam: [
-                f32::from(u8::from(sea.whitecaps)),
-                f32::from(u8::from(sea.shore_foam)),
-                sea.crest,
-                sea.whitecaps_kept,
-            ],
-            mirror: [1.0 / size.0.max(1) as f32, 1.0 / size.1.max(1) as f32, 0.0, 0.0],
-            fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
-            cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
-        };
+        let (u, (rect, cells), up) = sea_uniforms(sea, size);
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
         drawn.lattices.fill(device, queue, encoder, sea.lattices);
         let depth = self.depth_view(device, size).clone();
@@ -389,9 +442,7 @@ impl Renderer {
                 mesh.draw(&mut pass);
             }
         }
-        // Row by row up the grid: the bodies' variant where it can show their mirror images
-        // (the columns across them in those rows), else the island's where it can show the
-        // island, else the plain grid's.
+        // Which cells can show the island and which the bodies' mirror images.
         let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
         let reach = (sea.crest, up.length());
         let island_rows = drawn.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
@@ -399,37 +450,7 @@ impl Renderer {
             Some(_) => cells_showing(bodies, view_proj, rect, cells, (sea.crest, 0.0)),
             None => (0..0, 0..0),
         };
-        let kind = |r: u32| (body_rows.contains(&r) && !body_columns.is_empty(), island_rows.contains(&r));
-        let row = cells.0 * 6;
-        let mut start = 0;
-        while start < cells.1 {
-            let end = (start + 1..cells.1).find(|&r| kind(r) != kind(start)).unwrap_or(cells.1);
-            let (near_bodies, near_island) = kind(start);
-            match &drawn.island_drawing {
-                Some(island) if near_island => island.set_shallows(&mut pass),
-                _ => pass.set_pipeline(&drawn.grid),
-            }
-            let (first, last) = (start * row, end * row);
-            match &drawn.near_bodies {
-                Some(bodies_pipelines) if near_bodies => {
-                    // Each row's cells across the bodies with their variant; between them (the
-                    // rest of one row and the start of the next, one run of vertices) the base.
-                    let columns = (body_columns.start * 6, body_columns.end * 6);
-                    let mut from = first;
-                    for r in start..end {
-                        pass.draw(from..r * row + columns.0, 0..1);
-                        from = r * row + columns.1;
-                    }
-                    pass.draw(from..last, 0..1);
-                    pass.set_pipeline(&bodies_pipelines[usize::from(near_island)]);
-                    for r in start..end {
-                        pass.draw(r * row + columns.0..r * row + columns.1, 0..1);
-                    }
-                }
-                _ => pass.draw(first..last, 0..1),
-            }
-            start = end;
-        }
+        drawn.draw_grid(&mut pass, GridRuns { cells, island_rows, body_columns, body_rows });
         if let Some(island) = &drawn.island_drawing {
             island.draw_land(&mut pass);
         }
