@@ -396,11 +396,14 @@ fn the_grid_view_outlines_cells_of_the_same_size_on_screen() {
 
 /// A storm for 100,000 fixed steps (about 14 minutes of sea): the clicks' patch on the CPU
 /// reference (which runs the GPU's arithmetic), under drops as wild as a click can make and
-/// wilder, stays finite and within its bound; the storm's waves at that time are finite too.
+/// wilder, stays finite and within its bound; the duck rides the storm's waves all along
+/// (its physics on the waves summed at its ring, as the demo steps it, ten steps a frame)
+/// and stays finite and on the water; the storm's lattices at the end are finite too.
 #[test]
 fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     use wavepool::ambient::cascades::SeaWaves;
-    use wavepool::sea::{patch_wave_speed, SeaSettings, PATCH_DAMPING, PATCH_HALF_WIDTH, SEA_LATTICE};
+    use wavepool::physics::{Bounds, FloatingBody, Pose, Shape, WaterPlane};
+    use wavepool::sea::{patch_scale, patch_wave_speed, SeaSettings, PATCH_DAMPING, PATCH_HALF_WIDTH, SEA_LATTICE};
     use wavepool::sim::cpu::CpuHeightField;
     use wavepool::sim::{Drop, SplitMix64, WaveSettings, MAX_HEIGHT};
     let steps = 100_000u32;
@@ -409,6 +412,21 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     let settings = WaveSettings { wave_speed: patch_wave_speed(), damping: PATCH_DAMPING, absorbing_walls: true };
     let mut rng = SplitMix64(29);
     let w = PATCH_HALF_WIDTH;
+    // The storm's waves, and the duck on them as the sea enlarges it.
+    let mut params = wavepool::params::Params::default();
+    let mut camera = wavepool::sea::default_camera();
+    wavepool::presets::find("storm").expect("the storm preset").apply(&mut params, &mut camera);
+    let storm = SeaSettings::from_values(|n| params.get_by_name(n).expect("a sea parameter"));
+    let waves = SeaWaves::new(&storm.waves(), SEA_LATTICE);
+    let (kind, s) = (wavepool::demo::BodyId(1).kind(), patch_scale());
+    let value = |name: &str| params.get_by_name(name).expect("a body parameter");
+    let hull: Vec<_> = (kind.hull)(&value).into_iter().map(|e| e.scaled(s)).collect();
+    let shape =
+        Shape { hull: &hull, centre_of_mass: kind.centre_of_mass * s, density: (kind.density)(&value), scale: s };
+    let mut duck = FloatingBody::at(Pose::at(glam::Vec3::new(0.0, shape.floating_height(0.0), 0.0)));
+    let ring = (kind.probe_ring)(&value) * s;
+    let bounds = Bounds { least: glam::Vec3::splat(-0.6 * w), most: glam::Vec3::splat(0.6 * w) };
+    let mut farthest = 0.0f32;
     for i in 0..steps / 10 {
         if i % 10 == 0 {
             let (x, z) = (rng.range(-1.2 * w, 1.2 * w), rng.range(-1.2 * w, 1.2 * w));
@@ -416,27 +434,38 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
             patch.add_drop(Drop { x, z, radius, strength: rng.range(-2.0, 2.0) * scale });
         }
         patch.advance(10, wavepool::demo::STEP_DT, settings);
+        let now = waves.at((i + 1) as f64 * 10.0 * wavepool::demo::STEP_DT as f64);
+        let p = duck.pose.position;
+        let heights: Vec<f32> = (0..8)
+            .map(|k| (k as f32 * std::f32::consts::TAU / 8.0).sin_cos())
+            .map(|(sin, cos)| now.height(p.x + ring * cos, p.z + ring * sin))
+            .collect();
+        let water = WaterPlane::from_ring(&heights, ring);
+        for _ in 0..10 {
+            duck.step(&shape, true, &water, wavepool::demo::STEP_DT, &bounds);
+        }
+        let finite = duck.pose.position.is_finite() && duck.velocity.is_finite() && duck.spin.is_finite();
+        assert!(finite, "the duck left the numbers at step {}: {duck:?}", (i + 1) * 10);
+        farthest = farthest.max((duck.pose.position.y - water.level).abs());
     }
     let cells = patch.cells();
     let peak = cells.iter().map(|c| c[0].abs()).fold(0.0f32, f32::max);
     let bound = 2.0 * MAX_HEIGHT * scale;
     // The storm's waves at the last step's time.
-    let mut params = wavepool::params::Params::default();
-    let mut camera = wavepool::sea::default_camera();
-    wavepool::presets::find("storm").expect("the storm preset").apply(&mut params, &mut camera);
-    let storm = SeaSettings::from_values(|n| params.get_by_name(n).expect("a sea parameter"));
-    let waves = SeaWaves::new(&storm.waves(), SEA_LATTICE);
     let t = steps as f64 * wavepool::demo::STEP_DT as f64;
     let [surface, displacement] = waves.layers(t);
     let finite = |texels: &[[f32; 4]]| texels.iter().all(|texel| texel.iter().all(|v| v.is_finite()));
     let highest = surface.iter().map(|texel| texel[0].abs()).fold(0.0f32, f32::max);
     println!(
-        "after {steps} steps: patch peak |h| {peak:.3} m (bound {bound:.2} m); the storm's waves at {t:.0} s: \
-         highest cascade crest {highest:.2} m, Jacobian at the origin {:.2}",
+        "after {steps} steps: patch peak |h| {peak:.3} m (bound {bound:.2} m); the duck at most {farthest:.2} m \
+         from the water's level under it (its crest bound {:.1} m); the storm's waves at {t:.0} s: highest \
+         cascade crest {highest:.2} m, Jacobian at the origin {:.2}",
+        storm.crest_bound(),
         waves.jacobian(0.0, 0.0, t)
     );
     assert!(cells.iter().all(|c| c.iter().all(|v| v.is_finite())), "NaN or infinity in the patch");
     assert!(peak <= bound, "the patch's height {peak} m beyond its bound {bound} m");
+    assert!(farthest < storm.crest_bound(), "the duck left the water: {farthest} m from it");
     assert!(finite(&surface) && finite(&displacement) && waves.jacobian(0.0, 0.0, t).is_finite());
 }
 
