@@ -244,7 +244,7 @@ impl SeaRenderer {
 /// The sea's uniforms for a target of `size` pixels, the grid's layout (its screen rectangle
 /// and cells) and the camera's up vector scaled to the field of view.
 fn sea_uniforms(sea: &SeaView<'_>, size: (u32, u32)) -> (SeaUniforms, ([f32; 4], (u32, u32)), Vec3) {
-    let (rect, cells, angle) = grid_layout(sea.camera, sea.crest * (1.0 + sea.choppiness), size);
+    let (rect, cells, angle) = grid_layout(sea.camera, (sea.crest, sea.crest * sea.choppiness), size);
     let (right, up, forward) = camera_basis(sea.camera, size.0 as f32 / size.1.max(1) as f32);
     let uniforms = SeaUniforms {
         eye: sea.camera.eye().extend(1.0).to_array(),
@@ -324,6 +324,55 @@ fn layers_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
     gpu::texture_entry(binding, wgpu::ShaderStages::VERTEX_FRAGMENT, sample_type, wgpu::TextureViewDimension::D2Array)
 }
 
+/// The least margin (NDC) past the screen's bottom and side edges that keeps the grid's edge off
+/// the screen however the waves move it, up to [`MAX_GRID_MARGIN`]: found by halving, each try
+/// heaving the edge's nearest points (the bottom's corners, quarters and middle, and the sides
+/// a quarter and half way up) by up to `crest` and carrying them up to `carry` (m) each way
+/// (27 moves). Near water seen steeply moves the most: there the waves' reach is a large angle.
+fn grid_margin(camera: &OrbitCamera, aspect: f32, (crest, carry): (f32, f32)) -> f32 {
+    let (right, up, forward) = camera_basis(camera, aspect);
+    let (eye, view_proj) = (camera.eye(), camera.view_projection(aspect));
+    let moves: Vec<Vec3> = (0..27)
+        .map(|i| {
+            let across = Vec2::new((i % 3) as f32 - 1.0, (i / 3 % 3) as f32 - 1.0).normalize_or_zero() * carry;
+            Vec3::new(across.x, ((i / 9) as f32 - 1.0) * crest, across.y)
+        })
+        .collect();
+    // Whether every moved point of the edge at `margin` stays past it on its own axis.
+    let holds = |margin: f32| {
+        let edge = 1.0 + margin;
+        let points = [-1.0, -0.5, 0.0, 0.5, 1.0].map(|x| (Vec2::new(x * edge, -edge), 1));
+        let sides = [-0.5, 0.0].into_iter().flat_map(|y| [-1.0, 1.0].map(|x| (Vec2::new(x * edge, y * edge), 0)));
+        points.into_iter().chain(sides).all(|(ndc, axis)| {
+            let ray = forward + right * ndc.x + up * ndc.y;
+            if ray.y >= 0.0 {
+                return true; // no water there
+            }
+            let point = eye + ray * (eye.y / -ray.y);
+            moves.iter().all(|m| {
+                let clip = view_proj * (point + *m).extend(1.0);
+                clip.w <= 0.0 || [clip.x, clip.y][axis] / clip.w * ndc[axis].signum() >= 1.0
+            })
+        })
+    };
+    if !holds(MAX_GRID_MARGIN) {
+        return MAX_GRID_MARGIN;
+    }
+    let (mut least, mut most) = (0.02, MAX_GRID_MARGIN);
+    if holds(least) {
+        return least;
+    }
+    for _ in 0..12 {
+        let mid = 0.5 * (least + most);
+        if holds(mid) {
+            most = mid;
+        } else {
+            least = mid;
+        }
+    }
+    most
+}
+
 /// The camera's basis scaled to its field of view: right and up times the tangents of half the
 /// field across and down, and forward.
 fn camera_basis(camera: &OrbitCamera, aspect: f32) -> (Vec3, Vec3, Vec3) {
@@ -335,17 +384,13 @@ fn camera_basis(camera: &OrbitCamera, aspect: f32) -> (Vec3, Vec3, Vec3) {
 }
 
 /// The grid's screen rectangle (NDC x from, x to, y from, y to), its cells across and down,
-/// and a cell's angle (rad), for a target of `size` pixels.
-/// `reach`: how far (m) the waves can move a point of the grid (their crest's height and
-/// sideways carry).
-fn grid_layout(camera: &OrbitCamera, reach: f32, size: (u32, u32)) -> ([f32; 4], (u32, u32), f32) {
+/// and a cell's angle (rad), for a target of `size` pixels. `(crest, carry)`: how far (m) the
+/// waves can heave a point of the grid and carry it sideways.
+fn grid_layout(camera: &OrbitCamera, (crest, carry): (f32, f32), size: (u32, u32)) -> ([f32; 4], (u32, u32), f32) {
     let aspect = size.0 as f32 / size.1.max(1) as f32;
     let (_, up, forward) = camera_basis(camera, aspect);
     let eye = camera.eye();
-    // The margin: the largest sideways carry and heave, seen at the nearest water in view.
-    let bottom = (forward - up).normalize();
-    let nearest = if bottom.y < 0.0 { eye.y / -bottom.y } else { GRID_FAR };
-    let margin = (reach / (nearest * up.length())).clamp(0.02, MAX_GRID_MARGIN);
+    let margin = grid_margin(camera, aspect, (crest, carry));
     // The horizon of the grid's far edge, straight ahead.
     let ahead = Vec2::new(forward.x, forward.z).normalize_or(Vec2::X) * GRID_FAR;
     let far_edge = Vec3::new(ahead.x, -eye.y, ahead.y);
@@ -465,11 +510,74 @@ mod tests {
     #[test]
     fn the_grid_reaches_below_the_screen_and_up_to_the_horizon() {
         let camera = crate::sea::default_camera();
-        let (rect, cells, angle) = grid_layout(&camera, 2.4, (800, 600));
+        let (rect, cells, angle) = grid_layout(&camera, (1.2, 1.2), (800, 600));
         println!("grid {rect:?}, {cells:?} cells, {angle} rad a cell");
         assert!(rect[0] < -1.0 && rect[1] > 1.0 && rect[2] < -1.0, "a margin past the screen's edges");
         // Looking 9° down with a 22.5° half field the horizon is on the screen's upper half.
         assert!(rect[3] > 0.0 && rect[3] < 1.0, "the grid stops at the horizon, {}", rect[3]);
         assert!(cells.0 <= GRID_MAX_CELLS.0 && cells.1 <= GRID_MAX_CELLS.1 && cells.0 >= 100);
+    }
+
+    #[test]
+    fn the_grids_edges_stay_off_the_screen_however_the_waves_move_them() {
+        // A storm (crest 5 m, choppiness 2): each point of the grid's bottom and side edges on
+        // the sea plane, heaved up to the crest and carried sideways up to λ crest in any of
+        // eight directions, still projects outside the screen, for eyes from over the crests
+        // to 600 m away, 2-89 degrees down.
+        let (crest, choppiness) = (5.0, 2.0);
+        let directions: Vec<Vec3> = (0..27)
+            .map(|i| {
+                let carry = Vec2::new((i % 3) as f32 - 1.0, (i / 3 % 3) as f32 - 1.0).normalize_or_zero();
+                Vec3::new(carry.x * choppiness * crest, ((i / 9) as f32 - 1.0) * crest, carry.y * choppiness * crest)
+            })
+            .collect();
+        let (mut cameras, mut clamped, mut worst) = (0, 0, f32::MIN);
+        for pitch in [2.0, 5.0, 10.0, 20.0, 45.0, 89.0] {
+            for distance in [3.0, 20.0, 60.0, 200.0, 600.0] {
+                let mut camera = crate::sea::default_camera();
+                (camera.pitch, camera.distance) = (pitch, distance);
+                camera.clamp();
+                if camera.eye().y < crest + crate::sea::EYE_OVER_CRESTS {
+                    continue; // the demo lifts such a view over the crests
+                }
+                let (rect, _, _) = grid_layout(&camera, (crest, choppiness * crest), (800, 600));
+                if rect[2] <= -1.0 - MAX_GRID_MARGIN {
+                    clamped += 1; // past the margin's cap the cells would spread thin
+                    continue;
+                }
+                cameras += 1;
+                let view_proj = camera.view_projection(800.0 / 600.0);
+                let (right, up, forward) = camera_basis(&camera, 800.0 / 600.0);
+                let on_sea = |ndc: Vec2| {
+                    let ray = forward + right * ndc.x + up * ndc.y;
+                    (ray.y < 0.0).then(|| camera.eye() + ray * (camera.eye().y / -ray.y))
+                };
+                // Bottom edge (the screen's y below -1), left and right (x beyond -1 and 1).
+                for k in 0..=40 {
+                    let along = k as f32 / 40.0;
+                    let edges = [
+                        (Vec2::new(rect[0] + (rect[1] - rect[0]) * along, rect[2]), 1),
+                        (Vec2::new(rect[0], rect[2] + (rect[3] - rect[2]) * along), 0),
+                        (Vec2::new(rect[1], rect[2] + (rect[3] - rect[2]) * along), 0),
+                    ];
+                    for (ndc, axis) in edges {
+                        let Some(point) = on_sea(ndc) else { continue };
+                        for d in &directions {
+                            let clip = view_proj * (point + *d).extend(1.0);
+                            if clip.w <= 0.0 {
+                                continue; // behind the eye: not on the screen either
+                            }
+                            let moved = [clip.x / clip.w, clip.y / clip.w][axis] * ndc[axis].signum();
+                            // How far inside the screen's edge it came (NDC; negative: outside).
+                            worst = worst.max(1.0 - moved);
+                        }
+                    }
+                }
+            }
+        }
+        println!(
+            "{cameras} views: the grid's edge moved at most {worst:.3} into the screen (NDC); {clamped} past the cap"
+        );
+        assert!(cameras >= 12 && worst <= 0.0, "the waves pull the grid's edge onto the screen by {worst}");
     }
 }
