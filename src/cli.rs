@@ -300,7 +300,7 @@ fn render(o: &RenderArgs) -> Result<(), String> {
 /// What one timed frame gave: its wall-clock time and its stages' times (ms).
 struct FrameTimes {
     frame_ms: f64,
-    stage_ms: Option<[f64; 3]>,
+    stage_ms: Option<[f64; 4]>,
 }
 
 /// Times a frame with GPU timestamps at the stage marks (read once the GPU is idle).
@@ -347,7 +347,10 @@ fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &Offscre
     gpu.queue.submit([encoder.finish()]);
     demo.after_submit();
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-    FrameTimes { frame_ms: start.elapsed().as_secs_f64() * 1e3, stage_ms: Some([times[0], times[1], times[2]]) }
+    FrameTimes {
+        frame_ms: start.elapsed().as_secs_f64() * 1e3,
+        stage_ms: Some([times[0], times[1], times[2], times[3]]),
+    }
 }
 
 /// The value at fraction `p` of sorted `values`.
@@ -400,7 +403,12 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
         "sim_size": o.frame.start.demo_options().sim_size,
         "steps_per_frame": (1.0 / 60.0 / STEP_DT).round(),
         "frame_ms": { "median": round(percentile(&frame_ms, 0.5)), "p95": round(percentile(&frame_ms, 0.95)) },
-        "stage_ms": { "simulation": round(stage(0)), "caustics": round(stage(1)), "scene": round(stage(2)) },
+        "stage_ms": {
+            "simulation": round(stage(0)),
+            "waves": round(stage(1)),
+            "caustics": round(stage(2)),
+            "scene": round(stage(3)),
+        },
         "stage_timing": if timer.is_some() {
             "gpu timestamps between stages"
         } else {
@@ -413,12 +421,12 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// The sea's stages under their own names (its frame marks the same three), and, timed here
+/// The sea's stages under their own names (its frame marks the same four), and, timed here
 /// apart (the median of ten): the GPU's FFT of its cascades alone (submitted and waited for),
-/// the CPU's FFT that devices without float targets take instead (`SeaWaves::layers`), and
-/// the CPU's sums for a body's probes (the waves at two moments on a ring of eight points).
-/// The middle stage runs from the patch's end to the sea pass: the cascades' FFT and their
-/// copy into the sea's maps, the island's mirror, the kept whitecaps.
+/// the CPU's FFT that devices without float targets and software rasterisers take instead
+/// (`SeaWaves::layers`), and the CPU's sums for a body's probes (the waves at two moments on a
+/// ring of eight points). The waves' stage is the cascades' FFT into the sea's maps (or their
+/// upload, on the CPU's path); the maps' stage the island's mirror and the kept whitecaps.
 fn sea_stages(
     gpu: &HeadlessGpu,
     demo: &WaterDemo,
@@ -461,9 +469,10 @@ fn sea_stages(
         "fft_cpu_ms": fft_cpu_ms,
         "body_cpu_ms": body_cpu_ms,
         "patch_ms": round(stage(0)),
-        "maps_ms": round(stage(1)),
-        "maps": "the cascades' FFT and their copy into the sea's maps, the island's mirror, the kept whitecaps",
-        "sea_and_sky_ms": round(stage(2)),
+        "waves_ms": round(stage(1)),
+        "reflection_ms": round(stage(2)),
+        "reflection": "the island's mirror and the kept whitecaps",
+        "sea_and_sky_ms": round(stage(3)),
     })
 }
 

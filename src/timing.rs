@@ -1,6 +1,7 @@
-//! GPU time per stage of a frame from timestamp queries at four marks (the frame's start, the
-//! end of each of its three stages: for the demo simulation, caustics, scene), read back
-//! without waiting (one to a few frames late), for the viewer's readout and the bench.
+//! GPU time per stage of a frame from timestamp queries at five marks (the frame's start, the
+//! end of each of its four stages: for the demo simulation, waves, caustics (the sea's maps),
+//! scene), read back without waiting (one to a few frames late), for the viewer's readout and
+//! the bench.
 
 use crate::gpu::AsyncReadback;
 
@@ -10,13 +11,16 @@ use crate::gpu::AsyncReadback;
 pub const TIMESTAMP_FEATURES: wgpu::Features =
     wgpu::Features::TIMESTAMP_QUERY.union(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS);
 
-/// Timestamps at the four marks of a frame.
+/// Marks a frame has: its start and the end of each stage.
+const MARKS: u32 = 5;
+
+/// Timestamps at the marks of a frame.
 pub struct StageTimer {
     queries: wgpu::QuerySet,
     resolve: wgpu::Buffer,
     readback: AsyncReadback,
     period_ns: f32,
-    latest: Option<[f64; 3]>,
+    latest: Option<[f64; 4]>,
     /// Timestamps may be written between passes (else: by empty compute passes).
     inside_encoders: bool,
 }
@@ -30,25 +34,25 @@ impl StageTimer {
         let queries = device.create_query_set(&wgpu::QuerySetDescriptor {
             label: Some("stage timestamps"),
             ty: wgpu::QueryType::Timestamp,
-            count: 4,
+            count: MARKS,
         });
         let resolve = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("stage timestamps"),
-            size: 32,
+            size: 8 * MARKS as u64,
             usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
             mapped_at_creation: false,
         });
         Some(Self {
             queries,
             resolve,
-            readback: AsyncReadback::new(device, "stage timestamps readback", 32),
+            readback: AsyncReadback::new(device, "stage timestamps readback", 8 * MARKS as u64),
             period_ns: queue.get_timestamp_period(),
             latest: None,
             inside_encoders: device.features().contains(wgpu::Features::TIMESTAMP_QUERY_INSIDE_ENCODERS),
         })
     }
 
-    /// Writes the timestamp of mark `index` (0…3; `WaterDemo::encode_frame`'s stages in order).
+    /// Writes the timestamp of mark `index` (0…4; `WaterDemo::encode_frame`'s stages in order).
     pub fn mark(&self, encoder: &mut wgpu::CommandEncoder, index: u32) {
         if self.inside_encoders {
             encoder.write_timestamp(&self.queries, index);
@@ -69,17 +73,17 @@ impl StageTimer {
     pub fn finish(&mut self, encoder: &mut wgpu::CommandEncoder) {
         self.collect();
         if let Some(buffer) = self.readback.record() {
-            encoder.resolve_query_set(&self.queries, 0..4, &self.resolve, 0);
-            encoder.copy_buffer_to_buffer(&self.resolve, 0, buffer, 0, 32);
+            encoder.resolve_query_set(&self.queries, 0..MARKS, &self.resolve, 0);
+            encoder.copy_buffer_to_buffer(&self.resolve, 0, buffer, 0, 8 * MARKS as u64);
         }
     }
 
     /// Takes a completed read into [`StageTimer::latest`], if there is one.
     pub fn collect(&mut self) {
         if let Some(bytes) = self.readback.take() {
-            let ticks: [u64; 4] = bytemuck::pod_read_unaligned(&bytes[..32]);
+            let ticks: [u64; MARKS as usize] = bytemuck::pod_read_unaligned(&bytes[..8 * MARKS as usize]);
             let ms = |a: usize, b: usize| ticks[b].saturating_sub(ticks[a]) as f64 * self.period_ns as f64 / 1.0e6;
-            self.latest = Some([ms(0, 1), ms(1, 2), ms(2, 3)]);
+            self.latest = Some([ms(0, 1), ms(1, 2), ms(2, 3), ms(3, 4)]);
         }
     }
 
@@ -88,8 +92,8 @@ impl StageTimer {
         self.readback.after_submit();
     }
 
-    /// Milliseconds of (simulation, caustics, scene) of a recent frame.
-    pub fn latest(&self) -> Option<[f64; 3]> {
+    /// Milliseconds of (simulation, waves, caustics, scene) of a recent frame.
+    pub fn latest(&self) -> Option<[f64; 4]> {
         self.latest
     }
 }

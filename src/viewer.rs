@@ -222,8 +222,8 @@ impl Viewer {
             ui.separator();
             ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
             match self.timer.as_ref().and_then(|t| t.latest()) {
-                Some([sim, caustics, scene]) => ui.label(format!(
-                    "GPU: simulation {sim:.1} ms, caustics {caustics:.1} ms, scene {scene:.1} ms"
+                Some([sim, waves, caustics, scene]) => ui.label(format!(
+                    "GPU: simulation {sim:.1} ms, waves {waves:.1} ms, caustics {caustics:.1} ms, scene {scene:.1} ms"
                 )),
                 None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
                 None => ui.label("GPU time: waiting for the first timestamps"),

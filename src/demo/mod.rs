@@ -44,6 +44,8 @@ pub const MAX_STEPS_PER_FRAME: u32 = STEPS_PER_SECOND / REAL_TIME_DOWN_TO_FPS;
 pub enum Stage {
     Start,
     AfterSimulation,
+    /// After the waves that move on their own: the pool's FFT ocean, the sea's cascades.
+    AfterWaves,
     AfterCaustics,
     AfterScene,
 }
@@ -404,6 +406,7 @@ impl WaterDemo {
             self.spectrum_shown = true;
         }
         self.encode_ocean(device, queue, encoder);
+        mark(encoder, Stage::AfterWaves);
         self.renderer.prepare(queue, encoder, &view, &self.water);
         self.renderer.encode_caustics(device, encoder, &view, &self.water);
         mark(encoder, Stage::AfterCaustics);

@@ -281,10 +281,12 @@ impl WaterDemo {
                 0.0
             },
         };
-        // The sea's middle stage is the frame's maps: the cascades' FFT, the island's mirror
-        // and the kept whitecaps (where the pool's is its caustics).
-        let mut maps_done = |encoder: &mut wgpu::CommandEncoder| mark(encoder, Stage::AfterCaustics);
-        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut maps_done);
+        // The sea's waves' stage is its cascades' FFT; its middle stage the frame's maps: the
+        // island's mirror and the kept whitecaps (where the pool's is its caustics).
+        let mut marks = |encoder: &mut wgpu::CommandEncoder, maps: bool| {
+            mark(encoder, if maps { Stage::AfterCaustics } else { Stage::AfterWaves })
+        };
+        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut marks);
         mark(encoder, Stage::AfterScene);
         let sea = self.sea.as_mut().expect("made above");
         sea.now = Some((step, now));

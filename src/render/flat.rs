@@ -458,8 +458,8 @@ pub struct ModeCosts {
 
 impl ModeCosts {
     /// Takes a frame's stage times ([`StageTimer::latest`]) drawn in `mode`.
-    pub fn observe(&mut self, mode: RenderMode, stages: [f64; 3]) {
-        let drawing = stages[1] + stages[2];
+    pub fn observe(&mut self, mode: RenderMode, stages: [f64; 4]) {
+        let drawing = stages[2] + stages[3];
         let slot = &mut self.ms[mode as usize];
         *slot = Some(slot.map_or(drawing, |old| 0.9 * old + 0.1 * drawing));
     }

@@ -421,7 +421,7 @@ impl Renderer {
         size: (u32, u32),
         view: &super::View,
         sea: &SeaView<'_>,
-        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder),
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
         let features = Features::of(view);
         let variant =
@@ -451,7 +451,7 @@ impl Renderer {
         encoder: &mut wgpu::CommandEncoder,
         (target, size): (&wgpu::TextureView, (u32, u32)),
         (sea, bodies): (&SeaView<'_>, &[(Vec3, Vec3)]),
-        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder),
+        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
         let drawn = self.sea.as_mut().expect("made by encode_sea");
         let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
@@ -464,6 +464,7 @@ impl Renderer {
         let (u, (rect, cells), up) = sea_uniforms(sea, size);
         queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
         drawn.lattices.fill(device, queue, encoder, sea.lattices);
+        mark(encoder, false);
         let depth = self.depth_view(device, size).clone();
         let drawn = self.sea.as_mut().expect("made by encode_sea");
         let scene_groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
@@ -476,7 +477,7 @@ impl Renderer {
         if let Some(island) = &drawn.island_drawing {
             island.draw_mirrored(encoder, &drawn.mirror, &groups[..3]);
         }
-        mark(encoder);
+        mark(encoder, true);
         let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
