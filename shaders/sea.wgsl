@@ -157,7 +157,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     var removed = 0.0;
     var finest = vec2<f32>(0.0); // the last cascade's slope in its frame (shallows_caustics)
     for (var c = 0; c < CASCADES; c++) {
-        let w = cascade_weight(c, footprint);
+        let w = slope_weight(c, footprint);
         let s = cascade_texel(sea_surface, c, to_cascade(c, in.rest), sea.cascades[c].z).yz;
         finest = s;
         slope += w * from_cascade(c, s);

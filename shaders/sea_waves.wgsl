@@ -5,6 +5,9 @@
 
 // A cascade is whole while a footprint spans at most FADE_TEXELS of its texels, gone at twice.
 const FADE_TEXELS: f32 = 2.0;
+// Its slopes, which the glint magnifies, fade a texel a pixel sooner: its shortest waves (four
+// texels) then span four pixels or more, and the sun's glitter path does not speckle.
+const SLOPE_FADE_TEXELS: f32 = 1.0;
 // Distance (m) standing for "to infinity" along a ray into the sky.
 const FAR_AWAY: f32 = 1.0e7;
 
@@ -27,8 +30,17 @@ fn from_cascade(c: i32, v: vec2<f32>) -> vec2<f32> {
 // How much of cascade c a footprint (m) keeps: 1 while its texels are finer than FADE_TEXELS
 // of them, 0 from twice that.
 fn cascade_weight(c: i32, footprint: f32) -> f32 {
+    return faded(c, footprint, FADE_TEXELS);
+}
+
+// How much of cascade c's slopes a pixel's footprint (m) keeps (SLOPE_FADE_TEXELS).
+fn slope_weight(c: i32, footprint: f32) -> f32 {
+    return faded(c, footprint, SLOPE_FADE_TEXELS);
+}
+
+fn faded(c: i32, footprint: f32, whole_to: f32) -> f32 {
     let texels = footprint * f32(SEA_LATTICE) / sea.cascades[c].z;
-    return clamp(2.0 - texels / FADE_TEXELS, 0.0, 1.0);
+    return clamp(2.0 - texels / whole_to, 0.0, 1.0);
 }
 
 // Adds cascade c's carry gradient to the world's (xx, xz, zz) in t, weighted by w: dDx/dx and
