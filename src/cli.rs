@@ -421,7 +421,7 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// The sea's stages under their own names (its frame marks the same four), and, timed here
+/// The sea's stages under their own names (its frame has the same five marks, four stages), and, timed here
 /// apart (the median of ten): the GPU's FFT of its cascades alone (submitted and waited for),
 /// the CPU's FFT that devices without float targets and software rasterisers take instead
 /// (`SeaWaves::layers`), and the CPU's sums for a body's probes (the waves at two moments on a

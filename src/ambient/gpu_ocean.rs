@@ -1,6 +1,6 @@
 //! The FFT ocean's surface made on the GPU every frame: a spectrum pass, then Stockham's
-//! stages of radix up to 8 (shaders/ambient_fft.wgsl; two along the rows and two along the
-//! columns of a 64² lattice), as full-screen fragment passes over RGBA32Float ping-pong
+//! stages of radix up to 4 (`GPU_RADIX`; shaders/ambient_fft.wgsl; three along the rows and
+//! three along the columns of a 64² lattice), as full-screen fragment passes over RGBA32Float ping-pong
 //! textures, so WebGPU and WebGL2 (with float render targets) run the same code.
 //! With choppiness each pass writes the displacement's fields too (a second target). Several
 //! lattices of one size (the sea's cascades) lie side by side in the same textures, each N
@@ -255,7 +255,8 @@ impl GpuOcean {
         queue.write_buffer(&self.passes[0].uniform, offset + 16, bytemuck::cast_slice(&bands));
     }
 
-    /// The surface the last [`GpuOcean::encode`] made (the ambient map the renderer reads).
+    /// The surface the last [`GpuOcean::encode`] made (the ambient map the renderer reads;
+    /// not written by [`GpuOcean::encode_into`] with layers).
     pub fn surface(&self) -> &wgpu::TextureView {
         self.fields[0].view(self.output)
     }

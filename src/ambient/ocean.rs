@@ -502,8 +502,9 @@ fn inverse_k(kx: f32, kz: f32) -> f32 {
     }
 }
 
-/// The GPU's largest radix: eight inputs gathered per output, so a 64-point line takes two
-/// stages and 128 points three (few passes: a software rasteriser pays dearly for each).
+/// The GPU's largest radix: four inputs gathered per output, so a 64-point line takes three
+/// stages and 128 points four (few passes: a software rasteriser pays dearly for each; radix 8
+/// gathered twice the inputs per output and came out slower on lavapipe, docs/PERFORMANCE.md).
 pub const GPU_RADIX: usize = 4;
 /// The CPU's: a gather of R inputs costs R products per output, so radix 2 (one product per
 /// output a stage, log₂ n stages) does the least work where passes cost nothing.
