@@ -254,7 +254,8 @@ async fn measure(
                      const s = d.stats();
                      return { fps: s.fps, backend: s.backend, adapter: s.adapter, simEngine: s.simEngine,
                               renderScale: s.renderScale === undefined ? null : s.renderScale,
-                              gpuMs: s.gpuMs === undefined ? null : s.gpuMs };")
+                              gpuMs: s.gpuMs === undefined ? null : s.gpuMs,
+                              stageMs: s.stageMs === undefined ? null : s.stageMs };")
                 .await
         }
         Page::Classic => Value::Null,

@@ -583,6 +583,15 @@ impl WebDemo {
             set(&costs, name, self.mode_costs.of(mode).map_or(JsValue::NULL, JsValue::from_f64));
         }
         set(&o, "gpuMs", if self.timer.is_some() { JsValue::from(costs) } else { JsValue::NULL });
+        // The latest measured frame's GPU time per stage (ms), where the browser measures it.
+        let stages = self.timer.as_ref().and_then(StageTimer::latest).map_or(JsValue::NULL, |ms| {
+            let o = js_sys::Object::new();
+            for (name, v) in ["simulation", "waves", "caustics", "scene"].iter().zip(ms) {
+                set(&o, name, v);
+            }
+            JsValue::from(o)
+        });
+        set(&o, "stageMs", stages);
         set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
         let reduced: js_sys::Array = self
             .reduced

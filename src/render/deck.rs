@@ -4,8 +4,10 @@
 
 use glam::{Vec2, Vec3};
 
+use super::View;
 use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
+use crate::sim::MAX_HEIGHT;
 use crate::sky::Daylight;
 use crate::util::push_triangle;
 
@@ -114,6 +116,40 @@ fn solve(mut a: [[f64; HORIZON_TERMS]; HORIZON_TERMS], mut b: [[f64; 3]; HORIZON
     }
     x
 }
+
+/// With the deck the eye stays above the paving, so the pool's walls are seen directly only
+/// above the lowest the water can fall (m): the simulation's bound (2 `MAX_HEIGHT`, see
+/// `sim::plan`) and the ambient waves' deepest trough (under 5 cm at their largest height), with
+/// a margin. Below it the pool shows only through the water, whose shader traces it. Software
+/// rasterisers test depth after shading (SwiftShader without the `EarlyFragmentTests` mode,
+/// which WGSL cannot ask for), so a floor drawn under the water would cost its full shading.
+pub const DRY_BAND_BOTTOM: f32 = -(2.0 * MAX_HEIGHT + 0.1);
+
+/// How many rows (pixels, from the top) of a `size` target of `view` can show the sky past the
+/// deck: a ray misses the deck only above the horizon or beyond [`DECK_EXTENT`]. Sampled every
+/// other row at nine columns (a row's rays reach farthest at its ends), plus a margin of
+/// [`SKY_ROWS_MARGIN`]; the sky's pass is held to them (software rasterisers shade every pixel
+/// a pass covers, hidden or not).
+pub fn sky_rows(view: &View, size: (u32, u32)) -> u32 {
+    let inverse = view.view_proj.inverse();
+    let shows_sky = |x: f32, y: f32| {
+        let ndc = Vec3::new(x / size.0 as f32 * 2.0 - 1.0, 1.0 - y / size.1 as f32 * 2.0, 1.0);
+        let dir = inverse.project_point3(ndc) - view.eye;
+        if dir.y >= 0.0 {
+            return true;
+        }
+        let hit = view.eye + dir * ((scene::RIM - view.eye.y) / dir.y);
+        hit.x.abs().max(hit.z.abs()) > DECK_EXTENT
+    };
+    let lowest = (0..=size.1.div_ceil(2))
+        .rev()
+        .map(|k| (2 * k).min(size.1))
+        .find(|&y| (0..=8).any(|i| shows_sky(size.0 as f32 * i as f32 / 8.0, y as f32)));
+    lowest.map_or(0, |y| (y + SKY_ROWS_MARGIN).min(size.1))
+}
+
+/// Rows added under the lowest sampled row that shows the sky (pixels).
+const SKY_ROWS_MARGIN: u32 = 4;
 
 /// The deck as four quads around the opening at the rim's height, facing up, with the pool
 /// mesh's vertex layout (position, normal).

@@ -119,7 +119,13 @@ pub fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
 /// The pool's floor and four walls up to the rim, as (position, inward normal), wound to
 /// face inwards so that walls between the eye and the pool are culled.
 pub fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, d, r) = (scene::HALF_WIDTH, scene::DEPTH, scene::RIM);
+    pool_walls(-scene::DEPTH, true)
+}
+
+/// The pool's four walls from `bottom` (m, under the rest level) up to the rim, and its floor
+/// if `floor`, laid out as [`pool_box`]'s.
+pub fn pool_walls(bottom: f32, floor: bool) -> (Vec<[f32; 6]>, Vec<u32>) {
+    let (w, d, r) = (scene::HALF_WIDTH, -bottom, scene::RIM);
     let faces: [(Vec3, [Vec3; 4]); 5] = [
         (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
         (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),
@@ -130,7 +136,7 @@ pub fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
     let mut positions = Vec::new();
     let mut vertices = Vec::new();
     let mut indices = Vec::new();
-    for (normal, corners) in faces {
+    for (normal, corners) in faces.into_iter().skip(usize::from(!floor)) {
         let base = positions.len() as u32;
         for c in corners {
             positions.push(c);

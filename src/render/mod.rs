@@ -32,7 +32,7 @@ pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS
 pub use debug_view::{DebugTexture, DebugView, REFLECTANCE_VIEW};
 pub use deck::EYE_CLEARANCE;
 use flat::FlatWater;
-use meshes::{pool_box, GridMesh, Mesh};
+use meshes::{pool_box, pool_walls, GridMesh, Mesh};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
 pub use sea::{SeaView, SEA_CASCADES};
 pub use sea_lattices::SeaLattices;
@@ -113,6 +113,9 @@ pub struct Renderer {
     /// The water surface, both sides in one draw.
     grid: GridMesh,
     pool_mesh: Mesh,
+    /// The pool's walls above [`deck::DRY_BAND_BOTTOM`]: all of the pool a scene pass with the
+    /// deck sees directly.
+    dry_band_mesh: Mesh,
     deck_mesh: Mesh,
     /// Each kind of body's mesh, in the order of `bodies::KINDS`.
     body_meshes: Vec<Mesh>,
@@ -184,6 +187,10 @@ impl Renderer {
             debug_passes: HashMap::new(),
             grid: GridMesh::new(device, settings.surface_grid.clamp(8, 1024)),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
+            dry_band_mesh: {
+                let (vertices, indices) = pool_walls(deck::DRY_BAND_BOTTOM, false);
+                Mesh::new(device, "pool's dry band", &vertices, &indices)
+            },
             deck_mesh: {
                 let (vertices, indices) = deck::deck_ring();
                 Mesh::new(device, "deck", &vertices, &indices)

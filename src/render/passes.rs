@@ -1,6 +1,7 @@
 //! The scene's passes in the order a frame draws them: the picture (ray-traced, flat or
 //! split, at the view's render scale), the flat water's textures, the scene pass itself.
 
+use super::deck;
 use super::flat::{self, FlatView};
 use super::regions;
 use super::{flat_shown, Features, Renderer, View};
@@ -230,8 +231,20 @@ impl Renderer {
                 self.grid.draw(&mut pass);
             }
         }
-        self.draw_pool(&mut pass, features);
-        self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+        if view.deck {
+            // Seen from above the deck, the pool under the water shows only through it.
+            pass.set_pipeline(&self.variants[&features].pool);
+            self.dry_band_mesh.draw(&mut pass);
+        } else {
+            self.draw_pool(&mut pass, features);
+        }
+        // Past the deck the sky shows only in the rows above its far edge.
+        let sky_rows = if view.deck { deck::sky_rows(view, size).saturating_sub(y).min(h) } else { h };
+        if sky_rows > 0 {
+            pass.set_scissor_rect(x, y, w, sky_rows);
+            self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
+            pass.set_scissor_rect(x, y, w, h);
+        }
         if self.body_outlines {
             self.draw_edges(&mut pass, features, view);
         }
