@@ -2,9 +2,8 @@
 //! the rim's height from the pool's opening out to [`DECK_EXTENT`], coping stones along the
 //! opening, paving slabs beyond, fading into the sky's haze with distance (`shaders/deck.wgsl`).
 
-use glam::{Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 
-use super::View;
 use crate::param_spec::{Control, ParamSpec};
 use crate::scene;
 use crate::sim::MAX_HEIGHT;
@@ -125,21 +124,22 @@ fn solve(mut a: [[f64; HORIZON_TERMS]; HORIZON_TERMS], mut b: [[f64; 3]; HORIZON
 /// which WGSL cannot ask for), so a floor drawn under the water would cost its full shading.
 pub const DRY_BAND_BOTTOM: f32 = -(2.0 * MAX_HEIGHT + 0.1);
 
-/// How many rows (pixels, from the top) of a `size` target of `view` can show the sky past the
-/// deck: a ray misses the deck only above the horizon or beyond [`DECK_EXTENT`]. Sampled every
-/// other row at nine columns (a row's rays reach farthest at its ends), plus a margin of
-/// [`SKY_ROWS_MARGIN`]; the sky's pass is held to them (software rasterisers shade every pixel
-/// a pass covers, hidden or not).
-pub fn sky_rows(view: &View, size: (u32, u32)) -> u32 {
-    let inverse = view.view_proj.inverse();
+/// How many rows (pixels, from the top) of a `size` target seen through `view_proj` from `eye`
+/// can show the sky past the deck: a ray misses the deck only above the horizon, beyond
+/// [`DECK_EXTENT`], or where the deck lies past the far plane. Sampled every other row at nine
+/// columns (a row's rays reach farthest at its ends), plus a margin of [`SKY_ROWS_MARGIN`]; the
+/// sky's pass is held to them (software rasterisers shade every pixel a pass covers, hidden or
+/// not).
+pub fn sky_rows(view_proj: Mat4, eye: Vec3, size: (u32, u32)) -> u32 {
+    let inverse = view_proj.inverse();
     let shows_sky = |x: f32, y: f32| {
         let ndc = Vec3::new(x / size.0 as f32 * 2.0 - 1.0, 1.0 - y / size.1 as f32 * 2.0, 1.0);
-        let dir = inverse.project_point3(ndc) - view.eye;
+        let dir = inverse.project_point3(ndc) - eye;
         if dir.y >= 0.0 {
             return true;
         }
-        let hit = view.eye + dir * ((scene::RIM - view.eye.y) / dir.y);
-        hit.x.abs().max(hit.z.abs()) > DECK_EXTENT
+        let hit = eye + dir * ((scene::RIM - eye.y) / dir.y);
+        hit.x.abs().max(hit.z.abs()) > DECK_EXTENT || view_proj.project_point3(hit).z > 1.0
     };
     let lowest = (0..=size.1.div_ceil(2))
         .rev()
@@ -185,6 +185,85 @@ pub const PARAMS: &[ParamSpec] = &[
 mod tests {
     use super::*;
     use crate::sky::SKY_RANGE;
+
+    #[test]
+    fn the_sky_is_drawn_in_every_row_where_a_pixel_can_see_past_the_deck() {
+        use crate::camera::OrbitCamera;
+        let size = (800, 600);
+        // The default view, low ones across the deck (held above it, as the demo holds them), a
+        // high one and one from the far limit.
+        let views = [(-25.0, 34.0, 3.4), (-25.0, 2.0, 3.4), (60.0, 5.0, 12.0), (150.0, 60.0, 12.0), (10.0, 1.0, 1.5)];
+        for (yaw, pitch, distance) in views {
+            let mut camera = OrbitCamera { yaw, pitch, distance, ..OrbitCamera::default() };
+            camera.keep_eye_above(scene::RIM + EYE_CLEARANCE);
+            let view_proj = camera.view_projection(size.0 as f32 / size.1 as f32);
+            let rows = sky_rows(view_proj, camera.eye(), size);
+            // Every pixel of every other column, by the same ray test as the renderer's sky.
+            let inverse = view_proj.inverse();
+            let mut lowest_sky: Option<u32> = None;
+            for y in 0..size.1 {
+                for x in (0..size.0).step_by(2) {
+                    let ndc = Vec3::new(
+                        (x as f32 + 0.5) / size.0 as f32 * 2.0 - 1.0,
+                        1.0 - (y as f32 + 0.5) / size.1 as f32 * 2.0,
+                        1.0,
+                    );
+                    let dir = inverse.project_point3(ndc) - camera.eye();
+                    let hit = camera.eye() + dir * ((scene::RIM - camera.eye().y) / dir.y);
+                    let sky = dir.y >= 0.0
+                        || hit.x.abs().max(hit.z.abs()) > DECK_EXTENT
+                        || view_proj.project_point3(hit).z > 1.0;
+                    if sky {
+                        lowest_sky = Some(y);
+                    }
+                }
+            }
+            println!("view ({yaw}°, {pitch}°, {distance} m): sky rows {rows}, lowest pixel showing sky {lowest_sky:?}");
+            match lowest_sky {
+                Some(y) => assert!(y < rows, "a pixel in row {y} shows the sky, but only {rows} rows are drawn"),
+                None => assert!(rows <= SKY_ROWS_MARGIN, "{rows} rows drawn with no sky in view"),
+            }
+            // The pass is held to what shows: no more than a few rows past the last sky pixel.
+            assert!(rows <= lowest_sky.map_or(0, |y| y + 1) + 2 * SKY_ROWS_MARGIN, "{rows} rows for {lowest_sky:?}");
+        }
+    }
+
+    #[test]
+    fn the_water_never_falls_below_the_dry_band_the_deck_shows_the_pool_in() {
+        use crate::ambient::{params, AmbientModel, AmbientSettings, AmbientWaves};
+        let spec = |name: &str| params::PARAMS.iter().find(|p| p.name == name).expect("an ambient parameter");
+        let w = scene::HALF_WIDTH;
+        let mut deepest = 0.0f32;
+        for model in [AmbientModel::Sines, AmbientModel::Modes, AmbientModel::Gerstner, AmbientModel::Fft] {
+            for wind in [spec("wind_speed").min(), spec("wind_speed").max()] {
+                let settings = AmbientSettings {
+                    wind_speed: wind,
+                    significant_height: spec("wave_height").max(),
+                    fft_size: spec("fft_size").max() as usize,
+                    ..AmbientSettings::default_for(model)
+                };
+                let waves = AmbientWaves::new(&settings);
+                for step in 0..24 {
+                    let t = step as f64 * 0.83;
+                    for j in 0..=16 {
+                        for i in 0..=16 {
+                            let (x, z) = (w * (i as f32 / 8.0 - 1.0), w * (j as f32 / 8.0 - 1.0));
+                            deepest = deepest.min(waves.sample(x, z, t)[0]);
+                        }
+                    }
+                }
+            }
+        }
+        let lowest = -2.0 * MAX_HEIGHT + deepest;
+        println!(
+            "deepest ambient trough {:.4} m at the largest wave height; lowest water {:.4} m; dry band from {:.4} m",
+            deepest, lowest, DRY_BAND_BOTTOM
+        );
+        assert!(
+            lowest > DRY_BAND_BOTTOM + 0.02,
+            "the water can fall to {lowest} m, under the dry band's {DRY_BAND_BOTTOM} m"
+        );
+    }
 
     /// The fit's colour towards horizontal direction d, as deck_shade.wgsl's horizon_colour.
     fn fitted(fit: &[[f32; 4]; HORIZON_TERMS], d: Vec2, sun: Vec3) -> Vec3 {

@@ -239,7 +239,8 @@ impl Renderer {
             self.draw_pool(&mut pass, features);
         }
         // Past the deck the sky shows only in the rows above its far edge.
-        let sky_rows = if view.deck { deck::sky_rows(view, size).saturating_sub(y).min(h) } else { h };
+        let sky_rows =
+            if view.deck { deck::sky_rows(view.view_proj, view.eye, size).saturating_sub(y).min(h) } else { h };
         if sky_rows > 0 {
             pass.set_scissor_rect(x, y, w, sky_rows);
             self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
