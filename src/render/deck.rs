@@ -132,20 +132,23 @@ pub const DRY_BAND_BOTTOM: f32 = -(2.0 * MAX_HEIGHT + 0.1);
 /// not).
 pub fn sky_rows(view_proj: Mat4, eye: Vec3, size: (u32, u32)) -> u32 {
     let inverse = view_proj.inverse();
-    let shows_sky = |x: f32, y: f32| {
-        let ndc = Vec3::new(x / size.0 as f32 * 2.0 - 1.0, 1.0 - y / size.1 as f32 * 2.0, 1.0);
-        let dir = inverse.project_point3(ndc) - eye;
-        if dir.y >= 0.0 {
-            return true;
-        }
-        let hit = eye + dir * ((scene::RIM - eye.y) / dir.y);
-        hit.x.abs().max(hit.z.abs()) > DECK_EXTENT || view_proj.project_point3(hit).z > 1.0
-    };
+    let at = |x: f32, y: f32| Vec2::new(x / size.0 as f32 * 2.0 - 1.0, 1.0 - y / size.1 as f32 * 2.0);
     let lowest = (0..=size.1.div_ceil(2))
         .rev()
         .map(|k| (2 * k).min(size.1))
-        .find(|&y| (0..=8).any(|i| shows_sky(size.0 as f32 * i as f32 / 8.0, y as f32)));
+        .find(|&y| (0..=8).any(|i| shows_sky(view_proj, inverse, eye, at(size.0 as f32 * i as f32 / 8.0, y as f32))));
     lowest.map_or(0, |y| (y + SKY_ROWS_MARGIN).min(size.1))
+}
+
+/// Whether the ray through `ndc` (x, y in -1..1) from `eye` misses the deck: above the horizon,
+/// beyond [`DECK_EXTENT`], or meeting the deck past the far plane. `inverse`: `view_proj`'s.
+fn shows_sky(view_proj: Mat4, inverse: Mat4, eye: Vec3, ndc: Vec2) -> bool {
+    let dir = inverse.project_point3(ndc.extend(1.0)) - eye;
+    if dir.y >= 0.0 {
+        return true;
+    }
+    let hit = eye + dir * ((scene::RIM - eye.y) / dir.y);
+    hit.x.abs().max(hit.z.abs()) > DECK_EXTENT || view_proj.project_point3(hit).z > 1.0
 }
 
 /// Rows added under the lowest sampled row that shows the sky (pixels).
@@ -198,21 +201,16 @@ mod tests {
             camera.keep_eye_above(scene::RIM + EYE_CLEARANCE);
             let view_proj = camera.view_projection(size.0 as f32 / size.1 as f32);
             let rows = sky_rows(view_proj, camera.eye(), size);
-            // Every pixel of every other column, by the same ray test as the renderer's sky.
+            // Every pixel of every other column (sky_rows samples nine).
             let inverse = view_proj.inverse();
             let mut lowest_sky: Option<u32> = None;
             for y in 0..size.1 {
                 for x in (0..size.0).step_by(2) {
-                    let ndc = Vec3::new(
+                    let ndc = Vec2::new(
                         (x as f32 + 0.5) / size.0 as f32 * 2.0 - 1.0,
                         1.0 - (y as f32 + 0.5) / size.1 as f32 * 2.0,
-                        1.0,
                     );
-                    let dir = inverse.project_point3(ndc) - camera.eye();
-                    let hit = camera.eye() + dir * ((scene::RIM - camera.eye().y) / dir.y);
-                    let sky = dir.y >= 0.0
-                        || hit.x.abs().max(hit.z.abs()) > DECK_EXTENT
-                        || view_proj.project_point3(hit).z > 1.0;
+                    let sky = shows_sky(view_proj, inverse, camera.eye(), ndc);
                     if sky {
                         lowest_sky = Some(y);
                     }

@@ -231,13 +231,7 @@ impl Renderer {
                 self.grid.draw(&mut pass);
             }
         }
-        if view.deck {
-            // Seen from above the deck, the pool under the water shows only through it.
-            pass.set_pipeline(&self.variants[&features].pool);
-            self.dry_band_mesh.draw(&mut pass);
-        } else {
-            self.draw_pool(&mut pass, features);
-        }
+        self.draw_pool(&mut pass, features);
         // Past the deck the sky shows only in the rows above its far edge.
         let sky_rows =
             if view.deck { deck::sky_rows(view.view_proj, view.eye, size).saturating_sub(y).min(h) } else { h };
@@ -290,10 +284,12 @@ impl Renderer {
         }
     }
 
-    /// Draws the pool's walls and floor.
+    /// Draws the pool's walls and floor; in a pass seen from above the deck only its dry band
+    /// (the part under the water shows only through the water, which traces it).
     pub(super) fn draw_pool(&self, pass: &mut wgpu::RenderPass<'_>, features: Features) {
         pass.set_pipeline(&self.variants[&features].pool);
-        self.pool_mesh.draw(pass);
+        let seen_from_deck = features.deck && features.clip == 0;
+        if seen_from_deck { &self.dry_band_mesh } else { &self.pool_mesh }.draw(pass);
     }
 }
 
