@@ -49,23 +49,20 @@ fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
 }
 
 // Light the duck lets through along a segment, like sphere_visibility: per part, how close
-// the segment passes to its centre in the part's unit-ball space.
+// the segment passes to its centre in the part's unit-ball space (duck_parts_light, written by
+// bodies/duck.rs: the product over the parts, written out).
 fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
-    if (!near_duck(origin, dir, t_max)) {
-        return 1.0;
-    }
     let to_duck = transpose(duck_rotation());
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
-    let d_duck = to_duck * dir;
-    var light = 1.0;
-    for (var i = 0; i < DUCK_PARTS; i++) {
-        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-        let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
-        let d = d_duck / radii;
-        let t = clamp(-dot(o, d) / dot(d, d), 0.0, t_max);
-        light *= smoothstep(0.85, 1.1, length(o + d * t));
-    }
-    return light;
+    return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max), near_duck(origin, dir, t_max));
+}
+
+fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, i: i32) -> f32 {
+    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+    let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+    let d = d_duck / radii;
+    let t = clamp(-dot(o, d) / dot(d, d), 0.0, t_max);
+    return smoothstep(0.85, 1.1, length(o + d * t));
 }
 
 // Nothing for the pool's ambient light: the duck is small next to it.

@@ -42,9 +42,21 @@ pub const KIND: BodyKind = BodyKind {
     vertex: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3],
     vertex_stride: 36,
     wgsl: crate::wgsl!("body_duck.wgsl"),
-    wgsl_constants: || format!("const DUCK_PARTS: i32 = {};\n", TRACED_PARTS.len()),
+    wgsl_constants: parts_wgsl,
     edge: false,
 };
+
+/// `duck_parts_light`: the light through every traced part, their product written out with no
+/// loop. A software rasteriser (SwiftShader) runs a loop's whole body for every vertex, at
+/// several times the cost of its arithmetic, and the caustics' vertices ask twice.
+fn parts_wgsl() -> String {
+    let light: Vec<String> = (0..TRACED_PARTS.len()).map(|i| format!("duck_part_light(o, d, t_max, {i})")).collect();
+    format!(
+        "const DUCK_PARTS: i32 = {};\nfn duck_parts_light(o: vec3<f32>, d: vec3<f32>, t_max: f32) -> f32 {{\n    return {};\n}}\n",
+        TRACED_PARTS.len(),
+        light.join(" * ")
+    )
+}
 
 /// The duck's share of the scene uniform (see `shaders/body_duck.wgsl`): its frame's rotation
 /// and position with its scale (w), a ball holding it (radius 0: no duck), then per traced

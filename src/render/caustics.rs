@@ -3,7 +3,7 @@
 
 use super::caustics_mips::CausticsMips;
 use super::flat::{self, FlatCaustics};
-use super::meshes::{water_grid, Mesh};
+use super::meshes::{banded_grid, Mesh};
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::param_spec::{Control, ParamSpec};
@@ -41,7 +41,7 @@ pub(super) struct CausticsMap {
 impl CausticsMap {
     pub(super) fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat, sim_size: u32) -> Self {
         let grid_size = caustics_grid(sim_size);
-        let (grid_vertices, grid_indices) = water_grid(grid_size);
+        let (grid_vertices, grid_indices) = banded_grid(grid_size);
         let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
         Self { mips: CausticsMips::new(device, size, format), size, per_channel: false, grid, grid_size }
     }

@@ -3,7 +3,7 @@
 
 use super::caustics::caustics_grid;
 use super::flat;
-use super::meshes::{water_grid, Mesh};
+use super::meshes::{banded_grid, Mesh};
 use super::{Renderer, DEPTH_FORMAT};
 use crate::ambient::SPECTRUM_IMAGE_SIZE;
 use crate::gpu;
@@ -146,7 +146,7 @@ impl Renderer {
     pub fn rebind_water(&mut self, device: &wgpu::Device, water: &HeightField) {
         let grid_size = caustics_grid(water.size());
         if grid_size != self.caustics.grid_size {
-            let (vertices, indices) = water_grid(grid_size);
+            let (vertices, indices) = banded_grid(grid_size);
             self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
             self.caustics.grid_size = grid_size;
         }
