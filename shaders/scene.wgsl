@@ -12,7 +12,8 @@ struct Scene {
     eye: vec4<f32>,            // xyz camera position (m)
     sun: vec4<f32>,            // xyz unit vector towards the sun; w sun strength
     refracted_sun: vec4<f32>,  // xyz unit direction sunlight travels after a flat surface (downwards)
-    pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m)
+    pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m),
+                               // w the tiles' gloss (glaze.wgsl)
     water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x unused (the sRGB encoding is the constant ENCODE_SRGB);

@@ -99,9 +99,9 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
-// it, as object_colour's), where shadowed: the objects' shadows above the water (under it the
-// caustics map holds them).
-fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, shadowed: bool) -> vec3<f32> {
+// it, as object_colour's), times sun_through: the light the objects let through towards the
+// sun above the water (1 where their shadows are left out; under it the caustics map holds them).
+fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_through: f32) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
@@ -112,10 +112,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, shado
     if (under) {
         direct = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light(p, true);
     } else {
-        direct = max(dot(n, scene.sun.xyz), 0.0);
-        if (shadowed) {
-            direct *= objects_visibility(p, scene.sun.xyz, 10.0);
-        }
+        direct = max(dot(n, scene.sun.xyz), 0.0) * sun_through;
     }
     let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
@@ -147,5 +144,5 @@ fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
-    return pool_colour(p, n, albedo, under, false);
+    return pool_colour(p, n, albedo, under, 1.0);
 }

@@ -70,46 +70,56 @@ impl SrgbEncoder {
 }
 
 /// Linear RGB of the tile texture at texel (x, y): pale blue-white glazed tiles, each a
-/// little different, a soft bevel at their edges and grey grout between them.
-fn tile_texel(x: u32, y: u32) -> [f32; 3] {
+/// little different, a soft bevel at their edges and grey grout between them; and the glaze's
+/// cover there (1 on a tile, 0 on the grout: `render::glaze`).
+fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let tile = TILE_TEXTURE_SIZE / TILES_PER_METRE;
     let (tx, ty) = (x / tile, y / tile);
     let (fx, fy) = ((x % tile) as f32 + 0.5, (y % tile) as f32 + 0.5);
     let edge = fx.min(fy).min(tile as f32 - fx).min(tile as f32 - fy);
     let grout_width = 2.0;
     if edge < grout_width {
-        return [0.42, 0.46, 0.47].map(srgb_to_linear);
+        return ([0.42, 0.46, 0.47].map(srgb_to_linear), 0.0);
     }
     let variation = (hash01(tx, ty) - 0.5) * 0.06;
     let bevel = 1.0 - 0.10 * (1.0 - ((edge - grout_width) / 3.0).min(1.0));
     let speckle = (hash01(x, y ^ 0x5bd1) - 0.5) * 0.015;
     let base = [0.80, 0.89, 0.93];
-    base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0)))
+    (base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0))), 1.0)
 }
 
-/// The tile texture with its full mip chain (box-filtered in linear light), RGBA8 sRGB.
+/// The tile texture with its full mip chain (box-filtered in linear light), RGBA8 sRGB: alpha
+/// (linear) is the glaze's cover.
 pub fn tile_mips() -> Vec<Vec<u8>> {
-    let mut level: Vec<[f32; 3]> = (0..TILE_TEXTURE_SIZE * TILE_TEXTURE_SIZE)
-        .map(|i| tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE))
+    let mut level: Vec<[f32; 4]> = (0..TILE_TEXTURE_SIZE * TILE_TEXTURE_SIZE)
+        .map(|i| {
+            let ([r, g, b], glaze) = tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE);
+            [r, g, b, glaze]
+        })
         .collect();
     let mut size = TILE_TEXTURE_SIZE as usize;
     let mut mips = Vec::new();
     let srgb = SrgbEncoder::new();
     loop {
         mips.push(
-            level.iter().flat_map(|c| [c[0], c[1], c[2]].map(|v| srgb.encode(v)).into_iter().chain([255])).collect(),
+            level
+                .iter()
+                .flat_map(|c| {
+                    [c[0], c[1], c[2]].map(|v| srgb.encode(v)).into_iter().chain([(c[3] * 255.0).round() as u8])
+                })
+                .collect(),
         );
         if size == 1 {
             break;
         }
         let half = size / 2;
-        let mut next = vec![[0.0f32; 3]; half * half];
+        let mut next = vec![[0.0f32; 4]; half * half];
         for y in 0..half {
             for x in 0..half {
-                let mut acc = [0.0f32; 3];
+                let mut acc = [0.0f32; 4];
                 for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
                     let c = level[(2 * y + dy) * size + 2 * x + dx];
-                    for k in 0..3 {
+                    for k in 0..4 {
                         acc[k] += c[k] * 0.25;
                     }
                 }
@@ -283,7 +293,7 @@ mod tests {
         let srgb = SrgbEncoder::new();
         // Every value of the tile texture's levels, and a sweep of [0, 1] with its ends.
         let mut values: Vec<f32> = (0..TILE_TEXTURE_SIZE * TILE_TEXTURE_SIZE)
-            .flat_map(|i| tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE))
+            .flat_map(|i| tile_texel(i % TILE_TEXTURE_SIZE, i / TILE_TEXTURE_SIZE).0)
             .collect();
         values.extend((0..=100_000).map(|i| i as f32 / 100_000.0));
         values.extend([-0.1, 0.0, 1.0, 1.5, f32::MIN_POSITIVE]);
@@ -302,5 +312,12 @@ mod tests {
         assert!(tile_centre > grout + 60, "tile {tile_centre} vs grout {grout}");
         let last = mips.last().unwrap()[0];
         assert!(last > grout && last < tile_centre);
+        // The glaze covers the tiles, not the grout; far away it is their average.
+        let glaze = |mip: &[u8], texel: u32| mip[(texel * 4 + 3) as usize];
+        let (on_tile, on_grout) = (glaze(base, 32 * TILE_TEXTURE_SIZE + 32), glaze(base, 0));
+        let average = glaze(mips.last().unwrap(), 0);
+        println!("glaze cover: tile {on_tile}, grout {on_grout}, the whole texture {average} (of 255)");
+        assert_eq!((on_tile, on_grout), (255, 0));
+        assert!(average > 200 && average < 255, "{average}");
     }
 }

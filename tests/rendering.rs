@@ -327,3 +327,39 @@ fn the_spheres_outline_is_blended_on_its_edge_and_nowhere_else() {
     assert!(changed >= 100, "only {changed} pixels of the outline were blended");
     assert!(elsewhere * 50 <= changed, "{elsewhere} of {changed} blended pixels are not on the edge");
 }
+
+#[test]
+fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
+    let (w, h) = (640, 480);
+    let frame = |gloss: f32| {
+        let mut demo = common::demo(DemoOptions::default());
+        demo.params.set(ParamId::TileGloss, gloss);
+        render(&mut demo, w, h, 30, 1.0 / 60.0)
+    };
+    let (matte, glazed) = (frame(0.0), frame(1.0));
+    let (mut brighter, mut darker, mut lowest) = (0, 0, 0);
+    let mut gain = 0.0;
+    for y in 0..h {
+        for x in 0..w {
+            let d = glazed.luma(x, y) - matte.luma(x, y);
+            if d > 2.0 / 255.0 {
+                brighter += 1;
+                gain += d;
+                lowest = lowest.max(y);
+            } else if d < -2.0 / 255.0 {
+                darker += 1;
+            }
+        }
+    }
+    let (deck_top, deck_bottom) = (Rect(0.0, 0.0, 1.0, 0.15), Rect(0.0, 0.72, 1.0, 1.0));
+    let unchanged = glazed.changed_fraction(&matte, deck_top, 1).max(glazed.changed_fraction(&matte, deck_bottom, 1));
+    println!(
+        "glaze: {brighter} pixels brighter (mean {:.1}/255, lowest row {lowest} of {h}), {darker} darker; deck changed {unchanged:.4}",
+        gain / brighter.max(1) as f32 * 255.0
+    );
+    assert!(brighter >= 400, "the glaze shows on only {brighter} pixels");
+    assert_eq!(darker, 0, "the glaze only adds light");
+    assert_eq!(unchanged, 0.0, "the deck has no glaze");
+    // The walls' dry band lies in the upper half of the opening.
+    assert!(lowest < h * 3 / 5, "glaze down to row {lowest}");
+}

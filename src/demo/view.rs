@@ -79,6 +79,7 @@ impl WaterDemo {
             flat: self.flat_view(),
             exposure: self.params.get(ParamId::Exposure),
             deck: self.on_deck(),
+            tile_gloss: self.params.get(ParamId::TileGloss),
         }
     }
 

@@ -6,6 +6,7 @@ mod caustics_mips;
 pub(crate) mod debug_view;
 pub(crate) mod deck;
 pub mod flat;
+pub(crate) mod glaze;
 mod meshes;
 mod passes;
 mod regions;

@@ -7,10 +7,11 @@ use crate::gpu;
 
 pub const COMMON: &str = crate::wgsl!("common.wgsl");
 /// The scene's shared shading, in parts of one concept each (see `shaders/scene.wgsl`).
-pub const SCENE: [&str; 7] = [
+pub const SCENE: [&str; 8] = [
     crate::wgsl!("scene.wgsl"),
     crate::wgsl!("scene_surface.wgsl"),
     crate::wgsl!("scene_light.wgsl"),
+    crate::wgsl!("glaze.wgsl"),
     crate::wgsl!("scene_bodies.wgsl"),
     crate::wgsl!("scene_optics.wgsl"),
     crate::wgsl!("scene_trace.wgsl"),
@@ -27,7 +28,7 @@ pub const DEBUG_VIEW: &str = crate::wgsl!("debug_view.wgsl");
 
 /// Everything a scene pass of `features` starts from: the variant's constants, the numbers of
 /// the features the scene shows (water's refractive index, optics, ambient waves, flat water,
-/// sky, deck, caustics mips), the shared WGSL (maths, ray helpers, the scene's bindings and
+/// sky, deck, tiles' glaze, caustics mips), the shared WGSL (maths, ray helpers, the scene's bindings and
 /// shading) and the bodies' (their kinds' code, and the code asking the kinds present). The pass adds its own file after it.
 /// `target`: the format the scene is finally drawn in; without hardware sRGB encoding the
 /// shaders encode (ENCODE_SRGB, a constant: software rasterisers run both sides of a branch).
@@ -52,6 +53,7 @@ pub fn scene_prelude_in(features: Features, target: wgpu::TextureFormat, seen: &
         super::flat::wgsl_constants(),
         crate::sky::Daylight::wgsl_constants(),
         super::deck::wgsl_constants(),
+        super::glaze::wgsl_constants(),
         super::caustics_mips::CausticsMips::wgsl_constants(),
         gpu::wgsl::MATH.to_owned(),
         COMMON.to_owned(),

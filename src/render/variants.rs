@@ -50,6 +50,8 @@ pub struct Features {
     /// The pool is sunk in the paved deck: what is seen through the opening blends the
     /// coping in along its edge.
     pub deck: bool,
+    /// The tiles are glazed (glaze.rs): they mirror the sun and the sky a little.
+    pub glaze: bool,
 }
 
 impl Features {
@@ -67,6 +69,7 @@ impl Features {
             choppy: view.ambient.choppy(),
             foam: view.foam,
             deck: view.deck,
+            glaze: view.tile_gloss > 0.0,
             ..Self::default()
         }
     }
@@ -74,7 +77,7 @@ impl Features {
     /// The WGSL constants that select this variant (`HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
     /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `HAS_DECK`, `CLIP_SIDE`,
-    /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`; the bodies' `HAS_<BODY>` are in `bodies::wgsl`).
+    /// `FLAT_CAUSTICS`, `FLAT_DISTORTION`, `HAS_GLAZE`; the bodies' `HAS_<BODY>` are in `bodies::wgsl`).
     pub fn wgsl(&self) -> String {
         let flat = format!(
             "const CLIP_SIDE: i32 = {};\nconst FLAT_CAUSTICS: bool = {};\nconst FLAT_DISTORTION: u32 = {}u;\n",
@@ -85,7 +88,7 @@ impl Features {
              const FRESNEL_MODEL: u32 = {}u;\nconst SPECULAR_MODEL: u32 = {}u;\nconst SHOW_REFLECTANCE: bool = {};\n\
              const HAS_SCATTERING: bool = {};\nconst VIEW_COLOUR: bool = {};\nconst HAS_DISPERSION: bool = {};\n\
              const AMBIENT_MODEL: u32 = {}u;\nconst AMBIENT_CHOPPY: bool = {};\nconst HAS_FOAM: bool = {};\n\
-             const HAS_DECK: bool = {};\n",
+             const HAS_DECK: bool = {};\nconst HAS_GLAZE: bool = {};\n",
             self.caustics,
             self.fresnel as u32,
             self.specular as u32,
@@ -96,7 +99,8 @@ impl Features {
             self.ambient as u32,
             self.choppy,
             self.foam,
-            self.deck
+            self.deck,
+            self.glaze
         )
     }
 }

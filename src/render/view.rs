@@ -37,6 +37,8 @@ pub struct View {
     pub exposure: f32,
     /// The pool is sunk in a paved deck (else the classic's cut-away box in the open).
     pub deck: bool,
+    /// How much the tiles' glaze mirrors (0 matte, 1 a ceramic glaze: `glaze.rs`).
+    pub tile_gloss: f32,
 }
 
 /// The ambient waves as the shader takes them (see ambient.rs).
