@@ -133,19 +133,13 @@ pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
         let last = (first + GRID_BAND).min(n);
         let (base, width) = (vertices.len() as u32, last - first + 1);
         vertices.extend((0..=n).flat_map(|j| (first..=last).map(move |i| [at(i), at(j)])));
-        let positions: Vec<Vec3> = vertices.iter().map(|v| Vec3::new(v[0], 0.0, v[1])).collect();
         let point = |i: u32, j: u32| base + j * width + i - first;
         for j in 0..n {
-            let quads = first..last;
-            let upper =
-                quads.clone().filter(|i| (i - first) % 2 == 0).chain(quads.clone().filter(|i| (i - first) % 2 == 1));
-            for i in upper {
-                let tri = [point(i, j + 1), point(i + 1, j + 1), point(i + 1, j)];
-                push_triangle(&mut indices, &positions, tri, Vec3::Y);
+            // Upper triangles, the even quads' then the odd ones', each from its two new points.
+            for i in (first..last).step_by(2).chain((first + 1..last).step_by(2)) {
+                indices.extend([point(i, j + 1), point(i + 1, j + 1), point(i + 1, j)]);
             }
-            for i in quads {
-                push_triangle(&mut indices, &positions, [point(i, j), point(i, j + 1), point(i + 1, j)], Vec3::Y);
-            }
+            indices.extend((first..last).flat_map(|i| [point(i, j), point(i, j + 1), point(i + 1, j)]));
         }
     }
     (vertices, indices)
