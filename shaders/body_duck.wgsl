@@ -50,13 +50,17 @@ fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
 
 // Light the duck lets through along a segment, like sphere_visibility: per part, how close
 // the segment passes to its centre in the part's unit-ball space (duck_parts_light, written by
-// bodies/duck.rs: the product over the parts, written out).
+// bodies/duck.rs: the product over the parts, written out). Unlike sphere_visibility it has no
+// early return far from the duck: on a software rasteriser, which runs every branch anyway,
+// the branch cost more than the parts.
 fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     let to_duck = transpose(duck_rotation());
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
     return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max), near_duck(origin, dir, t_max));
 }
 
+// Light part i lets through along the segment o_duck + t d_duck, t in [0, t_max] (the duck's
+// frame): soft, by how close the segment passes to the part's centre in its unit-ball space.
 fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, i: i32) -> f32 {
     let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
     let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;

@@ -23,10 +23,12 @@ fn glaze_normal(n: vec3<f32>, uv: vec2<f32>, lod: f32) -> vec3<f32> {
 // glaze's normal (glaze_normal); to_eye and to_sun: unit vectors from the tile; sun: the sun's
 // light arriving (shadows included, not the cosine); coat: the glaze's cover at the texel (the
 // tile texture's alpha, 0 on the grout). Under the water the glaze mirrors a tenth as much
-// (n 1.33 against 1.5), which no pixel shows: it is left out there, and in the water's mirror,
+// (water's 1.33 against GLAZE_IOR), which no pixel shows: it is left out there, and in the water's mirror,
 // where it would cost every pixel of water a second tile shading for a few pixels' sheen.
 fn glaze_light(n: vec3<f32>, to_eye: vec3<f32>, to_sun: vec3<f32>, sun: vec3<f32>, coat: f32) -> vec3<f32> {
-    let share = fresnel(dot(n, to_eye), IOR_AIR / GLAZE_IOR) * coat * scene.pool.w;
+    // A rounded edge turned away from the eye shows nothing (fresnel would take it as grazing).
+    let facing = dot(n, to_eye);
+    let share = fresnel(facing, IOR_AIR / GLAZE_IOR) * step(0.0, facing) * coat * scene.pool.w;
     let half_vector = normalize(to_eye + to_sun);
     let lobe = (GLAZE_SHININESS + 8.0) / (8.0 * PI) * pow(max(dot(n, half_vector), 0.0), GLAZE_SHININESS);
     // The sky along the mirrored ray; one pointing down meets the water and the far wall, dim

@@ -21,17 +21,22 @@ fn vs_pool(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> 
 fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     let edge = deck_edge(in.world);
     let n = normalize(in.normal);
-    let albedo = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n));
+    let texel = textureSample(tile_texture, repeat_sampler, tile_uv(in.world, n));
     // Derivatives (tile_lod) in uniform control flow only (WebGPU refuses them elsewhere).
     var lod = 0.0;
     if (HAS_GLAZE) {
         lod = tile_lod(in.world);
     }
     let under = lit_under(in.world);
-    let sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0);
-    var colour = pool_colour(in.world, n, albedo.rgb, under, sun_through);
+    // The objects' shadow above the water (under it the caustics map holds it), for the tile's
+    // colour and its glaze.
+    var sun_through = 1.0;
+    if (!under) {
+        sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0);
+    }
+    var colour = pool_colour(in.world, n, texel.rgb, under, sun_through);
     if (HAS_GLAZE && !under) {
-        colour += tile_glaze(in.world, n, albedo.a, lod, sun_through);
+        colour += tile_glaze(in.world, n, texel.a, lod, sun_through);
     }
     // Seen directly from above the deck, the pool is above the water: nothing dims the edge.
     return seen_directly(with_deck_edge(colour, edge), in.world);

@@ -1,6 +1,6 @@
 // The scene's bindings and uniforms, shared by every scene pass, with the shading in the parts
 // joined after it (render/shaders.rs): scene_surface (water sampling), scene_light (caustic
-// light, pool tiles), scene_bodies (the sphere and the duck), scene_optics (sky, highlight,
+// light, pool tiles), glaze (the tiles' glaze above the water), scene_bodies (the sphere and the duck), scene_optics (sky, highlight,
 // Fresnel, absorption) and scene_trace (rays through air or water, the displayed colour).
 // Compiled per feature set: HAS_<BODY> per kind of body, HAS_CAUSTICS, FRESNEL_MODEL, SPECULAR_MODEL and
 // SHOW_REFLECTANCE are constants written ahead of this file (render/variants.rs), so the code

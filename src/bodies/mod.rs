@@ -57,7 +57,8 @@ pub struct BodyKind {
     /// `<name>_occlusion` and the mesh's `vs_<name>`, `fs_<name>`; it reads its
     /// uniform at `<NAME>_SLOT`.
     pub wgsl: &'static str,
-    /// WGSL constants its code reads, written from Rust.
+    /// WGSL its code reads, written from Rust: constants, and code generated from its tables
+    /// (the duck's parts written out).
     pub wgsl_constants: fn() -> String,
     /// Whether its WGSL has `vs_<name>_edge` and `fs_<name>_edge`: its outline drawn again
     /// after everything else, blended by the share of each pixel it covers (anti-aliasing).

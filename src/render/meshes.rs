@@ -1,5 +1,6 @@
-//! Triangle meshes of the scene, built on the CPU once: the water grid and the pool box, and
-//! the GPU buffers that hold them (the bodies' meshes come from their kinds).
+//! Triangle meshes of the scene, built on the CPU once: the water grid (and the caustics' banded
+//! copy of it) and the pool box, and the GPU buffers that hold them (the bodies' meshes come
+//! from their kinds).
 
 use std::ops::Range;
 
@@ -116,16 +117,18 @@ pub fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
     (vertices, indices)
 }
 
-/// Quads across a band of [`banded_grid`]: two rows of a band's points (32 each) fit the
-/// 64-entry direct-mapped vertex cache of SwiftShader (Chromium's software GPU).
-pub const GRID_BAND: u32 = 31;
+/// Vertices SwiftShader's vertex cache holds (Chromium's software GPU: direct-mapped by index
+/// modulo this; a miss shades the next four indices of the list).
+pub const VERTEX_CACHE: u32 = 64;
+/// Quads across a band of [`banded_grid`]: two rows of a band's points fit the vertex cache.
+pub const GRID_BAND: u32 = VERTEX_CACHE / 2 - 1;
 
 /// The water grid's triangles (as [`water_grid`]'s, wound the same) ordered for a small vertex
 /// cache, for a mesh whose vertex shader is dear (the caustics'): the grid is cut into bands
-/// [`GRID_BAND`] quads wide, each band's points numbered row by row, and each row of quads lists
-/// first every other upper triangle from its two new points, then the rest. A cache that shades
-/// the next four indices on a miss (SwiftShader) then shades each point about 1.5 times, where
-/// the row-by-row grid's points, 129 apart, evict each other: about 12 times.
+/// [`GRID_BAND`] quads wide, each band's points numbered row by row; each row of quads lists
+/// the even quads' upper triangles (each bringing two points new to the cache), then the odd
+/// quads', then every lower triangle. [`VERTEX_CACHE`]'s cache then shades each point about
+/// 1.5 times, where the row-by-row grid's points, n + 1 apart, evict each other: about 12 times.
 pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
     let at = |i: u32| i as f32 / n as f32 * 2.0 - 1.0;
     let (mut vertices, mut indices) = (Vec::new(), Vec::with_capacity((n * n * 6) as usize));
@@ -135,7 +138,7 @@ pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
         vertices.extend((0..=n).flat_map(|j| (first..=last).map(move |i| [at(i), at(j)])));
         let point = |i: u32, j: u32| base + j * width + i - first;
         for j in 0..n {
-            // Upper triangles, the even quads' then the odd ones', each from its two new points.
+            // Upper triangles, the even quads' then the odd ones'; then the lower ones.
             for i in (first..last).step_by(2).chain((first + 1..last).step_by(2)) {
                 indices.extend([point(i, j + 1), point(i + 1, j + 1), point(i + 1, j)]);
             }
@@ -213,15 +216,15 @@ mod tests {
         }
     }
 
-    /// SwiftShader's vertex cache: 64 entries by index modulo 64; a miss shades the next four
-    /// indices of the list.
+    /// SwiftShader's vertex cache: VERTEX_CACHE entries by index modulo its size; a miss shades
+    /// the next four indices of the list.
     fn shaded_per_point(indices: &[u32], points: usize) -> f32 {
-        let (mut tags, mut shaded) = ([u32::MAX; 64], 0);
+        let (mut tags, mut shaded) = ([u32::MAX; VERTEX_CACHE as usize], 0);
         for (at, &index) in indices.iter().enumerate() {
-            if tags[(index % 64) as usize] != index {
+            if tags[(index % VERTEX_CACHE) as usize] != index {
                 shaded += 4;
                 for &next in indices[at..(at + 4).min(indices.len())].iter().rev() {
-                    tags[(next % 64) as usize] = next;
+                    tags[(next % VERTEX_CACHE) as usize] = next;
                 }
             }
         }
@@ -235,7 +238,9 @@ mod tests {
         let (_, indices) = banded_grid(n);
         let (plain, banded) =
             (shaded_per_point(&plain_indices, plain_vertices.len()), shaded_per_point(&indices, plain_vertices.len()));
-        println!("vertex shader runs per grid point, 64-entry cache: row by row {plain:.2}, banded {banded:.2}");
+        println!(
+            "vertex shader runs per grid point, {VERTEX_CACHE}-entry cache: row by row {plain:.2}, banded {banded:.2}"
+        );
         assert!(banded < 2.0 && plain > 3.0 * banded, "row by row {plain}, banded {banded}");
     }
 }

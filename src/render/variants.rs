@@ -50,7 +50,9 @@ pub struct Features {
     /// The pool is sunk in the paved deck: what is seen through the opening blends the
     /// coping in along its edge.
     pub deck: bool,
-    /// The tiles are glazed (glaze.rs): they mirror the sun and the sky a little.
+    /// The tiles are glazed (glaze.rs): they mirror the sun and the sky a little. Only the
+    /// pool's pass reads it, but like every flag it keys all the scene's pipelines: turning
+    /// `tile_gloss` on or off builds the variant's pipelines once.
     pub glaze: bool,
 }
 
