@@ -29,14 +29,6 @@ fn displaced_column(x: vec2<f32>, first: i32) -> f32 {
     return depth * (exp(y1 / depth) - exp(y0 / depth));
 }
 
-// displaced_column averaged over the cell at x (four points a quarter cell off its centre):
-// a waterline crosses a cell a little at a time, and so does its push (cell_column in sim.rs).
-fn cell_column(x: vec2<f32>, first: i32) -> f32 {
-    let q = 0.25 * sim.grid.z;
-    let a = displaced_column(x + vec2<f32>(-q, -q), first) + displaced_column(x + vec2<f32>(q, -q), first);
-    return 0.25 * (a + displaced_column(x + vec2<f32>(-q, q), first) + displaced_column(x + vec2<f32>(q, q), first));
-}
-
 // Which step of the frame this pass comes before: its moves are applied, and the drops
 // with step 0 only.
 struct Step {
@@ -59,7 +51,7 @@ fn fs_drop(in: FullscreenOut) -> @location(0) vec4<f32> {
     let moves = i32(sim.bodies.x);
     let base = i32(push_step.index.x) * STEP_HULL_SLOTS;
     for (var i = 0; i < moves; i++) {
-        s.x += cell_column(x, base + 8 * i + 4) - cell_column(x, base + 8 * i);
+        s.x += displaced_column(x, base + 8 * i + 4) - displaced_column(x, base + 8 * i);
     }
     s.x = bounded_height(s.x - select(0.0, sim.drops_info.y, first_step));
     return s;

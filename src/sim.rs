@@ -21,8 +21,8 @@ use coupling::merge_push_steps;
 use gpu_engine::GpuSim;
 
 pub use coupling::{
-    cell_column, displaced_column, displacement_depth, pool_area, BodyCoupling, CellRange, HullMove, HullSlot,
-    ProbeSamples, CPU_COPY_SIZE, DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PROBES, MAX_PUSH_STEPS, PUSH_MIN_MOVE,
+    displaced_column, displacement_depth, pool_area, BodyCoupling, CellRange, HullMove, HullSlot, ProbeSamples,
+    CPU_COPY_SIZE, DISPLACEMENT_DEPTH, MAX_HULL_MOVES, MAX_PROBES, MAX_PUSH_STEPS, PUSH_MIN_MOVE,
 };
 pub use plan::{
     drop_mean, drop_shape, sponge_profile, substeps, Drop, FixedStep, StepPlan, WaveSettings, MAX_COURANT,

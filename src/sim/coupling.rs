@@ -137,16 +137,6 @@ pub fn displaced_column(x: f32, z: f32, hull: &HullSlot, depth: f32) -> f32 {
     depth * ((y1 / depth).exp() - (y0 / depth).exp())
 }
 
-/// [`displaced_column`] averaged over the cell `dx` (m) wide centred on (x, z), from four points
-/// a quarter cell off its centre: a body's waterline then crosses a cell a little at a time, and
-/// so does its push, instead of jumping by the cell's whole column, which rang at the grid's own
-/// scale (dark specks round a bobbing duck). (`cell_column` in `shaders/sim_drop.wgsl`.)
-pub fn cell_column(x: f32, z: f32, hull: &HullSlot, depth: f32, dx: f32) -> f32 {
-    let q = 0.25 * dx;
-    [(-q, -q), (q, -q), (-q, q), (q, q)].iter().map(|&(a, b)| displaced_column(x + a, z + b, hull, depth)).sum::<f32>()
-        * 0.25
-}
-
 /// What the bodies in the pool do to the water in a frame, set before
 /// [`HeightField::encode`](super::HeightField::encode).
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -4,7 +4,7 @@
 //! to float textures.
 
 use super::foam::Foam;
-use super::{cell_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings};
+use super::{displaced_column, drop_shape, sponge_profile, CellRange, Drop, HullMove, StepPlan, WaveSettings};
 
 /// Mirrors the shaders' `bounded`: finite values clamped, NaN and infinity to rest.
 fn bounded(x: f32, limit: f32) -> f32 {
@@ -257,7 +257,6 @@ impl CpuHeightField {
             }
         }
         let depth = super::displacement_depth(self.half_width);
-        let dx = 2.0 * self.half_width / self.size as f32;
         for m in plan.moves.get(step).into_iter().flatten() {
             let cells = CellRange::under(&[m.from, m.to], self.size, self.half_width);
             for j in cells.z.0..=cells.z.1 {
@@ -265,7 +264,7 @@ impl CpuHeightField {
                 for i in cells.x.0..=cells.x.1 {
                     let x = self.centre(i);
                     self.height[j as usize * n + i as usize] +=
-                        cell_column(x, z, &m.to, depth, dx) - cell_column(x, z, &m.from, depth, dx);
+                        displaced_column(x, z, &m.to, depth) - displaced_column(x, z, &m.from, depth);
                 }
             }
         }
