@@ -98,12 +98,16 @@ impl GridMesh {
     }
 }
 
+/// Where point `i` of `n` quads lies across the grid, in pool units (-1..1).
+fn grid_coordinate(i: u32, n: u32) -> f32 {
+    i as f32 / n as f32 * 2.0 - 1.0
+}
+
 /// The water grid: (n + 1)^2 points spanning [-1, 1]^2 in pool units, facing up.
 pub fn water_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
     let side = n + 1;
-    let vertices: Vec<[f32; 2]> = (0..side * side)
-        .map(|i| [(i % side) as f32 / n as f32 * 2.0 - 1.0, (i / side) as f32 / n as f32 * 2.0 - 1.0])
-        .collect();
+    let vertices: Vec<[f32; 2]> =
+        (0..side * side).map(|i| [grid_coordinate(i % side, n), grid_coordinate(i / side, n)]).collect();
     let positions: Vec<Vec3> = vertices.iter().map(|v| Vec3::new(v[0], 0.0, v[1])).collect();
     let mut indices = Vec::with_capacity((n * n * 6) as usize);
     for j in 0..n {
@@ -130,7 +134,7 @@ pub const GRID_BAND: u32 = VERTEX_CACHE / 2 - 1;
 /// quads', then every lower triangle. [`VERTEX_CACHE`]'s cache then shades each point about
 /// 1.5 times, where the row-by-row grid's points, n + 1 apart, evict each other: about 12 times.
 pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
-    let at = |i: u32| i as f32 / n as f32 * 2.0 - 1.0;
+    let at = |i: u32| grid_coordinate(i, n);
     let (mut vertices, mut indices) = (Vec::new(), Vec::with_capacity((n * n * 6) as usize));
     for first in (0..n).step_by(GRID_BAND as usize) {
         let last = (first + GRID_BAND).min(n);
