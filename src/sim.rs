@@ -183,13 +183,14 @@ impl HeightField {
         for step in 0..(steps as usize).max(1) {
             if plan.pushes_water(step) {
                 let slot = step.min(MAX_PUSH_STEPS - 1);
-                let cells = plan.pushed_cells(step, self.size, self.half_width);
                 let group = Some(&sim.step_groups[slot]);
-                if cells == CellRange::all(self.size) {
-                    self.state.run_with(encoder, &sim.drop_pass, &sim.bind_groups, group);
-                } else {
-                    let rect = [cells.x.0, cells.z.0, cells.x.1 + 1 - cells.x.0, cells.z.1 + 1 - cells.z.0];
-                    self.state.run_in_place(encoder, &sim.drop_pass, &sim.bind_groups, group, rect);
+                for cells in plan.pushed_cells(step, self.size, self.half_width) {
+                    if cells == CellRange::all(self.size) {
+                        self.state.run_with(encoder, &sim.drop_pass, &sim.bind_groups, group);
+                    } else {
+                        let rect = [cells.x.0, cells.z.0, cells.x.1 + 1 - cells.x.0, cells.z.1 + 1 - cells.z.0];
+                        self.state.run_in_place(encoder, &sim.drop_pass, &sim.bind_groups, group, rect);
+                    }
                 }
             }
             for _ in 0..per_step {

@@ -25,6 +25,13 @@ impl HullSlot {
         self.centre.distance(before.centre) > PUSH_MIN_MOVE || turned.iter().any(|d| d.abs() > 50.0 * PUSH_MIN_MOVE)
     }
 
+    /// Whether the ellipsoid lies wholly above the rest level (y = 0), where it pushes no water.
+    pub fn above_water(&self) -> bool {
+        let to_world = self.unit_from_world.inverse();
+        // Its lowest point: the centre less its support downwards.
+        self.centre.y - to_world.row(1).length() > 0.0
+    }
+
     /// The ellipsoid's reach over the pool (m): its half extents along x and z (it pushes no
     /// water outside centre ± reach).
     pub fn reach(&self) -> Vec2 {
@@ -46,7 +53,8 @@ impl CellRange {
         Self { x: (0, n - 1), z: (0, n - 1) }
     }
 
-    /// The cells whose centres lie within the ellipsoids' reach (plus the cell around each end).
+    /// The cells whose centres lie within the ellipsoids' reach and a cell past it (plus the cell
+    /// around each end).
     pub fn under(hulls: &[HullSlot], n: u32, half_width: f32) -> Self {
         let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
         for hull in hulls {
@@ -58,12 +66,19 @@ impl CellRange {
             return Self::all(n);
         }
         let dx = 2.0 * half_width / n as f32;
+        // A cell past the reach each way: the push is averaged over cells (displaced_column).
+        (lo, hi) = (lo - dx, hi + dx);
         let last = n as f32 - 1.0;
         let index = |v: f32| ((v + half_width) / dx - 0.5).clamp(0.0, last);
         Self {
             x: (index(lo.x).floor() as u32, index(hi.x).ceil() as u32),
             z: (index(lo.y).floor() as u32, index(hi.y).ceil() as u32),
         }
+    }
+
+    /// Whether the two share a cell.
+    pub fn overlaps(&self, other: &Self) -> bool {
+        self.x.0 <= other.x.1 && other.x.0 <= self.x.1 && self.z.0 <= other.z.1 && other.z.0 <= self.z.1
     }
 
     /// The smallest range holding both.
@@ -114,27 +129,72 @@ pub fn pool_area(half_width: f32) -> f32 {
     4.0 * half_width * half_width
 }
 
-/// How much water (m, a column height) a body's ellipsoid pushes up at pool point (x, z): the
-/// part of the vertical line through (x, z) inside the ellipsoid and below the rest level,
-/// each depth y weighted by exp(y / `depth`) ([`displacement_depth`]). A body moving from `from` to `to`
-/// raises the surface by column(to) - column(from): water ahead of it and above it rises and
-/// falls behind it, fully submerged too (weaker the deeper it is), and a body entering the
-/// water pushes its volume out around itself. (`shaders/sim_drop.wgsl` mirrors this.)
-pub fn displaced_column(x: f32, z: f32, hull: &HullSlot, depth: f32) -> f32 {
-    let u0 = hull.unit_from_world * (Vec3::new(x, 0.0, z) - hull.centre);
-    let d = hull.unit_from_world.col(1);
+/// How much water (m, a column height) a body's ellipsoid pushes up over the cell `dx` (m) wide
+/// centred on (x, z): the part of the vertical line through the cell inside the ellipsoid and
+/// below the rest level, each depth y weighted by exp(y / `depth`) ([`displacement_depth`]). A
+/// body moving from `from` to `to` raises the surface by column(to) - column(from): water ahead
+/// of it and above it rises and falls behind it, fully submerged too (weaker the deeper it is),
+/// and a body entering the water pushes its volume out around itself.
+///
+/// The column is averaged over the cell: taken at the cell's centre, a bobbing body's push
+/// stopped at its waterline as a step, and a waterline near the hull's silhouette jumped as it
+/// crossed a cell; both rang at the grid's own scale (dark specks round a bobbing duck). So the
+/// chord's ends are spread by how much they change across the cell, and the chord's length at
+/// the silhouette too ([`cell_mean_sqrt`], [`cell_mean_weight`]). (`shaders/sim_drop.wgsl`
+/// mirrors this.)
+pub fn displaced_column(x: f32, z: f32, hull: &HullSlot, depth: f32, dx: f32) -> f32 {
+    let m = hull.unit_from_world;
+    let u0 = m * (Vec3::new(x, 0.0, z) - hull.centre);
+    let d = m.col(1);
     let (a, b, c) = (d.dot(d), u0.dot(d), u0.dot(u0) - 1.0);
-    let disc = b * b - a * c;
-    if disc <= 0.0 || a <= 0.0 {
+    if a <= 0.0 {
         return 0.0;
     }
-    let s = disc.sqrt();
-    let y0 = (-b - s) / a;
-    let y1 = ((-b + s) / a).min(0.0);
-    if y1 <= y0 {
+    // The chord's ends y = (-b ± s) / a with s² = b² - a c, and their change across the cell.
+    let disc_slope = |along: Vec3| 2.0 * (b * along.dot(d) - a * u0.dot(along));
+    let (gx, gz) = (disc_slope(m.col(0)), disc_slope(m.col(2)));
+    let s = cell_mean_sqrt(b * b - a * c, 0.5 * dx * (gx.abs() + gz.abs()));
+    if s <= 0.0 {
         return 0.0;
     }
-    depth * ((y1 / depth).exp() - (y0 / depth).exp())
+    let (bx, bz) = (m.col(0).dot(d), m.col(2).dot(d));
+    let (sx, sz) = (gx / (2.0 * s), gz / (2.0 * s));
+    let end_spread = |sign: f32| 0.5 * dx * ((sign * sx - bx).abs() + (sign * sz - bz).abs()) / a;
+    let top = cell_mean_weight((-b + s) / a, end_spread(1.0), depth);
+    let bottom = cell_mean_weight((-b - s) / a, end_spread(-1.0), depth);
+    (depth * (top - bottom)).max(0.0)
+}
+
+/// The mean of sqrt(max(t, 0)) for t spread evenly over `disc` ± `spread`: (P^3/2 - Q^3/2) /
+/// (3 spread) with P, Q the range's ends clamped at 0, written so that it needs no division by a
+/// spread of 0 and loses no precision to one much smaller than `disc`.
+/// (`cell_mean_sqrt` in `shaders/sim_drop.wgsl`.)
+pub fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
+    let (p, q) = ((disc + spread).max(0.0), (disc - spread).max(0.0));
+    if q > 0.0 {
+        // P - Q = 2 spread: 2 (P + sqrt(PQ) + Q) / (3 (sqrt P + sqrt Q)).
+        2.0 * (p + (p * q).sqrt() + q) / (3.0 * (p.sqrt() + q.sqrt()))
+    } else {
+        p * p.sqrt() / (3.0 * spread).max(f32::MIN_POSITIVE)
+    }
+}
+
+/// The mean of exp(min(t, 0) / `depth`) for t spread evenly over `y` ± `spread` (m): a chord's
+/// end's weight (1 above the rest level), averaged over a cell. (e^u - 1) / u is taken from its
+/// series where u is small, so that a narrow spread loses no precision.
+/// (`cell_mean_weight` in `shaders/sim_drop.wgsl`.)
+pub fn cell_mean_weight(y: f32, spread: f32, depth: f32) -> f32 {
+    let (lo, hi) = (y - spread, y + spread);
+    let (a, b) = (lo.min(0.0), hi.min(0.0));
+    let u = (b - a) / depth;
+    // Mean of exp(t / depth) over the part below the rest level, [a, b].
+    let below = if u < 0.1 {
+        (a / depth).exp() * (1.0 + u * (0.5 + u * (1.0 / 6.0 + u / 24.0)))
+    } else {
+        ((b / depth).exp() - (a / depth).exp()) / u
+    };
+    let share_below = (-lo / (2.0 * spread).max(f32::MIN_POSITIVE)).clamp(0.0, 1.0);
+    share_below * below + (1.0 - share_below)
 }
 
 /// What the bodies in the pool do to the water in a frame, set before
@@ -184,4 +244,54 @@ pub(super) fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMov
         }
     }
     moves
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{cell_mean_sqrt, cell_mean_weight};
+
+    #[test]
+    fn the_cells_mean_square_root_is_the_mean_of_its_samples() {
+        for &(disc, spread) in &[(4.0, 0.0), (4.0, 1e-6), (1.0, 0.5), (0.2, 0.5), (-0.2, 0.5), (-1.0, 0.5), (0.0, 0.0)]
+        {
+            let samples = 100_000;
+            let mean = (0..samples)
+                .map(|k| {
+                    let t = disc + spread * (2.0 * (k as f64 + 0.5) / samples as f64 - 1.0);
+                    t.max(0.0).sqrt()
+                })
+                .sum::<f64>()
+                / samples as f64;
+            let ours = cell_mean_sqrt(disc as f32, spread as f32) as f64;
+            println!("disc {disc} ± {spread}: {ours:.6} against {mean:.6} sampled");
+            assert!((ours - mean).abs() < 1e-5, "disc {disc} ± {spread}: {ours} against {mean}");
+        }
+    }
+
+    #[test]
+    fn a_chord_ends_mean_weight_is_the_mean_of_its_samples() {
+        let depth = 0.1;
+        for &(y, spread) in &[
+            (-0.05, 0.0),
+            (-0.05, 1e-6),
+            (-0.05, 0.001),
+            (0.002, 0.005),
+            (-0.002, 0.005),
+            (-0.3, 0.5),
+            (0.2, 0.1),
+            (0.0, 0.0),
+        ] {
+            let samples = 100_000;
+            let mean = (0..samples)
+                .map(|k| {
+                    let t: f64 = y + spread * (2.0 * (k as f64 + 0.5) / samples as f64 - 1.0);
+                    (t.min(0.0) / depth).exp()
+                })
+                .sum::<f64>()
+                / samples as f64;
+            let ours = cell_mean_weight(y as f32, spread as f32, depth as f32) as f64;
+            println!("y {y} ± {spread}: {ours:.7} against {mean:.7} sampled");
+            assert!((ours - mean).abs() < 1e-6, "y {y} ± {spread}: {ours} against {mean}");
+        }
+    }
 }

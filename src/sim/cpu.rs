@@ -257,6 +257,7 @@ impl CpuHeightField {
             }
         }
         let depth = super::displacement_depth(self.half_width);
+        let dx = 2.0 * self.half_width / self.size as f32;
         for m in plan.moves.get(step).into_iter().flatten() {
             let cells = CellRange::under(&[m.from, m.to], self.size, self.half_width);
             for j in cells.z.0..=cells.z.1 {
@@ -264,17 +265,18 @@ impl CpuHeightField {
                 for i in cells.x.0..=cells.x.1 {
                     let x = self.centre(i);
                     self.height[j as usize * n + i as usize] +=
-                        displaced_column(x, z, &m.to, depth) - displaced_column(x, z, &m.from, depth);
+                        displaced_column(x, z, &m.to, depth, dx) - displaced_column(x, z, &m.from, depth, dx);
                 }
             }
         }
         let level = plan.rest_level;
         let correction = if first { plan.correction } else { 0.0 };
-        let cells = plan.pushed_cells(step, self.size, self.half_width);
-        for j in cells.z.0..=cells.z.1 {
-            for i in cells.x.0..=cells.x.1 {
-                let h = &mut self.height[j as usize * n + i as usize];
-                *h = bounded(*h - correction - level, plan.max_height) + level;
+        for cells in plan.pushed_cells(step, self.size, self.half_width) {
+            for j in cells.z.0..=cells.z.1 {
+                for i in cells.x.0..=cells.x.1 {
+                    let h = &mut self.height[j as usize * n + i as usize];
+                    *h = bounded(*h - correction - level, plan.max_height) + level;
+                }
             }
         }
     }

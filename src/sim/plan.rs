@@ -136,18 +136,24 @@ impl StepPlan {
         (step == 0 && !self.drops.is_empty()) || self.moves.get(step).is_some_and(|m| m.iter().any(|m| m.from != m.to))
     }
 
-    /// The cells the drop pass before step `step` changes on an `n` x `n` grid: all of them
-    /// with drops (their correction is subtracted everywhere), else only those under the
-    /// moving ellipsoids, so bodies cost in proportion to their size, not the pool's.
-    pub fn pushed_cells(&self, step: usize, n: u32, half_width: f32) -> CellRange {
+    /// The cells the drop pass before step `step` changes on an `n` x `n` grid, as rectangles
+    /// that do not overlap: all of them with drops (their correction is subtracted everywhere),
+    /// else those under each moving ellipsoid, rectangles that overlap merged, so bodies cost
+    /// in proportion to their size, not to the pool's nor to the distance between them.
+    pub fn pushed_cells(&self, step: usize, n: u32, half_width: f32) -> Vec<CellRange> {
         if step == 0 && !self.drops.is_empty() {
-            return CellRange::all(n);
+            return vec![CellRange::all(n)];
         }
         let moved = self.moves.get(step).into_iter().flatten().filter(|m| m.from != m.to);
-        moved
-            .map(|m| CellRange::under(&[m.from, m.to], n, half_width))
-            .reduce(CellRange::union)
-            .unwrap_or(CellRange { x: (0, 0), z: (0, 0) })
+        let mut rects: Vec<CellRange> = Vec::new();
+        for mut rect in moved.map(|m| CellRange::under(&[m.from, m.to], n, half_width)) {
+            // Swallow every rectangle this one overlaps, until it overlaps none.
+            while let Some(k) = rects.iter().position(|r| r.overlaps(&rect)) {
+                rect = rect.union(rects.swap_remove(k));
+            }
+            rects.push(rect);
+        }
+        rects
     }
 
     /// Updates (substeps) per step.
@@ -257,5 +263,33 @@ mod tests {
         let analytic = std::f32::consts::PI * 0.01 * (0.5 - 2.0 / std::f32::consts::PI.powi(2)) / pool_area;
         let numeric = drop_mean(&d, n, 1.0);
         assert!((numeric - analytic).abs() / analytic < 0.01, "{numeric} vs {analytic}");
+    }
+
+    #[test]
+    fn bodies_far_apart_are_pushed_in_two_rectangles_and_overlapping_ones_in_one() {
+        use super::super::coupling::HullSlot;
+        use glam::{Mat3, Vec3};
+        // Balls of 0.1 m radius (unit_from_world scales by 1 / radius) in a 2 m pool of 64 cells.
+        let ball = |x: f32, z: f32| HullSlot {
+            centre: Vec3::new(x, 0.0, z),
+            unit_from_world: Mat3::from_diagonal(Vec3::splat(10.0)),
+        };
+        let moving = |x: f32, z: f32| HullMove { from: ball(x, z), to: ball(x + 0.01, z) };
+        let mut plan = StepPlan::new(&mut Vec::new(), 64, 1.0, 1, 1.0 / 120.0, WaveSettings::reflecting(0.6, 0.5));
+        let cells = |plan: &StepPlan| plan.pushed_cells(0, 64, 1.0);
+        plan.moves = vec![vec![moving(-0.6, -0.6), moving(0.6, 0.6)]];
+        let apart = cells(&plan);
+        plan.moves = vec![vec![moving(-0.6, -0.6), moving(-0.5, -0.55), moving(0.6, 0.6)]];
+        let two_close = cells(&plan);
+        println!("apart: {apart:?}; two close and one apart: {two_close:?}");
+        assert_eq!(apart.len(), 2);
+        assert!(apart.iter().map(CellRange::cells).sum::<u32>() < 64 * 64 / 10, "{apart:?}");
+        assert_eq!(two_close.len(), 2);
+        assert!(!two_close[0].overlaps(&two_close[1]));
+        // Every cell a ball can push is in one of them: its reach and the cell past it.
+        for m in plan.moves.iter().flatten() {
+            let under = CellRange::under(&[m.from, m.to], 64, 1.0);
+            assert!(two_close.iter().any(|r| r.union(under) == *r), "{under:?} not in {two_close:?}");
+        }
     }
 }
