@@ -31,6 +31,12 @@ pub const EXPOSURE_SCALE: f32 = 0.36;
 /// The cubemap stores sky radiance / SKY_RANGE in 8-bit sRGB (values above clip).
 pub const SKY_RANGE: f32 = 2.0;
 
+/// Share of a change in the daylight's level that the picture's exposure makes up for, as an
+/// eye or a camera adapts: a low sun's scene is brightened by half the stops it lost against
+/// the default sun's, so that it still reads as evening, and a sun moved overhead in a preset
+/// exposed for the evening does not burn the picture out ([`adapted_exposure`]).
+pub const EYE_ADAPTATION: f32 = 0.5;
+
 /// Optical depth of a vertical column of clear air per colour channel (red, green, blue at
 /// about 680, 550, 450 nm): Rayleigh scattering 0.0088 λ^-4.05 plus haze 0.05 λ^-1.3 (λ in µm).
 const ZENITH_OPTICAL_DEPTH: [f32; 3] = [0.125, 0.208, 0.364];
@@ -180,6 +186,25 @@ impl Daylight {
     }
 }
 
+/// Exposure (EV) the picture adds to the `exposure` parameter for a sun `elevation_deg` above
+/// the horizon: [`EYE_ADAPTATION`] of the stops by which the light on open ground (the sun's
+/// on a level surface and the sky's) falls short of the default sun's. 0 at the default, +0.7
+/// at 20°, -0.15 at 82°.
+pub fn adapted_exposure(elevation_deg: f32) -> f32 {
+    let light = |deg: f32| {
+        let e = deg.clamp(1.0, 90.0).to_radians();
+        let sky = Daylight::new(Vec3::new(e.cos(), e.sin(), 0.0));
+        luma(sky.sun_light) * e.sin() + luma(sky.ambient)
+    };
+    let default = SUN_PARAMS.iter().find(|p| p.name == "sun_elevation").expect("a sun parameter").default;
+    EYE_ADAPTATION * (light(default) / light(elevation_deg)).log2()
+}
+
+/// Luminance of a linear RGB colour (Rec. 709 weights).
+fn luma(c: Vec3) -> f32 {
+    c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
+}
+
 /// Where the sun is. (The parameter table, `params::table`, lists them in this order.)
 pub const SUN_PARAMS: &[ParamSpec] = &[
     ParamSpec {
@@ -210,17 +235,13 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
     unit: "EV",
     control: slider(-2.0, 2.0, 0.1),
     default: 0.0,
-    help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve).",
+    help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve), on top of the eye's own adaptation: a lower sun is exposed for half the light it loses.",
 }];
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scene::sun_direction;
-
-    fn luma(c: Vec3) -> f32 {
-        c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
-    }
 
     #[test]
     fn the_noon_sky_is_blue_overhead_brighter_at_the_horizon_and_lights_a_fifth_of_the_sun() {
@@ -259,5 +280,18 @@ mod tests {
                 assert!(c.is_finite() && c.max_element() < SKY_RANGE, "{az} {el}: {c:?}");
             }
         }
+    }
+
+    #[test]
+    fn the_exposure_makes_up_half_the_light_a_lower_sun_loses() {
+        let at = |deg: f32| adapted_exposure(deg);
+        let figures: Vec<(f32, f32)> =
+            [10.0, 15.0, 20.0, 30.0, 40.0, 55.0, 82.0, 90.0].iter().map(|&e| (e, at(e))).collect();
+        println!("sun elevation (°), exposure added (EV): {figures:?}");
+        assert!(at(55.0).abs() < 1e-4, "the default sun's picture changes by {} EV", at(55.0));
+        assert!(figures.windows(2).all(|w| w[1].1 < w[0].1), "not falling as the sun rises: {figures:?}");
+        // Half the stops: the light on open ground at 20° is about 2.7 times less than at 55°.
+        assert!((0.6..0.8).contains(&at(20.0)), "{} EV at 20°", at(20.0));
+        assert!((-0.3..0.0).contains(&at(90.0)), "{} EV overhead", at(90.0));
     }
 }
