@@ -191,18 +191,19 @@ impl Daylight {
 /// on a level surface and the sky's) falls short of the default sun's. 0 at the default, +0.7
 /// at 20°, -0.15 at 82°.
 pub fn adapted_exposure(elevation_deg: f32) -> f32 {
-    let light = |deg: f32| {
-        let e = deg.clamp(1.0, 90.0).to_radians();
-        let sky = Daylight::new(Vec3::new(e.cos(), e.sin(), 0.0));
-        luma(sky.sun_light) * e.sin() + luma(sky.ambient)
-    };
     let default = SUN_PARAMS.iter().find(|p| p.name == "sun_elevation").expect("a sun parameter").default;
-    EYE_ADAPTATION * (light(default) / light(elevation_deg)).log2()
+    EYE_ADAPTATION * (open_ground_light(default) / open_ground_light(elevation_deg)).log2()
 }
 
-/// Luminance of a linear RGB colour (Rec. 709 weights).
-fn luma(c: Vec3) -> f32 {
-    c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
+/// Luminance of the light on a level surface open to the sky (scene units) under a sun
+/// `elevation_deg` above the horizon: the sun's and the sky's. (Not inlined: the web build's
+/// download is budgeted, and this is called once a frame.)
+#[inline(never)]
+fn open_ground_light(elevation_deg: f32) -> f32 {
+    let luma = |c: Vec3| c.dot(Vec3::new(0.2126, 0.7152, 0.0722));
+    let e = elevation_deg.clamp(1.0, 90.0).to_radians();
+    let sky = Daylight::new(Vec3::new(e.cos(), e.sin(), 0.0));
+    luma(sky.sun_light) * e.sin() + luma(sky.ambient)
 }
 
 /// Where the sun is. (The parameter table, `params::table`, lists them in this order.)
@@ -242,6 +243,10 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
 mod tests {
     use super::*;
     use crate::scene::sun_direction;
+
+    fn luma(c: Vec3) -> f32 {
+        c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
+    }
 
     #[test]
     fn the_noon_sky_is_blue_overhead_brighter_at_the_horizon_and_lights_a_fifth_of_the_sun() {
