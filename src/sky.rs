@@ -31,11 +31,11 @@ pub const EXPOSURE_SCALE: f32 = 0.36;
 /// The cubemap stores sky radiance / SKY_RANGE in 8-bit sRGB (values above clip).
 pub const SKY_RANGE: f32 = 2.0;
 
-/// Share of a change in the daylight's level that the picture's exposure makes up for, as an
-/// eye or a camera adapts: a low sun's scene is brightened by half the stops it lost against
-/// the default sun's, so that it still reads as evening, and a sun moved overhead in a preset
-/// exposed for the evening does not burn the picture out ([`adapted_exposure`]).
-pub const EYE_ADAPTATION: f32 = 0.5;
+/// Share of a change in the daylight's level that the picture's exposure makes up for, as a
+/// camera's automatic exposure does: all of it, so that a low sun's scene is exposed as well as
+/// the default sun's (the presets add their own stops on top), and a sun moved overhead in a
+/// preset exposed for the evening does not burn the picture out ([`adapted_exposure`]).
+pub const AUTO_EXPOSURE_SHARE: f32 = 1.0;
 
 /// Optical depth of a vertical column of clear air per colour channel (red, green, blue at
 /// about 680, 550, 450 nm): Rayleigh scattering 0.0088 λ^-4.05 plus haze 0.05 λ^-1.3 (λ in µm).
@@ -187,12 +187,12 @@ impl Daylight {
 }
 
 /// Exposure (EV) the picture adds to the `exposure` parameter for a sun `elevation_deg` above
-/// the horizon: [`EYE_ADAPTATION`] of the stops by which the light on open ground (the sun's
-/// on a level surface and the sky's) falls short of the default sun's. 0 at the default, +0.7
-/// at 20°, -0.15 at 82°.
+/// the horizon: [`AUTO_EXPOSURE_SHARE`] of the stops by which the light on open ground (the sun's
+/// on a level surface and the sky's) falls short of the default sun's. 0 at the default, +1.4
+/// at 20°, -0.3 at 82°.
 pub fn adapted_exposure(elevation_deg: f32) -> f32 {
     let default = SUN_PARAMS.iter().find(|p| p.name == "sun_elevation").expect("a sun parameter").default;
-    EYE_ADAPTATION * (open_ground_light(default) / open_ground_light(elevation_deg)).log2()
+    AUTO_EXPOSURE_SHARE * (open_ground_light(default) / open_ground_light(elevation_deg)).log2()
 }
 
 /// Luminance of the light on a level surface open to the sky (scene units) under a sun
@@ -236,7 +236,7 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
     unit: "EV",
     control: slider(-2.0, 2.0, 0.1),
     default: 0.0,
-    help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve), on top of the eye's own adaptation: a lower sun is exposed for half the light it loses.",
+    help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve), on top of the camera's own: a lower sun is exposed for the light it loses.",
 }];
 
 #[cfg(test)]
@@ -288,15 +288,15 @@ mod tests {
     }
 
     #[test]
-    fn the_exposure_makes_up_half_the_light_a_lower_sun_loses() {
+    fn the_exposure_makes_up_the_light_a_lower_sun_loses() {
         let at = |deg: f32| adapted_exposure(deg);
         let figures: Vec<(f32, f32)> =
             [10.0, 15.0, 20.0, 30.0, 40.0, 55.0, 82.0, 90.0].iter().map(|&e| (e, at(e))).collect();
         println!("sun elevation (°), exposure added (EV): {figures:?}");
         assert!(at(55.0).abs() < 1e-4, "the default sun's picture changes by {} EV", at(55.0));
         assert!(figures.windows(2).all(|w| w[1].1 < w[0].1), "not falling as the sun rises: {figures:?}");
-        // Half the stops: the light on open ground at 20° is about 2.7 times less than at 55°.
-        assert!((0.6..0.8).contains(&at(20.0)), "{} EV at 20°", at(20.0));
-        assert!((-0.3..0.0).contains(&at(90.0)), "{} EV overhead", at(90.0));
+        // The light on open ground at 20° is about 2.7 times (1.4 stops) less than at 55°.
+        assert!((1.2..1.6).contains(&at(20.0)), "{} EV at 20°", at(20.0));
+        assert!((-0.5..-0.2).contains(&at(90.0)), "{} EV overhead", at(90.0));
     }
 }
