@@ -8,7 +8,9 @@
 //! zenith value times F(θ, γ) / F(0, θ_s), with coefficients linear in the turbidity T.
 
 use crate::param_spec::{slider, ParamSpec};
+use crate::scene::sun_direction;
 use glam::Vec3;
+use std::sync::OnceLock;
 
 /// Haze of the air (Preetham's turbidity: 2 a clear day, 6 a hazy one).
 pub const TURBIDITY: f32 = 2.4;
@@ -34,7 +36,7 @@ pub const SKY_RANGE: f32 = 2.0;
 /// Share of a change in the daylight's level that the picture's exposure makes up for, as a
 /// camera's automatic exposure does: all of it, so that a low sun's scene is exposed as well as
 /// the default sun's (the presets add their own stops on top), and a sun moved overhead in a
-/// preset exposed for the evening does not burn the picture out ([`adapted_exposure`]).
+/// preset exposed for the evening does not burn the picture out ([`Daylight::adapted_exposure`]).
 pub const AUTO_EXPOSURE_SHARE: f32 = 1.0;
 
 /// Optical depth of a vertical column of clear air per colour channel (red, green, blue at
@@ -164,6 +166,25 @@ impl Daylight {
         sum / (rings * steps) as f32
     }
 
+    /// Luminance of the light on a level surface open to this sky (scene units): the sun's on
+    /// it and the sky's.
+    pub fn open_ground_light(&self) -> f32 {
+        let luma = |c: Vec3| c.dot(Vec3::new(0.2126, 0.7152, 0.0722));
+        luma(self.sun_light) * self.sun.y.max(0.0) + luma(self.ambient)
+    }
+
+    /// Exposure (EV) the picture adds to the `exposure` parameter under this sky:
+    /// [`AUTO_EXPOSURE_SHARE`] of the stops by which its light on open ground falls short of
+    /// the default sun's. 0 at the default, +1.4 at 20°, -0.3 at 82°.
+    pub fn adapted_exposure(&self) -> f32 {
+        static DEFAULT_LIGHT: OnceLock<f32> = OnceLock::new();
+        let default_light = *DEFAULT_LIGHT.get_or_init(|| {
+            let default = |name: &str| SUN_PARAMS.iter().find(|p| p.name == name).expect("a sun parameter").default;
+            Daylight::new(sun_direction(default("sun_azimuth"), default("sun_elevation"))).open_ground_light()
+        });
+        AUTO_EXPOSURE_SHARE * (default_light / self.open_ground_light()).log2()
+    }
+
     /// The cube shader's uniform: Perez rows for Y, x, y (A..D; E in the zenith row), the
     /// zenith values and the sun.
     pub fn uniform(&self) -> [[f32; 4]; 5] {
@@ -184,26 +205,6 @@ impl Daylight {
              const UNDERWATER_SKY: f32 = {UNDERWATER_SKY:?};\nconst SUN_GLINT: f32 = {SUN_GLINT:?};\nconst EXPOSURE_SCALE: f32 = {EXPOSURE_SCALE:?};\n"
         )
     }
-}
-
-/// Exposure (EV) the picture adds to the `exposure` parameter for a sun `elevation_deg` above
-/// the horizon: [`AUTO_EXPOSURE_SHARE`] of the stops by which the light on open ground (the sun's
-/// on a level surface and the sky's) falls short of the default sun's. 0 at the default, +1.4
-/// at 20°, -0.3 at 82°.
-pub fn adapted_exposure(elevation_deg: f32) -> f32 {
-    let default = SUN_PARAMS.iter().find(|p| p.name == "sun_elevation").expect("a sun parameter").default;
-    AUTO_EXPOSURE_SHARE * (open_ground_light(default) / open_ground_light(elevation_deg)).log2()
-}
-
-/// Luminance of the light on a level surface open to the sky (scene units) under a sun
-/// `elevation_deg` above the horizon: the sun's and the sky's. (Not inlined: the web build's
-/// download is budgeted, and this is called once a frame.)
-#[inline(never)]
-fn open_ground_light(elevation_deg: f32) -> f32 {
-    let luma = |c: Vec3| c.dot(Vec3::new(0.2126, 0.7152, 0.0722));
-    let e = elevation_deg.clamp(1.0, 90.0).to_radians();
-    let sky = Daylight::new(Vec3::new(e.cos(), e.sin(), 0.0));
-    luma(sky.sun_light) * e.sin() + luma(sky.ambient)
 }
 
 /// Where the sun is. (The parameter table, `params::table`, lists them in this order.)
@@ -289,7 +290,7 @@ mod tests {
 
     #[test]
     fn the_exposure_makes_up_the_light_a_lower_sun_loses() {
-        let at = |deg: f32| adapted_exposure(deg);
+        let at = |deg: f32| Daylight::new(sun_direction(35.0, deg)).adapted_exposure();
         let figures: Vec<(f32, f32)> =
             [10.0, 15.0, 20.0, 30.0, 40.0, 55.0, 82.0, 90.0].iter().map(|&e| (e, at(e))).collect();
         println!("sun elevation (°), exposure added (EV): {figures:?}");

@@ -11,7 +11,6 @@ use crate::render::flat::{Distortion, FlatCaustics, FlatView, RenderMode};
 use crate::render::{AmbientView, DebugTexture, DebugView, Optics, View, REFLECTANCE_VIEW};
 use crate::scene;
 use crate::sim;
-use crate::sky::adapted_exposure;
 
 impl WaterDemo {
     /// Remakes the ambient waves if their parameters changed.
@@ -78,7 +77,7 @@ impl WaterDemo {
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
             flat: self.flat_view(),
-            exposure: self.params.get(ParamId::Exposure) + adapted_exposure(self.params.get(ParamId::SunElevation)),
+            exposure: self.params.get(ParamId::Exposure),
             deck: self.on_deck(),
             tile_gloss: self.params.get(ParamId::TileGloss),
         }

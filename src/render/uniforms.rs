@@ -83,7 +83,8 @@ impl Renderer {
             ambient_header: view.ambient.header,
             ambient_waves: view.ambient.waves,
             flat: view.flat.map_or([0.0; 4], |f| f.uniform()),
-            sun_light: daylight.sun_light.extend(2f32.powf(view.exposure)).to_array(),
+            // The exposure parameter, and the part the camera adapts to this sky by itself.
+            sun_light: daylight.sun_light.extend(2f32.powf(view.exposure + daylight.adapted_exposure())).to_array(),
             sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
             horizon: self.horizon.1,
             bodies: bodies_uniform(view),

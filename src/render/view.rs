@@ -33,7 +33,8 @@ pub struct View {
     pub render_scale: f32,
     /// Flat water instead of (or beside) the ray-traced surface; `None`: ray-traced.
     pub flat: Option<FlatView>,
-    /// Photographic exposure before the tone curve (EV: +1 doubles the light).
+    /// Photographic exposure before the tone curve (EV: +1 doubles the light), on top of the
+    /// sky's own ([`crate::sky::Daylight::adapted_exposure`]).
     pub exposure: f32,
     /// The pool is sunk in a paved deck (else the classic's cut-away box in the open).
     pub deck: bool,
