@@ -1,13 +1,13 @@
 // Drops and bodies. Each drop adds a smooth cosine bump h += s * (1 - cos(pi * (1 - d/r))) / 2
 // inside its radius r; the CPU computes the bumps' mean over the grid and it is subtracted
 // everywhere, so a drop adds no net water. A moving body pushes the surface by the change of
-// the water column it displaces (displaced_column in sim.rs): up ahead of and above it, down
-// behind it; the volume it takes up in the water is accounted for by the rest level the mean
-// is held at (sim_normals.wgsl).
+// the water column it displaces (displaced_column in sim/coupling.rs): up ahead of and above
+// it, down behind it; the volume it takes up in the water is accounted for by the rest level
+// the mean is held at (sim_normals.wgsl).
 
 // Column (m) of an ellipsoid below the rest level over the cell at pool point x, each depth y
 // weighted by exp(y / L): integral of exp(y / L) dy over the part of the vertical line inside
-// it. Averaged over the cell (displaced_column in sim.rs): the chord's length at the silhouette
+// it. Averaged over the cell, as in sim/coupling.rs: the chord's length at the silhouette
 // (cell_mean_sqrt) and its ends' weights (cell_mean_weight), each spread by its change across
 // the cell, so that a waterline crosses a cell a little at a time.
 fn displaced_column(x: vec2<f32>, first: i32) -> f32 {
@@ -31,7 +31,7 @@ fn displaced_column(x: vec2<f32>, first: i32) -> f32 {
 }
 
 // Mean of sqrt(max(t, 0)) for t even over disc ± spread, (P^3/2 - Q^3/2) / (3 spread) with the
-// ends P, Q clamped at 0, written with no division by a spread of 0 (cell_mean_sqrt in sim.rs).
+// ends P, Q clamped at 0, written with no division by a spread of 0 (as in sim/coupling.rs).
 fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
     let p = max(disc + spread, 0.0);
     let q = max(disc - spread, 0.0);
@@ -41,13 +41,13 @@ fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
 }
 
 // Mean of exp(min(t, 0) / depth) for t even over y ± spread: a chord's end's weight, 1 above the
-// rest level, over a cell; (e^u - 1) / u from its series where u is small (cell_mean_weight in
-// sim.rs).
+// rest level, over a cell; (e^u - 1) / u from its series where u is small (as in
+// sim/coupling.rs).
 fn cell_mean_weight(y: f32, spread: f32, depth: f32) -> f32 {
     let lo = min(y - spread, 0.0);
     let hi = min(y + spread, 0.0);
     let u = (hi - lo) / depth;
-    let series = exp(lo / depth) * (1.0 + u * (0.5 + u * (1.0 / 6.0 + u / 24.0)));
+    let series = exp(lo / depth) * (1.0 + u * (0.5 + u * (1.0 / 6.0 + u * (1.0 / 24.0 + u / 120.0))));
     let below = select((exp(hi / depth) - exp(lo / depth)) / max(u, 1e-30), series, u < 0.1);
     let share_below = clamp((spread - y) / max(2.0 * spread, 1e-30), 0.0, 1.0);
     return share_below * below + 1.0 - share_below;

@@ -33,11 +33,10 @@ pub const EXPOSURE_SCALE: f32 = 0.36;
 /// The cubemap stores sky radiance / SKY_RANGE in 8-bit sRGB (values above clip).
 pub const SKY_RANGE: f32 = 2.0;
 
-/// Share of a change in the daylight's level that the picture's exposure makes up for, as a
-/// camera's automatic exposure does: all of it, so that a low sun's scene is exposed as well as
-/// the default sun's (the presets add their own stops on top), and a sun moved overhead in a
-/// preset exposed for the evening does not burn the picture out ([`Daylight::adapted_exposure`]).
-pub const AUTO_EXPOSURE_SHARE: f32 = 1.0;
+/// Luminance of a linear RGB colour (Rec. 709 weights).
+fn luma(c: Vec3) -> f32 {
+    c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
+}
 
 /// Optical depth of a vertical column of clear air per colour channel (red, green, blue at
 /// about 680, 550, 450 nm): Rayleigh scattering 0.0088 λ^-4.05 plus haze 0.05 λ^-1.3 (λ in µm).
@@ -124,7 +123,7 @@ impl Daylight {
         sky.sun_light = Vec3::from(ZENITH_OPTICAL_DEPTH.map(|tau| (-tau * (m - 1.0)).exp())) * SUN_IRRADIANCE;
         // Scale the sky's luminance so that, with the sun overhead, its light on the ground is
         // SKY_TO_SUN of the sun's; the same scale at every sun position (evenings darken).
-        let noon = Self::unscaled(Vec3::Y).irradiance_up().dot(Vec3::new(0.2126, 0.7152, 0.0722));
+        let noon = luma(Self::unscaled(Vec3::Y).irradiance_up());
         sky.zenith[0] *= SKY_TO_SUN * SUN_IRRADIANCE / noon;
         sky.ambient = sky.irradiance_up();
         sky
@@ -169,20 +168,21 @@ impl Daylight {
     /// Luminance of the light on a level surface open to this sky (scene units): the sun's on
     /// it and the sky's.
     pub fn open_ground_light(&self) -> f32 {
-        let luma = |c: Vec3| c.dot(Vec3::new(0.2126, 0.7152, 0.0722));
         luma(self.sun_light) * self.sun.y.max(0.0) + luma(self.ambient)
     }
 
-    /// Exposure (EV) the picture adds to the `exposure` parameter under this sky:
-    /// [`AUTO_EXPOSURE_SHARE`] of the stops by which its light on open ground falls short of
-    /// the default sun's. 0 at the default, +1.4 at 20°, -0.3 at 82°.
+    /// Exposure (EV) the picture adds to the `exposure` parameter under this sky, as a camera's
+    /// automatic exposure does: the stops by which its light on open ground falls short of the
+    /// default sun's. So a low sun's scene is exposed as well as the default sun's (the presets
+    /// add their own stops on top), and a sun moved overhead in a preset exposed for the
+    /// evening does not burn the picture out. 0 at the default, +1.4 at 20°, -0.3 at 82°.
     pub fn adapted_exposure(&self) -> f32 {
         static DEFAULT_LIGHT: OnceLock<f32> = OnceLock::new();
         let default_light = *DEFAULT_LIGHT.get_or_init(|| {
             let default = |name: &str| SUN_PARAMS.iter().find(|p| p.name == name).expect("a sun parameter").default;
             Daylight::new(sun_direction(default("sun_azimuth"), default("sun_elevation"))).open_ground_light()
         });
-        AUTO_EXPOSURE_SHARE * (default_light / self.open_ground_light()).log2()
+        (default_light / self.open_ground_light()).log2()
     }
 
     /// The cube shader's uniform: Perez rows for Y, x, y (A..D; E in the zenith row), the
@@ -235,7 +235,7 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
     label: "Exposure",
     group: "Light",
     unit: "EV",
-    control: slider(-2.0, 2.0, 0.1),
+    control: slider(-4.0, 4.0, 0.1),
     default: 0.0,
     help: "Brightness of the picture in photographic stops (each +1 doubles the light before the filmic tone curve), on top of the camera's own: a lower sun is exposed for the light it loses.",
 }];
@@ -244,10 +244,6 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
 mod tests {
     use super::*;
     use crate::scene::sun_direction;
-
-    fn luma(c: Vec3) -> f32 {
-        c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
-    }
 
     #[test]
     fn the_noon_sky_is_blue_overhead_brighter_at_the_horizon_and_lights_a_fifth_of_the_sun() {

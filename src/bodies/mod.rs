@@ -167,17 +167,15 @@ impl Body {
     }
 
     /// Adds to `moves` how its `hull` moved since the water last took it in, if it moved
-    /// enough to push the water ([`HullSlot::moved_from`]), leaving out the parts above the
-    /// water, and records where it is now. The first time it only records its place.
+    /// enough to push the water ([`HullSlot::moved_from`]), and records where it is now. The
+    /// first time it only records its place.
     pub fn take_moves(&mut self, hull: &[Ellipsoid], moves: &mut Vec<HullMove>) {
         let current: Vec<HullSlot> = hull.iter().map(|e| e.hull_slot(&self.motion.pose)).collect();
         if let Some(previous) = &self.pushed {
             if !previous.iter().zip(&current).any(|(before, now)| now.moved_from(before)) {
                 return;
             }
-            // A part above the water before and after (the duck's head, mostly) pushes none.
-            let pushing = previous.iter().zip(&current).filter(|(from, to)| !(from.above_water() && to.above_water()));
-            moves.extend(pushing.map(|(&from, &to)| HullMove { from, to }));
+            moves.extend(previous.iter().zip(&current).map(|(&from, &to)| HullMove { from, to }));
         }
         self.pushed = Some(current);
     }

@@ -169,7 +169,7 @@ pub fn displaced_column(x: f32, z: f32, hull: &HullSlot, depth: f32, dx: f32) ->
 /// (3 spread) with P, Q the range's ends clamped at 0, written so that it needs no division by a
 /// spread of 0 and loses no precision to one much smaller than `disc`.
 /// (`cell_mean_sqrt` in `shaders/sim_drop.wgsl`.)
-pub fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
+fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
     let (p, q) = ((disc + spread).max(0.0), (disc - spread).max(0.0));
     if q > 0.0 {
         // P - Q = 2 spread: 2 (P + sqrt(PQ) + Q) / (3 (sqrt P + sqrt Q)).
@@ -183,13 +183,13 @@ pub fn cell_mean_sqrt(disc: f32, spread: f32) -> f32 {
 /// end's weight (1 above the rest level), averaged over a cell. (e^u - 1) / u is taken from its
 /// series where u is small, so that a narrow spread loses no precision.
 /// (`cell_mean_weight` in `shaders/sim_drop.wgsl`.)
-pub fn cell_mean_weight(y: f32, spread: f32, depth: f32) -> f32 {
+fn cell_mean_weight(y: f32, spread: f32, depth: f32) -> f32 {
     let (lo, hi) = (y - spread, y + spread);
     let (a, b) = (lo.min(0.0), hi.min(0.0));
     let u = (b - a) / depth;
     // Mean of exp(t / depth) over the part below the rest level, [a, b].
     let below = if u < 0.1 {
-        (a / depth).exp() * (1.0 + u * (0.5 + u * (1.0 / 6.0 + u / 24.0)))
+        (a / depth).exp() * (1.0 + u * (0.5 + u * (1.0 / 6.0 + u * (1.0 / 24.0 + u / 120.0))))
     } else {
         ((b / depth).exp() - (a / depth).exp()) / u
     };
@@ -226,7 +226,9 @@ pub struct ProbeSamples {
 
 /// At most [`MAX_PUSH_STEPS`] steps of at most [`MAX_HULL_MOVES`] moves: the moves of later
 /// steps join the last step's (an ellipsoid's moves chain: where one ends the next starts, so
-/// the chain goes from the first's start to the last's end).
+/// the chain goes from the first's start to the last's end). Then a move that starts and ends
+/// above the water (the duck's head, mostly) is left out: it pushes nothing. (Left out only
+/// after the chains are joined, so that a part dipping into the water on the way still chains.)
 pub(super) fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMove>> {
     for step in &mut moves {
         step.truncate(MAX_HULL_MOVES);
@@ -242,6 +244,9 @@ pub(super) fn merge_push_steps(mut moves: Vec<Vec<HullMove>>) -> Vec<Vec<HullMov
                 }
             }
         }
+    }
+    for step in &mut moves {
+        step.retain(|m| !(m.from.above_water() && m.to.above_water()));
     }
     moves
 }
