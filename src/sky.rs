@@ -173,16 +173,15 @@ impl Daylight {
 
     /// Exposure (EV) the picture adds to the `exposure` parameter under this sky, as a camera's
     /// automatic exposure does: the stops by which its light on open ground falls short of the
-    /// default sun's. So a low sun's scene is exposed as well as the default sun's (the presets
-    /// add their own stops on top), and a sun moved overhead in a preset exposed for the
-    /// evening does not burn the picture out. 0 at the default, +1.4 at 20°, -0.3 at 82°.
+    /// reference sun's ([`EXPOSURE_REFERENCE_ELEVATION`]). So a low sun's scene is exposed as
+    /// well as a high one's (the presets add their own stops on top), and a sun moved overhead
+    /// in a preset exposed for the evening does not burn the picture out. 0 at 55°, +1.4 at
+    /// 20°, -0.1 at the default 65°, -0.3 at 82°.
     pub fn adapted_exposure(&self) -> f32 {
-        static DEFAULT_LIGHT: OnceLock<f32> = OnceLock::new();
-        let default_light = *DEFAULT_LIGHT.get_or_init(|| {
-            let default = |name: &str| SUN_PARAMS.iter().find(|p| p.name == name).expect("a sun parameter").default;
-            Daylight::new(sun_direction(default("sun_azimuth"), default("sun_elevation"))).open_ground_light()
-        });
-        (default_light / self.open_ground_light()).log2()
+        static REFERENCE_LIGHT: OnceLock<f32> = OnceLock::new();
+        let reference_light = *REFERENCE_LIGHT
+            .get_or_init(|| Daylight::new(sun_direction(0.0, EXPOSURE_REFERENCE_ELEVATION)).open_ground_light());
+        (reference_light / self.open_ground_light()).log2()
     }
 
     /// The cube shader's uniform: Perez rows for Y, x, y (A..D; E in the zenith row), the
@@ -207,7 +206,14 @@ impl Daylight {
     }
 }
 
-/// Where the sun is. (The parameter table, `params::table`, lists them in this order.)
+/// The sun's elevation (°) whose light the automatic exposure makes every sun's up to: the
+/// elevation the presets' own exposures were set under (the light on open ground does not
+/// depend on the azimuth).
+pub const EXPOSURE_REFERENCE_ELEVATION: f32 = 55.0;
+
+/// Where the sun is: by default high and behind the camera's left shoulder, so that the rim
+/// shades little of the floor and the caustics show over most of it, the right wall's too.
+/// (The parameter table, `params::table`, lists them in this order.)
 pub const SUN_PARAMS: &[ParamSpec] = &[
     ParamSpec {
         name: "sun_azimuth",
@@ -215,7 +221,7 @@ pub const SUN_PARAMS: &[ParamSpec] = &[
         group: "Light",
         unit: "°",
         control: slider(-180.0, 180.0, 1.0),
-        default: 35.0,
+        default: -40.0,
         help: "Compass direction of the sun around the pool.",
     },
     ParamSpec {
@@ -224,7 +230,7 @@ pub const SUN_PARAMS: &[ParamSpec] = &[
         group: "Light",
         unit: "°",
         control: slider(10.0, 90.0, 1.0),
-        default: 55.0,
+        default: 65.0,
         help: "Height of the sun above the horizon.",
     },
 ];
@@ -290,7 +296,11 @@ mod tests {
         let figures: Vec<(f32, f32)> =
             [10.0, 15.0, 20.0, 30.0, 40.0, 55.0, 82.0, 90.0].iter().map(|&e| (e, at(e))).collect();
         println!("sun elevation (°), exposure added (EV): {figures:?}");
-        assert!(at(55.0).abs() < 1e-4, "the default sun's picture changes by {} EV", at(55.0));
+        assert!(
+            at(EXPOSURE_REFERENCE_ELEVATION).abs() < 1e-4,
+            "the reference sun's picture changes by {} EV",
+            at(55.0)
+        );
         assert!(figures.windows(2).all(|w| w[1].1 < w[0].1), "not falling as the sun rises: {figures:?}");
         // The light on open ground at 20° is about 2.7 times (1.4 stops) less than at 55°.
         assert!((1.2..1.6).contains(&at(20.0)), "{} EV at 20°", at(20.0));
