@@ -41,6 +41,12 @@ fn ball_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     return ObjectHit(t, n, ball_albedo(n));
 }
 
+// Whether p lies inside the ball (inside_bodies).
+fn ball_inside(p: vec3<f32>) -> bool {
+    let u = ball_uniform();
+    return distance(p, u.xyz) < u.w;
+}
+
 fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
     let u = ball_uniform();
     return sphere_visibility(origin, dir, t_max, u.xyz, u.w);

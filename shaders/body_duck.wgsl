@@ -69,6 +69,20 @@ fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, i: i32) -> 
     return smoothstep(0.85, 1.1, length(o + d * t));
 }
 
+// Whether p lies inside one of the duck's traced parts (inside_bodies).
+fn duck_inside(p: vec3<f32>) -> bool {
+    if (scene.bodies[DUCK_SLOT + 4].w <= 0.0 || distance(p, scene.bodies[DUCK_SLOT + 4].xyz) > scene.bodies[DUCK_SLOT + 4].w) {
+        return false;
+    }
+    let local = transpose(duck_rotation()) * (p - scene.bodies[DUCK_SLOT + 3].xyz);
+    var inside = false;
+    for (var i = 0; i < DUCK_PARTS; i++) {
+        let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+        inside = inside || dot(o, o) < 1.0;
+    }
+    return inside;
+}
+
 // Nothing for the pool's ambient light: the duck is small next to it.
 fn duck_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {
     return 0.0;

@@ -90,6 +90,12 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
     }
+    // Water inside a body (the surface's coarse triangles rise through a hull near its
+    // waterline) is not drawn: the body's own pixel, drawn before, stays. Discarded last, so
+    // every derivative above was taken with all four pixels of the quad.
+    if (HAS_BODIES && inside_bodies(in.world)) {
+        discard;
+    }
     return finish(with_deck_edge(colour, edge));
 }
 

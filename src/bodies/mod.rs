@@ -54,7 +54,7 @@ pub struct BodyKind {
     pub vertex_stride: u64,
     /// Its WGSL: `<name>_hit`, `<name>_light` (what it lets through along a segment),
     /// `<name>_shade` (its colour at a point; `direct`: seen directly, not in a traced ray),
-    /// `<name>_occlusion` and the mesh's `vs_<name>`, `fs_<name>`; it reads its
+    /// `<name>_occlusion`, `<name>_inside` (whether a point lies in it) and the mesh's `vs_<name>`, `fs_<name>`; it reads its
     /// uniform at `<NAME>_SLOT`.
     pub wgsl: &'static str,
     /// WGSL its code reads, written from Rust: constants, and code generated from its tables
@@ -245,6 +245,10 @@ pub fn wgsl(present: u32) -> String {
     out += &format!(
         "fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {{\n    var light = 1.0;\n{}    return light;\n}}\n",
         each(&|name, upper| format!("    if (HAS_{upper}) {{\n        light *= {name}_light(p, dir, t_max);\n    }}\n"))
+    );
+    out += &format!(
+        "fn inside_bodies(p: vec3<f32>) -> bool {{\n    var inside = false;\n{}    return inside;\n}}\n",
+        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        inside = inside || {name}_inside(p);\n    }}\n"))
     );
     out += &format!(
         "fn bodies_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {{\n    var o = 0.0;\n{}    return o;\n}}\n",
