@@ -39,6 +39,9 @@
 //! - `WAVEPOOL_LOOK_PAGES` (`webgpu webgl2 classic`): which pages, space-separated.
 //! - `WAVEPOOL_LOOK_QUERY`: extra options for our page, e.g. `&preset=evening` (the load and
 //!   ripple views take them; the caustics view too, before its own).
+//! - `WAVEPOOL_LOOK_SIZE=page`: each page at its own canvas in a 1000x700 window, as a laptop
+//!   shows it (ours with its controls under the pool, not pinned; the classic's canvas is the
+//!   window less its panel): the figures where a student meets the pages, not at one size.
 //!
 //! Prints one JSON line per page and measurement (its figures, the canvas, the PNG's path),
 //! then one summary line per measurement with the figures of ours (webgpu), ours (webgl2) and
@@ -125,6 +128,14 @@ struct Row {
     stats: PictureStats,
 }
 
+/// Whether the pages are measured at their own canvases in `PAGE_VIEWPORT` (`WAVEPOOL_LOOK_SIZE=page`).
+fn at_page_size() -> bool {
+    std::env::var("WAVEPOOL_LOOK_SIZE").is_ok_and(|v| v == "page")
+}
+
+/// The window of `WAVEPOOL_LOOK_SIZE=page`: a laptop's browser window.
+const PAGE_VIEWPORT: (u32, u32) = (1000, 700);
+
 #[tokio::main(flavor = "current_thread")]
 async fn main() {
     let dir = std::env::var_os("WAVEPOOL_LOOK_DIR")
@@ -138,8 +149,11 @@ async fn main() {
         .collect();
     let server = StaticServer::start_with_classic(false);
     let browser = Browser::open(Graphics::WebGpu).await;
-    browser.add_init_script(PIN_POOL_JS).await;
-    let viewport = browser.set_viewport(VIEWPORT.0, VIEWPORT.1).await;
+    let window = if at_page_size() { PAGE_VIEWPORT } else { VIEWPORT };
+    if !at_page_size() {
+        browser.add_init_script(PIN_POOL_JS).await;
+    }
+    let viewport = browser.set_viewport(window.0, window.1).await;
     let agent = browser.js("return navigator.userAgent;").await;
     println!("{}", json!({ "viewport": [viewport.0, viewport.1], "browser": agent, "dir": dir.display().to_string() }));
     let mut rows = Vec::new();
@@ -167,7 +181,8 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     // Extra options for our page (e.g. `&preset=evening`), named in the page's name too.
     let extra = std::env::var("WAVEPOOL_LOOK_QUERY").unwrap_or_default();
     let name = format!("ours-{backend}{}", extra.replace(['&', '='], "-"));
-    let base = format!("/index.html?backend={backend}&quality=1&controls=0{extra}");
+    let controls = if at_page_size() { "" } else { "&controls=0" };
+    let base = format!("/index.html?backend={backend}&quality=1{controls}{extra}");
     let mut rows = Vec::new();
 
     let info = load_ours(browser, server, &base, backend).await;
@@ -243,7 +258,7 @@ async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &s
     };
     let rect = Rect::from_js(&canvas);
     assert!(
-        (rect.w, rect.h) == CANVAS && canvas["size"] == json!([CANVAS.0, CANVAS.1]),
+        at_page_size() || (rect.w, rect.h) == CANVAS && canvas["size"] == json!([CANVAS.0, CANVAS.1]),
         "{page}: the canvas is not {}x{} (CSS and backing pixels) as the comparison needs: {canvas}",
         CANVAS.0,
         CANVAS.1
