@@ -234,7 +234,7 @@ async fn controls_change_parameters() {
         .js("const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=sim_size]'); s.value = '512'; s.dispatchEvent(new Event('change'));")
         .await;
     // On a loaded machine SwiftShader takes its time over the resample (the first full run of
-    // session 17 waited out 20 s).
+    // the 2026-11-26 version waited out 20 s).
     assert!(
         browser.wait_for("window.demo.stats().simSize === 512", Duration::from_secs(60)).await,
         "sim_size select did not switch the grid: {}",

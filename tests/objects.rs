@@ -409,7 +409,7 @@ fn the_water_round_a_bobbing_duck_has_no_ripples_at_the_grids_own_scale() {
     let duck = demo.body(BodyId::named("duck").unwrap()).pose.position;
     let share = grid_scale_share(&h, n, wavepool::scene::HALF_WIDTH, Vec2::new(duck.x, duck.z), 0.3);
     println!("within 0.3 m of the duck ({n}² cells): grid-scale ripples {:.1} % of the waves (RMS)", share * 100.0);
-    // Pushes taken at the cells' centres (before session 24) left 4.6 %: the duck's waterline
+    // Pushes taken at the cells' centres (before 2026-11-27, 7abb3de) left 4.6 %: the duck's waterline
     // crossing a cell at once rang at the grid's own scale, dark specks round it on screen.
     assert!(share < 0.03, "grid-scale ripples {:.1} % of the waves", share * 100.0);
 }
