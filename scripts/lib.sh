@@ -119,6 +119,38 @@ ensure_host_tools() {
     fi
 }
 
+# The tools the package's tests use as a web developer would, pinned: Vite 7.3.8 and
+# TypeScript 5.9.3 from npm (a few seconds, once). Test apps made under this folder find them.
+ensure_package_tools() {
+    local dir="${XDG_CACHE_HOME:-$HOME/.cache}/wavepool/package-tools"
+    if ! grep -q '"version": "7.3.8"' "$dir/node_modules/vite/package.json" 2>/dev/null \
+        || ! grep -q '"version": "5.9.3"' "$dir/node_modules/typescript/package.json" 2>/dev/null; then
+        echo "==> installing Vite 7.3.8 and TypeScript 5.9.3 (npm)"
+        mkdir -p "$dir"
+        npm install --prefix "$dir" --no-audit --no-fund --silent vite@7.3.8 typescript@5.9.3 >/dev/null
+    fi
+}
+
+# Writes release/, what a user downloads, from dist/ and target/npm-package (build_web first):
+# the npm tarball, the single page, a zip of dist/ for a course platform, their SHA-256 sums.
+make_release() {
+    echo "==> writing release/ (npm tarball, single page, course zip, checksums)"
+    local version stage=target/release-stage
+    version=$(sed -n 's/^version = "\(.*\)"/\1/p' Cargo.toml | head -1)
+    rm -rf release "$stage" && mkdir -p release "$stage/wavepool" || return 1
+    npm pack ./target/npm-package --pack-destination release --silent >/dev/null || return 1
+    cp dist/wavepool-standalone.html release/ || return 1
+    # The folder a teacher uploads: the pages and the demo's files (the single page is its own download).
+    find dist -maxdepth 1 -type f ! -name wavepool-standalone.html -exec cp {} "$stage/wavepool/" \; || return 1
+    printf '%s\n' "wavepool $version: upload this folder to your course's files and link its index.html (the whole demo)," \
+        "or put <iframe src=\"wavepool/embed.html?controls=1\" width=\"800\" height=\"600\" allow=\"fullscreen\"></iframe> in a page." \
+        > "$stage/wavepool/README.txt"
+    (cd "$stage" && python3 -m zipfile -c "../../release/wavepool-$version-course.zip" wavepool) || return 1
+    (cd release && sha256sum -- * > SHA256SUMS) || return 1
+    # shellcheck disable=SC2012
+    ls -l release | awk 'NR > 1 { printf "    %s %d bytes\n", $9, $5 }'
+}
+
 # Builds the browser demo into dist/ with Trunk (release, wasm-opt -Oz), offline.
 build_web() {
     echo "==> building the browser demo (trunk build --release)"
@@ -128,6 +160,8 @@ build_web() {
     python3 scripts/strip_js_comments.py dist || return 1
     # The same page as one file that opens from disk and in sandboxed frames.
     python3 scripts/standalone.py dist || return 1
+    # The npm package: the modules, the core, their types (from the core's tables), package.json.
+    node scripts/package.mjs dist target/npm-package || return 1
     local wasm=dist/wavepool_bg.wasm js
     js=$(ls dist/*.js)
     # shellcheck disable=SC2086

@@ -11,6 +11,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
+mod reference;
+
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use wavepool::camera::POOL_LIMITS;
 use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STEP_DT};
@@ -44,6 +46,8 @@ enum Command {
     /// times and per-stage GPU times.
     #[command(after_help = parameter_list())]
     Bench(BenchArgs),
+    /// Prints the reference of every parameter and preset in Markdown (docs/parameters.md).
+    Parameters,
 }
 
 /// The viewer's flags (no command).
@@ -500,6 +504,10 @@ pub fn main() -> ExitCode {
         },
         Some(Command::Render(o)) => render(&o),
         Some(Command::Bench(o)) => bench(&o),
+        Some(Command::Parameters) => {
+            print!("{}", reference::markdown());
+            Ok(())
+        }
     };
     match result {
         Err(msg) => {

@@ -57,6 +57,23 @@ fn help_lists_every_parameter_and_preset_and_exits_0() {
 }
 
 #[test]
+fn the_parameter_reference_in_docs_is_what_the_table_says_now() {
+    let out = wavepool(&["parameters"]);
+    assert!(out.status.success(), "wavepool parameters failed: {}", stderr(&out));
+    let now = String::from_utf8(out.stdout).expect("UTF-8");
+    for p in wavepool::params::table() {
+        assert!(now.contains(&format!("| `{}` |", p.name)), "the reference lacks {}", p.name);
+    }
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/parameters.md");
+    let written = std::fs::read_to_string(&path).unwrap_or_default();
+    println!("docs/parameters.md: {} lines, {} parameters", now.lines().count(), wavepool::params::table().len());
+    assert!(
+        written == now,
+        "docs/parameters.md is stale: write it again with `cargo run -- parameters > docs/parameters.md`"
+    );
+}
+
+#[test]
 fn no_adapter_is_a_clear_error_with_exit_1() {
     // Metal does not exist on Linux: the instance finds no adapter at all.
     let out = Command::new(env!("CARGO_BIN_EXE_wavepool"))

@@ -9,7 +9,7 @@ import { frameLoopMethods, frameStats } from "./frame-loop.js";
 import { inputMethods } from "./input.js";
 import { keepKeys } from "./keys.js";
 import { layoutMethods } from "./layout.js";
-import { inline, live, memoryBytes } from "./loader.js";
+import { assetUrl, inline, live, memoryBytes } from "./loader.js";
 import { toNumber } from "./options.js";
 import { suspendMethods } from "./suspend.js";
 
@@ -32,6 +32,13 @@ function backendFailure(backend, failures) {
 
 /** How long a notice stays over the picture (ms). */
 const NOTICE_MS = 12000;
+
+/** The demo's own page `name` (index.html, embed.html): next to the assets; the single file is its own. */
+function demoPage(name) {
+  // (Not `new URL("./index.html", import.meta.url)` written out: a bundler would look for the
+  // page in the package, which carries none.)
+  return inline ? location.href.split(/[?#]/)[0] : assetUrl(name, new URL(name, import.meta.url));
+}
 
 export class Demo {
   constructor(element, shadow, root, stage, message, id, started) {
@@ -203,7 +210,7 @@ export class Demo {
       const picture = new Image();
       picture.className = "fallback";
       picture.alt = "A still picture of the water pool (the live demo could not start here)";
-      picture.src = inline ? inline.picture : new URL("./no-gpu.webp", import.meta.url).href;
+      picture.src = inline ? inline.picture : assetUrl("no-gpu.webp", new URL("./no-gpu.webp", import.meta.url));
       this._stage.prepend(picture);
     }
     this._message.hidden = false;
@@ -310,13 +317,12 @@ export class Demo {
 
   /** A link that opens the demo's page with this demo's parameters and view. */
   shareLink() {
-    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./index.html", import.meta.url).href;
-    return `${page}?${this._query()}`;
+    return `${demoPage("index.html")}?${this._query()}`;
   }
 
   /** An <iframe> showing this demo as it is now (the pool alone, `embed.html`; the single file when this is it). */
   embedCode() {
-    const page = inline ? location.href.split(/[?#]/)[0] : new URL("./embed.html", import.meta.url).href;
+    const page = demoPage("embed.html");
     return (
       `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
       `title="Interactive water pool (wavepool)"></iframe>`

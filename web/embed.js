@@ -6,8 +6,10 @@
 import { paramTable, presetTable } from "./wavepool.js";
 import { acquireContext, watchNear } from "./context-budget.js";
 import { Demo } from "./demo.js";
-import { inline, live, loadCore } from "./loader.js";
+import { assetUrl, inline, live, loadCore, setAssetLocation } from "./loader.js";
 import { optionName, readAspect, readOptions } from "./options.js";
+
+export { setAssetLocation };
 
 /** The presets: named starting states, each parameter values and maybe a camera. */
 export async function presets() {
@@ -48,7 +50,7 @@ export async function mount(element, options = {}) {
   } else {
     style = [document.createElement("link")];
     style[0].rel = "stylesheet";
-    style[0].href = new URL("./wavepool.css", import.meta.url).href;
+    style[0].href = assetUrl("wavepool.css", new URL("./wavepool.css", import.meta.url));
   }
   const stage = document.createElement("div");
   stage.className = "stage";

@@ -11,6 +11,7 @@ export const live = new Set(); // mounted demos, told when the wasm module panic
 // base 85 in the alphabet it carries, its gzip length in wasmBytes) and the no-GPU picture (a data: URL). Otherwise they are files next to this one.
 // eslint-disable-next-line no-undef
 export const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
+let assetBase = null; // setAssetLocation()'s folder (null: the files are next to this module)
 let wasmMemory = null; // the module's linear memory (for stats().wasmMemoryBytes)
 /** Linear memory made available at load: one demo at the defaults uses 9.7 MB. */
 const START_MEMORY_BYTES = 16 * 1024 * 1024;
@@ -34,9 +35,23 @@ async function inlineWasm() {
   return new Response(stream).arrayBuffer();
 }
 
+/** Where the demo's files are: a folder's URL (see embed.d.ts); before the core loads. */
+export function setAssetLocation(url) {
+  if (ready) console.warn("wavepool: setAssetLocation() after the core has loaded applies to pictures and links only");
+  assetBase = new URL(String(url), document.baseURI);
+  if (!assetBase.pathname.endsWith("/")) assetBase.pathname += "/";
+}
+
+/** A file of the demo's own: at setAssetLocation()'s folder, else `local` (next to this module,
+ * written as `new URL("./name", import.meta.url)` where it is used, so bundlers copy the file). */
+export function assetUrl(name, local) {
+  return assetBase ? new URL(name, assetBase).href : local.href;
+}
+
 export function loadCore() {
   if (!ready) {
-    const module = inline ? inlineWasm().then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(undefined);
+    const located = assetBase ? { module_or_path: new URL("wavepool_bg.wasm", assetBase) } : undefined;
+    const module = inline ? inlineWasm().then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(located);
     ready = module.then((source) => init(source)).then(
       (exports) => {
         wasmMemory = exports.memory;

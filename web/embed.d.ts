@@ -1,0 +1,212 @@
+// Types of wavepool's embedding module (embed.js): mount(), the demo's handle, <wave-pool>
+// and its events. The parameters, their choices, the presets and the creation options come
+// from tables.d.ts, which scripts/package.mjs writes from the core's own tables at each build.
+
+import type { ParamName, ParamValues, ParamSpec, PresetName, PresetSpec, CreationOptions, ParamAttributes } from "./tables.js";
+
+export type { ParamName, ParamValues, ParamSpec, PresetName, PresetSpec, CreationOptions, ParamAttributes };
+
+/** Options of mount() besides the parameters (all optional; bad values are clamped with a console warning). */
+export interface DemoOptions extends CreationOptions {
+  /** Which GPU interface to use: WebGPU when the browser gives an adapter, else WebGL2 ("auto"). Default "auto". */
+  backend?: "auto" | "webgpu" | "webgl2";
+  /** "none" takes the path for devices without float render targets (the water simulated on the CPU, 8-bit caustics). Default "auto". */
+  float?: "auto" | "none";
+  /** Show the controls under the picture. Default true. */
+  controls?: boolean | 0 | 1 | "true" | "false";
+  /** Cap on devicePixelRatio for the canvas's backing store (0.25–4). Default 2. */
+  maxPixelRatio?: number;
+  /** Cap on the canvas's backing pixels, width × height (4096–67108864). Default 1920 × 1080. */
+  maxPixels?: number;
+  /** Width / height of the picture when the element has no height of its own (0.25–4). Default 4/3. */
+  aspect?: number;
+  /** Cap on drawn frames per second (1–240; 0: no cap). Default 0. */
+  maxFps?: number;
+  /** "yaw,pitch,distance" (degrees, degrees, m) or the three numbers to start the camera from. Default: the scene's view. */
+  camera?: string | [number, number, number];
+  /** A named starting state: its parameter values and view, then the page's own options. */
+  preset?: PresetName;
+  /** Start when the element comes within 200 px of the viewport (true), or at once (false). Default true. */
+  lazy?: boolean | 0 | 1 | "true" | "false";
+  /** Parameter values, as an object of their own (the same as giving them beside the options). */
+  params?: Partial<ParamValues>;
+}
+
+/** What mount() takes: the options above and any parameter's starting value. */
+export type MountOptions = DemoOptions & Partial<ParamValues>;
+
+/** A position [x, y, z] in m, or null when the body is not in the scene. */
+export type Position = [number, number, number] | null;
+
+/** What stats() returns while the demo holds its GPU context. */
+export interface Stats {
+  /** false here (see SuspendedStats). */
+  suspended: false;
+  /** Frames drawn per second over the last 2 s. */
+  fps: number;
+  /** Median interval between drawn frames (ms). */
+  frameMs: number;
+  /** Longest interval between drawn frames, the wait since the last one included (ms). */
+  longestFrameMs: number;
+  /** Simulated seconds per wall second over those frames (1: real time). */
+  simSpeed: number;
+  /** Time from mount() to the first frame on screen (ms). */
+  firstFrameMs: number | null;
+  /** Bytes of the WebAssembly module's memory. */
+  wasmMemoryBytes: number | null;
+  /** GPU devices recreated after a loss. */
+  restarts: number;
+  /** Demos on the page that hold a GPU context. */
+  contextsOnPage: number;
+  /** The GPU interface in use. */
+  backend: "webgpu" | "webgl2";
+  /** The adapter's name, where the browser tells it ("" otherwise). */
+  adapter: string;
+  /** The canvas's colour format (on WebGPU the browser's preferred one). */
+  canvasFormat: string;
+  /** Cells per side of the simulation grid. */
+  simSize: number;
+  /** Where the water is simulated. */
+  simEngine: "gpu" | "cpu";
+  /** Simulated time (s). */
+  simTime: number;
+  /** The scene drawn. */
+  scene: string;
+  /** Mean water level (m), read back a frame or two late. */
+  meanLevel: number;
+  /** Largest |height| of the water (m), read back a frame or two late. */
+  maxAbsHeight: number;
+  /** The canvas's backing size (px). */
+  width: number;
+  height: number;
+  /** Fraction of the canvas's width and height the scene is drawn at. */
+  renderScale: number;
+  spherePosition: Position;
+  duckPosition: Position;
+  /** Every kind of floating body's position, by the kind's name. */
+  bodies: Record<string, Position>;
+  /** Volume of the bodies under the water (m³). */
+  submergedVolume: number;
+  /** GPU time per render mode (ms), where the browser measures it; null otherwise. */
+  gpuMs: { raytraced: number | null; flat: number | null; split: number | null } | null;
+  /** The latest measured frame's GPU time per stage (ms), where the browser measures it. */
+  stageMs: { simulation: number; waves: number; caustics: number; scene: number } | null;
+  /** Why flat water is not drawn now (under the water), or null. */
+  flatNote: string | null;
+  /** Sizes held to what this device affords. */
+  reduced: { name: string; asked: number; given: number }[];
+}
+
+/** What stats() returns while the demo has given its GPU context to others. */
+export interface SuspendedStats {
+  suspended: true;
+  fps: 0;
+  backend: "webgpu" | "webgl2" | undefined;
+  firstFrameMs: number | null;
+  restarts: number;
+  contextsOnPage: number;
+}
+
+/** The handle mount() resolves to, and <wave-pool>'s `demo` once it is ready. */
+export interface WavePool {
+  /** A drop at scene coordinates x, z (m; the pool's −1…1); radius and strength in m (default: the current parameters). */
+  addDrop(x: number, z: number, radius?: number, strength?: number): void;
+  /** Sets a parameter (a choice by name or number); out-of-range values are clamped with a warning. Returns the value in effect. */
+  set<K extends ParamName>(name: K, value: ParamValues[K]): number;
+  /** A parameter's current value (choices as their numbers). */
+  get(name: ParamName): number;
+  /** Where scene point (x, y, z) in m appears, in CSS px from the viewport's corner; null when not in view. */
+  project(x: number, y: number, z: number): { x: number; y: number } | null;
+  /** The parameter table. */
+  params(): ParamSpec[];
+  /** Back to how the page started: its parameters and camera, calm water. */
+  reset(): void;
+  /** Starts over from a preset: defaults, then its values and view, calm water. */
+  applyPreset(name: PresetName): void;
+  /** A link to the demo's page with this demo's parameters and view. */
+  shareLink(): string;
+  /** An <iframe> of the demo's frame page with this demo's parameters and view. */
+  embedCode(): string;
+  /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
+  camera(): [number, number, number];
+  /** Moves the camera (clamped to the scene's limits, with a warning). */
+  setCamera(yaw: number, pitch: number, distance: number): void;
+  /** Stops drawing and simulating. */
+  pause(): void;
+  /** Draws and simulates again. */
+  resume(): void;
+  /** Frame times, the backend, the water's figures. */
+  stats(): Stats | SuspendedStats;
+  /** The next frame as a PNG. */
+  snapshot(): Promise<Blob>;
+  /** Stops the demo, frees its GPU resources and empties the element. */
+  destroy(): void;
+}
+
+/**
+ * Puts a demo in `element` (in a shadow root). Resolves once the first frame is drawn (with
+ * `lazy`, once the element has come near the viewport); rejects, after showing a message
+ * in the element, when no GPU backend works.
+ */
+export function mount(element: Element, options?: MountOptions): Promise<WavePool>;
+
+/** The parameter table (loads the core). */
+export function params(): Promise<ParamSpec[]>;
+
+/** The presets (loads the core). */
+export function presets(): Promise<PresetSpec[]>;
+
+/**
+ * Where the demo's files are (wavepool_bg.wasm, wavepool.css, no-gpu.webp, and the pages
+ * share links open): a URL of a folder, e.g. "https://example.org/wavepool/". By default they
+ * are next to embed.js (a bundler copies them there). Call it before the first mount().
+ */
+export function setAssetLocation(url: string | URL): void;
+
+/** The events <wave-pool> fires. */
+export interface WavePoolEventMap extends HTMLElementEventMap {
+  /** The first frame is on screen; `detail` is the demo's handle. */
+  "wavepool:ready": CustomEvent<WavePool>;
+  /** The demo could not start; `detail` is the message shown in the element. */
+  "wavepool:error": CustomEvent<string>;
+}
+
+/** `<wave-pool>`: its attributes are the options and parameters in kebab case (`max-fps`, `wave-speed`). */
+export class WavePoolElement extends HTMLElement {
+  /** The handle, once `wavepool:ready` has fired; null before and after removal. */
+  demo: WavePool | null;
+  addEventListener<K extends keyof WavePoolEventMap>(
+    type: K,
+    listener: (this: WavePoolElement, event: WavePoolEventMap[K]) => unknown,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+  addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
+  removeEventListener<K extends keyof WavePoolEventMap>(
+    type: K,
+    listener: (this: WavePoolElement, event: WavePoolEventMap[K]) => unknown,
+    options?: boolean | EventListenerOptions,
+  ): void;
+  removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
+}
+
+/** `<wave-pool>`'s attributes, for JSX and templates that check them. */
+export interface WavePoolAttributes extends ParamAttributes {
+  backend?: "auto" | "webgpu" | "webgl2";
+  float?: "auto" | "none";
+  controls?: "true" | "false" | "0" | "1";
+  "max-pixel-ratio"?: string | number;
+  "max-pixels"?: string | number;
+  aspect?: string | number;
+  "max-fps"?: string | number;
+  camera?: string;
+  preset?: PresetName;
+  lazy?: "true" | "false" | "0" | "1";
+  "mesh-size"?: string | number;
+  "caustics-size"?: string | number;
+}
+
+declare global {
+  interface HTMLElementTagNameMap {
+    "wave-pool": WavePoolElement;
+  }
+}
