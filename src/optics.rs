@@ -335,7 +335,7 @@ pub const WATER_COLOUR_PARAMS: &[ParamSpec] = &[
         unit: "",
         control: Control::Toggle,
         default: 0.0,
-        help: "The scattered light loses half its green along grazing paths and keeps it looking straight down, as seed 002 tints its water by the view angle (needs scattered light).",
+        help: "The scattered light loses half its green along grazing paths and keeps it looking straight down, as games tint water by the view angle (needs scattered light).",
     },
 ];
 

@@ -2,7 +2,8 @@
 //! single page, the course zip and their checksums); the package's declarations against the
 //! parameter table; a Vite app made here that installs the tarball, imports `mount` in
 //! TypeScript, type-checks (and fails on a misspelt option or choice), builds and shows the pool
-//! on both backends in headless Chromium; the course zip unpacked under a deep path; the
+//! on both backends in headless Chromium; the course zip unpacked under a deep path (its page
+//! holding the whole picture in the first screen from 320 to 1280 px wide); the
 //! package's files served from two places (`setAssetLocation`). Needs `release/` and
 //! `target/npm-package/` (./scripts/test writes them after the web build) and Vite 7.3.8 and
 //! TypeScript 5.9.3 in the cache (./scripts/test installs them).
@@ -318,7 +319,7 @@ async fn a_vite_app_installs_the_tarball_type_checks_builds_and_shows_the_pool_o
 }
 
 #[tokio::test(flavor = "current_thread")]
-async fn the_course_zip_runs_under_a_deep_path_and_the_package_runs_with_its_files_elsewhere() {
+async fn the_course_zip_runs_under_a_deep_path_with_the_pool_in_its_first_screen_and_the_package_with_its_files_elsewhere() {
     let _guard = serial();
     let dir = release_dir();
     let work = std::env::temp_dir().join(format!("wavepool-release-{}", std::process::id()));
@@ -361,6 +362,23 @@ mount(document.getElementById("pool"), { lazy: false });
     browser.goto(&server.url("/courses/physics/week-3/wavepool/index.html")).await;
     let took = browser.wait_ready("#pool", READY).await;
     println!("the course zip's page under /courses/physics/week-3/wavepool/: ready in {took:?}");
+    // The page's first screen holds the whole picture, from a phone to a laptop.
+    for (width, height) in [(320, 568), (800, 600), (1280, 720)] {
+        browser.set_viewport(width, height).await;
+        let fit = browser
+            .js_async(
+                "await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+                 const c = document.querySelector('#pool').shadowRoot.querySelector('canvas').getBoundingClientRect();
+                 return { top: c.top, bottom: c.bottom, left: c.left, right: c.right, inner: innerHeight, wide: innerWidth,
+                          scroll: document.scrollingElement.scrollWidth };",
+            )
+            .await;
+        println!("index.html at {width}×{height}: canvas {fit}");
+        let num = |k: &str| fit[k].as_f64().unwrap_or_else(|| panic!("{k} in {fit}"));
+        assert!(num("bottom") <= num("inner") + 0.5, "at {width}×{height} the pool runs past the first screen: {fit}");
+        assert!(num("right") - num("left") >= 250.0, "at {width}×{height} the pool is small: {fit}");
+        assert!(num("scroll") <= num("wide"), "at {width}×{height} the page scrolls sideways: {fit}");
+    }
     browser.goto(&server.url("/js/page.html")).await;
     let took = browser.wait_ready("#pool", READY).await;
     let fetched: Vec<String> = server

@@ -337,7 +337,7 @@ pub const PARAMS: &[ParamSpec] = &[
         unit: "",
         control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["raytraced", "flat", "split"] },
         default: 0.0,
-        help: "How the water surface is drawn. raytraced: every pixel of the surface traces its reflected and refracted rays through the pool. flat: the games' technique (seeds 000, 002, 003): the scene is drawn twice more into textures, mirrored in the water plane (reflection) and clipped under it (refraction), and a flat plane blends the two by Fresnel, wobbled by a distortion instead of bent by the waves. It is an above-water technique: under water the ray tracer draws. split: flat on the left, ray-traced on the right of a divider you drag.",
+        help: "How the water surface is drawn. raytraced: every pixel of the surface traces its reflected and refracted rays through the pool. flat: the technique games use: the scene is drawn twice more into textures, mirrored in the water plane (reflection) and clipped under it (refraction), and a flat plane blends the two by Fresnel, wobbled by a distortion instead of bent by the waves. It is an above-water technique: under water the ray tracer draws. split: flat on the left, ray-traced on the right of a divider you drag.",
     },
     ParamSpec {
         name: "split",
@@ -355,7 +355,7 @@ pub const PARAMS: &[ParamSpec] = &[
         unit: "",
         control: Control::Choice { values: &[0.0, 1.0], names: &["dudv", "ripples"] },
         default: 0.0,
-        help: "What wobbles the flat water's reflection and refraction: dudv, a tiling distortion map scrolled over time (seed 000's moveFactor; clicks make no ripples in it), or ripples, the simulation's own slopes (the same waves as the ray tracer, with faked optics).",
+        help: "What wobbles the flat water's reflection and refraction: dudv, a tiling distortion map (a dUdV map) scrolled over time (clicks make no ripples in it), or ripples, the simulation's own slopes (the same waves as the ray tracer, with faked optics).",
     },
     ParamSpec {
         name: "flat_strength",
@@ -364,7 +364,7 @@ pub const PARAMS: &[ParamSpec] = &[
         unit: "",
         control: slider(0.0, 0.08, 0.002),
         default: 0.02,
-        help: "How far the reflection and refraction textures are shifted by the distortion, as a fraction of the screen (seed 000's waveStrength). It does not grow with the distance to what is seen, as real refraction does: a rim far above the water wobbles as much as the tiles under it.",
+        help: "How far the reflection and refraction textures are shifted by the distortion, as a fraction of the screen. It does not grow with the distance to what is seen, as real refraction does: a rim far above the water wobbles as much as the tiles under it.",
     },
     ParamSpec {
         name: "dudv_speed",
@@ -391,7 +391,7 @@ pub const PARAMS: &[ParamSpec] = &[
         unit: "",
         control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["off", "fake", "real"] },
         default: 1.0,
-        help: "Light on the pool under flat water: off (a calm surface's), fake (seed 000: a highlight where the distortion's normal would send the sun straight down; no focusing, no pass) or real (the ray tracer's caustics map, one more pass).",
+        help: "Light on the pool under flat water: off (a calm surface's), fake (a highlight where the distortion's normal would send the sun straight down; no focusing, no pass) or real (the ray tracer's caustics map, one more pass).",
     },
     ParamSpec {
         name: "flat_soft_edge",
@@ -400,7 +400,7 @@ pub const PARAMS: &[ParamSpec] = &[
         unit: "m",
         control: slider(0.0, 0.3, 0.01),
         default: 0.1,
-        help: "Water shallower than this (along the view) is distorted less (seed 002), hiding the seam where the flat plane meets the walls; 0 shows the seam.",
+        help: "Water shallower than this (along the view) is distorted less, hiding the seam where the flat plane meets the walls; 0 shows the seam.",
     },
 ];
 
