@@ -319,7 +319,7 @@ async fn a_vite_app_installs_the_tarball_type_checks_builds_and_shows_the_pool_o
 }
 
 #[tokio::test(flavor = "current_thread")]
-async fn the_course_zip_runs_under_a_deep_path_with_the_pool_in_its_first_screen_and_the_package_with_its_files_elsewhere() {
+async fn the_course_zip_runs_deep_in_a_site_in_the_first_screen_and_the_package_from_two_folders() {
     let _guard = serial();
     let dir = release_dir();
     let work = std::env::temp_dir().join(format!("wavepool-release-{}", std::process::id()));
