@@ -22,55 +22,37 @@ use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
 use ocean::{Ocean, OceanNow};
 
-/// Which ambient surface, from the `ambient` parameter.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum AmbientModel {
-    #[default]
-    None = 0,
-    /// A few directional travelling waves with sharpened crests, Finch's
-    /// h = 2a(((sin θ + 1)/2)^k − mean) (seed 000): no longer one sine's symmetric hump.
-    Sines = 1,
-    /// The basin's own standing waves, h = Σ a cos(nπx'/W) cos(mπz'/W) cos(ωt + φ) with x', z'
-    /// measured from a wall: every wall is met with zero slope, as a reflecting pool does.
-    Modes = 2,
-    /// Gerstner (trochoidal) waves: each point of the surface moves on a circle, the water
-    /// gathering under the crests (sharp) and spreading in the troughs (flat). A point at rest
-    /// x₀ is at x₀ − Σ c a (K/k) sin θ, height Σ a cos θ, θ = K·x₀ + p, c = Q / Σ a k.
-    Gerstner = 3,
-    /// Tessendorf's ocean: a wave spectrum on the lattice that tiles the pool, summed by an
-    /// inverse FFT every frame ([`ocean`]).
-    Fft = 4,
-}
-
-impl AmbientModel {
-    pub fn from_param(value: f32) -> Self {
-        match value.round() as i32 {
-            1 => AmbientModel::Sines,
-            2 => AmbientModel::Modes,
-            3 => AmbientModel::Gerstner,
-            4 => AmbientModel::Fft,
-            _ => AmbientModel::None,
-        }
+crate::choices! {
+    /// Which ambient surface, from the `ambient` parameter.
+    #[derive(Default)]
+    pub enum AmbientModel {
+        #[default]
+        None = "none",
+        /// A few directional travelling waves with sharpened crests, Finch's
+        /// h = 2a(((sin θ + 1)/2)^k − mean): no longer one sine's symmetric hump.
+        Sines = "sines",
+        /// The basin's own standing waves, h = Σ a cos(nπx'/W) cos(mπz'/W) cos(ωt + φ) with x', z'
+        /// measured from a wall: every wall is met with zero slope, as a reflecting pool does.
+        Modes = "modes",
+        /// Gerstner (trochoidal) waves: each point of the surface moves on a circle, the water
+        /// gathering under the crests (sharp) and spreading in the troughs (flat). A point at rest
+        /// x₀ is at x₀ − Σ c a (K/k) sin θ, height Σ a cos θ, θ = K·x₀ + p, c = Q / Σ a k.
+        Gerstner = "gerstner",
+        /// Tessendorf's ocean: a wave spectrum on the lattice that tiles the pool, summed by an
+        /// inverse FFT every frame ([`ocean`]).
+        Fft = "fft",
     }
 }
 
-/// The wave spectrum of the FFT ocean, from the `spectrum` parameter.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Spectrum {
-    /// Tessendorf's choice: exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
-    #[default]
-    Phillips = 0,
-    /// Measured seas of limited fetch (Hasselmann 1973): a sharper peak.
-    Jonswap = 1,
-}
-
-impl Spectrum {
-    pub fn from_param(value: f32) -> Self {
-        if value.round() as i32 == 1 {
-            Spectrum::Jonswap
-        } else {
-            Spectrum::Phillips
-        }
+crate::choices! {
+    /// The wave spectrum of the FFT ocean, from the `spectrum` parameter.
+    #[derive(Default)]
+    pub enum Spectrum {
+        /// Tessendorf's choice: exp(−1/(kL)²)/k⁴ (k̂·ŵ)², L = V²/g.
+        #[default]
+        Phillips = "phillips",
+        /// Measured seas of limited fetch (Hasselmann 1973): a sharper peak.
+        Jonswap = "jonswap",
     }
 }
 
@@ -133,28 +115,20 @@ pub struct AmbientSettings {
 }
 
 impl AmbientSettings {
-    /// The settings from the values of this feature's parameters ([`params::PARAMS`]),
-    /// `value` giving each by its name.
-    pub fn from_values(value: impl Fn(&str) -> f32) -> Self {
-        Self {
-            model: AmbientModel::from_param(value("ambient")),
-            wind_speed: value("wind_speed"),
-            wind_direction_deg: value("wind_direction"),
-            significant_height: value("wave_height"),
-            spread_deg: value("wave_spread"),
-            steepness: value("steepness"),
-            spectrum: Spectrum::from_param(value("spectrum")),
-            fft_size: value("fft_size") as usize,
-            choppiness: value("choppiness"),
-        }
-    }
-
     /// `model` with every other setting at its parameter's default (a light breeze: 3 m/s,
     /// 1 cm significant height).
     pub fn default_for(model: AmbientModel) -> Self {
-        let default =
-            |name: &str| params::PARAMS.iter().find(|p| p.name == name).expect("an ambient parameter").default;
-        Self { model, ..Self::from_values(default) }
+        Self {
+            model,
+            wind_speed: params::WIND_SPEED.default,
+            wind_direction_deg: params::WIND_DIRECTION.default,
+            significant_height: params::WAVE_HEIGHT.default,
+            spread_deg: params::WAVE_SPREAD.default,
+            steepness: params::STEEPNESS.default,
+            spectrum: Spectrum::from(params::SPECTRUM.default),
+            fft_size: params::FFT_SIZE.default as usize,
+            choppiness: params::CHOPPINESS.default,
+        }
     }
 }
 

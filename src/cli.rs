@@ -15,7 +15,7 @@ mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use wavepool::camera::POOL_LIMITS;
-use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STEP_DT};
+use wavepool::demo::{DemoOptions, FrameContext, OptionSpec, Stage, WaterDemo, STAGE_NAMES, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
@@ -317,7 +317,7 @@ fn time_with_timestamps(
     let start = Instant::now();
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     let dt = 1.0 / 60.0;
-    demo.encode_frame(&gpu.device, &gpu.queue, &mut encoder, &target.view, target.size(), dt, &mut |enc, stage| {
+    demo.encode_frame(FrameContext { device: &gpu.device, queue: &gpu.queue, encoder: &mut encoder, target: &target.view, size: target.size() }, dt, &mut |enc, stage| {
         timer.mark(enc, stage as u32)
     });
     timer.finish(&mut encoder);
@@ -339,7 +339,7 @@ fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &Offscre
     let mut times = Vec::new();
     let mut last = Instant::now();
     let dt = 1.0 / 60.0;
-    demo.encode_frame(&gpu.device, &gpu.queue, &mut encoder, &target.view, target.size(), dt, &mut |enc, stage| {
+    demo.encode_frame(FrameContext { device: &gpu.device, queue: &gpu.queue, encoder: &mut encoder, target: &target.view, size: target.size() }, dt, &mut |enc, stage| {
         if stage != Stage::Start {
             let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
             gpu.queue.submit([done.finish()]);
@@ -407,12 +407,11 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
         "sim_size": o.frame.start.demo_options().sim_size,
         "steps_per_frame": (1.0 / 60.0 / STEP_DT).round(),
         "frame_ms": { "median": round(percentile(&frame_ms, 0.5)), "p95": round(percentile(&frame_ms, 0.95)) },
-        "stage_ms": {
-            "simulation": round(stage(0)),
-            "waves": round(stage(1)),
-            "caustics": round(stage(2)),
-            "scene": round(stage(3)),
-        },
+        "stage_ms": STAGE_NAMES
+            .iter()
+            .enumerate()
+            .map(|(i, name)| (name.to_string(), serde_json::Value::from(round(stage(i)))))
+            .collect::<serde_json::Map<_, _>>(),
         "stage_timing": if timer.is_some() {
             "gpu timestamps between stages"
         } else {
@@ -438,7 +437,7 @@ fn sea_stages(
     round: impl Fn(f64) -> f64,
 ) -> serde_json::Value {
     use wavepool::ambient::{cascades::SeaWaves, gpu_ocean::GpuOcean};
-    let settings = wavepool::sea::SeaSettings::from_values(|n| demo.params.get_by_name(n).expect("a sea parameter"));
+    let settings = demo.sea_settings();
     let waves = SeaWaves::new(&settings.waves(), wavepool::sea::SEA_LATTICE);
     let median_of_ten = |run: &mut dyn FnMut(f64)| {
         let times: Vec<f64> = (0..10)

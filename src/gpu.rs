@@ -85,14 +85,21 @@ pub fn pipeline_layout(device: &wgpu::Device, label: &str, layouts: &[&wgpu::Bin
     })
 }
 
-/// A 2-D texture with `layers` array layers (6 for a cube) and `mips` mip levels.
-#[allow(clippy::too_many_arguments)]
+/// What a frame is recorded with: the device and queue, the encoder its drawing goes into and
+/// the target it is drawn in, `size` pixels.
+pub struct FrameContext<'a> {
+    pub device: &'a wgpu::Device,
+    pub queue: &'a wgpu::Queue,
+    pub encoder: &'a mut wgpu::CommandEncoder,
+    pub target: &'a wgpu::TextureView,
+    pub size: (u32, u32),
+}
+
+/// A 2-D texture of `(width, height, layers)` (6 layers for a cube) and `mips` mip levels.
 pub fn texture_2d(
     device: &wgpu::Device,
     label: &str,
-    width: u32,
-    height: u32,
-    layers: u32,
+    (width, height, layers): (u32, u32, u32),
     mips: u32,
     format: wgpu::TextureFormat,
     usage: wgpu::TextureUsages,
@@ -318,19 +325,10 @@ impl PingPong {
     ) -> Self {
         let target = if render_target { wgpu::TextureUsages::RENDER_ATTACHMENT } else { wgpu::TextureUsages::empty() };
         let make = |i: usize| {
-            texture_2d(
-                device,
-                &format!("{label} {i}"),
-                width,
-                height,
-                1,
-                1,
-                format,
-                target
+            texture_2d(device, &format!("{label} {i}"), (width, height, 1), 1, format, target
                     | wgpu::TextureUsages::TEXTURE_BINDING
                     | wgpu::TextureUsages::COPY_SRC
-                    | wgpu::TextureUsages::COPY_DST,
-            )
+                    | wgpu::TextureUsages::COPY_DST)
         };
         let textures = [make(0), make(1)];
         let views = [textures[0].create_view(&Default::default()), textures[1].create_view(&Default::default())];

@@ -8,42 +8,28 @@
 use crate::param_spec::{slider, Control, ParamSpec};
 use crate::scene::IOR_WATER;
 
-/// A Fresnel reflectance model. Each takes the cosine of the incidence angle; below the
-/// surface the approximations take the angle on the air side (Snell) and total internal
-/// reflection stays exact.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum FresnelModel {
-    /// The Fresnel equations for unpolarised light, R = (Rs + Rp) / 2 (seed 000, §2.2.2).
-    #[default]
-    Exact = 0,
-    /// The exact curve sampled into a lookup texture of [`FRESNEL_TABLE_SIZE`] angles per
-    /// side, read with linear interpolation (seed 000, §3.2.2: precomputed coefficients in a
-    /// 1-D texture indexed by the angle).
-    Table = 1,
-    /// Schlick: R0 + (1 − R0)(1 − cos θ)⁵, R0 = ((n1 − n2)/(n1 + n2))² (seed 000, §3.2.2).
-    Schlick = 2,
-    /// 1 / (1 + cos θ)⁸ (seed 000, §3.2.2, after Fleck 2007).
-    InversePower = 3,
-    /// clamp((1 − cos θ)⁴, 0.05, 0.3) (seed 002's water shader: `pow(1.0 + dot(eye, n), 4.0)`
-    /// with the eye vector pointing at the surface).
-    ClampedPower = 4,
-    /// 1 − cos θ: the reflected share grows linearly as the view flattens (seed 003, eq. 1).
-    Linear = 5,
-}
-
-impl FresnelModel {
-    pub const ALL: [FresnelModel; 6] = [
-        FresnelModel::Exact,
-        FresnelModel::Table,
-        FresnelModel::Schlick,
-        FresnelModel::InversePower,
-        FresnelModel::ClampedPower,
-        FresnelModel::Linear,
-    ];
-
-    /// From the `fresnel` parameter's value.
-    pub fn from_param(value: f32) -> Self {
-        Self::ALL.get(value.round().max(0.0) as usize).copied().unwrap_or_default()
+crate::choices! {
+    /// A Fresnel reflectance model. Each takes the cosine of the incidence angle; below the
+    /// surface the approximations take the angle on the air side (Snell) and total internal
+    /// reflection stays exact.
+    #[derive(Default)]
+    pub enum FresnelModel {
+        /// The Fresnel equations for unpolarised light, R = (Rs + Rp) / 2 (seed 000, §2.2.2).
+        #[default]
+        Exact = "exact",
+        /// The exact curve sampled into a lookup texture of [`FRESNEL_TABLE_SIZE`] angles per
+        /// side, read with linear interpolation (seed 000, §3.2.2: precomputed coefficients in a
+        /// 1-D texture indexed by the angle).
+        Table = "table",
+        /// Schlick: R0 + (1 − R0)(1 − cos θ)⁵, R0 = ((n1 − n2)/(n1 + n2))² (seed 000, §3.2.2).
+        Schlick = "schlick",
+        /// 1 / (1 + cos θ)⁸ (seed 000, §3.2.2, after Fleck 2007).
+        InversePower = "inverse_power",
+        /// clamp((1 − cos θ)⁴, 0.05, 0.3) (seed 002's water shader: `pow(1.0 + dot(eye, n), 4.0)`
+        /// with the eye vector pointing at the surface).
+        ClampedPower = "clamped_power",
+        /// 1 − cos θ: the reflected share grows linearly as the view flattens (seed 003, eq. 1).
+        Linear = "linear",
     }
 }
 
@@ -137,97 +123,18 @@ pub fn reflectance_curve(model: FresnelModel, from_water: bool, samples: usize) 
         .collect()
 }
 
-/// The sun's highlight on the water.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum SpecularModel {
-    /// cos^s of the angle between the reflected view ray and the sun.
-    #[default]
-    Phong = 0,
-    /// cos^s of the angle between the normal and the half vector of the view and sun
-    /// directions: a wider highlight at the same s, stretched along the view at grazing angles.
-    BlinnPhong = 1,
-}
-
-impl SpecularModel {
-    pub fn from_param(value: f32) -> Self {
-        if value >= 0.5 {
-            SpecularModel::BlinnPhong
-        } else {
-            SpecularModel::Phong
-        }
+crate::choices! {
+    /// The sun's highlight on the water.
+    #[derive(Default)]
+    pub enum SpecularModel {
+        /// cos^s of the angle between the reflected view ray and the sun.
+        #[default]
+        Phong = "phong",
+        /// cos^s of the angle between the normal and the half vector of the view and sun
+        /// directions: a wider highlight at the same s, stretched along the view at grazing angles.
+        BlinnPhong = "blinn_phong",
     }
 }
-
-/// The sun's disk in the sky at the default size ([`DEFAULT_SUN_SIZE_DEG`]): its brightness
-/// rises between these cosines of the angle from its centre.
-const SUN_DISK_EDGE_COS: f32 = 0.99988;
-const SUN_DISK_CORE_COS: f32 = 0.99995;
-/// Angular diameter (degrees) of the sun's disk, between the half-brightness points.
-pub const DEFAULT_SUN_SIZE_DEG: f32 = 1.5;
-
-/// The disk's (edge, core) cosines for a sun `size_deg` across: 1 − cos θ ≈ θ²/2 grows with
-/// the square of the size. Exact at the default size (the f32 arithmetic gives back the
-/// constants), so the default frame does not change.
-pub fn sun_disk_cosines(size_deg: f32) -> (f32, f32) {
-    let k = (size_deg / DEFAULT_SUN_SIZE_DEG) * (size_deg / DEFAULT_SUN_SIZE_DEG);
-    (1.0 - (1.0 - SUN_DISK_EDGE_COS) * k, 1.0 - (1.0 - SUN_DISK_CORE_COS) * k)
-}
-
-/// Water's refractive index for red, green and blue light less the green one's (n ≈ 1.331,
-/// 1.335, 1.337 across the visible range): the spread the `dispersion` parameter scales.
-pub const DISPERSION_SPREAD: [f32; 3] = [-0.004, 0.0, 0.002];
-
-/// The refractive indices of red, green and blue light with the spread exaggerated
-/// `dispersion` times, green kept at [`IOR_WATER`] so green light bends as without dispersion.
-pub fn channel_iors(dispersion: f32) -> [f32; 3] {
-    DISPERSION_SPREAD.map(|d| IOR_WATER + d * dispersion)
-}
-
-/// With the `view_colour` option, the share of the water's scattered light left along a
-/// horizontal path (all of it looking straight down): seed 002 mixes its water colour between
-/// (0, 0.05, 0.15) at grazing and (0, 0.1, 0.15) looking down, half the green.
-pub const GRAZING_TINT: [f32; 3] = [1.0, 0.5, 1.0];
-
-/// WGSL constants of this module, for the scene's passes (`render::shaders::scene_prelude`).
-pub fn wgsl_constants() -> String {
-    use FresnelModel::*;
-    format!(
-        "const FRESNEL_EXACT: u32 = {}u;\nconst FRESNEL_TABLE: u32 = {}u;\nconst FRESNEL_SCHLICK: u32 = {}u;\n\
-         const FRESNEL_INVERSE_POWER: u32 = {}u;\nconst FRESNEL_CLAMPED_POWER: u32 = {}u;\nconst FRESNEL_LINEAR: u32 = {}u;\n\
-         const FRESNEL_TABLE_SIZE: i32 = {};\nconst SCHLICK_R0: f32 = {:?};\nconst INVERSE_POWER_EXPONENT: f32 = {:?};\n\
-         const CLAMPED_POWER_EXPONENT: f32 = {:?};\nconst CLAMPED_POWER_MIN: f32 = {:?};\nconst CLAMPED_POWER_MAX: f32 = {:?};\n\
-         const SPECULAR_PHONG: u32 = {}u;\nconst SPECULAR_BLINN_PHONG: u32 = {}u;\n\
-         const GRAZING_TINT: vec3<f32> = vec3<f32>({:?}, {:?}, {:?});\n",
-        Exact as u32,
-        Table as u32,
-        Schlick as u32,
-        InversePower as u32,
-        ClampedPower as u32,
-        Linear as u32,
-        FRESNEL_TABLE_SIZE,
-        schlick_r0(),
-        INVERSE_POWER_EXPONENT,
-        CLAMPED_POWER_EXPONENT,
-        CLAMPED_POWER_MIN,
-        CLAMPED_POWER_MAX,
-        SpecularModel::Phong as u32,
-        SpecularModel::BlinnPhong as u32,
-        GRAZING_TINT[0],
-        GRAZING_TINT[1],
-        GRAZING_TINT[2],
-    )
-}
-
-/// The sun's disk. (The parameter table, `params::table`, lists them in this order.)
-pub const SUN_SIZE_PARAMS: &[ParamSpec] = &[ParamSpec {
-    name: "sun_size",
-    label: "Sun size",
-    group: "Light",
-    unit: "°",
-    control: slider(0.5, 5.0, 0.1),
-    default: crate::optics::DEFAULT_SUN_SIZE_DEG,
-    help: "Angular diameter of the sun's disk in the sky and in its reflections (the real sun: 0.5°).",
-}];
 
 /// How the surface reflects: the Fresnel and specular models, dispersion. (The parameter table, `params::table`, lists them in this order.)
 pub const PARAMS: &[ParamSpec] = &[
@@ -236,10 +143,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Fresnel model",
         group: "Optics",
         unit: "",
-        control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0],
-            names: &["exact", "table", "schlick", "inverse_power", "clamped_power", "linear"],
-        },
+        control: Control::Choice { values: FresnelModel::VALUES, names: FresnelModel::NAMES },
         default: 0.0,
         help: "How much of the light the surface reflects at each angle: the exact Fresnel equations, the same from a lookup texture, Schlick's approximation, 1/(1+cos θ)^8, clamp((1-cos θ)^4, 0.05, 0.3) or 1-cos θ.",
     },
@@ -248,7 +152,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Sun highlight",
         group: "Optics",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["phong", "blinn_phong"] },
+        control: Control::Choice { values: SpecularModel::VALUES, names: SpecularModel::NAMES },
         default: 0.0,
         help: "Shape of the sun's glint on the water: Phong (reflected ray against the sun) or Blinn-Phong (normal against the half vector), wider at the same shininess.",
     },
@@ -347,7 +251,7 @@ mod tests {
     fn every_model_stays_between_0_and_1_and_total_internal_reflection_stays_exact() {
         let table = fresnel_table();
         let critical = (1.0 / IOR_WATER).asin();
-        for model in FresnelModel::ALL {
+        for &model in FresnelModel::ALL {
             let above = reflectance_curve(model, false, 91);
             let below = reflectance_curve(model, true, 91);
             println!(

@@ -114,3 +114,52 @@ pub fn choice_label(spec: &ParamSpec, value: f32) -> String {
         format!("{value} {}", spec.unit)
     }
 }
+
+/// The values 0, 1, …, N − 1 of a choice declared with [`choices!`](crate::choices).
+pub const fn option_values<const N: usize>() -> [f32; N] {
+    let mut values = [0.0; N];
+    let mut i = 0;
+    while i < N {
+        values[i] = i as f32;
+        i += 1;
+    }
+    values
+}
+
+/// A choice parameter's options as an enum, declared in one place: the variants in the order
+/// of the parameter's values (0, 1, 2, …) with the names the table, URLs and the command line
+/// write, `VALUES` and `NAMES` for its [`Control::Choice`], and `From<f32>`, the option a
+/// value stands for (the nearest, clamped; NaN the first). Derives `Clone`, `Copy`, `Debug`,
+/// `PartialEq`, `Eq` and `Hash`; more derives (and `#[default]` on a variant) may be given.
+#[macro_export]
+macro_rules! choices {
+    ($(#[$meta:meta])* $vis:vis enum $name:ident { $($(#[$vmeta:meta])* $variant:ident = $label:literal),+ $(,)? }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        $vis enum $name {
+            $($(#[$vmeta])* $variant),+
+        }
+
+        impl $name {
+            /// Every option, in the order of the parameter's values.
+            pub const ALL: &'static [$name] = &[$($name::$variant),+];
+            /// The options' names, as the parameter table writes them.
+            pub const NAMES: &'static [&'static str] = &[$($label),+];
+            /// The parameter's values: 0, 1, 2, ….
+            pub const VALUES: &'static [f32] = &$crate::param_spec::option_values::<{ [$($label),+].len() }>();
+
+            /// This option's name in the parameter table.
+            pub fn name(self) -> &'static str {
+                Self::NAMES[self as usize]
+            }
+        }
+
+        impl From<f32> for $name {
+            fn from(value: f32) -> Self {
+                let last = (Self::ALL.len() - 1) as f32;
+                let i = if value.is_nan() { 0.0 } else { value.round().clamp(0.0, last) };
+                Self::ALL[i as usize]
+            }
+        }
+    };
+}

@@ -12,9 +12,9 @@ use crate::{ambient, bodies, optics, physics, quality, render, sea, sim, sky};
 
 /// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
 macro_rules! param_ids {
-    ($($id:ident),* $(,)?) => {
-        /// Names a parameter the app reads by id (a body kind's own parameters are read by
-        /// name); its place in the [`table`] is found by its name in snake case.
+    ($($id:ident = $name:literal),* $(,)?) => {
+        /// Names a parameter the app reads by id (a body kind's own parameters are read
+        /// through its kind's specs); each id is written beside the table's name for it.
         #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
         pub enum ParamId {
             $($id),*
@@ -23,74 +23,81 @@ macro_rules! param_ids {
         impl ParamId {
             /// Every id, in table order.
             pub const ALL: &[ParamId] = &[$(ParamId::$id),*];
+
+            /// The parameter's name in the [`table`].
+            pub const fn name(self) -> &'static str {
+                match self {
+                    $(ParamId::$id => $name),*
+                }
+            }
         }
     };
 }
 
 param_ids! {
-    WaveSpeed,
-    Damping,
-    AbsorbingWalls,
-    Foam,
-    FoamDecay,
-    DropRadius,
-    DropStrength,
-    SunAzimuth,
-    SunElevation,
-    SunSize,
-    Exposure,
-    Scene,
-    SeaWind,
-    SeaWindDirection,
-    SeaWaveHeight,
-    SeaChoppiness,
-    SeaFog,
-    SeaFogDistance,
-    SeaIsland,
-    SeaObjects,
-    SeaGrid,
-    Setting,
-    Caustics,
-    TileGloss,
-    Ambient,
-    WindSpeed,
-    WindDirection,
-    WaveHeight,
-    WaveSpread,
-    Steepness,
-    Spectrum,
-    FftSize,
-    Choppiness,
-    Fresnel,
-    Specular,
-    Shininess,
-    Dispersion,
-    AbsorptionRed,
-    AbsorptionGreen,
-    AbsorptionBlue,
-    ScatterRed,
-    ScatterGreen,
-    ScatterBlue,
-    ViewColour,
-    Objects,
-    SphereRadius,
-    SphereDensity,
-    DuckDensity,
-    Gravity,
-    SimSize,
-    Paused,
-    DebugView,
-    DebugInset,
-    Quality,
-    FrameBudget,
-    RenderMode,
-    Split,
-    FlatDistortion,
-    FlatStrength,
-    DudvSpeed,
-    FlatResolution,
-    FlatCaustics,
-    FlatSoftEdge,
+    WaveSpeed = "wave_speed",
+    Damping = "damping",
+    AbsorbingWalls = "absorbing_walls",
+    Foam = "foam",
+    FoamDecay = "foam_decay",
+    DropRadius = "drop_radius",
+    DropStrength = "drop_strength",
+    SunAzimuth = "sun_azimuth",
+    SunElevation = "sun_elevation",
+    SunSize = "sun_size",
+    Exposure = "exposure",
+    Scene = "scene",
+    SeaWind = "sea_wind",
+    SeaWindDirection = "sea_wind_direction",
+    SeaWaveHeight = "sea_wave_height",
+    SeaChoppiness = "sea_choppiness",
+    SeaFog = "sea_fog",
+    SeaFogDistance = "sea_fog_distance",
+    SeaIsland = "sea_island",
+    SeaObjects = "sea_objects",
+    SeaGrid = "sea_grid",
+    Setting = "setting",
+    Caustics = "caustics",
+    TileGloss = "tile_gloss",
+    Ambient = "ambient",
+    WindSpeed = "wind_speed",
+    WindDirection = "wind_direction",
+    WaveHeight = "wave_height",
+    WaveSpread = "wave_spread",
+    Steepness = "steepness",
+    Spectrum = "spectrum",
+    FftSize = "fft_size",
+    Choppiness = "choppiness",
+    Fresnel = "fresnel",
+    Specular = "specular",
+    Shininess = "shininess",
+    Dispersion = "dispersion",
+    AbsorptionRed = "absorption_red",
+    AbsorptionGreen = "absorption_green",
+    AbsorptionBlue = "absorption_blue",
+    ScatterRed = "scatter_red",
+    ScatterGreen = "scatter_green",
+    ScatterBlue = "scatter_blue",
+    ViewColour = "view_colour",
+    Objects = "objects",
+    SphereRadius = "sphere_radius",
+    SphereDensity = "sphere_density",
+    DuckDensity = "duck_density",
+    Gravity = "gravity",
+    SimSize = "sim_size",
+    Paused = "paused",
+    DebugView = "debug_view",
+    DebugInset = "debug_inset",
+    Quality = "quality",
+    FrameBudget = "frame_budget",
+    RenderMode = "render_mode",
+    Split = "split",
+    FlatDistortion = "flat_distortion",
+    FlatStrength = "flat_strength",
+    DudvSpeed = "dudv_speed",
+    FlatResolution = "flat_resolution",
+    FlatCaustics = "flat_caustics",
+    FlatSoftEdge = "flat_soft_edge",
 }
 
 /// The features' slices in the order of the controls (groups stay together); the bodies'
@@ -147,18 +154,6 @@ pub fn table() -> &'static [Param] {
     })
 }
 
-/// "WaveSpeed" → "wave_speed".
-fn snake_case(name: &str) -> String {
-    let mut out = String::new();
-    for (i, c) in name.chars().enumerate() {
-        if c.is_uppercase() && i > 0 {
-            out.push('_');
-        }
-        out.push(c.to_ascii_lowercase());
-    }
-    out
-}
-
 /// Parameters that matter only for some values of another (a model's own settings): the
 /// controls show them only then. (parameter, the one it depends on, the choices it needs)
 pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
@@ -194,7 +189,7 @@ impl ParamId {
         static PLACES: OnceLock<Vec<usize>> = OnceLock::new();
         let places = PLACES.get_or_init(|| {
             let place = |id: &ParamId| {
-                let name = snake_case(&format!("{id:?}"));
+                let name = id.name();
                 table()
                     .iter()
                     .position(|p| p.name == name)
@@ -287,6 +282,11 @@ impl Params {
 
     pub fn flag(&self, id: ParamId) -> bool {
         self.get(id) >= 0.5
+    }
+
+    /// A choice parameter's option, as the enum its feature declares with `choices!`.
+    pub fn choice<T: From<f32>>(&self, id: ParamId) -> T {
+        T::from(self.get(id))
     }
 
     /// Sets a value, clamping it into range.
@@ -393,7 +393,7 @@ mod tests {
     #[test]
     fn table_is_indexed_by_id_and_defaults_are_in_range() {
         for &id in ParamId::ALL {
-            assert_eq!(snake_case(&format!("{id:?}")), id.spec().name);
+            assert_eq!(id.name(), id.spec().name);
         }
         for (i, p) in table().iter().enumerate() {
             assert_eq!(p.index, i, "{} out of place", p.name);

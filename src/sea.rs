@@ -13,20 +13,32 @@ use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
 
-/// Which scene is drawn: the pool, or the open sea.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum SceneKind {
-    #[default]
-    Pool,
-    Sea,
+crate::choices! {
+    /// Which scene is drawn: the pool, or the open sea (the `scene` parameter).
+    #[derive(Default)]
+    pub enum SceneKind {
+        #[default]
+        Pool = "pool",
+        Sea = "sea",
+    }
 }
 
-impl SceneKind {
-    pub fn from_param(value: f32) -> Self {
-        if value.round() == 1.0 {
-            SceneKind::Sea
-        } else {
-            SceneKind::Pool
+crate::choices! {
+    /// Whether the sea has an island, and where (the `sea_island` parameter).
+    pub enum IslandChoice {
+        None = "none",
+        Offshore = "offshore",
+        Shore = "shore",
+    }
+}
+
+impl IslandChoice {
+    /// Where the island stands, if there is one.
+    pub fn place(self) -> Option<island::Place> {
+        match self {
+            IslandChoice::None => None,
+            IslandChoice::Offshore => Some(island::Place::Offshore),
+            IslandChoice::Shore => Some(island::Place::Shore),
         }
     }
 }
@@ -125,24 +137,22 @@ pub struct SeaSettings {
     pub grid_lines: bool,
 }
 
-impl SeaSettings {
-    /// The settings from the values of [`PARAMS`], `value` giving each by its name.
-    pub fn from_values(value: impl Fn(&str) -> f32) -> Self {
+impl Default for SeaSettings {
+    /// Every setting at its parameter's default.
+    fn default() -> Self {
         Self {
-            wind_speed: value("sea_wind"),
-            wind_direction: value("sea_wind_direction"),
-            wave_height: value("sea_wave_height"),
-            choppiness: value("sea_choppiness"),
-            fog_distance: (value("sea_fog") >= 0.5).then(|| value("sea_fog_distance")),
-            island: match value("sea_island").round() as i32 {
-                0 => None,
-                1 => Some(island::Place::Offshore),
-                _ => Some(island::Place::Shore),
-            },
-            grid_lines: value("sea_grid") >= 0.5,
+            wind_speed: SEA_WIND.default,
+            wind_direction: SEA_WIND_DIRECTION.default,
+            wave_height: SEA_WAVE_HEIGHT.default,
+            choppiness: SEA_CHOPPINESS.default,
+            fog_distance: (SEA_FOG.default >= 0.5).then_some(SEA_FOG_DISTANCE.default),
+            island: IslandChoice::from(SEA_ISLAND.default).place(),
+            grid_lines: SEA_GRID.default >= 0.5,
         }
     }
+}
 
+impl SeaSettings {
     /// The waves' settings for [`crate::ambient::cascades::SeaWaves::new`]: a JONSWAP sea.
     pub fn waves(&self) -> AmbientSettings {
         AmbientSettings {
@@ -171,95 +181,112 @@ pub const SCENE_PARAMS: &[ParamSpec] = &[ParamSpec {
     label: "Scene",
     group: "Scene",
     unit: "",
-    control: Control::Choice { values: &[0.0, 1.0], names: &["pool", "sea"] },
+    control: Control::Choice { values: SceneKind::VALUES, names: SceneKind::NAMES },
     default: 0.0,
     help: "The pool, or the open sea to the horizon under the same sky.",
 }];
 
 /// The sea's own parameters (shown only with `scene` sea).
-pub const PARAMS: &[ParamSpec] = &[
-    ParamSpec {
-        name: "sea_wind",
-        label: "Wind",
-        group: "Scene",
-        unit: "m/s",
-        control: slider(2.0, 25.0, 0.5),
-        default: 8.0,
-        help: "Wind speed over the sea: stronger wind puts the waves' energy at longer wavelengths.",
-    },
-    ParamSpec {
-        name: "sea_wind_direction",
-        label: "Wind direction",
-        group: "Scene",
-        unit: "°",
-        control: slider(0.0, 360.0, 1.0),
-        default: 30.0,
-        help: "Direction the wind blows towards, from +x towards +z.",
-    },
-    ParamSpec {
-        name: "sea_wave_height",
-        label: "Wave height",
-        group: "Scene",
-        unit: "m",
-        control: slider(0.1, 8.0, 0.1),
-        default: 1.2,
-        help: "Significant wave height: four standard deviations of the sea's height (about the mean of the highest third of the waves).",
-    },
-    ParamSpec {
-        name: "sea_choppiness",
-        label: "Choppiness",
-        group: "Scene",
-        unit: "",
-        control: slider(0.0, 2.0, 0.05),
-        default: 1.0,
-        help: "How far the water is carried sideways towards the crests, sharpening them (Tessendorf's lambda).",
-    },
-    ParamSpec {
-        name: "sea_fog",
-        label: "Fog",
-        group: "Scene",
-        unit: "",
-        control: Control::Toggle,
-        default: 1.0,
-        help: "Haze over the sea, thinning with height, taking water and sky to one colour at the horizon.",
-    },
-    ParamSpec {
-        name: "sea_fog_distance",
-        label: "Fog distance",
-        group: "Scene",
-        unit: "m",
-        control: slider(500.0, 20_000.0, 100.0),
-        default: 4000.0,
-        help: "Distance over which the haze at sea level dims light to 37 %.",
-    },
-    ParamSpec {
-        name: "sea_island",
-        label: "Island",
-        group: "Scene",
-        unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["none", "offshore", "shore"] },
-        default: 1.0,
-        help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore: offshore in the haze, or at the shore, its shallows under the patch where clicks make ripples and the ripples' caustics light the sand.",
-    },
-    ParamSpec {
-        name: "sea_objects",
-        label: "Objects",
-        group: "Objects",
-        unit: "",
-        control: crate::bodies::OBJECT_CHOICES,
-        default: 2.0,
-        help: "What floats in the sea: the pool's sphere, duck and beach ball, as much larger as the patch of simulated water is than the pool. They ride the waves and leave wakes in the patch.",
-    },
-    ParamSpec {
-        name: "sea_grid",
-        label: "Show the grid",
-        group: "Scene",
-        unit: "",
-        control: Control::Toggle,
-        default: 0.0,
-        help: "Outline the cells of the grid the sea is drawn on: it is laid over the screen and projected onto the water, so its cells stay about the same size on screen, small near you and long towards the horizon.",
-    },
-];
+pub const PARAMS: &[ParamSpec] = &[SEA_WIND, SEA_WIND_DIRECTION, SEA_WAVE_HEIGHT, SEA_CHOPPINESS, SEA_FOG, SEA_FOG_DISTANCE, SEA_ISLAND, SEA_OBJECTS, SEA_GRID];
+
+/// The `sea_wind` parameter.
+pub const SEA_WIND: ParamSpec = ParamSpec {
+    name: "sea_wind",
+    label: "Wind",
+    group: "Scene",
+    unit: "m/s",
+    control: slider(2.0, 25.0, 0.5),
+    default: 8.0,
+    help: "Wind speed over the sea: stronger wind puts the waves' energy at longer wavelengths.",
+};
+
+/// The `sea_wind_direction` parameter.
+pub const SEA_WIND_DIRECTION: ParamSpec = ParamSpec {
+    name: "sea_wind_direction",
+    label: "Wind direction",
+    group: "Scene",
+    unit: "°",
+    control: slider(0.0, 360.0, 1.0),
+    default: 30.0,
+    help: "Direction the wind blows towards, from +x towards +z.",
+};
+
+/// The `sea_wave_height` parameter.
+pub const SEA_WAVE_HEIGHT: ParamSpec = ParamSpec {
+    name: "sea_wave_height",
+    label: "Wave height",
+    group: "Scene",
+    unit: "m",
+    control: slider(0.1, 8.0, 0.1),
+    default: 1.2,
+    help: "Significant wave height: four standard deviations of the sea's height (about the mean of the highest third of the waves).",
+};
+
+/// The `sea_choppiness` parameter.
+pub const SEA_CHOPPINESS: ParamSpec = ParamSpec {
+    name: "sea_choppiness",
+    label: "Choppiness",
+    group: "Scene",
+    unit: "",
+    control: slider(0.0, 2.0, 0.05),
+    default: 1.0,
+    help: "How far the water is carried sideways towards the crests, sharpening them (Tessendorf's lambda).",
+};
+
+/// The `sea_fog` parameter.
+pub const SEA_FOG: ParamSpec = ParamSpec {
+    name: "sea_fog",
+    label: "Fog",
+    group: "Scene",
+    unit: "",
+    control: Control::Toggle,
+    default: 1.0,
+    help: "Haze over the sea, thinning with height, taking water and sky to one colour at the horizon.",
+};
+
+/// The `sea_fog_distance` parameter.
+pub const SEA_FOG_DISTANCE: ParamSpec = ParamSpec {
+    name: "sea_fog_distance",
+    label: "Fog distance",
+    group: "Scene",
+    unit: "m",
+    control: slider(500.0, 20_000.0, 100.0),
+    default: 4000.0,
+    help: "Distance over which the haze at sea level dims light to 37 %.",
+};
+
+/// The `sea_island` parameter.
+pub const SEA_ISLAND: ParamSpec = ParamSpec {
+    name: "sea_island",
+    label: "Island",
+    group: "Scene",
+    unit: "",
+    control: Control::Choice { values: IslandChoice::VALUES, names: IslandChoice::NAMES },
+    default: 1.0,
+    help: "An island with beaches, seen through the shallows round it, where the waves foam along the shore: offshore in the haze, or at the shore, its shallows under the patch where clicks make ripples and the ripples' caustics light the sand.",
+};
+
+/// The `sea_objects` parameter.
+pub const SEA_OBJECTS: ParamSpec = ParamSpec {
+    name: "sea_objects",
+    label: "Objects",
+    group: "Objects",
+    unit: "",
+    control: crate::bodies::OBJECT_CHOICES,
+    default: 2.0,
+    help: "What floats in the sea: the pool's sphere, duck and beach ball, as much larger as the patch of simulated water is than the pool. They ride the waves and leave wakes in the patch.",
+};
+
+/// The `sea_grid` parameter.
+pub const SEA_GRID: ParamSpec = ParamSpec {
+    name: "sea_grid",
+    label: "Show the grid",
+    group: "Scene",
+    unit: "",
+    control: Control::Toggle,
+    default: 0.0,
+    help: "Outline the cells of the grid the sea is drawn on: it is laid over the screen and projected onto the water, so its cells stay about the same size on screen, small near you and long towards the horizon.",
+};
 
 /// The pool's parameters the sea reads too (the controls show the others only in the pool):
 /// the caustics (on the shallows' floor), the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
@@ -344,6 +371,6 @@ mod tests {
     #[test]
     fn the_sea_camera_starts_above_the_crests() {
         let camera = default_camera();
-        assert!(camera.eye().y > SeaSettings::from_values(|n| crate::params::find(n).unwrap().default).crest_bound());
+        assert!(camera.eye().y > SeaSettings::default().crest_bound());
     }
 }

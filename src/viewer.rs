@@ -10,12 +10,12 @@ use std::time::Instant;
 
 use eframe::egui;
 
-use wavepool::demo::{DemoOptions, Key, WaterDemo};
+use wavepool::demo::{DemoOptions, FrameContext, Key, WaterDemo, STAGE_NAMES};
 use wavepool::optics::{self, FresnelModel};
 use wavepool::params::{self, choice_label, table, Control, Param, ParamId};
 use wavepool::presets::{Preset, PRESETS};
 use wavepool::render::flat::ModeCosts;
-use wavepool::render::flat::RenderMode;
+use wavepool::render::RenderMode;
 use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
@@ -136,16 +136,7 @@ impl Viewer {
         let stale = self.target.as_ref().is_none_or(|t| (t.texture.width(), t.texture.height()) != size);
         if stale {
             let device = &self.render_state.device;
-            let texture = wavepool::gpu::texture_2d(
-                device,
-                "viewer scene",
-                size.0,
-                size.1,
-                1,
-                1,
-                SCENE_FORMAT,
-                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-            );
+            let texture = wavepool::gpu::texture_2d(device, "viewer scene", (size.0, size.1, 1), 1, SCENE_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING);
             let view = texture.create_view(&Default::default());
             let mut renderer = self.render_state.renderer.write();
             let id = match &self.target {
@@ -203,7 +194,7 @@ impl Viewer {
                         self.control(ui, spec);
                     }
                     if group == "Optics" {
-                        let model = FresnelModel::from_param(self.demo.params.get(ParamId::Fresnel));
+                        let model: FresnelModel = self.demo.params.choice(ParamId::Fresnel);
                         fresnel_plot(ui, model, 90.0 - self.demo.camera.pitch.abs());
                     }
                 });
@@ -222,15 +213,16 @@ impl Viewer {
             ui.separator();
             ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
             match self.timer.as_ref().and_then(|t| t.latest()) {
-                Some([sim, waves, caustics, scene]) => ui.label(format!(
-                    "GPU: simulation {sim:.1} ms, waves {waves:.1} ms, caustics {caustics:.1} ms, scene {scene:.1} ms"
-                )),
+                Some(ms) => {
+                    let stages: Vec<String> = STAGE_NAMES.iter().zip(ms).map(|(n, v)| format!("{n} {v:.1} ms")).collect();
+                    ui.label(format!("GPU: {}", stages.join(", ")))
+                }
                 None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
                 None => ui.label("GPU time: waiting for the first timestamps"),
             };
-            let pool = self.demo.scene() == wavepool::sea::SceneKind::Pool; // the modes are the pool's
+            let pool = self.demo.render_modes_apply();
             if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
-                let mode = RenderMode::from_param(self.demo.params.get(ParamId::RenderMode));
+                let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
                 self.mode_costs.observe(mode, stages);
                 ui.label(format!("drawing the water (caustics + scene): {}", self.mode_costs.summary()));
             }
@@ -421,12 +413,12 @@ impl eframe::App for Viewer {
             let dt = dt.min(0.25);
             match &mut self.timer {
                 Some(timer) => {
-                    self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |e, s| {
+                    self.demo.encode_frame(FrameContext { device, queue, encoder: &mut encoder, target: &view, size }, dt, &mut |e, s| {
                         timer.mark(e, s as u32)
                     });
                     timer.finish(&mut encoder);
                 }
-                None => self.demo.encode_frame(device, queue, &mut encoder, &view, size, dt, &mut |_, _| {}),
+                None => self.demo.encode_frame(FrameContext { device, queue, encoder: &mut encoder, target: &view, size }, dt, &mut |_, _| {}),
             }
             queue.submit([encoder.finish()]);
             self.demo.after_submit();

@@ -8,11 +8,10 @@ use std::sync::{Arc, Mutex};
 use wasm_bindgen::prelude::*;
 
 use crate::bodies::BodyId;
-use crate::demo::{DemoBuild, DemoOptions, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS};
+use crate::demo::{DemoBuild, DemoOptions, FrameContext, Key, SizeCaps, WaterDemo, SOFTWARE_CAPS, STAGE_NAMES};
 use crate::params::{self, ParamId};
 use crate::render::flat::ModeCosts;
-use crate::render::flat::RenderMode;
-use crate::sea::SceneKind;
+use crate::render::RenderMode;
 use crate::sim::SimEngine;
 use crate::timing::StageTimer;
 use tables::{set, to_js_number};
@@ -312,16 +311,16 @@ impl WebDemo {
         let (size, dt) = ((width, height), dt.clamp(0.0, 1.0));
         match &mut self.timer {
             Some(timer) => {
-                self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, dt, &mut |e, s| {
+                self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, dt, &mut |e, s| {
                     timer.mark(e, s as u32)
                 });
                 timer.finish(&mut encoder);
                 // The render modes' costs are the pool's (the sea has none of them).
-                if let Some(stages) = timer.latest().filter(|_| self.demo.scene() == SceneKind::Pool) {
-                    self.mode_costs.observe(RenderMode::from_param(self.demo.params.get(ParamId::RenderMode)), stages);
+                if let Some(stages) = timer.latest().filter(|_| self.demo.render_modes_apply()) {
+                    self.mode_costs.observe(self.demo.params.choice::<RenderMode>(ParamId::RenderMode), stages);
                 }
             }
-            None => self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, dt, &mut |_, _| {}),
+            None => self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, dt, &mut |_, _| {}),
         }
         self.queue.submit([encoder.finish()]);
         self.demo.after_submit();
@@ -367,10 +366,10 @@ impl WebDemo {
     fn draw_unshown(&mut self, size: (u32, u32)) {
         let format = self.srgb_view.unwrap_or(self.config.format);
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
-        let target = crate::gpu::texture_2d(&self.device, "unshown frame", size.0, size.1, 1, 1, format, usage);
+        let target = crate::gpu::texture_2d(&self.device, "unshown frame", (size.0, size.1, 1), 1, format, usage);
         let view = target.create_view(&Default::default());
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        self.demo.encode_frame(&self.device, &self.queue, &mut encoder, &view, size, 1.0 / 60.0, &mut |_, _| {});
+        self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, 1.0 / 60.0, &mut |_, _| {});
         self.queue.submit([encoder.finish()]);
         self.demo.after_submit();
         self.count_in_flight();
@@ -554,7 +553,7 @@ impl WebDemo {
         set(&o, "simSize", self.demo.water().size());
         set(&o, "simEngine", if self.demo.water().engine() == SimEngine::Gpu { "gpu" } else { "cpu" });
         set(&o, "simTime", self.demo.sim_time());
-        set(&o, "scene", if self.demo.drawn_scene() == SceneKind::Sea { "sea" } else { "pool" });
+        set(&o, "scene", self.demo.drawn_scene().name());
         set(&o, "meanLevel", level.mean as f64);
         set(&o, "maxAbsHeight", level.max_abs as f64);
         set(&o, "width", self.config.width);
@@ -586,7 +585,7 @@ impl WebDemo {
         // The latest measured frame's GPU time per stage (ms), where the browser measures it.
         let stages = self.timer.as_ref().and_then(StageTimer::latest).map_or(JsValue::NULL, |ms| {
             let o = js_sys::Object::new();
-            for (name, v) in ["simulation", "waves", "caustics", "scene"].iter().zip(ms) {
+            for (name, v) in STAGE_NAMES.iter().zip(ms) {
                 set(&o, name, v);
             }
             JsValue::from(o)

@@ -1,25 +1,35 @@
-//! The crate's layers (docs/ARCHITECTURE.md, "Layers"): every `crate::` path in `src/` outside
+//! The crate's layers (read from docs/ARCHITECTURE.md, "Layers"): every `crate::` path in `src/` outside
 //! test code may only name a module of its own layer or one below, and no modules may import
 //! each other round in a cycle. There is no list of exceptions. Reads the sources as text: no build of the modules involved.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-/// Bottom to top. A module may use modules of its own layer (without a cycle) and below.
-const LAYERS: &[(&str, &[&str])] = &[
-    ("util", &["util"]),
-    ("world", &["scene", "camera"]),
-    ("parameter types", &["param_spec"]),
-    ("gpu plumbing", &["gpu", "timing"]),
-    ("simulation", &["sim"]),
-    ("features", &["physics", "optics", "ambient", "bodies", "sky", "sea"]),
-    ("renderer", &["render", "textures"]),
-    ("app", &["params", "demo", "presets", "quality"]),
-    ("shells", &["web", "headless", "viewer", "cli", "main"]),
-];
+/// The layer table, bottom to top, as docs/ARCHITECTURE.md's "Layers" section writes it (the one
+/// place it is kept): each row a layer's name and its modules in backticks. A module may use
+/// modules of its own layer (without a cycle) and below.
+fn layers() -> &'static [(String, Vec<String>)] {
+    static LAYERS: std::sync::OnceLock<Vec<(String, Vec<String>)>> = std::sync::OnceLock::new();
+    LAYERS.get_or_init(|| {
+        let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/ARCHITECTURE.md"))
+            .expect("docs/ARCHITECTURE.md");
+        let section = doc.split("\n## Layers\n").nth(1).expect("a Layers section").split("\n## ").next().unwrap();
+        let rows: Vec<(String, Vec<String>)> = section
+            .lines()
+            .filter(|l| l.starts_with("| ") && !l.starts_with("| layer") && !l.starts_with("|---"))
+            .map(|l| {
+                let cells: Vec<&str> = l.trim_matches('|').split('|').map(str::trim).collect();
+                let modules = cells[1].split('`').skip(1).step_by(2).map(str::to_owned).collect();
+                (cells[0].to_owned(), modules)
+            })
+            .collect();
+        assert!(rows.len() >= 5 && rows.iter().all(|(_, m)| !m.is_empty()), "the Layers table: {rows:?}");
+        rows
+    })
+}
 
 fn layer_of(module: &str) -> Option<usize> {
-    LAYERS.iter().position(|(_, modules)| modules.contains(&module))
+    layers().iter().position(|(_, modules)| modules.iter().any(|m| m == module))
 }
 
 /// Source text with comments, string and char literals blanked (line breaks kept, so line
@@ -135,9 +145,18 @@ fn drop_test_items(code: &str) -> String {
 /// The first-level module names a `crate::` path (or group) names, with the byte offset of each
 /// (a macro at the crate's root, `crate::name!`, names none).
 fn imported_modules(code: &str) -> Vec<(usize, String)> {
+    names_after(code, "crate::")
+}
+
+/// The names a path starting with `prefix` (`crate::`, `super::`, `crate::render::`) names
+/// first, with the byte offset of each; groups `{a::X, b}` give each of theirs.
+fn names_after(code: &str, prefix: &str) -> Vec<(usize, String)> {
     let mut found = Vec::new();
-    for (at, _) in code.match_indices("crate::") {
-        let rest = &code[at + "crate::".len()..];
+    for (at, _) in code.match_indices(prefix) {
+        if prefix == "super::" && code[..at].ends_with("super::") {
+            continue; // `super::super::`: above the folder
+        }
+        let rest = &code[at + prefix.len()..];
         if let Some(group) = rest.strip_prefix('{') {
             // Names at the group's first level: `crate::{a::X, b::{Y, Z}, c}` gives a, b, c.
             let mut depth = 0;
@@ -217,7 +236,7 @@ fn every_import_runs_down_the_layer_table_and_no_modules_import_each_other() {
             (_, None) => problems.push(format!("{place}: `{from}` imports `{to}`, which is in no layer of the table")),
             (Some(a), Some(b)) if b > a => problems.push(format!(
                 "{place}: `{from}` ({}) imports `{to}` ({}), a layer above it",
-                LAYERS[a].0, LAYERS[b].0
+                layers()[a].0, layers()[b].0
             )),
             _ => {}
         }
@@ -250,7 +269,66 @@ fn every_import_runs_down_the_layer_table_and_no_modules_import_each_other() {
     println!(
         "{} imports between {} modules checked",
         imports.len(),
-        LAYERS.iter().map(|(_, m)| m.len()).sum::<usize>()
+        layers().iter().map(|(_, m)| m.len()).sum::<usize>()
     );
     assert!(problems.is_empty(), "layering problems:\n{}", problems.join("\n"));
+}
+
+/// Imports between the files of one folder (`src/render/flat.rs` naming `super::shaders` or
+/// `crate::render::shaders`): (folder, from, to) → first place. The folder's root (`mod.rs`,
+/// or `render.rs` beside the folder) is its facade, which its files may use and which names
+/// them all: it is left out.
+fn file_imports() -> BTreeMap<(String, String, String), String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    files.sort();
+    let mut imports = BTreeMap::new();
+    for file in &files {
+        let relative = file.strip_prefix(&src).unwrap();
+        let parts: Vec<String> = relative.iter().map(|p| p.to_string_lossy().trim_end_matches(".rs").to_string()).collect();
+        if parts.len() != 2 || parts[1] == "mod" {
+            continue;
+        }
+        let (folder, from) = (&parts[0], &parts[1]);
+        let siblings: Vec<String> = files
+            .iter()
+            .filter(|f| f.parent() == file.parent() && f.file_stem().is_some_and(|s| s != "mod"))
+            .map(|f| f.file_stem().unwrap().to_string_lossy().into_owned())
+            .collect();
+        let code = code_only(&std::fs::read_to_string(file).unwrap());
+        let named = names_after(&code, "super::").into_iter().chain(names_after(&code, &format!("crate::{folder}::")));
+        for (at, to) in named {
+            if &to != from && siblings.contains(&to) {
+                let line = code[..at].matches('\n').count() + 1;
+                imports.entry((folder.clone(), from.clone(), to)).or_insert(format!("src/{}:{line}", relative.display()));
+            }
+        }
+    }
+    imports
+}
+
+#[test]
+fn no_files_of_one_folder_import_each_other_round_in_a_cycle() {
+    let imports = file_imports();
+    let mut problems = Vec::new();
+    for ((folder, from, to), place) in &imports {
+        let mut reached = vec![to.as_str()];
+        let mut i = 0;
+        while i < reached.len() {
+            let at = reached[i];
+            for (f, a, b) in imports.keys() {
+                if f == folder && a == at && !reached.contains(&b.as_str()) {
+                    reached.push(b);
+                }
+            }
+            i += 1;
+        }
+        if reached.contains(&from.as_str()) {
+            problems.push(format!("{place}: `{folder}/{from}` imports `{to}`, which leads back to `{from}`"));
+        }
+    }
+    let folders: std::collections::BTreeSet<&String> = imports.keys().map(|(f, _, _)| f).collect();
+    println!("{} imports between the files of {} folders checked", imports.len(), folders.len());
+    assert!(problems.is_empty(), "circles within folders:\n{}", problems.join("\n"));
 }

@@ -59,7 +59,7 @@ fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f3
 #[test]
 fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_surface() {
     let mut means = Vec::new();
-    for model in FresnelModel::ALL {
+    for &model in FresnelModel::ALL {
         let mut demo = empty_pool();
         demo.params.set(ParamId::Fresnel, model as u32 as f32);
         demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
@@ -319,7 +319,7 @@ fn every_model_draws_its_formula_at_0_30_60_80_and_89_degrees() {
     let targets = [0.0f32, 30.0, 60.0, 80.0, 89.0];
     let views: [(f32, f32, f32); 4] = [(89.0, 2.5, -0.3), (32.0, 4.2, -0.3), (9.0, 3.0, 0.0), (1.2, 3.0, 0.0)];
     let mut at_60 = [0.0f32; 2]; // drawn: exact, Schlick
-    for model in FresnelModel::ALL {
+    for &model in FresnelModel::ALL {
         let mut nearest = [(f32::INFINITY, 0.0f32, 0.0f32); 5]; // (angle error, drawn, formula)
         for (pitch, distance, target_y) in views {
             let mut demo = empty_pool();

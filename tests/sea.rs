@@ -451,7 +451,7 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     let mut params = wavepool::params::Params::default();
     let mut camera = wavepool::sea::default_camera();
     wavepool::presets::find("storm").expect("the storm preset").apply(&mut params, &mut camera);
-    let storm = SeaSettings::from_values(|n| params.get_by_name(n).expect("a sea parameter"));
+    let storm = wavepool::demo::sea_settings(&params);
     let waves = SeaWaves::new(&storm.waves(), SEA_LATTICE);
     let (kind, s) = (wavepool::demo::BodyId(1).kind(), patch_scale());
     let value = |name: &str| params.get_by_name(name).expect("a body parameter");

@@ -124,7 +124,7 @@ impl GpuOcean {
             entries: &[gpu::uniform_entry(0, vis), gpu::float_texture_entry(1, vis), gpu::float_texture_entry(2, vis)],
         });
         let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-        let spectrum = gpu::texture_2d(device, "ocean spectrum", width, size, 1, 1, FORMAT, usage);
+        let spectrum = gpu::texture_2d(device, "ocean spectrum", (width, size, 1), 1, FORMAT, usage);
         let fields =
             ["ocean surface", "ocean displacement"].map(|l| PingPong::new(device, l, width, size, FORMAT, true));
         let sources = Sources {

@@ -7,7 +7,7 @@ use super::{BodyId, WaterDemo};
 use crate::camera::Pick;
 use crate::params::ParamId;
 use crate::physics::Pose;
-use crate::render::flat::RenderMode;
+use crate::render::RenderMode;
 use crate::scene;
 use crate::sea::{self, SceneKind};
 use crate::sim::Drop;
@@ -100,7 +100,7 @@ impl WaterDemo {
     /// Whether a press at column `x` (pixels) grabs the split view's divider (shown only in
     /// the split view with the camera above the water).
     pub fn over_divider(&self, x: f32) -> bool {
-        RenderMode::from_param(self.params.get(ParamId::RenderMode)) == RenderMode::Split
+        self.params.choice::<RenderMode>(ParamId::RenderMode) == RenderMode::Split
             && (x - self.params.get(ParamId::Split) * self.viewport.x).abs() <= DIVIDER_GRAB_PX
             && self.flat_water_drawn()
     }

@@ -16,6 +16,7 @@ use crate::ambient::{AmbientSettings, AmbientWaves};
 use crate::bodies::Body;
 pub use crate::bodies::BodyId;
 use crate::camera::OrbitCamera;
+pub use crate::gpu::FrameContext;
 use crate::params::{ParamId, Params};
 use crate::quality::{ResolutionGovernor, StepGovernor};
 use crate::render::{DebugTexture, RenderSettings, Renderer};
@@ -24,6 +25,7 @@ use crate::sim::{FixedStep, HeightField, SimEngine, WaterLevel, WaveSettings};
 use input::Drag;
 pub use input::{Key, DIVIDER_GRAB_PX};
 pub use options::{DemoOptions, OptionSpec, SizeCaps, SOFTWARE_CAPS};
+pub use sea::sea_settings;
 
 /// Fixed simulation steps per simulated second.
 pub const STEPS_PER_SECOND: u32 = 120;
@@ -49,6 +51,10 @@ pub enum Stage {
     AfterCaustics,
     AfterScene,
 }
+
+/// What each timed stage of a frame does, in the order of the marks between them (from
+/// [`Stage::Start`] to [`Stage::AfterScene`]), as the shells name their times.
+pub const STAGE_NAMES: [&str; 4] = ["simulation", "waves", "caustics", "scene"];
 
 pub struct WaterDemo {
     pub params: Params,
@@ -91,9 +97,8 @@ pub struct WaterDemo {
     other_camera: OrbitCamera,
     /// The open sea's waves, once the sea has been shown.
     sea: Option<sea::Sea>,
-    /// The sea draws its whitecaps, keeps them, draws its shore's foam and mirrors its bodies
-    /// (off only in tests).
-    sea_foam: [bool; 4],
+    /// What the sea draws beyond its waves (some of it off only in tests).
+    sea_extras: sea::SeaExtras,
     /// Drops asked for in the sea before its first frame made its patch.
     early_sea_drops: Vec<crate::sim::Drop>,
 }
@@ -183,7 +188,7 @@ impl WaterDemo {
             camera_scene: crate::sea::SceneKind::Pool,
             other_camera: crate::sea::default_camera(),
             sea: None,
-            sea_foam: [true; 4],
+            sea_extras: sea::SeaExtras::default(),
             early_sea_drops: Vec::new(),
         };
         demo.refresh_ambient();
@@ -285,7 +290,8 @@ impl WaterDemo {
         frame_time: f32,
     ) {
         let mut encoder = device.create_command_encoder(&Default::default());
-        self.encode_frame(device, queue, &mut encoder, target, size, frame_time, &mut |_, _| {});
+        let cx = FrameContext { device, queue, encoder: &mut encoder, target, size };
+        self.encode_frame(cx, frame_time, &mut |_, _| {});
         queue.submit([encoder.finish()]);
         self.after_submit();
         // Never waits: only lets finished readbacks (water statistics, body probes) complete.
@@ -348,23 +354,19 @@ impl WaterDemo {
     }
 
     /// Simulates a frame (submitted at once, in a command buffer of its own) and records its
-    /// drawing into `encoder`; `mark` is called at each [`Stage`] boundary (for timestamps;
-    /// the first two in the simulation's encoder). Writes uniform buffers, so submit before
-    /// encoding another frame.
-    #[allow(clippy::too_many_arguments)]
+    /// drawing into `cx`'s encoder; `mark` is called at each [`Stage`] boundary (for
+    /// timestamps; the first two in the simulation's encoder). Writes uniform buffers, so
+    /// submit before encoding another frame.
     pub fn encode_frame(
         &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
+        cx: FrameContext<'_>,
         frame_time: f32,
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
+        let FrameContext { device, queue, encoder, target, size } = cx;
         self.follow_params(size);
         if self.camera_scene == crate::sea::SceneKind::Sea {
-            self.encode_sea_frame(device, queue, encoder, target, size, frame_time, mark);
+            self.encode_sea_frame(FrameContext { device, queue, encoder, target, size }, frame_time, mark);
             return;
         }
         self.choose_render_scale(frame_time);

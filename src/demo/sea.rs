@@ -5,12 +5,45 @@
 //! bodies ride the waves summed at their probes on the CPU. The pool's water and bodies wait,
 //! as they were.
 
-use super::{Stage, WaterDemo, STEP_DT};
+use super::{FrameContext, Stage, WaterDemo, STEP_DT};
 use crate::ambient::cascades::{SeaNow, SeaWaves};
-use crate::params::ParamId;
+use crate::params::{ParamId, Params};
 use crate::render::{AmbientView, SeaLattices, SeaView, View, SEA_CASCADES};
-use crate::sea::{self, island, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
+use crate::sea::{self, island, IslandChoice, SceneKind, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
 use crate::sim::{Drop, HeightField, WaveSettings};
+
+/// The sea's settings in `params`.
+pub fn sea_settings(params: &Params) -> SeaSettings {
+    SeaSettings {
+        wind_speed: params.get(ParamId::SeaWind),
+        wind_direction: params.get(ParamId::SeaWindDirection),
+        wave_height: params.get(ParamId::SeaWaveHeight),
+        choppiness: params.get(ParamId::SeaChoppiness),
+        fog_distance: params.flag(ParamId::SeaFog).then(|| params.get(ParamId::SeaFogDistance)),
+        island: params.choice::<IslandChoice>(ParamId::SeaIsland).place(),
+        grid_lines: params.flag(ParamId::SeaGrid),
+    }
+}
+
+/// What the sea draws beyond its waves: all of it by default, some left out by tests to
+/// compare with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct SeaExtras {
+    /// Whitecaps where the waves break.
+    pub whitecaps: bool,
+    /// The whitecaps kept over time (else the map holds only each frame's own).
+    pub kept_whitecaps: bool,
+    /// Foam along the island's shore.
+    pub shore_foam: bool,
+    /// The floating bodies mirrored in the water.
+    pub mirrored_bodies: bool,
+}
+
+impl Default for SeaExtras {
+    fn default() -> Self {
+        Self { whitecaps: true, kept_whitecaps: true, shore_foam: true, mirrored_bodies: true }
+    }
+}
 
 /// The sea's waves and the settings they were made for, and the patch of simulated water.
 pub(super) struct Sea {
@@ -40,12 +73,18 @@ pub(super) struct Sea {
 impl WaterDemo {
     /// The scene the `scene` parameter asks for.
     pub fn scene(&self) -> SceneKind {
-        SceneKind::from_param(self.params.get(ParamId::Scene))
+        self.params.choice(ParamId::Scene)
     }
 
     /// The scene the last frame drew (its camera is [`WaterDemo::camera`]).
     pub fn drawn_scene(&self) -> SceneKind {
         self.camera_scene
+    }
+
+    /// Whether the render modes (ray-traced, flat, split) and their costs apply to the scene
+    /// asked for: they are the pool's.
+    pub fn render_modes_apply(&self) -> bool {
+        self.scene() == SceneKind::Pool
     }
 
     /// Brings the camera to the scene the parameters ask for: each scene keeps its own, with
@@ -85,8 +124,9 @@ impl WaterDemo {
         self.camera.clamp();
     }
 
-    fn sea_settings(&self) -> SeaSettings {
-        SeaSettings::from_values(|name| self.params.get_by_name(name).expect("a sea parameter"))
+    /// The sea's settings in the parameters.
+    pub fn sea_settings(&self) -> SeaSettings {
+        sea_settings(&self.params)
     }
 
     /// The sea for the current parameters: made the first time (the patch on the pool's
@@ -125,14 +165,14 @@ impl WaterDemo {
     /// compare with).
     #[doc(hidden)]
     pub fn set_sea_foam(&mut self, whitecaps: bool, kept: bool, shore: bool) {
-        self.sea_foam[..3].copy_from_slice(&[whitecaps, kept, shore]);
+        self.sea_extras = SeaExtras { whitecaps, kept_whitecaps: kept, shore_foam: shore, ..self.sea_extras };
     }
 
     /// Whether the sea mirrors its floating bodies (the default) or not (for tests to compare
     /// with).
     #[doc(hidden)]
     pub fn set_sea_body_mirror(&mut self, on: bool) {
-        self.sea_foam[3] = on;
+        self.sea_extras.mirrored_bodies = on;
     }
 
     /// Whether the sea's cascades take the GPU's FFT (where the device renders into float
@@ -210,17 +250,13 @@ impl WaterDemo {
 
     /// [`WaterDemo::encode_frame`] in the sea: the patch takes the frame's steps (submitted
     /// ahead, as the pool's water), the waves are the simulated time's.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn encode_sea_frame(
         &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
+        cx: FrameContext<'_>,
         frame_time: f32,
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
     ) {
+        let FrameContext { device, queue, encoder, target, size } = cx;
         self.choose_render_scale(frame_time);
         let steps = self.take_steps(frame_time);
         let (t, step) = (self.sim_time(), self.steps_taken);
@@ -265,17 +301,17 @@ impl WaterDemo {
             cascades: sea.cascades_drawn(),
             lattices,
             patch: &sea.patch,
-            whitecaps: self.sea_foam[0],
-            shore_foam: self.sea_foam[2],
+            whitecaps: self.sea_extras.whitecaps,
+            shore_foam: self.sea_extras.shore_foam,
             variant: sea::SeaVariant {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
                 whitecap_map: sea.may_break,
-                shallow_caustics: settings.island.is_some() && self.params.get(ParamId::Caustics) >= 0.5,
-                mirrored_bodies: self.sea_foam[3] && view.bodies.iter().any(Option::is_some),
+                shallow_caustics: settings.island.is_some() && self.params.flag(ParamId::Caustics),
+                mirrored_bodies: self.sea_extras.mirrored_bodies && view.bodies.iter().any(Option::is_some),
             },
             // Not kept (tests): the map holds only the frame's own foam.
-            whitecaps_kept: if self.sea_foam[1] {
+            whitecaps_kept: if self.sea_extras.kept_whitecaps {
                 (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp()
             } else {
                 0.0
@@ -286,7 +322,7 @@ impl WaterDemo {
         let mut marks = |encoder: &mut wgpu::CommandEncoder, maps: bool| {
             mark(encoder, if maps { Stage::AfterCaustics } else { Stage::AfterWaves })
         };
-        self.renderer.encode_sea(device, queue, encoder, target, size, &view, &drawn, &mut marks);
+        self.renderer.encode_sea(FrameContext { device, queue, encoder, target, size }, &view, &drawn, &mut marks);
         mark(encoder, Stage::AfterScene);
         let sea = self.sea.as_mut().expect("made above");
         sea.now = Some((step, now));

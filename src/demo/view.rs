@@ -7,7 +7,8 @@ use super::WaterDemo;
 use crate::ambient::{AmbientSettings, AmbientWaves};
 use crate::optics::{FresnelModel, SpecularModel};
 use crate::params::ParamId;
-use crate::render::flat::{Distortion, FlatCaustics, FlatView, RenderMode};
+use crate::render::flat::FlatView;
+use crate::render::RenderMode;
 use crate::render::{AmbientView, DebugTexture, DebugView, Optics, View, REFLECTANCE_VIEW};
 use crate::scene;
 use crate::sim;
@@ -15,8 +16,18 @@ use crate::sim;
 impl WaterDemo {
     /// Remakes the ambient waves if their parameters changed.
     pub(super) fn refresh_ambient(&mut self) {
-        let settings =
-            AmbientSettings::from_values(|name| self.params.get_by_name(name).expect("an ambient parameter"));
+        let p = &self.params;
+        let settings = AmbientSettings {
+            model: p.choice(ParamId::Ambient),
+            wind_speed: p.get(ParamId::WindSpeed),
+            wind_direction_deg: p.get(ParamId::WindDirection),
+            significant_height: p.get(ParamId::WaveHeight),
+            spread_deg: p.get(ParamId::WaveSpread),
+            steepness: p.get(ParamId::Steepness),
+            spectrum: p.choice(ParamId::Spectrum),
+            fft_size: p.get(ParamId::FftSize) as usize,
+            choppiness: p.get(ParamId::Choppiness),
+        };
         if settings != self.ambient_settings {
             self.ambient = AmbientWaves::new(&settings);
             self.ambient_settings = settings;
@@ -50,11 +61,11 @@ impl WaterDemo {
             bodies: self.drawn_bodies(),
             caustics: self.params.flag(ParamId::Caustics),
             optics: Optics {
-                fresnel: FresnelModel::from_param(self.params.get(ParamId::Fresnel)),
-                specular: SpecularModel::from_param(self.params.get(ParamId::Specular)),
+                fresnel: self.params.choice(ParamId::Fresnel),
+                specular: self.params.choice(ParamId::Specular),
                 shininess: self.params.get(ParamId::Shininess),
                 sun_size: self.params.get(ParamId::SunSize),
-                show_reflectance: self.params.get(ParamId::DebugView).round() as i32 == REFLECTANCE_VIEW,
+                show_reflectance: self.params.choice::<DebugChoice>(ParamId::DebugView) == DebugChoice::Reflectance,
                 absorption: Vec3::new(
                     self.params.get(ParamId::AbsorptionRed),
                     self.params.get(ParamId::AbsorptionGreen),
@@ -73,7 +84,7 @@ impl WaterDemo {
                 AmbientView { model: self.ambient.model, waves, header }
             },
             foam: self.water.foam().is_some(),
-            debug: DebugTexture::from_param(self.params.get(ParamId::DebugView))
+            debug: (self.params.choice::<DebugChoice>(ParamId::DebugView).texture())
                 .map(|texture| DebugView { texture, inset: self.params.flag(ParamId::DebugInset) }),
             render_scale: self.render_scale,
             flat: self.flat_view(),
@@ -85,21 +96,21 @@ impl WaterDemo {
 
     /// Whether the pool is sunk in the deck (`setting` deck) rather than the cut-away box.
     pub(super) fn on_deck(&self) -> bool {
-        self.params.get(ParamId::Setting).round() == 0.0
+        self.params.choice::<Setting>(ParamId::Setting) == Setting::Deck
     }
 
     /// The flat water settings in the parameters (`None` when ray-traced).
     pub(super) fn flat_view(&self) -> Option<FlatView> {
-        let mode = RenderMode::from_param(self.params.get(ParamId::RenderMode));
+        let mode = self.params.choice::<RenderMode>(ParamId::RenderMode);
         let scroll = self.params.get(ParamId::DudvSpeed) as f64 * self.sim_time();
         (mode != RenderMode::RayTraced).then(|| FlatView {
             mode,
             split: self.params.get(ParamId::Split),
-            distortion: Distortion::from_param(self.params.get(ParamId::FlatDistortion)),
+            distortion: self.params.choice(ParamId::FlatDistortion),
             strength: self.params.get(ParamId::FlatStrength),
             move_factor: (scroll - scroll.floor()) as f32,
             resolution: self.params.get(ParamId::FlatResolution),
-            caustics: FlatCaustics::from_param(self.params.get(ParamId::FlatCaustics)),
+            caustics: self.params.choice(ParamId::FlatCaustics),
             soft_edge: self.params.get(ParamId::FlatSoftEdge),
             plane: self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH),
         })
@@ -119,7 +130,7 @@ impl WaterDemo {
 
     /// Why the chosen flat water is not drawn, if it is not (for the page and the viewer).
     pub fn flat_water_note(&self) -> Option<&'static str> {
-        let mode = RenderMode::from_param(self.params.get(ParamId::RenderMode));
+        let mode = self.params.choice::<RenderMode>(ParamId::RenderMode);
         (mode != RenderMode::RayTraced && !self.flat_water_drawn())
             .then_some("Flat water is an above-water technique: under the water the ray tracer draws.")
     }

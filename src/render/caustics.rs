@@ -1,8 +1,10 @@
 //! The caustics map: the water grid projected along the refracted sunlight, each
 //! triangle adding the light its area gathers (`shaders/caustics.wgsl`), then its mip chain.
 
+
 use super::caustics_mips::CausticsMips;
-use super::flat::{self, FlatCaustics};
+use super::flat;
+use super::render_mode::{FlatCaustics, RenderMode};
 use super::meshes::{banded_grid, Mesh};
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
@@ -79,7 +81,7 @@ impl Renderer {
         let features = Features::of(view);
         self.resize_caustics(device, self.caustics_size(view.render_scale), features.dispersion);
         // The ray-traced part reads the map if caustics are on, flat water if it uses the real ones.
-        let traced_shown = flat_shown(view).is_none_or(|f| f.mode == flat::RenderMode::Split && f.split < 1.0);
+        let traced_shown = flat_shown(view).is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);
         let flat_reads = flat_shown(view).is_some_and(|f| f.caustics == FlatCaustics::Real);
         if !((view.caustics && traced_shown) || flat_reads) {
             return;

@@ -26,7 +26,7 @@ impl CausticsMips {
     pub fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat) -> Self {
         let mips = CAUSTICS_MIPS.min(size.ilog2() + 1);
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-        let texture = gpu::texture_2d(device, "caustics map", size, size, 1, mips, format, usage);
+        let texture = gpu::texture_2d(device, "caustics map", (size, size, 1), mips, format, usage);
         let level = |i: u32| {
             texture.create_view(&wgpu::TextureViewDescriptor {
                 label: Some("caustics map level"),

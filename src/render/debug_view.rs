@@ -23,20 +23,31 @@ pub enum DebugTexture {
     Spectrum = 6,
 }
 
-/// The `debug_view` value that shows the water's Fresnel reflectance: not a texture but a
-/// variant of the surface shader ([`Optics::show_reflectance`]).
-pub const REFLECTANCE_VIEW: i32 = 5;
+crate::choices! {
+    /// What the `debug_view` parameter shows: nothing, one of the inner textures, or the
+    /// water's Fresnel reflectance (not a texture but a variant of the surface shader,
+    /// [`Optics::show_reflectance`]).
+    pub enum DebugChoice {
+        Off = "off",
+        Height = "height",
+        Normals = "normals",
+        Velocity = "velocity",
+        Caustics = "caustics",
+        Reflectance = "reflectance",
+        Spectrum = "spectrum",
+    }
+}
 
-impl DebugTexture {
-    /// From the `debug_view` parameter's value (0 = none).
-    pub fn from_param(value: f32) -> Option<Self> {
-        match value.round() as i32 {
-            1 => Some(Self::Height),
-            2 => Some(Self::Normals),
-            3 => Some(Self::Velocity),
-            4 => Some(Self::Caustics),
-            6 => Some(Self::Spectrum),
-            _ => None,
+impl DebugChoice {
+    /// The inner texture it shows, if any.
+    pub fn texture(self) -> Option<DebugTexture> {
+        match self {
+            DebugChoice::Height => Some(DebugTexture::Height),
+            DebugChoice::Normals => Some(DebugTexture::Normals),
+            DebugChoice::Velocity => Some(DebugTexture::Velocity),
+            DebugChoice::Caustics => Some(DebugTexture::Caustics),
+            DebugChoice::Spectrum => Some(DebugTexture::Spectrum),
+            DebugChoice::Off | DebugChoice::Reflectance => None,
         }
     }
 }
@@ -89,10 +100,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Debug view",
         group: "Debug",
         unit: "",
-        control: Control::Choice {
-            values: &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0],
-            names: &["off", "height", "normals", "velocity", "caustics", "reflectance", "spectrum"],
-        },
+        control: Control::Choice { values: DebugChoice::VALUES, names: DebugChoice::NAMES },
         default: 0.0,
         help: "Shows one of the simulation's textures: height (red up, blue down), surface normals, vertical velocity, or the caustics map; or the water's Fresnel reflectance as grey (black 0, white 1); or the ambient waves' spectrum (amplitude per wavevector, log scale, k = 0 in the middle, rings at the 0.9 m and 0.2 m wavelengths).",
     },

@@ -171,6 +171,15 @@ pub fn deck_ring() -> (Vec<[f32; 6]>, Vec<u32>) {
     (vertices, indices)
 }
 
+crate::choices! {
+    /// Where the pool is (the `setting` parameter): sunk in the paved deck, or the classic's
+    /// cut-away box.
+    pub enum Setting {
+        Deck = "deck",
+        Cutaway = "cutaway",
+    }
+}
+
 /// Where the pool is: in the deck or the cut-away box. (The parameter table, `params::table`, lists them in this order.)
 pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
@@ -178,7 +187,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Setting",
         group: "Light",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["deck", "cutaway"] },
+        control: Control::Choice { values: Setting::VALUES, names: Setting::NAMES },
         default: 0.0,
         help: "Where the pool is: sunk in a paved deck under the sky, or the classic's cut-away box, open at the near walls so you see the water's cross-section.",
     },

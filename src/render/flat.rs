@@ -11,6 +11,7 @@ use std::collections::HashMap;
 
 use glam::{Mat4, Vec4};
 
+use super::render_mode::{Distortion, FlatCaustics, RenderMode};
 use super::variants::{mesh_pipeline, DepthUse, MeshPipeline, PipelineTargets};
 use super::{Features, DEPTH_FORMAT};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
@@ -34,58 +35,6 @@ pub const PATH_SCALE: f32 = 4.0;
 /// Width (pixels) of the split view's divider line, and of the grip in its middle.
 pub const DIVIDER_LINE: u32 = 2;
 pub const DIVIDER_GRIP: (u32, u32) = (10, 48);
-
-/// How the water surface is drawn (the `render_mode` parameter).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum RenderMode {
-    #[default]
-    RayTraced = 0,
-    Flat = 1,
-    /// Flat left of the divider, ray-traced right of it.
-    Split = 2,
-}
-
-/// What shifts the flat water's texture lookups (the `flat_distortion` parameter).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Distortion {
-    #[default]
-    Dudv = 0,
-    /// The simulated surface's slopes (and the ambient waves').
-    Ripples = 1,
-}
-
-/// The light on the pool under flat water (the `flat_caustics` parameter).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum FlatCaustics {
-    Off = 0,
-    /// Seed 000's highlight from the distortion's normal.
-    #[default]
-    Fake = 1,
-    /// The ray tracer's caustics map.
-    Real = 2,
-}
-
-impl RenderMode {
-    pub fn from_param(value: f32) -> Self {
-        [Self::RayTraced, Self::Flat, Self::Split][value.round().clamp(0.0, 2.0) as usize]
-    }
-}
-
-impl Distortion {
-    pub fn from_param(value: f32) -> Self {
-        if value.round() >= 1.0 {
-            Self::Ripples
-        } else {
-            Self::Dudv
-        }
-    }
-}
-
-impl FlatCaustics {
-    pub fn from_param(value: f32) -> Self {
-        [Self::Off, Self::Fake, Self::Real][value.round().clamp(0.0, 2.0) as usize]
-    }
-}
 
 /// The flat-water settings of a frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -181,7 +130,7 @@ pub fn dudv_map(size: u32, seed: u64) -> Vec<[u8; 4]> {
 pub fn dudv_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::TextureView {
     let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
     let format = wgpu::TextureFormat::Rgba8Unorm;
-    let texture = gpu::texture_2d(device, "dudv map", DUDV_SIZE, DUDV_SIZE, 1, 1, format, usage);
+    let texture = gpu::texture_2d(device, "dudv map", (DUDV_SIZE, DUDV_SIZE, 1), 1, format, usage);
     gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&dudv_map(DUDV_SIZE, 16)));
     texture.create_view(&Default::default())
 }
@@ -238,11 +187,11 @@ impl FlatWater {
         if self.targets.as_ref().map(|t| t.size) != Some(size) {
             let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
             let colour = |label| {
-                gpu::texture_2d(device, label, size.0, size.1, 1, 1, format, usage | wgpu::TextureUsages::COPY_SRC)
+                gpu::texture_2d(device, label, (size.0, size.1, 1), 1, format, usage | wgpu::TextureUsages::COPY_SRC)
             };
             let reflection = colour("flat water reflection");
             let refraction = colour("flat water refraction");
-            let depth = gpu::texture_2d(device, "flat water depth", size.0, size.1, 1, 1, DEPTH_FORMAT, usage);
+            let depth = gpu::texture_2d(device, "flat water depth", (size.0, size.1, 1), 1, DEPTH_FORMAT, usage);
             let reflection_view = reflection.create_view(&Default::default());
             let refraction_view = refraction.create_view(&Default::default());
             let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -335,7 +284,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Water rendering",
         group: "Flat water",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["raytraced", "flat", "split"] },
+        control: Control::Choice { values: RenderMode::VALUES, names: RenderMode::NAMES },
         default: 0.0,
         help: "How the water surface is drawn. raytraced: every pixel of the surface traces its reflected and refracted rays through the pool. flat: the technique games use: the scene is drawn twice more into textures, mirrored in the water plane (reflection) and clipped under it (refraction), and a flat plane blends the two by Fresnel, wobbled by a distortion instead of bent by the waves. It is an above-water technique: under water the ray tracer draws. split: flat on the left, ray-traced on the right of a divider you drag.",
     },
@@ -353,7 +302,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Distortion",
         group: "Flat water",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0], names: &["dudv", "ripples"] },
+        control: Control::Choice { values: Distortion::VALUES, names: Distortion::NAMES },
         default: 0.0,
         help: "What wobbles the flat water's reflection and refraction: dudv, a tiling distortion map (a dUdV map) scrolled over time (clicks make no ripples in it), or ripples, the simulation's own slopes (the same waves as the ray tracer, with faked optics).",
     },
@@ -389,7 +338,7 @@ pub const PARAMS: &[ParamSpec] = &[
         label: "Caustics",
         group: "Flat water",
         unit: "",
-        control: Control::Choice { values: &[0.0, 1.0, 2.0], names: &["off", "fake", "real"] },
+        control: Control::Choice { values: FlatCaustics::VALUES, names: FlatCaustics::NAMES },
         default: 1.0,
         help: "Light on the pool under flat water: off (a calm surface's), fake (a highlight where the distortion's normal would send the sun straight down; no focusing, no pass) or real (the ray tracer's caustics map, one more pass).",
     },

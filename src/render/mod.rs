@@ -5,11 +5,13 @@ pub(crate) mod caustics;
 mod caustics_mips;
 pub(crate) mod debug_view;
 pub(crate) mod deck;
+mod features;
 pub mod flat;
 pub(crate) mod glaze;
 mod meshes;
 mod passes;
 mod regions;
+mod render_mode;
 mod resources;
 mod sea;
 mod sea_bodies;
@@ -30,8 +32,9 @@ use crate::sim::HeightField;
 use crate::textures::SkyCube;
 use caustics::CausticsMap;
 pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS_FORMAT_8BIT};
-pub use debug_view::{DebugTexture, DebugView, REFLECTANCE_VIEW};
-pub use deck::EYE_CLEARANCE;
+pub use debug_view::{DebugChoice, DebugTexture, DebugView};
+pub use deck::{Setting, EYE_CLEARANCE};
+pub use render_mode::{Distortion, FlatCaustics, RenderMode};
 use flat::FlatWater;
 use meshes::{pool_box, pool_walls, GridMesh, Mesh};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
@@ -39,9 +42,24 @@ pub use sea::{SeaView, SEA_CASCADES};
 pub use sea_lattices::SeaLattices;
 use uniforms::SceneUniforms;
 use upscale::Upscale;
-pub use variants::Features;
+pub use features::Features;
 use variants::{PipelineTargets, ScenePipelines, VariantBuild};
 pub use view::{flat_shown, AmbientView, Optics, View};
+
+/// The numbers of the features every scene pass reads, as WGSL constants (the optics, the
+/// ambient waves, flat water, the sky, the deck, the tiles' glaze, the caustics' mips): the
+/// renderer's features are named here, at its root, not in the shader plumbing.
+fn scene_constants() -> [String; 7] {
+    [
+        crate::optics::wgsl_constants(),
+        crate::ambient::wgsl_constants(),
+        flat::wgsl_constants(),
+        crate::sky::Daylight::wgsl_constants(),
+        deck::wgsl_constants(),
+        glaze::wgsl_constants(),
+        caustics_mips::CausticsMips::wgsl_constants(),
+    ]
+}
 
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 

@@ -1,6 +1,7 @@
 //! The scene's passes in the order a frame draws them: the picture (ray-traced, flat or
 //! split, at the view's render scale), the flat water's textures, the scene pass itself.
 
+use super::RenderMode;
 use super::deck;
 use super::flat::{self, FlatView};
 use super::regions;
@@ -37,7 +38,7 @@ impl Renderer {
         } else {
             self.draw_picture(device, encoder, Picture { target, size, view, water });
         }
-        if let Some(f) = flat_shown(view).filter(|f| f.mode == flat::RenderMode::Split) {
+        if let Some(f) = flat_shown(view).filter(|f| f.mode == RenderMode::Split) {
             self.flat.draw_divider(encoder, target, size, f.divider(size.0));
         }
         if let Some(debug) = view.debug {
@@ -93,7 +94,7 @@ impl Renderer {
         let base = Features::of(view);
         let size = self.scaled_size(view, size);
         let flat = flat_shown(view);
-        let traced_shown = flat.is_none_or(|f| f.mode == flat::RenderMode::Split && f.split < 1.0);
+        let traced_shown = flat.is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);
         let flat_reads = flat.is_some_and(|f| f.caustics == flat::FlatCaustics::Real);
         let mut drawn = Vec::new();
         if (view.caustics && traced_shown) || flat_reads {

@@ -60,7 +60,7 @@ impl SceneTextures {
                 let size = SPECTRUM_IMAGE_SIZE as u32;
                 let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
                 let texture =
-                    gpu::texture_2d(device, "ambient spectrum", size, size, 1, 1, wgpu::TextureFormat::R32Float, usage);
+                    gpu::texture_2d(device, "ambient spectrum", (size, size, 1), 1, wgpu::TextureFormat::R32Float, usage);
                 let view = texture.create_view(&Default::default());
                 (texture, view)
             },
@@ -97,7 +97,7 @@ impl SceneTextures {
 /// A `size` x `size` foam map (R32Float, filled from the CPU).
 pub(super) fn foam_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu::TextureView) {
     let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-    let texture = gpu::texture_2d(device, "foam", size, size, 1, 1, wgpu::TextureFormat::R32Float, usage);
+    let texture = gpu::texture_2d(device, "foam", (size, size, 1), 1, wgpu::TextureFormat::R32Float, usage);
     let view = texture.create_view(&Default::default());
     (texture, view)
 }
@@ -129,7 +129,7 @@ pub(super) fn water_bind_groups(
 /// the CPU or drawn by the GPU FFT.
 pub(super) fn ambient_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu::TextureView) {
     let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-    let texture = gpu::texture_2d(device, "ambient map", size, size, 1, 1, wgpu::TextureFormat::Rgba32Float, usage);
+    let texture = gpu::texture_2d(device, "ambient map", (size, size, 1), 1, wgpu::TextureFormat::Rgba32Float, usage);
     let view = texture.create_view(&Default::default());
     (texture, view)
 }
@@ -212,16 +212,7 @@ impl Renderer {
 
     pub(super) fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {
         if self.depth.as_ref().map(|d| d.size) != Some(size) {
-            let texture = gpu::texture_2d(
-                device,
-                "depth",
-                size.0.max(1),
-                size.1.max(1),
-                1,
-                1,
-                DEPTH_FORMAT,
-                wgpu::TextureUsages::RENDER_ATTACHMENT,
-            );
+            let texture = gpu::texture_2d(device, "depth", (size.0.max(1), size.1.max(1), 1), 1, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
             self.depth = Some(DepthBuffer { view: texture.create_view(&Default::default()), size });
         }
         &self.depth.as_ref().expect("depth buffer just made").view

@@ -13,7 +13,7 @@ use super::sea_island::{cells_showing, island_map, mesh_pipeline, IslandDrawing,
 use super::sea_lattices::{LatticeMaps, SeaLattices};
 use super::{shaders, Features, Renderer, DEPTH_FORMAT};
 use crate::camera::OrbitCamera;
-use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::gpu::{self, FrameContext, FullscreenPass, FullscreenTarget};
 use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS};
 use crate::sim::HeightField;
 
@@ -411,18 +411,14 @@ impl Renderer {
     /// Draws the sea into `target` (`size` pixels) at the view's render scale, after
     /// [`Renderer::prepare`] wrote this frame's scene uniforms for `view` (the sea camera's,
     /// with its bodies, no caustics or deck).
-    #[allow(clippy::too_many_arguments)]
     pub fn encode_sea(
         &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        target: &wgpu::TextureView,
-        size: (u32, u32),
+        cx: FrameContext<'_>,
         view: &super::View,
         sea: &SeaView<'_>,
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
+        let FrameContext { device, queue, encoder, target, size } = cx;
         let features = Features::of(view);
         let variant =
             SeaVariant { whitecap_map: sea.variant.whitecap_map && self.settings.float_targets, ..sea.variant };

@@ -24,7 +24,7 @@ pub(super) struct WhitecapMaps {
 /// A texture the sea's group 3 binds for the map when there is none (the pass is left out).
 pub(super) fn no_map(device: &wgpu::Device) -> wgpu::TextureView {
     let usage = wgpu::TextureUsages::TEXTURE_BINDING;
-    gpu::texture_2d(device, "no whitecap map", 1, 1, 1, 1, FORMAT, usage).create_view(&Default::default())
+    gpu::texture_2d(device, "no whitecap map", (1, 1, 1), 1, FORMAT, usage).create_view(&Default::default())
 }
 
 impl WhitecapMaps {
@@ -34,7 +34,7 @@ impl WhitecapMaps {
         let n = WHITECAP_MAP_TEXELS;
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
         let maps =
-            ["whitecaps a", "whitecaps b"].map(|label| gpu::texture_2d(device, label, n, n, 1, 1, FORMAT, usage));
+            ["whitecaps a", "whitecaps b"].map(|label| gpu::texture_2d(device, label, (n, n, 1), 1, FORMAT, usage));
         let views = maps.each_ref().map(|m| m.create_view(&Default::default()));
         let target = FullscreenTarget { format: FORMAT, blend: None, depth: None };
         let update = FullscreenPass::new(device, "whitecaps", parts, "fs_whitecaps", layouts, target);

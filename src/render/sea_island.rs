@@ -58,8 +58,8 @@ impl MirrorTarget {
     /// A mirror of `size` texels (a texel for a sea without island).
     pub(super) fn new(device: &wgpu::Device, size: (u32, u32)) -> Self {
         let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
-        let colour = gpu::texture_2d(device, "sea mirror", size.0, size.1, 1, 1, MIRROR_FORMAT, usage);
-        let depth = gpu::texture_2d(device, "sea mirror depth", size.0, size.1, 1, 1, DEPTH_FORMAT, usage);
+        let colour = gpu::texture_2d(device, "sea mirror", (size.0, size.1, 1), 1, MIRROR_FORMAT, usage);
+        let depth = gpu::texture_2d(device, "sea mirror depth", (size.0, size.1, 1), 1, DEPTH_FORMAT, usage);
         Self { size, view: colour.create_view(&Default::default()), depth: depth.create_view(&Default::default()) }
     }
 
@@ -73,7 +73,7 @@ impl MirrorTarget {
 pub(super) fn island_map(device: &wgpu::Device, queue: &wgpu::Queue, with_island: bool) -> wgpu::Texture {
     let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
     let n = if with_island { island::MAP_TEXELS } else { 1 };
-    let texture = gpu::texture_2d(device, "island", n, n, 1, 1, wgpu::TextureFormat::Rgba16Float, usage);
+    let texture = gpu::texture_2d(device, "island", (n, n, 1), 1, wgpu::TextureFormat::Rgba16Float, usage);
     let texels = if with_island { island::map() } else { vec![[-island::FLOOR_DEPTH, 0.0, 0.0, 0.0]] };
     let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::sea_lattices::f16_bits)).collect();
     gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&halves));

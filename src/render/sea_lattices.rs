@@ -8,7 +8,7 @@ use crate::ambient::ocean::Ocean;
 use crate::gpu;
 use crate::sea::SEA_LATTICE;
 
-use super::sea::SEA_CASCADES;
+use crate::ambient::cascades::CASCADE_COUNT;
 
 const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
 
@@ -34,8 +34,8 @@ impl LatticeMaps {
             | wgpu::TextureUsages::COPY_DST
             | wgpu::TextureUsages::RENDER_ATTACHMENT;
         let map = |label| {
-            let (n, layers) = (SEA_LATTICE as u32, SEA_CASCADES as u32);
-            gpu::texture_2d(device, label, n, n, layers, 1, FORMAT, usage)
+            let (n, layers) = (SEA_LATTICE as u32, CASCADE_COUNT as u32);
+            gpu::texture_2d(device, label, (n, n, layers), 1, FORMAT, usage)
         };
         Self { maps: [map("sea surface"), map("sea displacement")], fft: None }
     }

@@ -2,7 +2,7 @@
 //! flat water, debug view) is built from, and the constants they read from Rust, so the two
 //! cannot disagree.
 
-use super::variants::Features;
+use super::features::Features;
 use crate::gpu;
 
 pub const COMMON: &str = crate::wgsl!("common.wgsl");
@@ -48,13 +48,7 @@ pub fn scene_prelude_in(features: Features, target: wgpu::TextureFormat, seen: &
     [
         features.wgsl(),
         numbers,
-        crate::optics::wgsl_constants(),
-        crate::ambient::wgsl_constants(),
-        super::flat::wgsl_constants(),
-        crate::sky::Daylight::wgsl_constants(),
-        super::deck::wgsl_constants(),
-        super::glaze::wgsl_constants(),
-        super::caustics_mips::CausticsMips::wgsl_constants(),
+        super::scene_constants().join("\n"),
         gpu::wgsl::MATH.to_owned(),
         COMMON.to_owned(),
         SCENE.join("\n"),

@@ -3,6 +3,7 @@
 
 use glam::{Mat4, Vec3};
 
+use super::RenderMode;
 use super::flat::{self, FlatView};
 use super::DebugView;
 use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
@@ -84,5 +85,5 @@ pub struct Optics {
 /// camera above the plane (flat water is an above-water technique; under it the ray tracer
 /// draws everything).
 pub fn flat_shown(view: &View) -> Option<FlatView> {
-    view.flat.filter(|f| f.mode != flat::RenderMode::RayTraced && view.eye.y > f.plane)
+    view.flat.filter(|f| f.mode != RenderMode::RayTraced && view.eye.y > f.plane)
 }

@@ -122,7 +122,7 @@ pub const DISPLACEMENT_DEPTH: f32 = 0.1;
 /// The depth a body's push fades over in a field of `half_width` (m): the pool's, grown with
 /// the field as its bodies are (the open sea's patch holds bodies as much larger).
 pub fn displacement_depth(half_width: f32) -> f32 {
-    DISPLACEMENT_DEPTH * super::plan::scale_of(half_width)
+    DISPLACEMENT_DEPTH * super::scale_of(half_width)
 }
 /// Area of the pool's water surface (m²) for a half width of 1 m; scale by half width².
 pub fn pool_area(half_width: f32) -> f32 {

@@ -93,7 +93,7 @@ impl MeanLevel {
             let usage = wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::TEXTURE_BINDING
                 | wgpu::TextureUsages::COPY_SRC;
-            textures.push(gpu::texture_2d(device, "water level", side, side, 1, 1, LEVEL_FORMAT, usage));
+            textures.push(gpu::texture_2d(device, "water level", (side, side, 1), 1, LEVEL_FORMAT, usage));
             side /= 2;
         }
         let views: Vec<_> = textures.iter().map(|t| t.create_view(&Default::default())).collect();

@@ -3,6 +3,7 @@
 //! fixed time step. Lengths in metres, times in seconds.
 
 use super::coupling::{CellRange, HullMove};
+use super::scale_of;
 
 /// Drops the drop pass applies at once; more wait for the next frame.
 pub const MAX_DROPS_PER_PASS: usize = 32;
@@ -55,12 +56,6 @@ pub fn sponge_profile(x: f32, z: f32, half_width: f32) -> f32 {
     let from_wall = half_width - x.abs().max(z.abs());
     let t = (1.0 - from_wall / (SPONGE_WIDTH * scale_of(half_width))).max(0.0);
     t * t
-}
-
-/// A field's width against the pool's: its sponge and bounds grow with it, so a field of any
-/// width (the open sea's patch) behaves as the pool would at that size; exactly 1 for the pool.
-pub fn scale_of(half_width: f32) -> f32 {
-    half_width / crate::scene::HALF_WIDTH
 }
 
 /// Largest |height| an update may leave (m, for the pool; [`scale_of`] times it for a field); it clamps to it and replaces NaN or infinity

@@ -61,7 +61,7 @@ pub fn preset_table() -> js_sys::Array {
 #[wasm_bindgen(js_name = fresnelCurve)]
 pub fn fresnel_curve(model: f32, from_water: bool, samples: u32) -> Vec<f32> {
     crate::optics::reflectance_curve(
-        crate::optics::FresnelModel::from_param(model),
+        crate::optics::FresnelModel::from(model),
         from_water,
         samples.clamp(2, 1024) as usize,
     )
