@@ -317,9 +317,17 @@ fn time_with_timestamps(
     let start = Instant::now();
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     let dt = 1.0 / 60.0;
-    demo.encode_frame(FrameContext { device: &gpu.device, queue: &gpu.queue, encoder: &mut encoder, target: &target.view, size: target.size() }, dt, &mut |enc, stage| {
-        timer.mark(enc, stage as u32)
-    });
+    demo.encode_frame(
+        FrameContext {
+            device: &gpu.device,
+            queue: &gpu.queue,
+            encoder: &mut encoder,
+            target: &target.view,
+            size: target.size(),
+        },
+        dt,
+        &mut |enc, stage| timer.mark(enc, stage as u32),
+    );
     timer.finish(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
     timer.after_submit();
@@ -339,15 +347,25 @@ fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &Offscre
     let mut times = Vec::new();
     let mut last = Instant::now();
     let dt = 1.0 / 60.0;
-    demo.encode_frame(FrameContext { device: &gpu.device, queue: &gpu.queue, encoder: &mut encoder, target: &target.view, size: target.size() }, dt, &mut |enc, stage| {
-        if stage != Stage::Start {
-            let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
-            gpu.queue.submit([done.finish()]);
-            let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-            times.push(last.elapsed().as_secs_f64() * 1e3);
-        }
-        last = Instant::now();
-    });
+    demo.encode_frame(
+        FrameContext {
+            device: &gpu.device,
+            queue: &gpu.queue,
+            encoder: &mut encoder,
+            target: &target.view,
+            size: target.size(),
+        },
+        dt,
+        &mut |enc, stage| {
+            if stage != Stage::Start {
+                let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
+                gpu.queue.submit([done.finish()]);
+                let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+                times.push(last.elapsed().as_secs_f64() * 1e3);
+            }
+            last = Instant::now();
+        },
+    );
     gpu.queue.submit([encoder.finish()]);
     demo.after_submit();
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());

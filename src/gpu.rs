@@ -325,10 +325,17 @@ impl PingPong {
     ) -> Self {
         let target = if render_target { wgpu::TextureUsages::RENDER_ATTACHMENT } else { wgpu::TextureUsages::empty() };
         let make = |i: usize| {
-            texture_2d(device, &format!("{label} {i}"), (width, height, 1), 1, format, target
+            texture_2d(
+                device,
+                &format!("{label} {i}"),
+                (width, height, 1),
+                1,
+                format,
+                target
                     | wgpu::TextureUsages::TEXTURE_BINDING
                     | wgpu::TextureUsages::COPY_SRC
-                    | wgpu::TextureUsages::COPY_DST)
+                    | wgpu::TextureUsages::COPY_DST,
+            )
         };
         let textures = [make(0), make(1)];
         let views = [textures[0].create_view(&Default::default()), textures[1].create_view(&Default::default())];

@@ -57,7 +57,14 @@ pub struct OffscreenTarget {
 
 impl OffscreenTarget {
     pub fn new(device: &wgpu::Device, width: u32, height: u32) -> Self {
-        let texture = gpu::texture_2d(device, "offscreen frame", (width, height, 1), 1, OFFSCREEN_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
+        let texture = gpu::texture_2d(
+            device,
+            "offscreen frame",
+            (width, height, 1),
+            1,
+            OFFSCREEN_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        );
         let view = texture.create_view(&Default::default());
         Self { texture, view, width, height }
     }

@@ -136,6 +136,77 @@ crate::choices! {
     }
 }
 
+/// The sun's disk in the sky at the default size ([`DEFAULT_SUN_SIZE_DEG`]): its brightness
+/// rises between these cosines of the angle from its centre.
+const SUN_DISK_EDGE_COS: f32 = 0.99988;
+const SUN_DISK_CORE_COS: f32 = 0.99995;
+/// Angular diameter (degrees) of the sun's disk, between the half-brightness points.
+pub const DEFAULT_SUN_SIZE_DEG: f32 = 1.5;
+
+/// The disk's (edge, core) cosines for a sun `size_deg` across: 1 − cos θ ≈ θ²/2 grows with
+/// the square of the size. Exact at the default size (the f32 arithmetic gives back the
+/// constants), so the default frame does not change.
+pub fn sun_disk_cosines(size_deg: f32) -> (f32, f32) {
+    let k = (size_deg / DEFAULT_SUN_SIZE_DEG) * (size_deg / DEFAULT_SUN_SIZE_DEG);
+    (1.0 - (1.0 - SUN_DISK_EDGE_COS) * k, 1.0 - (1.0 - SUN_DISK_CORE_COS) * k)
+}
+
+/// Water's refractive index for red, green and blue light less the green one's (n ≈ 1.331,
+/// 1.335, 1.337 across the visible range): the spread the `dispersion` parameter scales.
+pub const DISPERSION_SPREAD: [f32; 3] = [-0.004, 0.0, 0.002];
+
+/// The refractive indices of red, green and blue light with the spread exaggerated
+/// `dispersion` times, green kept at [`IOR_WATER`] so green light bends as without dispersion.
+pub fn channel_iors(dispersion: f32) -> [f32; 3] {
+    DISPERSION_SPREAD.map(|d| IOR_WATER + d * dispersion)
+}
+
+/// With the `view_colour` option, the share of the water's scattered light left along a
+/// horizontal path (all of it looking straight down): seed 002 mixes its water colour between
+/// (0, 0.05, 0.15) at grazing and (0, 0.1, 0.15) looking down, half the green.
+pub const GRAZING_TINT: [f32; 3] = [1.0, 0.5, 1.0];
+
+/// WGSL constants of this module, for the scene's passes (`render::shaders::scene_prelude`).
+pub fn wgsl_constants() -> String {
+    use FresnelModel::*;
+    format!(
+        "const FRESNEL_EXACT: u32 = {}u;\nconst FRESNEL_TABLE: u32 = {}u;\nconst FRESNEL_SCHLICK: u32 = {}u;\n\
+         const FRESNEL_INVERSE_POWER: u32 = {}u;\nconst FRESNEL_CLAMPED_POWER: u32 = {}u;\nconst FRESNEL_LINEAR: u32 = {}u;\n\
+         const FRESNEL_TABLE_SIZE: i32 = {};\nconst SCHLICK_R0: f32 = {:?};\nconst INVERSE_POWER_EXPONENT: f32 = {:?};\n\
+         const CLAMPED_POWER_EXPONENT: f32 = {:?};\nconst CLAMPED_POWER_MIN: f32 = {:?};\nconst CLAMPED_POWER_MAX: f32 = {:?};\n\
+         const SPECULAR_PHONG: u32 = {}u;\nconst SPECULAR_BLINN_PHONG: u32 = {}u;\n\
+         const GRAZING_TINT: vec3<f32> = vec3<f32>({:?}, {:?}, {:?});\n",
+        Exact as u32,
+        Table as u32,
+        Schlick as u32,
+        InversePower as u32,
+        ClampedPower as u32,
+        Linear as u32,
+        FRESNEL_TABLE_SIZE,
+        schlick_r0(),
+        INVERSE_POWER_EXPONENT,
+        CLAMPED_POWER_EXPONENT,
+        CLAMPED_POWER_MIN,
+        CLAMPED_POWER_MAX,
+        SpecularModel::Phong as u32,
+        SpecularModel::BlinnPhong as u32,
+        GRAZING_TINT[0],
+        GRAZING_TINT[1],
+        GRAZING_TINT[2],
+    )
+}
+
+/// The sun's disk. (The parameter table, `params::table`, lists them in this order.)
+pub const SUN_SIZE_PARAMS: &[ParamSpec] = &[ParamSpec {
+    name: "sun_size",
+    label: "Sun size",
+    group: "Light",
+    unit: "°",
+    control: slider(0.5, 5.0, 0.1),
+    default: crate::optics::DEFAULT_SUN_SIZE_DEG,
+    help: "Angular diameter of the sun's disk in the sky and in its reflections (the real sun: 0.5°).",
+}];
+
 /// How the surface reflects: the Fresnel and specular models, dispersion. (The parameter table, `params::table`, lists them in this order.)
 pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {

@@ -152,6 +152,11 @@ macro_rules! choices {
             pub fn name(self) -> &'static str {
                 Self::NAMES[self as usize]
             }
+
+            /// The parameter's value for this option.
+            pub fn value(self) -> f32 {
+                Self::VALUES[self as usize]
+            }
         }
 
         impl From<f32> for $name {

@@ -187,7 +187,17 @@ pub const SCENE_PARAMS: &[ParamSpec] = &[ParamSpec {
 }];
 
 /// The sea's own parameters (shown only with `scene` sea).
-pub const PARAMS: &[ParamSpec] = &[SEA_WIND, SEA_WIND_DIRECTION, SEA_WAVE_HEIGHT, SEA_CHOPPINESS, SEA_FOG, SEA_FOG_DISTANCE, SEA_ISLAND, SEA_OBJECTS, SEA_GRID];
+pub const PARAMS: &[ParamSpec] = &[
+    SEA_WIND,
+    SEA_WIND_DIRECTION,
+    SEA_WAVE_HEIGHT,
+    SEA_CHOPPINESS,
+    SEA_FOG,
+    SEA_FOG_DISTANCE,
+    SEA_ISLAND,
+    SEA_OBJECTS,
+    SEA_GRID,
+];
 
 /// The `sea_wind` parameter.
 pub const SEA_WIND: ParamSpec = ParamSpec {

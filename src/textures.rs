@@ -135,7 +135,14 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
 /// The tile texture from its levels ([`tile_mips`], made ahead by a shell that spreads its
 /// start-up over tasks).
 pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue, mips: &[Vec<u8>]) -> wgpu::Texture {
-    let texture = gpu::texture_2d(device, "tiles", (TILE_TEXTURE_SIZE, TILE_TEXTURE_SIZE, 1), mips.len() as u32, wgpu::TextureFormat::Rgba8UnormSrgb, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    let texture = gpu::texture_2d(
+        device,
+        "tiles",
+        (TILE_TEXTURE_SIZE, TILE_TEXTURE_SIZE, 1),
+        mips.len() as u32,
+        wgpu::TextureFormat::Rgba8UnormSrgb,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     for (level, data) in mips.iter().enumerate() {
         gpu::write_texture_2d(queue, &texture, level as u32, data);
     }
@@ -147,7 +154,14 @@ pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue, mips: &[V
 /// not filterable everywhere).
 pub fn create_fresnel_table(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::Texture {
     let size = crate::optics::FRESNEL_TABLE_SIZE;
-    let texture = gpu::texture_2d(device, "Fresnel table", (size, 2, 1), 1, wgpu::TextureFormat::R32Float, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    let texture = gpu::texture_2d(
+        device,
+        "Fresnel table",
+        (size, 2, 1),
+        1,
+        wgpu::TextureFormat::R32Float,
+        wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+    );
     gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&crate::optics::fresnel_table()));
     texture
 }
@@ -187,7 +201,14 @@ pub struct SkyCube {
 
 impl SkyCube {
     pub fn new(device: &wgpu::Device) -> Self {
-        let texture = gpu::texture_2d(device, "sky cube", (SKY_FACE_SIZE, SKY_FACE_SIZE, 6), 1, SKY_FORMAT, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT);
+        let texture = gpu::texture_2d(
+            device,
+            "sky cube",
+            (SKY_FACE_SIZE, SKY_FACE_SIZE, 6),
+            1,
+            SKY_FORMAT,
+            wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("sky face layout"),
             entries: &[gpu::uniform_entry(0, wgpu::ShaderStages::FRAGMENT)],

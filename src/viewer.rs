@@ -136,7 +136,14 @@ impl Viewer {
         let stale = self.target.as_ref().is_none_or(|t| (t.texture.width(), t.texture.height()) != size);
         if stale {
             let device = &self.render_state.device;
-            let texture = wavepool::gpu::texture_2d(device, "viewer scene", (size.0, size.1, 1), 1, SCENE_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING);
+            let texture = wavepool::gpu::texture_2d(
+                device,
+                "viewer scene",
+                (size.0, size.1, 1),
+                1,
+                SCENE_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            );
             let view = texture.create_view(&Default::default());
             let mut renderer = self.render_state.renderer.write();
             let id = match &self.target {
@@ -413,12 +420,18 @@ impl eframe::App for Viewer {
             let dt = dt.min(0.25);
             match &mut self.timer {
                 Some(timer) => {
-                    self.demo.encode_frame(FrameContext { device, queue, encoder: &mut encoder, target: &view, size }, dt, &mut |e, s| {
-                        timer.mark(e, s as u32)
-                    });
+                    self.demo.encode_frame(
+                        FrameContext { device, queue, encoder: &mut encoder, target: &view, size },
+                        dt,
+                        &mut |e, s| timer.mark(e, s as u32),
+                    );
                     timer.finish(&mut encoder);
                 }
-                None => self.demo.encode_frame(FrameContext { device, queue, encoder: &mut encoder, target: &view, size }, dt, &mut |_, _| {}),
+                None => self.demo.encode_frame(
+                    FrameContext { device, queue, encoder: &mut encoder, target: &view, size },
+                    dt,
+                    &mut |_, _| {},
+                ),
             }
             queue.submit([encoder.finish()]);
             self.demo.after_submit();

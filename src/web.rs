@@ -311,16 +311,28 @@ impl WebDemo {
         let (size, dt) = ((width, height), dt.clamp(0.0, 1.0));
         match &mut self.timer {
             Some(timer) => {
-                self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, dt, &mut |e, s| {
-                    timer.mark(e, s as u32)
-                });
+                self.demo.encode_frame(
+                    FrameContext {
+                        device: &self.device,
+                        queue: &self.queue,
+                        encoder: &mut encoder,
+                        target: &view,
+                        size,
+                    },
+                    dt,
+                    &mut |e, s| timer.mark(e, s as u32),
+                );
                 timer.finish(&mut encoder);
                 // The render modes' costs are the pool's (the sea has none of them).
                 if let Some(stages) = timer.latest().filter(|_| self.demo.render_modes_apply()) {
                     self.mode_costs.observe(self.demo.params.choice::<RenderMode>(ParamId::RenderMode), stages);
                 }
             }
-            None => self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, dt, &mut |_, _| {}),
+            None => self.demo.encode_frame(
+                FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size },
+                dt,
+                &mut |_, _| {},
+            ),
         }
         self.queue.submit([encoder.finish()]);
         self.demo.after_submit();
@@ -369,7 +381,11 @@ impl WebDemo {
         let target = crate::gpu::texture_2d(&self.device, "unshown frame", (size.0, size.1, 1), 1, format, usage);
         let view = target.create_view(&Default::default());
         let mut encoder = self.device.create_command_encoder(&Default::default());
-        self.demo.encode_frame(FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size }, 1.0 / 60.0, &mut |_, _| {});
+        self.demo.encode_frame(
+            FrameContext { device: &self.device, queue: &self.queue, encoder: &mut encoder, target: &view, size },
+            1.0 / 60.0,
+            &mut |_, _| {},
+        );
         self.queue.submit([encoder.finish()]);
         self.demo.after_submit();
         self.count_in_flight();

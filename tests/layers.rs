@@ -236,7 +236,8 @@ fn every_import_runs_down_the_layer_table_and_no_modules_import_each_other() {
             (_, None) => problems.push(format!("{place}: `{from}` imports `{to}`, which is in no layer of the table")),
             (Some(a), Some(b)) if b > a => problems.push(format!(
                 "{place}: `{from}` ({}) imports `{to}` ({}), a layer above it",
-                layers()[a].0, layers()[b].0
+                layers()[a].0,
+                layers()[b].0
             )),
             _ => {}
         }
@@ -286,7 +287,8 @@ fn file_imports() -> BTreeMap<(String, String, String), String> {
     let mut imports = BTreeMap::new();
     for file in &files {
         let relative = file.strip_prefix(&src).unwrap();
-        let parts: Vec<String> = relative.iter().map(|p| p.to_string_lossy().trim_end_matches(".rs").to_string()).collect();
+        let parts: Vec<String> =
+            relative.iter().map(|p| p.to_string_lossy().trim_end_matches(".rs").to_string()).collect();
         if parts.len() != 2 || parts[1] == "mod" {
             continue;
         }
@@ -301,7 +303,9 @@ fn file_imports() -> BTreeMap<(String, String, String), String> {
         for (at, to) in named {
             if &to != from && siblings.contains(&to) {
                 let line = code[..at].matches('\n').count() + 1;
-                imports.entry((folder.clone(), from.clone(), to)).or_insert(format!("src/{}:{line}", relative.display()));
+                imports
+                    .entry((folder.clone(), from.clone(), to))
+                    .or_insert(format!("src/{}:{line}", relative.display()));
             }
         }
     }

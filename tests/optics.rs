@@ -11,7 +11,7 @@ use glam::{Vec2, Vec3};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::optics::{fresnel_table, reflectance, FresnelModel};
 use wavepool::params::{spec, ParamId};
-use wavepool::render::REFLECTANCE_VIEW;
+use wavepool::render::DebugChoice;
 use wavepool::scene::{HALF_WIDTH, IOR_WATER};
 use wavepool::sim::random_drops;
 
@@ -62,7 +62,7 @@ fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_s
     for &model in FresnelModel::ALL {
         let mut demo = empty_pool();
         demo.params.set(ParamId::Fresnel, model as u32 as f32);
-        demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
+        demo.params.set(ParamId::DebugView, DebugChoice::Reflectance.value());
         let above = render(&mut demo, W, H, 2, 1.0 / 60.0);
         let (worst_above, n_above, _) = worst_difference(&demo, &above, model);
         // Under water, looking up at the surface: Snell's window and, beyond 48.6° from the
@@ -270,7 +270,7 @@ fn dispersion_splits_red_and_blue_at_caustics_and_at_the_rim_of_snells_window() 
     // Under the calm surface, looking up (as in the Fresnel test), the reflectance per channel.
     let mut demo = empty_pool();
     demo.params.set(ParamId::Dispersion, 20.0);
-    demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
+    demo.params.set(ParamId::DebugView, DebugChoice::Reflectance.value());
     demo.camera.target = Vec3::new(0.0, -0.55, 0.0);
     demo.camera.pitch = -35.0;
     demo.camera.distance = 0.45;
@@ -324,7 +324,7 @@ fn every_model_draws_its_formula_at_0_30_60_80_and_89_degrees() {
         for (pitch, distance, target_y) in views {
             let mut demo = empty_pool();
             demo.params.set(ParamId::Fresnel, model as u32 as f32);
-            demo.params.set(ParamId::DebugView, REFLECTANCE_VIEW as f32);
+            demo.params.set(ParamId::DebugView, DebugChoice::Reflectance.value());
             demo.camera.pitch = pitch;
             demo.camera.distance = distance;
             demo.camera.target = Vec3::new(0.0, target_y, 0.0);

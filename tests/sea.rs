@@ -438,7 +438,7 @@ fn the_grid_view_outlines_cells_of_the_same_size_on_screen() {
 fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     use wavepool::ambient::cascades::SeaWaves;
     use wavepool::physics::{Bounds, FloatingBody, Pose, Shape, WaterPlane};
-    use wavepool::sea::{patch_scale, patch_wave_speed, SeaSettings, PATCH_DAMPING, PATCH_HALF_WIDTH, SEA_LATTICE};
+    use wavepool::sea::{patch_scale, patch_wave_speed, PATCH_DAMPING, PATCH_HALF_WIDTH, SEA_LATTICE};
     use wavepool::sim::cpu::CpuHeightField;
     use wavepool::sim::{Drop, SplitMix64, WaveSettings, MAX_HEIGHT};
     let steps = 100_000u32;

@@ -3,7 +3,8 @@
 use crate::param_spec::{slider, Control, ParamSpec};
 
 /// The ambient waves: which model and its settings. (The parameter table, `params::table`, lists them in this order.)
-pub const PARAMS: &[ParamSpec] = &[AMBIENT, WIND_SPEED, WIND_DIRECTION, WAVE_HEIGHT, WAVE_SPREAD, STEEPNESS, SPECTRUM, FFT_SIZE, CHOPPINESS];
+pub const PARAMS: &[ParamSpec] =
+    &[AMBIENT, WIND_SPEED, WIND_DIRECTION, WAVE_HEIGHT, WAVE_SPREAD, STEEPNESS, SPECTRUM, FFT_SIZE, CHOPPINESS];
 
 /// The `ambient` parameter.
 pub const AMBIENT: ParamSpec = ParamSpec {

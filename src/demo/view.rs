@@ -5,11 +5,11 @@ use glam::Vec3;
 
 use super::WaterDemo;
 use crate::ambient::{AmbientSettings, AmbientWaves};
-use crate::optics::{FresnelModel, SpecularModel};
+
 use crate::params::ParamId;
 use crate::render::flat::FlatView;
 use crate::render::RenderMode;
-use crate::render::{AmbientView, DebugTexture, DebugView, Optics, View, REFLECTANCE_VIEW};
+use crate::render::{AmbientView, DebugChoice, DebugView, Optics, Setting, View};
 use crate::scene;
 use crate::sim;
 

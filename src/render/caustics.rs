@@ -1,11 +1,9 @@
 //! The caustics map: the water grid projected along the refracted sunlight, each
 //! triangle adding the light its area gathers (`shaders/caustics.wgsl`), then its mip chain.
 
-
 use super::caustics_mips::CausticsMips;
-use super::flat;
-use super::render_mode::{FlatCaustics, RenderMode};
 use super::meshes::{banded_grid, Mesh};
+use super::render_mode::{FlatCaustics, RenderMode};
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::param_spec::{Control, ParamSpec};

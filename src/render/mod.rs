@@ -34,15 +34,15 @@ use caustics::CausticsMap;
 pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS_FORMAT_8BIT};
 pub use debug_view::{DebugChoice, DebugTexture, DebugView};
 pub use deck::{Setting, EYE_CLEARANCE};
-pub use render_mode::{Distortion, FlatCaustics, RenderMode};
+pub use features::Features;
 use flat::FlatWater;
 use meshes::{pool_box, pool_walls, GridMesh, Mesh};
+pub use render_mode::{Distortion, FlatCaustics, RenderMode};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
 pub use sea::{SeaView, SEA_CASCADES};
 pub use sea_lattices::SeaLattices;
 use uniforms::SceneUniforms;
 use upscale::Upscale;
-pub use features::Features;
 use variants::{PipelineTargets, ScenePipelines, VariantBuild};
 pub use view::{flat_shown, AmbientView, Optics, View};
 

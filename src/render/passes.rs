@@ -1,10 +1,10 @@
 //! The scene's passes in the order a frame draws them: the picture (ray-traced, flat or
 //! split, at the view's render scale), the flat water's textures, the scene pass itself.
 
-use super::RenderMode;
 use super::deck;
-use super::flat::{self, FlatView};
+use super::flat::FlatView;
 use super::regions;
+use super::render_mode::{FlatCaustics, RenderMode};
 use super::{flat_shown, Features, Renderer, View};
 use crate::gpu;
 use crate::sim::HeightField;
@@ -95,7 +95,7 @@ impl Renderer {
         let size = self.scaled_size(view, size);
         let flat = flat_shown(view);
         let traced_shown = flat.is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);
-        let flat_reads = flat.is_some_and(|f| f.caustics == flat::FlatCaustics::Real);
+        let flat_reads = flat.is_some_and(|f| f.caustics == FlatCaustics::Real);
         let mut drawn = Vec::new();
         if (view.caustics && traced_shown) || flat_reads {
             drawn.push(base);

@@ -8,8 +8,8 @@ use std::ops::Range;
 
 use glam::{Vec3, Vec4Swizzles};
 
+use super::features::Features;
 use super::meshes::GridBand;
-use super::variants::Features;
 use super::View;
 use crate::bodies::BodyId;
 use crate::scene;

@@ -59,8 +59,14 @@ impl SceneTextures {
             spectrum: {
                 let size = SPECTRUM_IMAGE_SIZE as u32;
                 let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
-                let texture =
-                    gpu::texture_2d(device, "ambient spectrum", (size, size, 1), 1, wgpu::TextureFormat::R32Float, usage);
+                let texture = gpu::texture_2d(
+                    device,
+                    "ambient spectrum",
+                    (size, size, 1),
+                    1,
+                    wgpu::TextureFormat::R32Float,
+                    usage,
+                );
                 let view = texture.create_view(&Default::default());
                 (texture, view)
             },
@@ -212,7 +218,14 @@ impl Renderer {
 
     pub(super) fn depth_view(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {
         if self.depth.as_ref().map(|d| d.size) != Some(size) {
-            let texture = gpu::texture_2d(device, "depth", (size.0.max(1), size.1.max(1), 1), 1, DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
+            let texture = gpu::texture_2d(
+                device,
+                "depth",
+                (size.0.max(1), size.1.max(1), 1),
+                1,
+                DEPTH_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            );
             self.depth = Some(DepthBuffer { view: texture.create_view(&Default::default()), size });
         }
         &self.depth.as_ref().expect("depth buffer just made").view

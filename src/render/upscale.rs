@@ -42,7 +42,14 @@ impl Upscale {
         size: (u32, u32),
     ) -> wgpu::TextureView {
         if self.image.as_ref().map(|i| i.1) != Some(size) {
-            let texture = gpu::texture_2d(device, "scene at reduced resolution", (size.0, size.1, 1), 1, format, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING);
+            let texture = gpu::texture_2d(
+                device,
+                "scene at reduced resolution",
+                (size.0, size.1, 1),
+                1,
+                format,
+                wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            );
             let view = texture.create_view(&Default::default());
             let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some("upscale"),

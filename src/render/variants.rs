@@ -7,7 +7,8 @@
 
 use super::features::Features;
 use super::shaders;
-use super::{View, DEPTH_FORMAT};
+use super::DEPTH_FORMAT;
+use crate::bodies::BodyId;
 use crate::gpu;
 
 /// The pipelines of the passes that read the scene's features: the caustics map and the
@@ -77,7 +78,8 @@ impl VariantBuild {
         let pool_attributes = &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
         let back = Some(wgpu::Face::Back);
         let scene = |label: &str, module: &wgpu::ShaderModule, vs: &str, fs: &str, attributes, stride, cull| {
-            let part = ScenePart { label, module, entries: [vs, fs], vertex: (attributes, stride), cull, overlay: false };
+            let part =
+                ScenePart { label, module, entries: [vs, fs], vertex: (attributes, stride), cull, overlay: false };
             scene_pipeline(device, features, targets, part)
         };
         if self.caustics.is_none() {

@@ -3,9 +3,9 @@
 
 use glam::{Mat4, Vec3};
 
-use super::RenderMode;
-use super::flat::{self, FlatView};
+use super::flat::FlatView;
 use super::DebugView;
+use super::RenderMode;
 use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
 use crate::bodies::{BodyView, KINDS};
 use crate::optics::{FresnelModel, SpecularModel};
