@@ -47,16 +47,14 @@
 //! then one summary line per measurement with the figures of ours (webgpu), ours (webgl2) and
 //! the classic side by side.
 
-#[path = "../tests/support/picture.rs"]
-mod picture;
 #[path = "../tests/support/browser.rs"]
 mod support;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 
-use picture::{Image, PictureStats};
 use serde_json::{json, Value};
+use support::picture::{self, Image, PictureStats};
 use support::{canvas_rect_js, Browser, Graphics, Rect, Shot, StaticServer};
 
 /// The viewport (CSS px) and the canvas size both pages are measured at: the classic's canvas

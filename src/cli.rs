@@ -15,7 +15,7 @@ mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use wavepool::camera::POOL_LIMITS;
-use wavepool::demo::{DemoOptions, FrameContext, OptionSpec, Stage, WaterDemo, STAGE_NAMES, STEP_DT};
+use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STAGE_NAMES, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
@@ -317,17 +317,7 @@ fn time_with_timestamps(
     let start = Instant::now();
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     let dt = 1.0 / 60.0;
-    demo.encode_frame(
-        FrameContext {
-            device: &gpu.device,
-            queue: &gpu.queue,
-            encoder: &mut encoder,
-            target: &target.view,
-            size: target.size(),
-        },
-        dt,
-        &mut |enc, stage| timer.mark(enc, stage as u32),
-    );
+    demo.encode_frame(target.frame_context(gpu, &mut encoder), dt, &mut |enc, stage| timer.mark(enc, stage as u32));
     timer.finish(&mut encoder);
     gpu.queue.submit([encoder.finish()]);
     timer.after_submit();
@@ -347,25 +337,15 @@ fn time_with_cpu_clock(gpu: &HeadlessGpu, demo: &mut WaterDemo, target: &Offscre
     let mut times = Vec::new();
     let mut last = Instant::now();
     let dt = 1.0 / 60.0;
-    demo.encode_frame(
-        FrameContext {
-            device: &gpu.device,
-            queue: &gpu.queue,
-            encoder: &mut encoder,
-            target: &target.view,
-            size: target.size(),
-        },
-        dt,
-        &mut |enc, stage| {
-            if stage != Stage::Start {
-                let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
-                gpu.queue.submit([done.finish()]);
-                let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-                times.push(last.elapsed().as_secs_f64() * 1e3);
-            }
-            last = Instant::now();
-        },
-    );
+    demo.encode_frame(target.frame_context(gpu, &mut encoder), dt, &mut |enc, stage| {
+        if stage != Stage::Start {
+            let done = std::mem::replace(enc, gpu.device.create_command_encoder(&Default::default()));
+            gpu.queue.submit([done.finish()]);
+            let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
+            times.push(last.elapsed().as_secs_f64() * 1e3);
+        }
+        last = Instant::now();
+    });
     gpu.queue.submit([encoder.finish()]);
     demo.after_submit();
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());

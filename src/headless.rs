@@ -69,6 +69,15 @@ impl OffscreenTarget {
         Self { texture, view, width, height }
     }
 
+    /// A frame drawn into this target on `gpu`, recorded into `encoder`.
+    pub fn frame_context<'a>(
+        &'a self,
+        gpu: &'a HeadlessGpu,
+        encoder: &'a mut wgpu::CommandEncoder,
+    ) -> gpu::FrameContext<'a> {
+        gpu::FrameContext { device: &gpu.device, queue: &gpu.queue, encoder, target: &self.view, size: self.size() }
+    }
+
     pub fn size(&self) -> (u32, u32) {
         (self.width, self.height)
     }

@@ -16,6 +16,10 @@ use std::time::{Duration, Instant};
 use fantoccini::{Client, ClientBuilder};
 use serde_json::{json, Value};
 
+#[path = "picture.rs"]
+pub mod picture;
+pub use picture::Rect;
+
 pub const CHROMIUM: &str = "/usr/bin/chromium";
 pub const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
 pub const FIREFOX: &str = "/usr/bin/firefox-esr";
@@ -885,8 +889,7 @@ impl Shot {
 
     /// Standard deviation of luma (0-255) over a rectangle: 0 for a flat fill.
     pub fn luma_spread(&self, r: Rect) -> f64 {
-        let lumas: Vec<f64> =
-            self.region(r).iter().map(|p| 0.2126 * p[0] as f64 + 0.7152 * p[1] as f64 + 0.0722 * p[2] as f64).collect();
+        let lumas: Vec<f64> = self.region(r).iter().map(|p| picture::luma(p.map(f64::from))).collect();
         let mean = lumas.iter().sum::<f64>() / lumas.len() as f64;
         (lumas.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / lumas.len() as f64).sqrt()
     }
@@ -909,34 +912,6 @@ pub fn changed_fraction(a: &Shot, b: &Shot, r: Rect, threshold: u8) -> f64 {
     let (pa, pb) = (a.region(r), b.region(r));
     let changed = pa.iter().zip(&pb).filter(|(x, y)| (0..3).any(|c| x[c].abs_diff(y[c]) > threshold)).count();
     changed as f64 / pa.len() as f64
-}
-
-#[derive(Clone, Copy, Debug)]
-pub struct Rect {
-    pub x: u32,
-    pub y: u32,
-    pub w: u32,
-    pub h: u32,
-}
-
-impl Rect {
-    /// From a JS `{left, top, width, height}` (CSS px).
-    pub fn from_js(v: &Value) -> Self {
-        let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("rect field {k} in {v}"));
-        Self { x: f("left").max(0.0) as u32, y: f("top").max(0.0) as u32, w: f("width") as u32, h: f("height") as u32 }
-    }
-
-    /// The left and right halves, leaving out `gap` px either side of the middle (the split
-    /// view's divider and its grip).
-    pub fn halves(self, gap: u32) -> (Self, Self) {
-        let half = self.w / 2;
-        (Self { w: half - gap, ..self }, Self { x: self.x + half + gap, w: self.w - half - gap, ..self })
-    }
-
-    /// A square of side `2 * half` around (cx, cy).
-    pub fn around(cx: f64, cy: f64, half: u32) -> Self {
-        Self { x: (cx as u32).saturating_sub(half), y: (cy as u32).saturating_sub(half), w: 2 * half, h: 2 * half }
-    }
 }
 
 /// The canvas rectangle of the demo mounted in `selector`, as JS code.

@@ -44,8 +44,7 @@ impl<'a> Image<'a> {
 
     /// Rec. 709 luma at (x, y), 0-255.
     pub fn luma(&self, x: u32, y: u32) -> f64 {
-        let [r, g, b] = self.rgb(x, y);
-        0.2126 * r + 0.7152 * g + 0.0722 * b
+        luma(self.rgb(x, y))
     }
 
     /// Lumas of a rectangle, row by row.
@@ -53,6 +52,11 @@ impl<'a> Image<'a> {
         let r = r.within(self);
         (r.y..r.y + r.h).flat_map(|y| (r.x..r.x + r.w).map(move |x| (x, y))).map(|(x, y)| self.luma(x, y)).collect()
     }
+}
+
+/// Rec. 709 luma of sRGB-encoded (R, G, B), 0-255: 0.2126 R + 0.7152 G + 0.0722 B.
+pub fn luma([r, g, b]: [f64; 3]) -> f64 {
+    0.2126 * r + 0.7152 * g + 0.0722 * b
 }
 
 /// A rectangle of pixels (left, top, width, height); clipped to the picture where used.
@@ -81,6 +85,24 @@ impl Rect {
 
     pub fn pixels(self) -> u64 {
         self.w as u64 * self.h as u64
+    }
+
+    /// From a JS `{left, top, width, height}` (CSS px).
+    pub fn from_js(v: &Value) -> Self {
+        let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("rect field {k} in {v}"));
+        Self { x: f("left").max(0.0) as u32, y: f("top").max(0.0) as u32, w: f("width") as u32, h: f("height") as u32 }
+    }
+
+    /// The left and right halves, leaving out `gap` px either side of the middle (the split
+    /// view's divider and its grip).
+    pub fn halves(self, gap: u32) -> (Self, Self) {
+        let half = self.w / 2;
+        (Self { w: half - gap, ..self }, Self { x: self.x + half + gap, w: self.w - half - gap, ..self })
+    }
+
+    /// A square of side `2 * half` around (cx, cy).
+    pub fn around(cx: f64, cy: f64, half: u32) -> Self {
+        Self { x: (cx as u32).saturating_sub(half), y: (cy as u32).saturating_sub(half), w: 2 * half, h: 2 * half }
     }
 }
 
