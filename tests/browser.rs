@@ -767,9 +767,10 @@ async fn fresnel_models_switch_in_the_page_with_their_curve_on_webgl2() {
 }
 
 /// The page's Ambient waves select switches between the five models: each draws its own
-/// moving water without an error, and the controls show a model's own settings only while it
-/// is chosen (wind with any model, steepness with Gerstner, spectrum, grid and choppiness with
-/// the FFT).
+/// water (switched while the water is paused, when nothing else moves, so the change is the
+/// model's own picture), which moves once running, without an error; and the controls show a
+/// model's own settings only while it is chosen (wind with any model, steepness with Gerstner,
+/// spectrum, grid and choppiness with the FFT).
 async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     let (browser, _server) = open_demo(graphics, &format!("?backend={backend}&quality=1&objects=none"), backend).await;
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
@@ -781,6 +782,10 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     let at_start = browser.js(shown).await;
     println!("{backend}: ambient none: settings shown [{}]", at_start.as_str().unwrap());
     assert_eq!(at_start, "", "{backend}: a model's settings show with no model");
+    // Paused, the ambient waves stand still (they move in simulated time), so what changes when
+    // the model is switched is the model's own picture, not the water's motion.
+    browser.js("window.demo.set('paused', 1); return true;").await;
+    browser.wait_frames(3).await;
     let mut previous = browser.screenshot().await;
     for (value, name, expected) in [
         (1, "sines", "wind_speed wave_spread"),
@@ -794,31 +799,40 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
                  s.value = '{value}'; s.dispatchEvent(new Event('change')); return true;"
             ))
             .await;
-        tokio::time::sleep(Duration::from_millis(2500)).await;
+        browser.wait_frames(3).await;
         let a = browser.screenshot().await;
-        tokio::time::sleep(Duration::from_millis(1000)).await;
+        browser.wait_frames(2).await;
+        let still = browser.screenshot().await;
+        browser.js("window.demo.set('paused', 0); return true;").await;
+        browser.wait_frames(3).await;
         let b = browser.screenshot().await;
         let settings = browser.js(shown).await;
         let state = browser
             .js("return { error: document.querySelector('#pool').dataset.error || null, model: window.demo.get('ambient'),
                           fps: window.demo.stats().fps };")
             .await;
-        let (vs_previous, moving) = (changed_fraction(&previous, &a, rect, 8), changed_fraction(&a, &b, rect, 8));
+        let vs_previous = changed_fraction(&previous, &a, rect, 8);
+        let (paused_motion, moving) = (changed_fraction(&a, &still, rect, 8), changed_fraction(&a, &b, rect, 8));
         println!(
-            "{backend}: {name}: {:.1} % of the canvas differs from the model before, {:.1} % moved in 1 s; settings \
-             shown [{}]; {state}",
+            "{backend}: {name}: {:.1} % of the canvas differs from the model before (both paused; {:.2} % moves \
+             while paused), {:.1} % moved once running; settings shown [{}]; {state}",
             vs_previous * 100.0,
+            paused_motion * 100.0,
             moving * 100.0,
             settings.as_str().unwrap()
         );
         assert!(state["error"].is_null() && state["model"] == value as f64, "{backend}: {name}: {state}");
         assert_eq!(settings, expected, "{backend}: {name}: settings shown");
+        assert!(paused_motion < 0.002, "{backend}: {name}: the paused water moved ({paused_motion})");
         assert!(vs_previous > 0.01 && moving > 0.01, "{backend}: {name}: {vs_previous} / {moving}");
-        previous = a;
+        browser.js("window.demo.set('paused', 1); return true;").await;
+        browser.wait_frames(3).await;
+        previous = browser.screenshot().await;
     }
+    browser.js("window.demo.set('paused', 0); return true;").await;
     // The finer lattice and the other spectrum run too.
     browser.js("window.demo.set('fft_size', 128); window.demo.set('spectrum', 'jonswap'); return true;").await;
-    tokio::time::sleep(Duration::from_millis(2500)).await;
+    browser.wait_frames(4).await;
     let after = browser.screenshot().await;
     let state = browser
         .js("return { error: document.querySelector('#pool').dataset.error || null, size: window.demo.get('fft_size'),

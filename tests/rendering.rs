@@ -37,14 +37,30 @@ fn low_view(demo: &mut WaterDemo) {
     demo.camera.distance = 3.6;
 }
 
+/// The picture has structure where the water is, not only in the paving round it: the luma
+/// over the pool's opening (its rim projected, left of the sphere) varies as ripples, tiles
+/// and caustics make it, and the frame is neither dark nor washed out.
 #[test]
 fn frame_is_not_uniform() {
     let mut demo = with_drops(3, 10);
     let frame = render(&mut demo, W, H, 20, 1.0 / 60.0);
     let (mean, var) = frame.luma_stats(Rect::ALL);
-    println!("luma mean {mean:.3}, std {:.3}", var.sqrt());
+    println!("frame: luma mean {mean:.3}, std {:.3}", var.sqrt());
     assert!(var.sqrt() > 0.05, "frame is nearly uniform: luma std {}", var.sqrt());
     assert!(mean > 0.15 && mean < 0.9, "frame too dark or washed out: mean luma {mean}");
+    // The water: a band of the pool's left half, clear of the sphere in the middle and of the walls.
+    let size = Vec2::new(W as f32, H as f32);
+    let (w, x0, x1) = (wavepool::scene::HALF_WIDTH, -0.9, -0.55);
+    let corners: Vec<Vec2> = [(x0 * w, -0.5 * w), (x0 * w, 0.5 * w), (x1 * w, -0.5 * w), (x1 * w, 0.5 * w)]
+        .iter()
+        .map(|&(x, z)| demo.camera.project(Vec3::new(x, 0.0, z), size).expect("the pool in view"))
+        .collect();
+    let (lo, hi) = corners.iter().fold((size, Vec2::ZERO), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
+    let water = Rect(lo.x / size.x, lo.y / size.y, hi.x / size.x, hi.y / size.y);
+    let (water_mean, water_var) = frame.luma_stats(water);
+    println!("the water ({water:?}): luma mean {water_mean:.3}, std {:.3}", water_var.sqrt());
+    assert!(water_var.sqrt() > 0.03, "the water is nearly uniform: luma std {}", water_var.sqrt());
+    assert!(water_mean > 0.1 && water_mean < 0.9, "the water too dark or washed out: mean luma {water_mean}");
 }
 
 #[test]

@@ -525,6 +525,20 @@ impl Browser {
         }
     }
 
+    /// Waits until the demo in the page (`window.demo`) has drawn `n` more frames, the first
+    /// of them after whatever the test just changed: an event to await instead of a sleep.
+    pub async fn wait_frames(&self, n: u32) {
+        let got = self
+            .js_async(&format!(
+                "const since = performance.now(), until = since + 60000;
+                 const drawn = () => window.demo._frames.filter((t) => t > since).length;
+                 while (drawn() < {n} && performance.now() < until) await new Promise((r) => setTimeout(r, 20));
+                 return drawn();"
+            ))
+            .await;
+        assert!(got.as_u64().is_some_and(|k| k >= n as u64), "{n} frames not drawn within 60 s: {got}");
+    }
+
     /// Waits until `condition` (a JS expression) is true.
     pub async fn wait_for(&self, condition: &str, timeout: Duration) -> bool {
         let start = Instant::now();
