@@ -474,7 +474,7 @@ async fn objects_float(graphics: Graphics, backend: &str) {
     };
     let with_duck = yellow(&browser.screenshot().await);
     browser.js("window.demo.set('objects', 'none');").await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let without = yellow(&browser.screenshot().await);
     eprintln!("{backend}: duck at ({x:.0}, {y:.0}): {with_duck} yellow pixels, {without} without");
     assert!(with_duck > 60 && without == 0, "{backend}: duck not seen ({with_duck} yellow pixels, {without} without)");
@@ -482,7 +482,7 @@ async fn objects_float(graphics: Graphics, backend: &str) {
     // gores (no other pixel of the pool is this blue: 0 of the frame without it, natively).
     browser.js("window.demo.set('objects', 'ball,duck');").await;
     assert_eq!(browser.js("return window.demo.get('objects');").await, 6.0, "objects=ball,duck by names");
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let stats = browser.js("return window.demo.stats();").await;
     let ball = &stats["bodies"]["ball"];
     let height = ball[1].as_f64().expect("ball position");
@@ -651,7 +651,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         .js("const s = document.querySelector('#pool').shadowRoot.querySelector('select[name=fresnel]');
              s.value = '5'; s.dispatchEvent(new Event('change')); return true;")
         .await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let after_plot = browser.js(plot).await;
     let after = browser.screenshot().await;
     let changed = changed_fraction(&before, &after, rect, 8);
@@ -669,7 +669,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     for (name, value) in [("dispersion", 20.0), ("scatter_red", 0.5)] {
         let before = browser.screenshot().await;
         browser.js(&format!("window.demo.set('{name}', {value}); return true;")).await;
-        tokio::time::sleep(Duration::from_millis(1500)).await;
+        browser.wait_frames(3).await;
         let after = browser.screenshot().await;
         let changed = changed_fraction(&before, &after, rect, 8);
         let state = browser
@@ -680,14 +680,14 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         assert!(changed > 0.01, "{backend}: {name} changed {:.2} % of the canvas", changed * 100.0);
     }
     browser.js("window.demo.set('dispersion', 0); window.demo.set('scatter_red', 0); window.demo.set('ambient', 'sines'); window.demo.set('paused', 0); return true;").await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let a = browser.screenshot().await;
-    tokio::time::sleep(Duration::from_millis(1000)).await;
+    browser.wait_frames(3).await;
     let b = browser.screenshot().await;
     browser.js("window.demo.set('paused', 1); return true;").await;
-    tokio::time::sleep(Duration::from_millis(800)).await;
+    browser.wait_frames(3).await;
     let c = browser.screenshot().await;
-    tokio::time::sleep(Duration::from_millis(1000)).await;
+    browser.wait_frames(3).await;
     let d = browser.screenshot().await;
     let (moving, paused) = (changed_fraction(&a, &b, rect, 8), changed_fraction(&c, &d, rect, 8));
     println!(
@@ -704,10 +704,10 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         .await;
     tokio::time::sleep(Duration::from_millis(600)).await;
     browser.js("window.demo.set('paused', 1); return true;").await;
-    tokio::time::sleep(Duration::from_millis(800)).await;
+    browser.wait_frames(3).await;
     let with_foam = browser.screenshot().await;
     browser.js("window.demo.set('foam', 0); return true;").await;
-    tokio::time::sleep(Duration::from_millis(800)).await;
+    browser.wait_frames(3).await;
     let without = browser.screenshot().await;
     let luma = |p: &[u8; 3]| 0.2126 * p[0] as f32 + 0.7152 * p[1] as f32 + 0.0722 * p[2] as f32;
     let whiter = with_foam
@@ -742,7 +742,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
              }
              return out;")
         .await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let state = browser
         .js("return { error: document.querySelector('#pool').dataset.error || null, fps: window.demo.stats().fps };")
         .await;
@@ -845,10 +845,10 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     // Choppy: the second FFT chain and the fixed-point lookups run too, the water still there.
     let before = after;
     browser.js("window.demo.set('choppiness', 3); return true;").await;
-    tokio::time::sleep(Duration::from_millis(2500)).await;
+    browser.wait_frames(3).await;
     let choppy = browser.screenshot().await;
     let state = browser.js("return { error: document.querySelector('#pool').dataset.error || null };").await;
-    tokio::time::sleep(Duration::from_millis(1000)).await;
+    browser.wait_frames(3).await;
     let later = browser.screenshot().await;
     // A surface lost to NaN shows the bare pool, which does not move.
     let (changed, moving) = (changed_fraction(&before, &choppy, rect, 8), changed_fraction(&choppy, &later, rect, 8));
@@ -887,7 +887,7 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
         let browser = &browser;
         async move {
             browser.js(&format!("window.demo.set('render_mode', {mode}); return true;")).await;
-            tokio::time::sleep(Duration::from_millis(2500)).await;
+            browser.wait_frames(3).await;
             browser.screenshot().await
         }
     };
@@ -923,7 +923,7 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
     // Drag the divider a quarter of the width to the right.
     let (cx, cy) = (rect.x as f64 + rect.w as f64 / 2.0, rect.y as f64 + rect.h as f64 / 2.0);
     browser.drag((cx, cy), (cx + rect.w as f64 / 4.0, cy), 8).await;
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    browser.wait_frames(2).await;
     let after = browser
         .js("const root = document.querySelector('#pool').shadowRoot;
              return { split: window.demo.get('split'), control: Number(root.querySelector('[name=split]').value) };")

@@ -47,7 +47,7 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     }
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
     let idle = browser.screenshot().await;
-    tokio::time::sleep(Duration::from_millis(1000)).await;
+    browser.wait_frames(3).await;
     let before = browser.screenshot().await;
     let spread = before.luma_spread(rect);
     assert!(spread > 12.0, "{engine:?}: the canvas looks flat (luma spread {spread:.1})");
@@ -80,10 +80,10 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     // Flat water beside the ray tracer (the split view) draws here too: paused, the left half
     // turns into the flat picture, the right half stays the ray-traced one.
     browser.js("window.demo.set('paused', 1); return true;").await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let traced = browser.screenshot().await;
     browser.js("window.demo.set('render_mode', 'split'); return true;").await;
-    tokio::time::sleep(Duration::from_millis(4000)).await;
+    browser.wait_frames(3).await;
     let split = browser.screenshot().await;
     let (left, right) = rect.halves(8);
     let (flat_changed, traced_changed) =
@@ -102,7 +102,7 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     // The open sea draws here too, switched to in the page.
     browser.js("window.demo.set('scene', 'sea'); return true;").await;
     let at_sea = browser.wait_for("window.demo.stats().scene === 'sea'", Duration::from_secs(30)).await;
-    tokio::time::sleep(Duration::from_millis(1500)).await;
+    browser.wait_frames(3).await;
     let sea_spread = browser.screenshot().await.luma_spread(rect);
     println!("{}: the open sea, luma spread {sea_spread:.1}", engine.name());
     assert!(at_sea && sea_spread > 12.0, "{engine:?}: the sea did not draw (luma spread {sea_spread:.1})");
