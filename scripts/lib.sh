@@ -91,6 +91,11 @@ ensure_wasm_opt() {
 ensure_web_toolchain() {
     ensure_cargo
     command -v npm >/dev/null 2>&1 || ensure_apt_packages nodejs npm
+    # The package's script and tests (Vite 7) need Node.js 20.19 or later.
+    if ! node -e 'const [a, b] = process.versions.node.split(".").map(Number); process.exit(a > 20 || (a === 20 && b >= 19) ? 0 : 1)'; then
+        echo "error: Node.js $(node --version) is too old: the build needs 20.19 or later (NodeSource's nodejs, or nvm)" >&2
+        return 1
+    fi
     ensure_wasm_target
     ensure_cargo_tool trunk 0.21.14 trunk --locked
     ensure_cargo_tool wasm-bindgen "$(lock_version wasm-bindgen)" wasm-bindgen-cli
@@ -141,7 +146,7 @@ make_release() {
     npm pack ./target/npm-package --pack-destination release --silent >/dev/null || return 1
     cp dist/wavepool-standalone.html release/ || return 1
     # The folder a teacher uploads: the pages and the demo's files (the single page is its own download).
-    find dist -maxdepth 1 -type f ! -name wavepool-standalone.html -exec cp {} "$stage/wavepool/" \; || return 1
+    (cd dist && find . -type f ! -name wavepool-standalone.html -exec cp --parents {} "../$stage/wavepool/" \;) || return 1
     printf '%s\n' "wavepool $version: upload this folder to your course's files and link its index.html (the whole demo)," \
         "or put <iframe src=\"wavepool/embed.html?controls=1\" width=\"800\" height=\"600\" allow=\"fullscreen\"></iframe> in a page." \
         > "$stage/wavepool/README.txt"

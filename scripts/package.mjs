@@ -9,14 +9,14 @@
 
 import { copyFileSync, mkdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
-import { pathToFileURL } from "node:url";
+import { fileURLToPath, pathToFileURL } from "node:url";
 
 const [dist, out] = process.argv.slice(2).map((p) => resolve(p));
 if (!dist || !out) {
   console.error("usage: node scripts/package.mjs DIST OUT");
   process.exit(2);
 }
-const root = resolve(import.meta.dirname, "..");
+const root = fileURLToPath(new URL("..", import.meta.url));
 
 /** The modules embed.js imports, directly or through each other, embed.js first. */
 function moduleGraph(entry) {
@@ -25,7 +25,9 @@ function moduleGraph(entry) {
     if (seen.includes(name)) return;
     seen.push(name);
     const text = readFileSync(join(dist, name), "utf8");
-    for (const [, dep] of text.matchAll(/^\s*(?:import|export)\b[^;]*?from "\.\/([\w-]+\.js)";/gms)) visit(dep);
+    // `import … from "./x.js"`, `export … from './x.js'`, `import "./x.js"` and `import("./x.js")`.
+    const imports = /\b(?:from|import)\s*\(?\s*["']\.\/([\w-]+\.js)["']/g;
+    for (const [, dep] of text.matchAll(imports)) visit(dep);
   };
   visit(entry);
   return seen;
@@ -36,22 +38,38 @@ const doc = (text) => text.replace(/\*\//g, "* /");
 
 const quote = (s) => JSON.stringify(s);
 
+/** A choice's names, and for a set (`objects`: a name holds a comma) every other way to
+ * write one of its sets: its single members (the power-of-two values) joined in any order. */
+function choiceNames(p) {
+  const names = p.choiceNames.filter(Boolean);
+  if (!names.some((n) => n.includes(","))) return names;
+  const members = p.choices.map((v, i) => [v, p.choiceNames[i]]).filter(([v, n]) => n && v > 0 && (v & (v - 1)) === 0);
+  const orders = (list) => (list.length <= 1 ? [list] : list.flatMap((x, i) => orders(list.filter((_, j) => j !== i)).map((rest) => [x, ...rest])));
+  const sets = [];
+  for (let mask = 1; mask < 1 << members.length; mask++) {
+    const chosen = members.filter((_, i) => mask & (1 << i));
+    const sum = chosen.reduce((total, [v]) => total + v, 0);
+    if (chosen.length > 1 && p.choices.includes(sum)) sets.push(...orders(chosen.map(([, n]) => n)).map((o) => o.join(",")));
+  }
+  return [...new Set([...names, ...sets])];
+}
+
 /** The TypeScript type a parameter's value takes in mount() options and set(). */
 function valueType(p) {
   if (p.kind === "toggle") return 'boolean | 0 | 1 | "on" | "off"';
-  if (p.kind === "choice") {
-    const names = p.choiceNames.filter(Boolean).map(quote);
-    return [...names, ...p.choices.map(String)].join(" | ");
-  }
+  if (p.kind === "choice") return [...choiceNames(p).map(quote), ...p.choices.map(String)].join(" | ");
   return "number";
 }
 
 /** What an attribute of <wave-pool> takes for a parameter (attributes are strings). */
 function attributeType(p) {
   if (p.kind === "toggle") return '"true" | "false" | "on" | "off" | "0" | "1"';
-  if (p.kind === "choice") return [...p.choiceNames.filter(Boolean), ...p.choices.map(String)].map(quote).join(" | ");
+  if (p.kind === "choice") return [...choiceNames(p), ...p.choices.map(String)].map(quote).join(" | ");
   return "string | number";
 }
+
+/** `meshSize` -> `mesh-size`. */
+const kebab = (name) => name.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`);
 
 /** A parameter's doc comment: label, unit, range or choices, default, help. */
 function paramDoc(p) {
@@ -116,13 +134,24 @@ function tablesDts(table, presets, options) {
     "  camera: [number, number, number] | null;",
     "}",
     "",
-    "/** Options fixed when the demo is created (mount() options; <wave-pool> in kebab case). */",
+    "/** Options fixed when the demo is created (mount() options). */",
     "export interface CreationOptions {",
     ...options.flatMap((o) => [
       `  /** ${doc(o.label)} (${o.min}–${o.max}, default ${o.default}). */`,
       `  ${o.name}?: number;`,
     ]),
     "}",
+    "",
+    "/** The creation options as <wave-pool>'s attributes (kebab case). */",
+    "export interface CreationAttributes {",
+    ...options.flatMap((o) => [
+      `  /** ${doc(o.label)} (${o.min}–${o.max}, default ${o.default}). */`,
+      `  ${quote(kebab(o.name))}?: string | number;`,
+    ]),
+    "}",
+    "",
+    "/** The scenes (the `scene` parameter's choices). */",
+    `export type SceneName = ${table.find((p) => p.name === "scene").choiceNames.map(quote).join(" | ")};`,
     "",
   ];
   return lines.join("\n");

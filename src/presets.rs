@@ -23,7 +23,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "classic",
         label: "The classic look",
-        help: "One ball that stays where it is put (G drops it), reflecting walls, caustics: the pool as the classic WebGL Water shows it.",
+        help: "One sphere that stays where it is put (G drops it), reflecting walls, caustics: the pool as the classic WebGL Water shows it.",
         values: &[("objects", 1.0), ("gravity", 0.0), ("absorbing_walls", 0.0), ("caustics", 1.0), ("damping", 0.5)],
         camera: None,
     },
@@ -37,7 +37,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "busy",
         label: "A busy pool",
-        help: "The ball and the duck floating on fast, lively water with big drops and reflecting walls.",
+        help: "The sphere and the duck floating on fast, lively water with big drops and reflecting walls.",
         values: &[
             ("objects", 3.0),
             ("gravity", 1.0),
@@ -106,7 +106,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "flat",
         label: "Lesson: flat water vs ray tracing",
-        help: "The games' flat water (left) against the ray tracer (right), the ball half out of the water: drag the divider across the ball. Left, its submerged half sits unbent at its true depth and the reflections wobble by a fixed shift; right, the water lifts it and bends everything by the waves' slopes. Make ripples and switch the distortion to ripples to see the same waves with faked optics.",
+        help: "The games' flat water (left) against the ray tracer (right), the sphere half out of the water: drag the divider across the sphere. Left, its submerged half sits unbent at its true depth and the reflections wobble by a fixed shift; right, the water lifts it and bends everything by the waves' slopes. Make ripples and switch the distortion to ripples to see the same waves with faked optics.",
         values: &[
             ("objects", 1.0),
             ("gravity", 1.0),

@@ -482,7 +482,7 @@ async fn objects_float(graphics: Graphics, backend: &str) {
     // gores (no other pixel of the pool is this blue: 0 of the frame without it, natively).
     browser.js("window.demo.set('objects', 'ball,duck');").await;
     assert_eq!(browser.js("return window.demo.get('objects');").await, 6.0, "objects=ball,duck by names");
-    browser.wait_frames(3).await;
+    browser.wait_sim_time(1.5).await;
     let stats = browser.js("return window.demo.stats();").await;
     let ball = &stats["bodies"]["ball"];
     let height = ball[1].as_f64().expect("ball position");
@@ -682,7 +682,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     browser.js("window.demo.set('dispersion', 0); window.demo.set('scatter_red', 0); window.demo.set('ambient', 'sines'); window.demo.set('paused', 0); return true;").await;
     browser.wait_frames(3).await;
     let a = browser.screenshot().await;
-    browser.wait_frames(3).await;
+    browser.wait_sim_time(0.5).await;
     let b = browser.screenshot().await;
     browser.js("window.demo.set('paused', 1); return true;").await;
     browser.wait_frames(3).await;
@@ -691,7 +691,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let d = browser.screenshot().await;
     let (moving, paused) = (changed_fraction(&a, &b, rect, 8), changed_fraction(&c, &d, rect, 8));
     println!(
-        "{backend}: ambient sines: {:.1} % changed in 1 s with no input; paused: {:.2} %",
+        "{backend}: ambient sines: {:.1} % changed in 0.5 s of water with no input; paused: {:.2} %",
         moving * 100.0,
         paused * 100.0
     );
@@ -804,7 +804,7 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
         browser.wait_frames(2).await;
         let still = browser.screenshot().await;
         browser.js("window.demo.set('paused', 0); return true;").await;
-        browser.wait_frames(3).await;
+        browser.wait_sim_time(0.5).await;
         let b = browser.screenshot().await;
         let settings = browser.js(shown).await;
         let state = browser
@@ -815,7 +815,7 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
         let (paused_motion, moving) = (changed_fraction(&a, &still, rect, 8), changed_fraction(&a, &b, rect, 8));
         println!(
             "{backend}: {name}: {:.1} % of the canvas differs from the model before (both paused; {:.2} % moves \
-             while paused), {:.1} % moved once running; settings shown [{}]; {state}",
+             while paused), {:.1} % moved in 0.5 s of water; settings shown [{}]; {state}",
             vs_previous * 100.0,
             paused_motion * 100.0,
             moving * 100.0,
@@ -848,12 +848,12 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     browser.wait_frames(3).await;
     let choppy = browser.screenshot().await;
     let state = browser.js("return { error: document.querySelector('#pool').dataset.error || null };").await;
-    browser.wait_frames(3).await;
+    browser.wait_sim_time(0.5).await;
     let later = browser.screenshot().await;
     // A surface lost to NaN shows the bare pool, which does not move.
     let (changed, moving) = (changed_fraction(&before, &choppy, rect, 8), changed_fraction(&choppy, &later, rect, 8));
     println!(
-        "{backend}: choppiness 3: {:.1} % changed, {:.1} % moved in 1 s; {state}",
+        "{backend}: choppiness 3: {:.1} % changed, {:.1} % moved in 0.5 s of water; {state}",
         changed * 100.0,
         moving * 100.0
     );

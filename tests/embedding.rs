@@ -75,7 +75,7 @@ async fn with_reduced_motion_the_demo_starts_still_until_play_is_pressed() {
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
     let first = browser.screenshot().await;
     let before = browser.js("return window.demo.stats();").await;
-    browser.wait_frames(3).await;
+    tokio::time::sleep(Duration::from_secs(2)).await; // a span in which running water would move
     let second = browser.screenshot().await;
     let after = browser.js("return { s: window.demo.stats(), paused: window.demo.get('paused') };").await;
     let still = changed_fraction(&first, &second, rect, 4);

@@ -275,10 +275,33 @@ fn every_import_runs_down_the_layer_table_and_no_modules_import_each_other() {
     assert!(problems.is_empty(), "layering problems:\n{}", problems.join("\n"));
 }
 
-/// Imports between the files of one folder (`src/render/flat.rs` naming `super::shaders` or
-/// `crate::render::shaders`): (folder, from, to) → first place. The folder's root (`mod.rs`,
-/// or `render.rs` beside the folder) is its facade, which its files may use and which names
-/// them all: it is left out.
+/// The items a folder's root (`mod.rs`, or `render.rs` beside the folder) re-exports from its
+/// files (`pub use view::{View, Optics};`): item name → the file it comes from.
+fn root_reexports(root: &Path, files: &[String]) -> BTreeMap<String, String> {
+    let code = code_only(&std::fs::read_to_string(root).unwrap_or_default());
+    let mut found = BTreeMap::new();
+    for statement in code.split(';') {
+        let Some(at) = statement.find("use ") else { continue };
+        if !statement[..at].trim_start().starts_with("pub") {
+            continue;
+        }
+        let path = statement[at + "use ".len()..].trim();
+        let Some((file, items)) = path.split_once("::") else { continue };
+        if !files.iter().any(|f| f == file) {
+            continue;
+        }
+        for item in items.split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|i| !i.is_empty() && *i != "self")
+        {
+            found.insert(item.to_owned(), file.to_owned());
+        }
+    }
+    found
+}
+
+/// Imports between the files of one folder (`src/render/flat.rs` naming `super::shaders`,
+/// `crate::render::shaders`, or an item the root re-exports from a file, `super::View`):
+/// (folder, from, to) → first place. The folder's root is its facade, which its files may use
+/// and which names them all: it is left out itself.
 fn file_imports() -> BTreeMap<(String, String, String), String> {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
@@ -298,10 +321,19 @@ fn file_imports() -> BTreeMap<(String, String, String), String> {
             .filter(|f| f.parent() == file.parent() && f.file_stem().is_some_and(|s| s != "mod"))
             .map(|f| f.file_stem().unwrap().to_string_lossy().into_owned())
             .collect();
+        let folder_dir = file.parent().unwrap();
+        let root = if folder_dir.join("mod.rs").is_file() {
+            folder_dir.join("mod.rs")
+        } else {
+            src.join(format!("{folder}.rs"))
+        };
+        let reexported = root_reexports(&root, &siblings);
         let code = code_only(&std::fs::read_to_string(file).unwrap());
         let named = names_after(&code, "super::").into_iter().chain(names_after(&code, &format!("crate::{folder}::")));
-        for (at, to) in named {
-            if &to != from && siblings.contains(&to) {
+        for (at, name) in named {
+            let to = if siblings.contains(&name) { Some(name) } else { reexported.get(&name).cloned() };
+            let Some(to) = to else { continue };
+            if &to != from {
                 let line = code[..at].matches('\n').count() + 1;
                 imports
                     .entry((folder.clone(), from.clone(), to))

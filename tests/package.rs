@@ -76,7 +76,8 @@ fn archive_files(listing: &str) -> BTreeSet<String> {
     listing.lines().map(str::trim).filter(|l| !l.is_empty() && !l.ends_with('/')).map(str::to_owned).collect()
 }
 
-/// The modules `entry` imports, directly or through each other, in `dir`.
+/// The modules `entry` imports, directly or through each other, in `dir`: every `from "./x.js"`,
+/// `import "./x.js"` or `import("./x.js")`, with either quote.
 fn module_graph(dir: &Path, entry: &str) -> BTreeSet<String> {
     let mut seen = BTreeSet::new();
     let mut todo = vec![entry.to_owned()];
@@ -85,9 +86,13 @@ fn module_graph(dir: &Path, entry: &str) -> BTreeSet<String> {
             continue;
         }
         let text = std::fs::read_to_string(dir.join(&name)).unwrap_or_else(|e| panic!("{name}: {e}"));
-        for part in text.split(" from \"./").skip(1) {
-            if let Some(end) = part.find(".js\"") {
-                todo.push(format!("{}.js", &part[..end]));
+        for quote in ['"', '\''] {
+            for part in text.split(&format!("{quote}./")).skip(1) {
+                let Some(end) = part.find(&format!(".js{quote}")) else { continue };
+                let module = &part[..end];
+                if module.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_') {
+                    todo.push(format!("{module}.js"));
+                }
             }
         }
     }
@@ -114,7 +119,9 @@ fn the_release_folder_holds_the_tarball_the_single_page_and_the_course_zip_with_
         .iter()
         .map(|f| f.strip_prefix("package/").expect("npm's package/ folder").to_owned())
         .collect();
-    let mut wanted = module_graph(&package_dir(), "embed.js");
+    // What the built page's embed.js loads (dist/), so a module the package left out fails here.
+    let dist = support::dist_dir();
+    let mut wanted = module_graph(&dist, "embed.js");
     wanted.extend(
         [
             "element.js",
@@ -203,6 +210,13 @@ fn the_declarations_name_every_parameter_with_its_choices_every_preset_and_every
     let creation = declared_properties(interface(&tables, "CreationOptions"));
     let options: BTreeSet<String> = wavepool::demo::DemoOptions::SPECS.iter().map(|o| o.name.to_owned()).collect();
     assert_eq!(creation, options, "CreationOptions lists the creation options' specs");
+    let kebab = |name: &str| {
+        name.chars()
+            .flat_map(|c| if c.is_uppercase() { vec!['-', c.to_ascii_lowercase()] } else { vec![c] })
+            .collect::<String>()
+    };
+    let attributes = declared_properties(interface(&tables, "CreationAttributes"));
+    assert_eq!(attributes, options.iter().map(|o| kebab(o)).collect(), "CreationAttributes: the same in kebab case");
     println!(
         "tables.d.ts: {} parameters, {choices} choice names, {} presets, {} creation options ({} bytes)",
         names.len(),
@@ -238,6 +252,7 @@ const backend = new URLSearchParams(location.search).get("backend") === "webgl2"
 const options: MountOptions = { backend, preset: "calm", objects: "duck", wave_speed: 0.8, fresnel: "schlick", lazy: false };
 mount(document.getElementById("pool")!, options).then((demo: WavePool) => {
   demo.set("caustics", true);
+  demo.set("objects", "ball,duck"); // a set of bodies, in any order
   const s = demo.stats();
   if (!s.suspended) document.title = `${s.backend} ${s.simSize}`;
   (window as unknown as { demo: WavePool }).demo = demo;

@@ -9,7 +9,7 @@ import { frameLoopMethods, frameStats } from "./frame-loop.js";
 import { inputMethods } from "./input.js";
 import { keepKeys } from "./keys.js";
 import { layoutMethods } from "./layout.js";
-import { assetUrl, inline, live, memoryBytes } from "./loader.js";
+import { assetUrl, demoPage, inline, live, memoryBytes } from "./loader.js";
 import { toNumber } from "./options.js";
 import { suspendMethods } from "./suspend.js";
 
@@ -33,13 +33,6 @@ function backendFailure(backend, failures) {
 /** How long a notice stays over the picture (ms). */
 const NOTICE_MS = 12000;
 
-/** The demo's own page `name` (index.html, embed.html): next to the assets; the single file is its own. */
-function demoPage(name) {
-  // (Not `new URL("./index.html", import.meta.url)` written out: a bundler would look for the
-  // page in the package, which carries none.)
-  return inline ? location.href.split(/[?#]/)[0] : assetUrl(name, new URL(name, import.meta.url));
-}
-
 export class Demo {
   constructor(element, shadow, root, stage, message, id, started) {
     this._element = element;
@@ -55,6 +48,7 @@ export class Demo {
     this._frame = 0; // requestAnimationFrame id
     this._last = 0; // time of the last frame (ms)
     this._frames = []; // times of the frames drawn in the last 2 s (ms), for stats()
+    this._framesDrawn = 0; // frames drawn since the demo started
     this._simTimes = []; // the simulated time (s) after each of those frames
     this._runningSince = null; // when the frame loop last started drawing (ms)
     this._looping = false; // whether the frame loop runs (false once stopped, until started again)
@@ -367,6 +361,7 @@ export class Demo {
     const [t, sim, n] = [this._frames, this._simTimes, this._frames.length];
     s.simSpeed = n > 1 && t[n - 1] > t[0] ? ((sim[n - 1] - sim[0]) * 1000) / (t[n - 1] - t[0]) : 0;
     s.firstFrameMs = this._firstFrameMs;
+    s.framesDrawn = this._framesDrawn;
     s.wasmMemoryBytes = memoryBytes();
     s.restarts = this._restarts;
     return s;

@@ -2,9 +2,29 @@
 // and its events. The parameters, their choices, the presets and the creation options come
 // from tables.d.ts, which scripts/package.mjs writes from the core's own tables at each build.
 
-import type { ParamName, ParamValues, ParamSpec, PresetName, PresetSpec, CreationOptions, ParamAttributes } from "./tables.js";
+import type {
+  CreationAttributes,
+  CreationOptions,
+  ParamAttributes,
+  ParamName,
+  ParamSpec,
+  ParamValues,
+  PresetName,
+  PresetSpec,
+  SceneName,
+} from "./tables.js";
 
-export type { ParamName, ParamValues, ParamSpec, PresetName, PresetSpec, CreationOptions, ParamAttributes };
+export type {
+  CreationAttributes,
+  CreationOptions,
+  ParamAttributes,
+  ParamName,
+  ParamSpec,
+  ParamValues,
+  PresetName,
+  PresetSpec,
+  SceneName,
+};
 
 /** Options of mount() besides the parameters (all optional; bad values are clamped with a console warning). */
 export interface DemoOptions extends CreationOptions {
@@ -52,6 +72,8 @@ export interface Stats {
   simSpeed: number;
   /** Time from mount() to the first frame on screen (ms). */
   firstFrameMs: number | null;
+  /** Frames drawn since the demo started. */
+  framesDrawn: number;
   /** Bytes of the WebAssembly module's memory. */
   wasmMemoryBytes: number | null;
   /** GPU devices recreated after a loss. */
@@ -71,7 +93,7 @@ export interface Stats {
   /** Simulated time (s). */
   simTime: number;
   /** The scene drawn. */
-  scene: string;
+  scene: SceneName;
   /** Mean water level (m), read back a frame or two late. */
   meanLevel: number;
   /** Largest |height| of the water (m), read back a frame or two late. */
@@ -123,9 +145,13 @@ export interface WavePool {
   reset(): void;
   /** Starts over from a preset: defaults, then its values and view, calm water. */
   applyPreset(name: PresetName): void;
-  /** A link to the demo's page with this demo's parameters and view. */
+  /**
+   * A link to the demo's page (index.html next to the demo's files) with this demo's
+   * parameters and view. The npm package carries no pages: in a bundled app, point
+   * setAssetLocation() at a hosted copy of the demo for links that open.
+   */
   shareLink(): string;
-  /** An <iframe> of the demo's frame page with this demo's parameters and view. */
+  /** An <iframe> of the demo's frame page (embed.html, found as shareLink()'s page) with this demo's parameters and view. */
   embedCode(): string;
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
   camera(): [number, number, number];
@@ -148,7 +174,7 @@ export interface WavePool {
  * `lazy`, once the element has come near the viewport); rejects, after showing a message
  * in the element, when no GPU backend works.
  */
-export function mount(element: Element, options?: MountOptions): Promise<WavePool>;
+export function mount(element: HTMLElement, options?: MountOptions): Promise<WavePool>;
 
 /** The parameter table (loads the core). */
 export function params(): Promise<ParamSpec[]>;
@@ -173,8 +199,8 @@ export interface WavePoolEventMap extends HTMLElementEventMap {
 
 /** `<wave-pool>`: its attributes are the options and parameters in kebab case (`max-fps`, `wave-speed`). */
 export class WavePoolElement extends HTMLElement {
-  /** The handle, once `wavepool:ready` has fired; null before and after removal. */
-  demo: WavePool | null;
+  /** The handle, once `wavepool:ready` has fired; undefined before, null after removal. */
+  demo?: WavePool | null;
   addEventListener<K extends keyof WavePoolEventMap>(
     type: K,
     listener: (this: WavePoolElement, event: WavePoolEventMap[K]) => unknown,
@@ -190,7 +216,7 @@ export class WavePoolElement extends HTMLElement {
 }
 
 /** `<wave-pool>`'s attributes, for JSX and templates that check them. */
-export interface WavePoolAttributes extends ParamAttributes {
+export interface WavePoolAttributes extends ParamAttributes, CreationAttributes {
   backend?: "auto" | "webgpu" | "webgl2";
   float?: "auto" | "none";
   controls?: "true" | "false" | "0" | "1";
@@ -201,8 +227,6 @@ export interface WavePoolAttributes extends ParamAttributes {
   camera?: string;
   preset?: PresetName;
   lazy?: "true" | "false" | "0" | "1";
-  "mesh-size"?: string | number;
-  "caustics-size"?: string | number;
 }
 
 declare global {

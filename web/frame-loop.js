@@ -107,6 +107,7 @@ export const frameLoopMethods = {
       this._rescue(interval);
     }
     this._frames.push(time);
+    this._framesDrawn++;
     this._simTimes.push(this._core.simTime);
     // Drawn frames of the last 2 s, and the one before them (for the first interval).
     while (this._frames.length > 2 && time - this._frames[1] > STATS_WINDOW_MS) {

@@ -48,6 +48,13 @@ export function assetUrl(name, local) {
   return assetBase ? new URL(name, assetBase).href : local.href;
 }
 
+/** The demo's own page `name` (index.html, embed.html): next to the assets; the single file is its own. */
+export function demoPage(name) {
+  // (Not `new URL("./index.html", import.meta.url)` written out: a bundler would look for the
+  // page in the package, which carries none.)
+  return inline ? location.href.split(/[?#]/)[0] : assetUrl(name, new URL(name, import.meta.url));
+}
+
 export function loadCore() {
   if (!ready) {
     const located = assetBase ? { module_or_path: new URL("wavepool_bg.wasm", assetBase) } : undefined;

@@ -4,7 +4,7 @@
 use super::caustics_mips::CausticsMips;
 use super::meshes::{banded_grid, Mesh};
 use super::render_mode::{FlatCaustics, RenderMode};
-use super::{flat_shown, Features, Renderer, View};
+use super::{flat_shown, Renderer, View};
 use crate::gpu;
 use crate::param_spec::{Control, ParamSpec};
 use crate::sim::HeightField;
@@ -76,7 +76,7 @@ impl Renderer {
         view: &View,
         water: &HeightField,
     ) {
-        let features = Features::of(view);
+        let features = view.features();
         self.resize_caustics(device, self.caustics_size(view.render_scale), features.dispersion);
         // The ray-traced part reads the map if caustics are on, flat water if it uses the real ones.
         let traced_shown = flat_shown(view).is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);

@@ -2,9 +2,7 @@
 //! into the shaders as constants (see `variants.rs` for why constants, not uniforms).
 
 use super::render_mode::Distortion;
-use super::View;
 use crate::ambient::AmbientModel;
-use crate::bodies::BodyId;
 use crate::optics::{FresnelModel, SpecularModel};
 
 /// What a frame shows that costs shader work: the shader constants of a variant.
@@ -51,25 +49,6 @@ pub struct Features {
 }
 
 impl Features {
-    pub fn of(view: &View) -> Self {
-        Self {
-            bodies: BodyId::all().filter(|id| view.bodies[id.0].is_some()).map(|id| id.bit() as u8).sum(),
-            caustics: view.caustics,
-            fresnel: view.optics.fresnel,
-            specular: view.optics.specular,
-            show_reflectance: view.optics.show_reflectance,
-            scattering: view.optics.scatter.max_element() > 0.0,
-            view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
-            dispersion: view.optics.dispersion > 0.0,
-            ambient: view.ambient.model,
-            choppy: view.ambient.choppy(),
-            foam: view.foam,
-            deck: view.deck,
-            glaze: view.tile_gloss > 0.0,
-            ..Self::default()
-        }
-    }
-
     /// The WGSL constants that select this variant (`HAS_CAUSTICS`,
     /// `FRESNEL_MODEL`, `SPECULAR_MODEL`, `SHOW_REFLECTANCE`, `HAS_SCATTERING`, `VIEW_COLOUR`,
     /// `HAS_DISPERSION`, `AMBIENT_MODEL`, `AMBIENT_CHOPPY`, `HAS_FOAM`, `HAS_DECK`, `CLIP_SIDE`,

@@ -3,6 +3,7 @@
 
 pub(crate) mod caustics;
 mod caustics_mips;
+mod debug_choice;
 pub(crate) mod debug_view;
 pub(crate) mod deck;
 mod features;
@@ -32,7 +33,7 @@ use crate::sim::HeightField;
 use crate::textures::SkyCube;
 use caustics::CausticsMap;
 pub use caustics::{caustics_grid, CAUSTICS_8BIT_SCALE, CAUSTICS_FORMAT, CAUSTICS_FORMAT_8BIT};
-pub use debug_view::{DebugChoice, DebugTexture, DebugView};
+pub use debug_choice::{DebugChoice, DebugTexture, DebugView};
 pub use deck::{Setting, EYE_CLEARANCE};
 pub use features::Features;
 use flat::FlatWater;
@@ -279,7 +280,7 @@ impl Renderer {
             // Then the flat water's own pipeline, if the frame shows flat water (as
             // `draw_picture` decides: some columns left of the divider).
             let flat = flat_shown(view).filter(|f| f.divider(self.scaled_size(view, size).0) > 0);
-            let Some(lit) = flat.map(|f| f.lit_features(Features::of(view))) else {
+            let Some(lit) = flat.map(|f| f.lit_features(view.features())) else {
                 return true;
             };
             if self.flat.has_pipeline(lit) {

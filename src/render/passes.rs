@@ -91,7 +91,7 @@ impl Renderer {
     /// in the order they ask (kept in step with them; a test checks that a frame after
     /// [`Renderer::build_ahead`] builds nothing).
     pub(super) fn variants_drawn(&self, view: &View, size: (u32, u32)) -> Vec<Features> {
-        let base = Features::of(view);
+        let base = view.features();
         let size = self.scaled_size(view, size);
         let flat = flat_shown(view);
         let traced_shown = flat.is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);
@@ -144,7 +144,7 @@ impl Renderer {
         } else {
             texture_size.0
         };
-        let lit = f.lit_features(Features::of(view));
+        let lit = f.lit_features(view.features());
         let (reflection, refraction) = (Features { clip: 1, ..lit }, Features { clip: -1, ..lit });
         self.variant(device, reflection);
         self.variant(device, refraction);
@@ -187,7 +187,7 @@ impl Renderer {
         let Picture { target, size, view, water } = picture;
         let depth = self.depth_view(device, size).clone();
         // Everything on the flat side is lit as its refraction texture is (FlatView::lit_features).
-        let features = flat.map_or(Features::of(view), |f| f.lit_features(Features::of(view)));
+        let features = flat.map_or(view.features(), |f| f.lit_features(view.features()));
         let regions = if flat.is_some() || !self.object_regions { None } else { regions::surface_regions(view, size) };
         self.variant(device, features);
         for (_, needs) in regions.iter().flatten() {

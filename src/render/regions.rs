@@ -34,7 +34,7 @@ const REGION_MAX_SHARE: f32 = 0.5;
 /// the whole surface with `features` (no objects, the camera under water, or regions too large
 /// to gain from).
 pub fn surface_regions(view: &View, size: (u32, u32)) -> Option<Vec<([u32; 4], Features)>> {
-    let features = Features::of(view);
+    let features = view.features();
     let plain = features.without_objects();
     let mut bounds: Vec<(Vec3, f32, Features)> = Vec::new();
     for id in BodyId::all() {

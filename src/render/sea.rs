@@ -419,7 +419,7 @@ impl Renderer {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
         let FrameContext { device, queue, encoder, target, size } = cx;
-        let features = Features::of(view);
+        let features = view.features();
         let variant =
             SeaVariant { whitecap_map: sea.variant.whitecap_map && self.settings.float_targets, ..sea.variant };
         if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, variant)) {

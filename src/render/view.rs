@@ -4,10 +4,10 @@
 use glam::{Mat4, Vec3};
 
 use super::flat::FlatView;
-use super::DebugView;
 use super::RenderMode;
+use super::{DebugView, Features};
 use crate::ambient::{AmbientModel, MAX_AMBIENT_WAVES};
-use crate::bodies::{BodyView, KINDS};
+use crate::bodies::{BodyId, BodyView, KINDS};
 use crate::optics::{FresnelModel, SpecularModel};
 
 /// Everything a frame's picture depends on besides the water state.
@@ -86,4 +86,27 @@ pub struct Optics {
 /// draws everything).
 pub fn flat_shown(view: &View) -> Option<FlatView> {
     view.flat.filter(|f| f.mode != RenderMode::RayTraced && view.eye.y > f.plane)
+}
+
+impl View {
+    /// The feature set this view costs, the key of its shader variant.
+    pub fn features(&self) -> Features {
+        let view = self;
+        Features {
+            bodies: BodyId::all().filter(|id| view.bodies[id.0].is_some()).map(|id| id.bit() as u8).sum(),
+            caustics: view.caustics,
+            fresnel: view.optics.fresnel,
+            specular: view.optics.specular,
+            show_reflectance: view.optics.show_reflectance,
+            scattering: view.optics.scatter.max_element() > 0.0,
+            view_colour: view.optics.view_colour && view.optics.scatter.max_element() > 0.0,
+            dispersion: view.optics.dispersion > 0.0,
+            ambient: view.ambient.model,
+            choppy: view.ambient.choppy(),
+            foam: view.foam,
+            deck: view.deck,
+            glaze: view.tile_gloss > 0.0,
+            ..Features::default()
+        }
+    }
 }

@@ -530,13 +530,25 @@ impl Browser {
     pub async fn wait_frames(&self, n: u32) {
         let got = self
             .js_async(&format!(
-                "const since = performance.now(), until = since + 60000;
-                 const drawn = () => window.demo._frames.filter((t) => t > since).length;
-                 while (drawn() < {n} && performance.now() < until) await new Promise((r) => setTimeout(r, 20));
-                 return drawn();"
+                "const d = window.demo, start = d._framesDrawn, until = performance.now() + 60000;
+                 while (d._framesDrawn < start + {n} && performance.now() < until) await new Promise((r) => setTimeout(r, 20));
+                 return d._framesDrawn - start;"
             ))
             .await;
         assert!(got.as_u64().is_some_and(|k| k >= n as u64), "{n} frames not drawn within 60 s: {got}");
+    }
+
+    /// Waits until the water in the page (`window.demo`) has run `seconds` more of simulated
+    /// time: what a check of its motion needs, however fast frames come.
+    pub async fn wait_sim_time(&self, seconds: f64) {
+        let got = self
+            .js_async(&format!(
+                "const d = window.demo, t0 = d.stats().simTime, until = performance.now() + 60000;
+                 while (d.stats().simTime < t0 + {seconds} && performance.now() < until) await new Promise((r) => setTimeout(r, 50));
+                 return d.stats().simTime - t0;"
+            ))
+            .await;
+        assert!(got.as_f64().is_some_and(|t| t >= seconds), "{seconds} s of water not run within 60 s: {got}");
     }
 
     /// Waits until `condition` (a JS expression) is true.
