@@ -87,7 +87,13 @@ fn module_graph(dir: &Path, entry: &str) -> BTreeSet<String> {
         }
         let text = std::fs::read_to_string(dir.join(&name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         for quote in ['"', '\''] {
-            for part in text.split(&format!("{quote}./")).skip(1) {
+            for (at, _) in text.match_indices(&format!("{quote}./")) {
+                // Only an import's specifier: after `from`, `import` or `import(`.
+                let before = text[..at].trim_end().trim_end_matches('(').trim_end();
+                if !(before.ends_with("from") || before.ends_with("import")) {
+                    continue;
+                }
+                let part = &text[at + 3..];
                 let Some(end) = part.find(&format!(".js{quote}")) else { continue };
                 let module = &part[..end];
                 if module.chars().all(|c| c.is_alphanumeric() || c == '-' || c == '_') {
