@@ -14,17 +14,8 @@ import type {
   SceneName,
 } from "./tables.js";
 
-export type {
-  CreationAttributes,
-  CreationOptions,
-  ParamAttributes,
-  ParamName,
-  ParamSpec,
-  ParamValues,
-  PresetName,
-  PresetSpec,
-  SceneName,
-};
+// Every table type is the module's too.
+export type * from "./tables.js";
 
 /** Options of mount() besides the parameters (all optional; bad values are clamped with a console warning). */
 export interface DemoOptions extends CreationOptions {
