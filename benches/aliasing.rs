@@ -23,7 +23,7 @@ use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORM
 use wavepool::params::ParamId;
 use wavepool::presets;
 use wavepool::scene::HALF_WIDTH;
-use wavepool::sea::{SceneKind, PATCH_HALF_WIDTH};
+use wavepool::scenes::SceneKind;
 use wavepool::sim::random_drops;
 
 const SIZE: (u32, u32) = (800, 600);
@@ -116,7 +116,7 @@ fn waterline_band(demo: &WaterDemo) -> Vec<bool> {
         let ring: Vec<Vec2> = (0..=64)
             .filter_map(|i| {
                 let a = i as f32 / 64.0 * std::f32::consts::TAU;
-                demo.camera.project(Vec3::new(centre.x + radius * a.cos(), level, centre.z + radius * a.sin()), size)
+                demo.camera().project(Vec3::new(centre.x + radius * a.cos(), level, centre.z + radius * a.sin()), size)
             })
             .collect();
         rings.push(ring);
@@ -148,7 +148,7 @@ fn pool_water(demo: &WaterDemo) -> Vec<bool> {
     let w = HALF_WIDTH;
     let corners: Vec<Vec2> = [(-w, -w), (w, -w), (w, w), (-w, w)]
         .iter()
-        .filter_map(|&(x, z)| demo.camera.project(Vec3::new(x, 0.0, z), size))
+        .filter_map(|&(x, z)| demo.camera().project(Vec3::new(x, 0.0, z), size))
         .collect();
     let sea = demo.drawn_scene() == SceneKind::Sea;
     let inside = |p: Vec2| {
@@ -187,8 +187,7 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
     }
     demo.params.set(ParamId::Quality, 1.0);
     demo.sync_scene();
-    let sea = demo.drawn_scene() == SceneKind::Sea;
-    let over = if sea { PATCH_HALF_WIDTH } else { HALF_WIDTH };
+    let (over, _) = demo.drop_area();
     let (radius, strength) = (demo.params.get(ParamId::DropRadius), demo.params.get(ParamId::DropStrength));
     for d in random_drops(1, 12, over, radius, strength) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);

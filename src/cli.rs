@@ -15,11 +15,10 @@ mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use wavepool::camera::POOL_LIMITS;
-use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STAGE_NAMES, STEP_DT};
+use wavepool::demo::{DemoOptions, OptionSpec, Stage, WaterDemo, STEP_DT};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
-use wavepool::scene::HALF_WIDTH;
 use wavepool::sea::SEA_LIMITS;
 use wavepool::sim::random_drops;
 use wavepool::timing::StageTimer;
@@ -264,23 +263,22 @@ fn render(o: &RenderArgs) -> Result<(), String> {
     let mut demo = o.frame.start.make_demo(&gpu);
     demo.sync_scene();
     if let Some(y) = o.yaw {
-        demo.camera.yaw = y;
+        demo.camera_mut().yaw = y;
     }
     if let Some(p) = o.pitch {
-        demo.camera.pitch = p;
+        demo.camera_mut().pitch = p;
     }
     if let Some(d) = o.distance {
-        demo.camera.distance = d;
+        demo.camera_mut().distance = d;
     }
     if let Some(target) = o.target {
-        demo.camera.target = target;
+        demo.camera_mut().target = target;
     }
-    demo.camera.clamp();
+    demo.camera_mut().clamp();
     let radius = demo.params.get(ParamId::DropRadius);
     let strength = demo.params.get(ParamId::DropStrength);
-    // In the sea the drops fall over its patch (grown there as the patch is wider).
-    let sea = demo.drawn_scene() == wavepool::sea::SceneKind::Sea;
-    let over = if sea { wavepool::sea::PATCH_HALF_WIDTH } else { HALF_WIDTH };
+    // Over the scene's water (in the sea its patch, where a drop grows as the patch is wider).
+    let (over, _) = demo.drop_area();
     for d in random_drops(o.seed, o.drops, over, radius, strength) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);
     }
@@ -395,7 +393,11 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     };
     let info = gpu.adapter.get_info();
     let round = |v: f64| (v * 1e3).round() / 1e3;
-    let sea = (demo.drawn_scene() == wavepool::sea::SceneKind::Sea).then(|| sea_stages(&gpu, &demo, &stage, round));
+    let apart: serde_json::Map<_, _> = demo
+        .timed_apart(&gpu.device, &gpu.queue)
+        .into_iter()
+        .map(|(name, ms)| (name.to_string(), serde_json::Value::from(round(ms))))
+        .collect();
     let report = serde_json::json!({
         "adapter": info.name,
         "backend": format!("{:?}", info.backend),
@@ -405,7 +407,7 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
         "sim_size": o.frame.start.demo_options().sim_size,
         "steps_per_frame": (1.0 / 60.0 / STEP_DT).round(),
         "frame_ms": { "median": round(percentile(&frame_ms, 0.5)), "p95": round(percentile(&frame_ms, 0.95)) },
-        "stage_ms": STAGE_NAMES
+        "stage_ms": demo.stage_names()
             .iter()
             .enumerate()
             .map(|(i, name)| (name.to_string(), serde_json::Value::from(round(stage(i)))))
@@ -416,65 +418,10 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
             "cpu wall clock: each stage submitted and waited for separately"
         },
         "frame_timing": "cpu wall clock from encode to GPU idle, one frame in flight",
-        "sea": sea,
+        "timed_apart": apart,
     });
     println!("{report}");
     Ok(())
-}
-
-/// The sea's stages under their own names (its frame has the same five marks, four stages), and, timed here
-/// apart (the median of ten): the GPU's FFT of its cascades alone (submitted and waited for),
-/// the CPU's FFT that devices without float targets and software rasterisers take instead
-/// (`SeaWaves::layers`), and the CPU's sums for a body's probes (the waves at two moments on a
-/// ring of eight points). The waves' stage is the cascades' FFT into the sea's maps (or their
-/// upload, on the CPU's path); the maps' stage the island's mirror and the kept whitecaps.
-fn sea_stages(
-    gpu: &HeadlessGpu,
-    demo: &WaterDemo,
-    stage: &dyn Fn(usize) -> f64,
-    round: impl Fn(f64) -> f64,
-) -> serde_json::Value {
-    use wavepool::ambient::{cascades::SeaWaves, gpu_ocean::GpuOcean};
-    let settings = demo.sea_settings();
-    let waves = SeaWaves::new(&settings.waves(), wavepool::sea::SEA_LATTICE);
-    let median_of_ten = |run: &mut dyn FnMut(f64)| {
-        let times: Vec<f64> = (0..10)
-            .map(|i| {
-                let start = Instant::now();
-                run(i as f64 * 0.1);
-                start.elapsed().as_secs_f64() * 1e3
-            })
-            .collect();
-        round(percentile(&times, 0.5))
-    };
-    let fft_cpu_ms = median_of_ten(&mut |t| {
-        std::hint::black_box(waves.layers(t));
-    });
-    let oceans: Vec<_> = waves.cascades.iter().map(|c| &c.ocean).collect();
-    let mut fft = GpuOcean::new(&gpu.device, wavepool::sea::SEA_LATTICE as u32, oceans.len() as u32);
-    let fft_gpu_ms = median_of_ten(&mut |t| {
-        let mut encoder = gpu.device.create_command_encoder(&Default::default());
-        fft.encode(&gpu.queue, &mut encoder, &oceans, 1.0 + t);
-        gpu.queue.submit([encoder.finish()]);
-        let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-    });
-    let body_cpu_ms = median_of_ten(&mut |t| {
-        for moment in [t, t + 1.0 / 60.0] {
-            let now = waves.at(moment);
-            let ring = (0..8).map(|i| (i as f32 * 0.785).sin_cos());
-            std::hint::black_box(ring.map(|(s, c)| now.height(0.5 * c, 0.5 * s)).sum::<f32>());
-        }
-    });
-    serde_json::json!({
-        "fft_gpu_ms": fft_gpu_ms,
-        "fft_cpu_ms": fft_cpu_ms,
-        "body_cpu_ms": body_cpu_ms,
-        "patch_ms": round(stage(0)),
-        "waves_ms": round(stage(1)),
-        "reflection_ms": round(stage(2)),
-        "reflection": "the island's mirror and the kept whitecaps",
-        "sea_and_sky_ms": round(stage(3)),
-    })
 }
 
 fn viewer_options(args: ViewerArgs) -> Result<crate::viewer::ViewerOptions, clap::Error> {

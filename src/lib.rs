@@ -25,6 +25,7 @@ pub mod presets;
 pub mod quality;
 pub mod render;
 pub mod scene;
+pub mod scenes;
 pub mod sea;
 pub mod sim;
 pub mod sky;

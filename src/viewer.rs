@@ -10,7 +10,7 @@ use std::time::Instant;
 
 use eframe::egui;
 
-use wavepool::demo::{DemoOptions, FrameContext, Key, WaterDemo, STAGE_NAMES};
+use wavepool::demo::{DemoOptions, FrameContext, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
 use wavepool::params::{self, choice_label, table, Control, Param, ParamId};
 use wavepool::presets::{Preset, PRESETS};
@@ -202,7 +202,7 @@ impl Viewer {
                     }
                     if group == "Optics" {
                         let model: FresnelModel = self.demo.params.choice(ParamId::Fresnel);
-                        fresnel_plot(ui, model, 90.0 - self.demo.camera.pitch.abs());
+                        fresnel_plot(ui, model, 90.0 - self.demo.camera().pitch.abs());
                     }
                 });
             }
@@ -221,7 +221,7 @@ impl Viewer {
             ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
             match self.timer.as_ref().and_then(|t| t.latest()) {
                 Some(ms) => {
-                    let stages: Vec<String> = STAGE_NAMES.iter().zip(ms).map(|(n, v)| format!("{n} {v:.1} ms")).collect();
+                    let stages: Vec<String> = self.demo.stage_names().iter().zip(ms).map(|(n, v)| format!("{n} {v:.1} ms")).collect();
                     ui.label(format!("GPU: {}", stages.join(", ")))
                 }
                 None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
@@ -343,7 +343,7 @@ impl Viewer {
                 ];
                 for (key, (dx, dy)) in turn {
                     if i.key_pressed(key) {
-                        self.demo.camera.orbit(dx, dy);
+                        self.demo.camera_mut().orbit(dx, dy);
                     }
                 }
                 if i.key_pressed(egui::Key::Plus) || i.key_pressed(egui::Key::Equals) {

@@ -444,8 +444,10 @@ impl WebDemo {
         self.demo.params.get_by_name(name).map(to_js_number).map_err(|e| JsError::new(&e.to_string()))
     }
 
-    /// A drop at pool coordinates x, z (m, in [-1, 1]) of `radius` (m) and `strength` (m);
-    /// values are clamped into the parameter ranges (with a console warning).
+    /// A drop at x, z in the shown scene's water (m: the pool's [-1, 1], the sea's patch
+    /// [-16, 16]) of `radius` (m) and `strength` (m), as the parameters give them (the sea grows
+    /// them with its patch); values are clamped into the water and the parameter ranges (with a
+    /// console warning).
     #[wasm_bindgen(js_name = addDrop)]
     pub fn add_drop(&mut self, x: f64, z: f64, radius: f64, strength: f64) {
         for (name, value) in [("drop_radius", radius), ("drop_strength", strength)] {
@@ -454,8 +456,9 @@ impl WebDemo {
                 warn(&format!("wavepool: addDrop {name} {value} is outside [{}, {}]", spec.min(), spec.max()));
             }
         }
-        if x.abs() > 1.0 || z.abs() > 1.0 {
-            warn(&format!("wavepool: addDrop at ({x}, {z}) is outside the pool [-1, 1]; clamped"));
+        let (w, water) = self.demo.drop_area();
+        if x.abs() > w as f64 || z.abs() > w as f64 {
+            warn(&format!("wavepool: addDrop at ({x}, {z}) is outside {water} [-{w}, {w}]; clamped"));
         }
         self.demo.add_drop(x as f32, z as f32, radius as f32, strength as f32);
     }
@@ -493,7 +496,7 @@ impl WebDemo {
 
     /// Turns the camera by pixel-like amounts (arrow keys).
     pub fn orbit(&mut self, dx: f32, dy: f32) {
-        self.demo.camera.orbit(dx, dy);
+        self.demo.camera_mut().orbit(dx, dy);
     }
 
     /// A key by its `KeyboardEvent.code`; true when the demo used it.
@@ -510,7 +513,7 @@ impl WebDemo {
 
     /// The camera as `[yaw, pitch, distance]` (degrees, degrees, m).
     pub fn camera(&self) -> Vec<f32> {
-        let c = &self.demo.camera;
+        let c = self.demo.camera();
         vec![c.yaw, c.pitch, c.distance]
     }
 
@@ -519,7 +522,7 @@ impl WebDemo {
     #[wasm_bindgen(js_name = setCamera)]
     pub fn set_camera(&mut self, yaw: f32, pitch: f32, distance: f32) {
         self.demo.sync_scene();
-        let mut camera = self.demo.camera;
+        let mut camera = *self.demo.camera();
         let finite = |v: f32, current: f32| if v.is_finite() { v } else { current };
         camera.yaw = finite(yaw, camera.yaw);
         camera.pitch = finite(pitch, camera.pitch);
@@ -530,14 +533,14 @@ impl WebDemo {
             let ranges = format!("yaw any, pitch {:?}, distance {:?}", limits.pitch, limits.distance);
             warn(&format!("wavepool: camera ({yaw}, {pitch}, {distance}) is outside {ranges}; using ({y}, {p}, {d})"));
         }
-        self.demo.camera = camera;
+        *self.demo.camera_mut() = camera;
     }
 
     /// Where a point of the pool (x, y, z in m; the water rests at y = 0, the pool spans
     /// -1..1) appears on the canvas, as `[x, y]` in backing pixels; empty when behind the camera.
     pub fn project(&self, x: f32, y: f32, z: f32) -> Vec<f32> {
         let size = glam::Vec2::new(self.config.width as f32, self.config.height as f32);
-        self.demo.camera.project(glam::Vec3::new(x, y, z), size).map_or(Vec::new(), |p| vec![p.x, p.y])
+        self.demo.camera().project(glam::Vec3::new(x, y, z), size).map_or(Vec::new(), |p| vec![p.x, p.y])
     }
 
     /// Releases the GPU device now (WebGPU: `GPUDevice.destroy()`) instead of whenever the

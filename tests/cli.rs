@@ -125,7 +125,7 @@ fn bench_prints_one_json_object() {
         let v = json["frame_ms"][key].as_f64().unwrap_or_else(|| panic!("frame_ms.{key} missing: {json}"));
         assert!(v > 0.0, "{json}");
     }
-    for key in ["simulation", "waves", "caustics", "scene"] {
+    for key in ["simulation", "waves", "caustics", "shading"] {
         let v = json["stage_ms"][key].as_f64().unwrap_or_else(|| panic!("stage_ms.{key} missing: {json}"));
         assert!(v >= 0.0, "{json}");
     }

@@ -40,8 +40,8 @@ fn sphere_over_flat_water(centre: Vec3) -> WaterDemo {
     demo.params.set(ParamId::FlatStrength, 0.0);
     demo.params.set(ParamId::FlatResolution, 1.0);
     demo.params.set(ParamId::SphereRadius, 0.15);
-    demo.camera.pitch = 20.0;
-    demo.camera.distance = 4.2;
+    demo.camera_mut().pitch = 20.0;
+    demo.camera_mut().distance = 4.2;
     demo.set_sphere_centre(centre);
     demo
 }
@@ -227,8 +227,8 @@ fn ripples_distortion_follows_a_click() {
     let before = render(&mut demo, W, H, 5, 1.0 / 60.0);
     let calm = render(&mut demo, W, H, 5, 1.0 / 60.0);
     let size = Vec2::new(W as f32, H as f32);
-    let click = demo.camera.project(Vec3::new(0.3, 0.0, 0.4), size).expect("in view");
-    let far = demo.camera.project(Vec3::new(-0.5, 0.0, -0.4), size).expect("in view");
+    let click = demo.camera().project(Vec3::new(0.3, 0.0, 0.4), size).expect("in view");
+    let far = demo.camera().project(Vec3::new(-0.5, 0.0, -0.4), size).expect("in view");
     demo.pointer_down(click.x, click.y);
     demo.pointer_up();
     let after = render(&mut demo, W, H, 20, 1.0 / 60.0);
@@ -253,25 +253,25 @@ fn the_divider_drags_from_the_pointer_and_a_press_beside_it_still_orbits() {
     let mut demo = pool(0.0);
     demo.params.set(ParamId::RenderMode, 2.0);
     render(&mut demo, W, H, 1, 1.0 / 60.0);
-    let yaw = demo.camera.yaw;
+    let yaw = demo.camera().yaw;
     let (w, h) = (W as f32, H as f32);
     demo.pointer_down(0.5 * w + 5.0, 0.5 * h);
     demo.pointer_move(0.6 * w, 0.5 * h);
     demo.pointer_move(0.7 * w, 0.4 * h);
     demo.pointer_up();
     let split = demo.params.get(ParamId::Split);
-    let yaw_after_divider = demo.camera.yaw;
+    let yaw_after_divider = demo.camera().yaw;
     // Out of reach of the divider (and above the water): the camera orbits.
     demo.pointer_down(0.2 * w, 0.05 * h);
     demo.pointer_move(0.3 * w, 0.05 * h);
     demo.pointer_up();
     println!(
         "divider dragged to {split:.3} (pointer at 0.700); yaw {yaw:.1} -> {yaw_after_divider:.1} -> {:.1}",
-        demo.camera.yaw
+        demo.camera().yaw
     );
     assert!((split - 0.7).abs() < 0.01, "the divider is at {split}");
     assert_eq!(yaw_after_divider, yaw, "dragging the divider turned the camera");
-    assert_ne!(demo.camera.yaw, yaw, "a press away from the divider does not orbit");
+    assert_ne!(demo.camera().yaw, yaw, "a press away from the divider does not orbit");
     // Only in the split view.
     demo.params.set(ParamId::RenderMode, 1.0);
     demo.pointer_down(0.7 * w, 0.05 * h);
@@ -284,7 +284,7 @@ fn the_divider_drags_from_the_pointer_and_a_press_beside_it_still_orbits() {
 fn under_the_water_flat_mode_draws_the_ray_traced_picture_and_says_why() {
     let mut demo = pool(1.0);
     demo.params.set(ParamId::Paused, 1.0);
-    demo.camera.pitch = -30.0;
+    demo.camera_mut().pitch = -30.0;
     let traced = render(&mut demo, W, H, 2, 1.0 / 60.0);
     assert!(demo.flat_water_note().is_none());
     demo.params.set(ParamId::RenderMode, 1.0);

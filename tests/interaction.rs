@@ -24,15 +24,15 @@ fn dragging_on_the_water_makes_ripples_along_the_stroke() {
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     assert_eq!(max_height(&demo), 0.0, "water should start calm");
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
-    let a = demo.camera.project(Vec3::new(-0.5, 0.0, 0.0), size).unwrap();
-    let b = demo.camera.project(Vec3::new(0.5, 0.0, 0.0), size).unwrap();
-    assert!(demo.pick_body(a).is_none() && matches!(demo.camera.pick(a, size), Pick::Water { .. }));
-    let yaw = demo.camera.yaw;
+    let a = demo.camera().project(Vec3::new(-0.5, 0.0, 0.0), size).unwrap();
+    let b = demo.camera().project(Vec3::new(0.5, 0.0, 0.0), size).unwrap();
+    assert!(demo.pick_body(a).is_none() && matches!(demo.camera().pick(a, size), Pick::Water { .. }));
+    let yaw = demo.camera().yaw;
     demo.pointer_down(a.x, a.y);
     demo.pointer_move(b.x, b.y);
     demo.pointer_up();
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
-    assert_eq!(demo.camera.yaw, yaw, "a drag on the water must not orbit");
+    assert_eq!(demo.camera().yaw, yaw, "a drag on the water must not orbit");
     let g = common::gpu();
     let state = demo.water().read_state(&g.device, &g.queue);
     let n = demo.water().size() as usize;
@@ -55,17 +55,17 @@ fn dragging_the_sky_orbits_and_dragging_the_sphere_moves_it() {
     demo.params.set(ParamId::Gravity, 0.0);
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     let calm = max_height(&demo);
-    let yaw = demo.camera.yaw;
+    let yaw = demo.camera().yaw;
     demo.pointer_down(2.0, 2.0);
     demo.pointer_move(60.0, 2.0);
     demo.pointer_up();
-    assert!((demo.camera.yaw - yaw).abs() > 5.0, "dragging outside the pool should orbit");
+    assert!((demo.camera().yaw - yaw).abs() > 5.0, "dragging outside the pool should orbit");
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     assert!((max_height(&demo) - calm).abs() < 1e-6, "orbiting must not touch the water");
 
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
     let sphere = demo.sphere().unwrap();
-    let p = demo.camera.project(sphere.centre, size).unwrap();
+    let p = demo.camera().project(sphere.centre, size).unwrap();
     assert!(
         demo.pick_body(p).is_some_and(|(id, _)| id == BodyId::named("sphere").unwrap()),
         "the sphere is not under its own centre"
@@ -99,12 +99,12 @@ fn keys_and_zoom() {
 
     demo.key(Key::L);
     let sun = demo.sun();
-    assert!(sun.dot(demo.camera.back()) > 0.999, "L puts the sun behind the camera");
+    assert!(sun.dot(demo.camera().back()) > 0.999, "L puts the sun behind the camera");
 
     demo.zoom(1.0e6);
-    assert_eq!(demo.camera.distance, wavepool::camera::DISTANCE_RANGE.1);
+    assert_eq!(demo.camera().distance, wavepool::camera::DISTANCE_RANGE.1);
     demo.zoom(f32::NAN);
-    assert!(demo.camera.distance.is_finite());
+    assert!(demo.camera().distance.is_finite());
 }
 
 /// The sim_size parameter switches the grid at run time (the next frame) and keeps the waves.

@@ -202,9 +202,9 @@ fn top_view(objects: f32, w: u32, h: u32, place: impl Fn(&mut WaterDemo)) -> (Wa
     demo.params.set(ParamId::Gravity, 0.0);
     demo.params.set(ParamId::SunAzimuth, 90.0);
     demo.params.set(ParamId::SunElevation, 50.0);
-    demo.camera.yaw = 0.0;
-    demo.camera.pitch = 80.0;
-    demo.camera.distance = 3.2;
+    demo.camera_mut().yaw = 0.0;
+    demo.camera_mut().pitch = 80.0;
+    demo.camera_mut().distance = 3.2;
     place(&mut demo);
     let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
     (demo, frame)
@@ -236,13 +236,13 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     let (demo, with) = shot(DUCK);
     let (_, without) = shot(NONE);
     let size = Vec2::new(w as f32, h as f32);
-    let duck_px = demo.camera.project(demo.duck().unwrap().position, size).unwrap();
+    let duck_px = demo.camera().project(demo.duck().unwrap().position, size).unwrap();
     // Where sunlight through the duck's waterline meets the floor.
     let sun = demo.sun();
     let r = wavepool::scene::refracted_sun(sun);
     let waterline = Vec3::new(0.25, 0.0, 0.0);
     let floor = waterline + r * (-wavepool::scene::DEPTH / r.y);
-    let shadow_px = demo.camera.project(floor, size).unwrap();
+    let shadow_px = demo.camera().project(floor, size).unwrap();
     let (yellow_with, yellow_without) = (yellow_pixels(&with, duck_px, 14), yellow_pixels(&without, duck_px, 14));
     let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
@@ -264,12 +264,12 @@ fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
     demo.params.set(ParamId::Gravity, 0.0);
     let y = duck::shape(demo.params.get(ParamId::DuckDensity)).floating_height(0.0);
     demo.set_body_pose(BodyId::named("duck").unwrap(), Pose::at(Vec3::new(0.0, y, 0.0)));
-    demo.camera.yaw = 90.0;
-    demo.camera.pitch = 12.0;
-    demo.camera.distance = 1.5;
+    demo.camera_mut().yaw = 90.0;
+    demo.camera_mut().pitch = 12.0;
+    demo.camera_mut().distance = 1.5;
     let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
     let size = Vec2::new(w as f32, h as f32);
-    let centre = demo.camera.project(demo.duck().unwrap().position, size).unwrap();
+    let centre = demo.camera().project(demo.duck().unwrap().position, size).unwrap();
     // The duck's pixels: warm (red well over blue), in a box around it.
     let (mut warm, mut sky_lit) = (0u32, 0u32);
     for y in (centre.y as u32).saturating_sub(60)..(centre.y as u32 + 30).min(h) {
@@ -327,7 +327,7 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     let (demo, with) = shot(BALL);
     let (_, without) = shot(NONE);
     let size = Vec2::new(w as f32, h as f32);
-    let ball_px = demo.camera.project(demo.body(ball).pose.position, size).unwrap();
+    let ball_px = demo.camera().project(demo.body(ball).pose.position, size).unwrap();
     let gores = |frame: &common::Frame| {
         let rect = common::Rect::around(ball_px.x, ball_px.y, frame, 0.08);
         rect.pixels(frame)
@@ -341,7 +341,7 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     };
     let r = wavepool::scene::refracted_sun(demo.sun());
     let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::scene::DEPTH / r.y);
-    let shadow_px = demo.camera.project(floor, size).unwrap();
+    let shadow_px = demo.camera().project(floor, size).unwrap();
     let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
     let (seen, unseen) = (gores(&with), gores(&without));

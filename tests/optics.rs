@@ -37,7 +37,7 @@ fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f3
     let (mut worst, mut compared, mut total_reflection) = (0.0f32, 0, 0);
     for y in (4..H - 4).step_by(7) {
         for x in (4..W - 4).step_by(7) {
-            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let ray = demo.camera().ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
             let t = -ray.origin.y / ray.dir.y;
             let p = ray.origin + ray.dir * t;
             // Calm water inside the pool, away from the walls' edges.
@@ -67,10 +67,10 @@ fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_s
         let (worst_above, n_above, _) = worst_difference(&demo, &above, model);
         // Under water, looking up at the surface: Snell's window and, beyond 48.6° from the
         // vertical, total internal reflection (white in every model).
-        demo.camera.target = Vec3::new(0.0, -0.55, 0.0);
-        demo.camera.pitch = -35.0;
-        demo.camera.distance = 0.45;
-        demo.camera.yaw = 20.0;
+        demo.camera_mut().target = Vec3::new(0.0, -0.55, 0.0);
+        demo.camera_mut().pitch = -35.0;
+        demo.camera_mut().distance = 0.45;
+        demo.camera_mut().yaw = 20.0;
         let below = render(&mut demo, W, H, 1, 1.0 / 60.0);
         let (worst_below, n_below, tir) = worst_difference(&demo, &below, model);
         // The comparison tells the models apart: held to the exact formula, an approximation's
@@ -116,9 +116,9 @@ fn towards_the_sun(specular: f32, shininess: f32, sun_size: f32, drops: u32) -> 
     demo.params.set(ParamId::Specular, specular);
     demo.params.set(ParamId::Shininess, shininess);
     demo.params.set(ParamId::SunSize, sun_size);
-    demo.camera.pitch = 30.0;
-    demo.camera.distance = 3.2;
-    demo.camera.yaw = 180.0;
+    demo.camera_mut().pitch = 30.0;
+    demo.camera_mut().distance = 3.2;
+    demo.camera_mut().yaw = 180.0;
     for d in random_drops(5, drops, 0.8, 0.03, 0.004) {
         demo.add_drop(d.x, d.z, d.radius, d.strength);
     }
@@ -171,16 +171,16 @@ fn facing_a_wall(set: &[(ParamId, f32)]) -> (Frame, Vec<WallPixel>) {
     for &(id, v) in set {
         demo.params.set(id, v);
     }
-    demo.camera.target = Vec3::new(0.0, -0.5, 0.0);
-    demo.camera.pitch = 0.0;
-    demo.camera.yaw = 0.0;
-    demo.camera.distance = 0.5;
+    demo.camera_mut().target = Vec3::new(0.0, -0.5, 0.0);
+    demo.camera_mut().pitch = 0.0;
+    demo.camera_mut().yaw = 0.0;
+    demo.camera_mut().distance = 0.5;
     let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
     let size = Vec2::new(W as f32, H as f32);
     let mut wall = Vec::new();
     for y in (H / 2 - 30..H / 2 + 30).step_by(6) {
         for x in (W / 2 - 40..W / 2 + 40).step_by(8) {
-            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let ray = demo.camera().ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
             let t = (-HALF_WIDTH - ray.origin.z) / ray.dir.z;
             let p = ray.origin + ray.dir * t;
             if p.x.abs() < HALF_WIDTH - 0.05 && p.y < -0.05 && p.y > -0.95 {
@@ -271,10 +271,10 @@ fn dispersion_splits_red_and_blue_at_caustics_and_at_the_rim_of_snells_window() 
     let mut demo = empty_pool();
     demo.params.set(ParamId::Dispersion, 20.0);
     demo.params.set(ParamId::DebugView, DebugChoice::Reflectance.value());
-    demo.camera.target = Vec3::new(0.0, -0.55, 0.0);
-    demo.camera.pitch = -35.0;
-    demo.camera.distance = 0.45;
-    demo.camera.yaw = 20.0;
+    demo.camera_mut().target = Vec3::new(0.0, -0.55, 0.0);
+    demo.camera_mut().pitch = -35.0;
+    demo.camera_mut().distance = 0.45;
+    demo.camera_mut().yaw = 20.0;
     let below = render(&mut demo, W, H, 2, 1.0 / 60.0);
     let iors = wavepool::optics::channel_iors(20.0);
     let critical = iors.map(|n| (1.0 / n).asin().to_degrees());
@@ -282,7 +282,7 @@ fn dispersion_splits_red_and_blue_at_caustics_and_at_the_rim_of_snells_window() 
     let (mut compared, mut worst, mut fringe) = (0usize, [0.0f32; 3], 0usize);
     for y in (2..H).step_by(3) {
         for x in (2..W).step_by(3) {
-            let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+            let ray = demo.camera().ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
             let t = -ray.origin.y / ray.dir.y;
             let p = ray.origin + ray.dir * t;
             if t.is_nan() || t <= 0.0 || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
@@ -325,14 +325,14 @@ fn every_model_draws_its_formula_at_0_30_60_80_and_89_degrees() {
             let mut demo = empty_pool();
             demo.params.set(ParamId::Fresnel, model as u32 as f32);
             demo.params.set(ParamId::DebugView, DebugChoice::Reflectance.value());
-            demo.camera.pitch = pitch;
-            demo.camera.distance = distance;
-            demo.camera.target = Vec3::new(0.0, target_y, 0.0);
+            demo.camera_mut().pitch = pitch;
+            demo.camera_mut().distance = distance;
+            demo.camera_mut().target = Vec3::new(0.0, target_y, 0.0);
             let frame = render(&mut demo, W, H, 1, 1.0 / 60.0);
             let size = Vec2::new(W as f32, H as f32);
             for y in 0..H {
                 for x in 0..W {
-                    let ray = demo.camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+                    let ray = demo.camera().ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
                     let t = -ray.origin.y / ray.dir.y;
                     let p = ray.origin + ray.dir * t;
                     if t.is_nan() || t <= 0.0 || p.x.abs() > HALF_WIDTH - 0.03 || p.z.abs() > HALF_WIDTH - 0.03 {
@@ -386,8 +386,8 @@ fn dispersion_moves_the_red_caustics_farther_along_the_light_than_the_blue() {
         demo.params.set(ParamId::SunElevation, 35.0);
         demo.params.set(ParamId::SunAzimuth, 0.0);
         demo.params.set(ParamId::Dispersion, dispersion);
-        demo.camera.pitch = 89.0;
-        demo.camera.distance = 2.6;
+        demo.camera_mut().pitch = 89.0;
+        demo.camera_mut().distance = 2.6;
         demo.add_drop(0.0, 0.0, 0.06, 0.02);
         let frame = render(&mut demo, W, H, 25, 1.0 / 60.0);
         (frame, demo)
@@ -409,7 +409,7 @@ fn dispersion_moves_the_red_caustics_farther_along_the_light_than_the_blue() {
     let sun = demo.sun();
     let size = Vec2::new(W as f32, H as f32);
     let floor = Vec3::new(0.0, -1.0, 0.0);
-    let on_screen = |p: Vec3| demo.camera.project(p, size).expect("in front of the camera");
+    let on_screen = |p: Vec3| demo.camera().project(p, size).expect("in front of the camera");
     let travel = (on_screen(floor - Vec3::new(sun.x, 0.0, sun.z).normalize() * 0.5) - on_screen(floor)).normalize();
     let along = (red - blue).dot(travel);
     println!(

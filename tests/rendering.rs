@@ -32,9 +32,9 @@ fn with_drops(seed: u64, count: u32) -> WaterDemo {
 /// A view low enough that the top of the frame is sky (the deck keeps the eye above the
 /// paving; the top rows look about 12° up, above the horizon's haze).
 fn low_view(demo: &mut WaterDemo) {
-    demo.camera.pitch = 10.0;
-    demo.camera.yaw = -25.0;
-    demo.camera.distance = 3.6;
+    demo.camera_mut().pitch = 10.0;
+    demo.camera_mut().yaw = -25.0;
+    demo.camera_mut().distance = 3.6;
 }
 
 /// The picture has structure where the water is, not only in the paving round it: the luma
@@ -53,7 +53,7 @@ fn frame_is_not_uniform() {
     let (w, x0, x1) = (wavepool::scene::HALF_WIDTH, -0.9, -0.55);
     let corners: Vec<Vec2> = [(x0 * w, -0.5 * w), (x0 * w, 0.5 * w), (x1 * w, -0.5 * w), (x1 * w, 0.5 * w)]
         .iter()
-        .map(|&(x, z)| demo.camera.project(Vec3::new(x, 0.0, z), size).expect("the pool in view"))
+        .map(|&(x, z)| demo.camera().project(Vec3::new(x, 0.0, z), size).expect("the pool in view"))
         .collect();
     let (lo, hi) = corners.iter().fold((size, Vec2::ZERO), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
     let water = Rect(lo.x / size.x, lo.y / size.y, hi.x / size.x, hi.y / size.y);
@@ -80,9 +80,9 @@ fn sky_region_has_the_sky_colour() {
 fn caustics_add_contrast_on_the_floor() {
     let mut demo = with_drops(5, 30);
     demo.params.set(ParamId::Objects, 0.0);
-    demo.camera.pitch = 89.0;
-    demo.camera.distance = 3.0;
-    demo.camera.target = Vec3::new(0.0, -1.0, 0.0);
+    demo.camera_mut().pitch = 89.0;
+    demo.camera_mut().distance = 3.0;
+    demo.camera_mut().target = Vec3::new(0.0, -1.0, 0.0);
     let _ = render(&mut demo, W, H, 40, 1.0 / 60.0);
     demo.params.set(ParamId::Paused, 1.0);
     let floor = Rect(0.35, 0.3, 0.65, 0.7);
@@ -105,14 +105,14 @@ fn a_drop_changes_the_water_but_not_the_sky() {
         // The cut-away box seen low (the top of the frame is the background past the pool): from
         // as low over the deck its coping would hide the water around the drop.
         demo.params.set(ParamId::Setting, 1.0);
-        demo.camera.pitch = 19.0;
-        demo.camera.yaw = -25.0;
-        demo.camera.distance = 3.6;
+        demo.camera_mut().pitch = 19.0;
+        demo.camera_mut().yaw = -25.0;
+        demo.camera_mut().distance = 3.6;
         if drop {
             demo.add_drop(at.x, at.z, 0.08, 0.02);
         }
         let frame = render(&mut demo, W, H, 30, 1.0 / 60.0);
-        (frame, demo.camera.project(at, Vec2::new(W as f32, H as f32)).expect("drop in view"))
+        (frame, demo.camera().project(at, Vec2::new(W as f32, H as f32)).expect("drop in view"))
     };
     let (calm, _) = run(false);
     let (rippled, pixel) = run(true);
@@ -184,7 +184,7 @@ fn the_no_float_path_renders_the_same_frame() {
         still_sphere(&mut demo);
         // The framing the bounds below were set at (the water a third of the frame): the
         // 8-bit caustics' rounding is per pixel of water, so a closer view adds to the mean.
-        demo.camera.distance = 3.4;
+        demo.camera_mut().distance = 3.4;
         let engine = if float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
         assert_eq!(demo.water().engine(), engine);
         for d in random_drops(8, drops, 1.0, 0.06, 0.015) {

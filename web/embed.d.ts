@@ -102,8 +102,8 @@ export interface Stats {
   submergedVolume: number;
   /** GPU time per render mode (ms), where the browser measures it; null otherwise. */
   gpuMs: { raytraced: number | null; flat: number | null; split: number | null } | null;
-  /** The latest measured frame's GPU time per stage (ms), where the browser measures it. */
-  stageMs: { simulation: number; waves: number; caustics: number; scene: number } | null;
+  /** The latest measured frame's GPU time per stage of the scene drawn (ms), where the browser measures it: the pool's simulation, waves, caustics and shading; the sea's simulation, waves, maps (its mirror and whitecaps) and shading. */
+  stageMs: PoolStageMs | SeaStageMs | null;
   /** Why flat water is not drawn now (under the water), or null. */
   flatNote: string | null;
   /** Sizes held to what this device affords. */
@@ -120,9 +120,14 @@ export interface SuspendedStats {
   contextsOnPage: number;
 }
 
+/** The pool's frame stages (ms). */
+export interface PoolStageMs { simulation: number; waves: number; caustics: number; shading: number }
+/** The sea's frame stages (ms): its maps are the island's mirror and the kept whitecaps. */
+export interface SeaStageMs { simulation: number; waves: number; maps: number; shading: number }
+
 /** The handle mount() resolves to, and <wave-pool>'s `demo` once it is ready. */
 export interface WavePool {
-  /** A drop at scene coordinates x, z (m; the pool's −1…1); radius and strength in m (default: the current parameters). */
+  /** A drop at x, z in the scene's water (m; the pool's −1…1, the sea's patch −16…16; outside, clamped with a warning); radius and strength in m as the parameters give them (default: the current ones; the sea grows them with its patch). */
   addDrop(x: number, z: number, radius?: number, strength?: number): void;
   /** Sets a parameter (a choice by name or number); out-of-range values are clamped with a warning. Returns the value in effect. */
   set<K extends ParamName>(name: K, value: ParamValues[K]): number;

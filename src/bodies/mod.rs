@@ -181,6 +181,31 @@ impl Body {
     }
 }
 
+/// Radius (m) of the ring on which a body feels waves that move on their own (the pool's
+/// ambient waves, the sea's cascades): about the duck's and a small sphere's waterline.
+pub const AMBIENT_RING_RADIUS: f32 = 0.05;
+
+/// `PROBES_PER_BODY` points on a ring of `radius` (m) round `centre`: where the water is read
+/// for a body's buoyancy.
+pub fn ring(centre: glam::Vec2, radius: f32) -> impl Iterator<Item = glam::Vec2> {
+    (0..PROBES_PER_BODY).map(move |i| {
+        let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
+        centre + radius * glam::Vec2::new(a.cos(), a.sin())
+    })
+}
+
+/// Pushes every two of the `shown` bodies apart where their bumping balls (radii `bump`, m, by
+/// kind) overlap, the lighter more (`mass`, kg; infinite for one held in place).
+pub fn bump_apart(bodies: &mut [Body], shown: &[BodyId], bump: &[f32], mass: &dyn Fn(BodyId) -> f32) {
+    for (i, &a) in shown.iter().enumerate() {
+        for &b in &shown[i + 1..] {
+            let (first, second) = bodies.split_at_mut(b.0);
+            let (a_motion, b_motion) = (&mut first[a.0].motion, &mut second[0].motion);
+            crate::physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
+        }
+    }
+}
+
 /// Any set of the kinds, as a choice: bit `i` of its value for kind `i` (the pool's `objects`,
 /// the open sea's `sea_objects`).
 pub const OBJECT_CHOICES: Control = Control::Choice {

@@ -6,7 +6,6 @@ use wasm_bindgen::prelude::*;
 use super::tables::set;
 use super::{web_format_name, WebDemo};
 use crate::bodies::BodyId;
-use crate::demo::STAGE_NAMES;
 use crate::render::RenderMode;
 use crate::sim::SimEngine;
 use crate::timing::StageTimer;
@@ -58,7 +57,7 @@ impl WebDemo {
         // The latest measured frame's GPU time per stage (ms), where the browser measures it.
         let stages = self.timer.as_ref().and_then(StageTimer::latest).map_or(JsValue::NULL, |ms| {
             let o = js_sys::Object::new();
-            for (name, v) in STAGE_NAMES.iter().zip(ms) {
+            for (name, v) in self.demo.stage_names().iter().zip(ms) {
                 set(&o, name, v);
             }
             JsValue::from(o)

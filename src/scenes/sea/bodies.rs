@@ -7,14 +7,12 @@
 
 use glam::{Vec2, Vec3};
 
-use super::bodies::{ring, AMBIENT_RING_RADIUS};
-use super::input::Drag;
-use super::sea::Sea;
-use super::{WaterDemo, STEP_DT};
+use super::{Sea, SeaScene};
 use crate::ambient::cascades::SeaNow;
-use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
-use crate::params::ParamId;
+use crate::bodies::{bump_apart, ring, Body, BodyId, BodyView, AMBIENT_RING_RADIUS, KINDS, PROBES_PER_BODY};
+use crate::params::{ParamId, Params};
 use crate::physics::{Bounds, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
+use crate::scenes::{Shared, STEP_DT};
 use crate::sea;
 use crate::sim::{BodyCoupling, SPONGE_WIDTH};
 
@@ -26,39 +24,44 @@ pub fn sea_bounds() -> Bounds {
     Bounds { least: Vec3::new(-inner, pool.least.y * s, -inner), most: Vec3::new(inner, pool.most.y * s, inner) }
 }
 
-impl WaterDemo {
-    /// Whether a body floats in the sea (its bit in the `sea_objects` parameter).
-    pub fn in_sea(&self, id: BodyId) -> bool {
-        (self.params.get(ParamId::SeaObjects) as u32) & id.bit() != 0
-    }
+/// Whether a body floats in the sea (its bit in the `sea_objects` parameter).
+pub fn in_sea(params: &Params, id: BodyId) -> bool {
+    (params.get(ParamId::SeaObjects) as u32) & id.bit() != 0
+}
 
-    /// Every kind's hull in the sea: its ellipsoids enlarged (in its own frame, m).
-    fn sea_hulls(&self) -> Vec<Vec<Ellipsoid>> {
-        let s = sea::patch_scale();
-        BodyId::all().map(|id| self.hull(id).into_iter().map(|e| e.scaled(s)).collect()).collect()
-    }
+/// A kind's hull ellipsoids in the pool, in its own frame (m).
+fn pool_hull(sh: Shared<'_>, id: BodyId) -> Vec<Ellipsoid> {
+    (id.kind().hull)(&|name: &str| sh.value(name))
+}
 
-    /// Every body at its start in the sea: the pool's start enlarged, upright at its floating
-    /// height (the pool's, enlarged: a body that much larger floats as much higher).
-    pub(super) fn sea_bodies_at_start(&self) -> Vec<Body> {
-        let s = sea::patch_scale();
-        BodyId::all()
-            .map(|id| {
-                let value = |name: &str| self.value(name);
-                let start = (id.kind().start)(&value);
-                let hull = self.hull(id);
-                let shape = Shape {
-                    hull: &hull,
-                    centre_of_mass: id.kind().centre_of_mass,
-                    density: (id.kind().density)(&value),
-                    scale: 1.0,
-                };
-                let at = Vec3::new(start.position.x, shape.floating_height(0.0), start.position.z) * s;
-                Body::at(Pose { position: at, rotation: start.rotation })
-            })
-            .collect()
-    }
+/// Every kind's hull in the sea: its ellipsoids enlarged (in its own frame, m).
+fn hulls(sh: Shared<'_>) -> Vec<Vec<Ellipsoid>> {
+    let s = sea::patch_scale();
+    BodyId::all().map(|id| pool_hull(sh, id).into_iter().map(|e| e.scaled(s)).collect()).collect()
+}
 
+/// Every body at its start in the sea: the pool's start enlarged, upright at its floating
+/// height (the pool's, enlarged: a body that much larger floats as much higher).
+pub(super) fn at_start(sh: Shared<'_>) -> Vec<Body> {
+    let s = sea::patch_scale();
+    BodyId::all()
+        .map(|id| {
+            let value = |name: &str| sh.value(name);
+            let start = (id.kind().start)(&value);
+            let hull = pool_hull(sh, id);
+            let shape = Shape {
+                hull: &hull,
+                centre_of_mass: id.kind().centre_of_mass,
+                density: (id.kind().density)(&value),
+                scale: 1.0,
+            };
+            let at = Vec3::new(start.position.x, shape.floating_height(0.0), start.position.z) * s;
+            Body::at(Pose { position: at, rotation: start.rotation })
+        })
+        .collect()
+}
+
+impl SeaScene {
     /// Moves the sea's bodies through this frame's `steps` fixed steps (up to fixed step `step`)
     /// on the water under them: the waves at each step, between the last frame's, if it was
     /// drawn where these steps start, and this frame's (`now`, summed on a ring at each body's
@@ -66,11 +69,11 @@ impl WaterDemo {
     /// the patch's ripples as the frame starts (its probes, sampled last
     /// frame on the kinds' wider rings). Then tells the patch how their hulls moved in each
     /// step, to push its water by, and where to sample it for next frame.
-    pub(super) fn step_sea_bodies(&mut self, (steps, step): (u32, u64), now: &SeaNow) {
+    pub(super) fn step_bodies(&mut self, sh: Shared<'_>, (steps, step): (u32, u64), now: &SeaNow) {
         let s = sea::patch_scale();
-        let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.in_sea(id)).collect();
-        let hulls = self.sea_hulls();
-        let value = |name: &str| self.value(name);
+        let shown: Vec<BodyId> = BodyId::all().filter(|&id| in_sea(sh.params, id)).collect();
+        let hulls = hulls(sh);
+        let value = |name: &str| sh.value(name);
         let shapes: Vec<Shape> = BodyId::all()
             .map(|id| Shape {
                 hull: &hulls[id.0],
@@ -81,11 +84,8 @@ impl WaterDemo {
             .collect();
         let rings: Vec<f32> = BodyId::all().map(|id| (id.kind().probe_ring)(&value) * s).collect();
         let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value) * s).collect();
-        let gravity = self.params.flag(ParamId::Gravity);
-        let held = match self.drag {
-            Drag::Body { id, .. } => Some(id),
-            _ => None,
-        };
+        let gravity = sh.params.flag(ParamId::Gravity);
+        let held = sh.held;
         let Some(sea) = self.sea.as_mut() else { return };
         // The waves as this frame's steps start: the last frame's, if it drew them at that step
         // (else this frame's at both ends).
@@ -119,7 +119,7 @@ impl WaterDemo {
                 };
                 body.submerged = body.motion.step(&shapes[id.0], gravity, &plane, STEP_DT, &bounds);
             }
-            super::bodies::bump_apart(&mut sea.bodies, &shown, &bump, &|id| {
+            bump_apart(&mut sea.bodies, &shown, &bump, &|id| {
                 if held == Some(id) {
                     f32::INFINITY
                 } else {
@@ -150,24 +150,24 @@ impl WaterDemo {
 
     /// The sea's bodies as the renderer draws them, if shown: each the pool's body at the pose
     /// shrunk into the pool, enlarged back (so its drawing is the pool's, larger).
-    pub(super) fn sea_drawn_bodies(&self) -> [Option<BodyView>; KINDS.len()] {
+    pub(super) fn drawn_bodies(&self, sh: Shared<'_>) -> [Option<BodyView>; KINDS.len()] {
         let s = sea::patch_scale();
-        let value = |name: &str| self.value(name);
+        let value = |name: &str| sh.value(name);
         std::array::from_fn(|k| {
             let (id, sea) = (BodyId(k), self.sea.as_ref()?);
             let pose = sea.bodies[k].motion.pose;
             let shrunk = Pose { position: pose.position / s, rotation: pose.rotation };
-            self.in_sea(id).then(|| (id.kind().drawn)(&shrunk, &value).enlarged(s))
+            in_sea(sh.params, id).then(|| (id.kind().drawn)(&shrunk, &value).enlarged(s))
         })
     }
 
     /// The nearest of the sea's bodies under pixel `pixel`: its id, the point hit and its
     /// frame's origin (m). Each kind picks its pool body, the ray shrunk into the pool.
-    pub(super) fn pick_sea_body(&self, pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {
-        let (ray, s) = (self.camera.ray(pixel, self.viewport), sea::patch_scale());
-        let value = |name: &str| self.value(name);
+    pub(super) fn body_under(&self, sh: Shared<'_>, pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {
+        let (ray, s) = (self.camera.ray(pixel, sh.viewport), sea::patch_scale());
+        let value = |name: &str| sh.value(name);
         let sea = self.sea.as_ref()?;
-        let hits = BodyId::all().filter(|&id| self.in_sea(id)).filter_map(|id| {
+        let hits = BodyId::all().filter(|&id| in_sea(sh.params, id)).filter_map(|id| {
             let pose = sea.bodies[id.0].motion.pose;
             let shrunk = Pose { position: pose.position / s, rotation: pose.rotation };
             (id.kind().pick)(&shrunk, &value, ray.origin / s, ray.dir).map(|t| (id, t * s, pose.position))
@@ -177,14 +177,14 @@ impl WaterDemo {
     }
 
     /// A body's motion in the sea, once the sea has been drawn (for tests).
-    pub fn sea_body(&self, id: BodyId) -> Option<&FloatingBody> {
+    pub fn body(&self, id: BodyId) -> Option<&FloatingBody> {
         self.sea.as_ref().map(|s| &s.bodies[id.0].motion)
     }
 
     /// Puts a body of the sea somewhere (kept over the patch's middle) and sets it moving at
     /// `velocity` (m/s), once the sea has been drawn (dragged, and for tests).
-    pub fn set_sea_body(&mut self, id: BodyId, position: Vec3, velocity: Vec3) {
-        let hull = &self.sea_hulls()[id.0];
+    pub fn set_body(&mut self, sh: Shared<'_>, id: BodyId, position: Vec3, velocity: Vec3) {
+        let hull = &hulls(sh)[id.0];
         if let Some(sea) = self.sea.as_mut().filter(|_| position.is_finite() && velocity.is_finite()) {
             let motion = &mut sea.bodies[id.0].motion;
             motion.pose.position = position;

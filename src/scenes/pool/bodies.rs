@@ -1,31 +1,23 @@
-//! The floating bodies in the demo, one per kind of `bodies::KINDS`: placed at their starts,
+//! The floating bodies in the pool, one per kind of `bodies::KINDS`: placed at their starts,
 //! stepped against the water planes under them, kept apart, and the water's answer to them.
 //! Nothing here names a kind: what differs between kinds is in their table entries.
 
 use glam::{Vec2, Vec3};
 
-use super::{Drag, WaterDemo, STEP_DT};
+use super::PoolScene;
 use crate::ambient::AmbientModel;
-use crate::bodies::{Body, BodyId, BodyView, KINDS, PROBES_PER_BODY};
-use crate::params::ParamId;
+use crate::bodies::{bump_apart, ring, Body, BodyId, BodyView, AMBIENT_RING_RADIUS, KINDS, PROBES_PER_BODY};
+use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::scene::{self, Sphere};
+use crate::scenes::{Shared, STEP_DT};
 use crate::sim::{self, BodyCoupling, HullMove};
 
-/// Radius (m) of the ring on which a body feels the ambient waves (about the duck's and a
-/// small sphere's waterline).
-pub(super) const AMBIENT_RING_RADIUS: f32 = 0.05;
-
-impl WaterDemo {
-    /// A parameter's value by name, for the body kinds' table entries.
-    pub(super) fn value(&self, name: &str) -> f32 {
-        self.params.get_by_name(name).expect("a body kind reads its own parameters")
-    }
-
+impl PoolScene {
     /// Every body at its start, at rest, not yet felt by the water (its submerged volume
     /// kept until the next step measures it again).
-    pub(super) fn place_bodies_at_start(&mut self) {
-        let value = |name: &str| self.value(name);
+    pub(super) fn place_bodies_at_start(&mut self, sh: Shared<'_>) {
+        let value = |name: &str| sh.value(name);
         let bodies: Vec<Body> = BodyId::all()
             .map(|id| Body {
                 submerged: self.bodies.get(id.0).map_or(0.0, |b| b.submerged),
@@ -36,31 +28,31 @@ impl WaterDemo {
     }
 
     /// Whether a body is in the pool (its bit in the `objects` parameter).
-    pub fn shows(&self, id: BodyId) -> bool {
-        let objects = self.params.get(ParamId::Objects) as u32;
+    pub fn shows(params: &Params, id: BodyId) -> bool {
+        let objects = params.get(ParamId::Objects) as u32;
         objects & id.bit() != 0
     }
 
     /// Every kind's body as the renderer draws it, if shown.
-    pub(super) fn drawn_bodies(&self) -> [Option<BodyView>; KINDS.len()] {
-        let value = |name: &str| self.value(name);
+    pub(super) fn drawn_bodies(&self, sh: Shared<'_>) -> [Option<BodyView>; KINDS.len()] {
+        let value = |name: &str| sh.value(name);
         std::array::from_fn(|k| {
             let id = BodyId(k);
-            self.shows(id).then(|| (id.kind().drawn)(&self.bodies[k].motion.pose, &value))
+            Self::shows(sh.params, id).then(|| (id.kind().drawn)(&self.bodies[k].motion.pose, &value))
         })
     }
 
     /// The sphere as drawn, if shown.
-    pub fn sphere(&self) -> Option<Sphere> {
+    pub fn sphere(&self, sh: Shared<'_>) -> Option<Sphere> {
         let id = BodyId::named("sphere")?;
-        self.shows(id)
-            .then(|| crate::bodies::sphere::drawn(&self.bodies[id.0].motion.pose, self.value("sphere_radius")))
+        Self::shows(sh.params, id)
+            .then(|| crate::bodies::sphere::drawn(&self.bodies[id.0].motion.pose, sh.value("sphere_radius")))
     }
 
     /// The duck's pose, if shown.
-    pub fn duck(&self) -> Option<Pose> {
+    pub fn duck(&self, params: &Params) -> Option<Pose> {
         let id = BodyId::named("duck")?;
-        self.shows(id).then_some(self.bodies[id.0].motion.pose)
+        Self::shows(params, id).then_some(self.bodies[id.0].motion.pose)
     }
 
     /// A body's motion (shown or not).
@@ -68,24 +60,19 @@ impl WaterDemo {
         &self.bodies[id.0].motion
     }
 
-    pub fn set_sphere_centre(&mut self, centre: Vec3) {
+    pub fn set_sphere_centre(&mut self, sh: Shared<'_>, centre: Vec3) {
         if let Some(id) = BodyId::named("sphere") {
-            self.set_body_pose(id, Pose::at(centre));
+            self.set_body_pose(sh, id, Pose::at(centre));
         }
     }
 
     /// Puts a body somewhere (kept inside the pool) and stops it.
-    pub fn set_body_pose(&mut self, id: BodyId, pose: Pose) {
+    pub fn set_body_pose(&mut self, sh: Shared<'_>, id: BodyId, pose: Pose) {
         if pose.position.is_finite() && pose.rotation.is_finite() {
             let mut pose = Pose { position: pose.position, rotation: pose.rotation.normalize() };
-            physics::keep_in_pool(&mut pose, &self.hull(id));
+            physics::keep_in_pool(&mut pose, &hull(sh, id));
             self.bodies[id.0].motion = FloatingBody::at(pose);
         }
-    }
-
-    /// A body's hull ellipsoids, in its own frame.
-    pub(super) fn hull(&self, id: BodyId) -> Vec<Ellipsoid> {
-        (id.kind().hull)(&|name: &str| self.value(name))
     }
 
     /// Frames between the water heights the bodies last used and the frame that used them:
@@ -96,17 +83,17 @@ impl WaterDemo {
     }
 
     /// Volume (m³) of the bodies under water after the last step.
-    pub fn submerged_volume(&self) -> f32 {
-        BodyId::all().filter(|&id| self.shows(id)).map(|id| self.bodies[id.0].submerged).sum()
+    pub fn submerged_volume(&self, params: &Params) -> f32 {
+        BodyId::all().filter(|&id| Self::shows(params, id)).map(|id| self.bodies[id.0].submerged).sum()
     }
 
     /// The water plane under each body from the newest probe heights plus the ambient waves
     /// there now (flat at the rest level before any probes have arrived).
-    pub(super) fn water_planes(&mut self) -> Vec<WaterPlane> {
+    fn water_planes(&mut self, sh: Shared<'_>) -> Vec<WaterPlane> {
         let frame = self.water.frames() + 1;
-        let level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
+        let level = self.submerged_volume(sh.params) / sim::pool_area(scene::HALF_WIDTH);
         let mut planes = vec![WaterPlane::flat(level); self.bodies.len()];
-        let t = self.sim_time();
+        let t = sh.sim_time();
         // The ambient surface now, made once for all bodies' probes.
         let mut ambient_now = None;
         if let Some(samples) = self.water.probes() {
@@ -143,14 +130,11 @@ impl WaterDemo {
     /// Moves the bodies through `steps` fixed steps on the water planes under them; a body
     /// held by the pointer stays put. Every two in the pool bump off each other. Returns, per
     /// step, how the bodies' hulls moved in it, to push the water by.
-    pub(super) fn step_bodies(&mut self, steps: u32) -> Vec<Vec<HullMove>> {
-        let planes = self.water_planes();
-        let gravity = self.params.flag(ParamId::Gravity);
-        let held = match self.drag {
-            Drag::Body { id, .. } => Some(id),
-            _ => None,
-        };
-        let value = |name: &str| self.value(name);
+    pub(super) fn step_bodies(&mut self, sh: Shared<'_>, steps: u32) -> Vec<Vec<HullMove>> {
+        let planes = self.water_planes(sh);
+        let gravity = sh.params.flag(ParamId::Gravity);
+        let held = sh.held;
+        let value = |name: &str| sh.value(name);
         let hulls: Vec<Vec<Ellipsoid>> = BodyId::all().map(|id| (id.kind().hull)(&value)).collect();
         let shapes: Vec<Shape> = BodyId::all()
             .map(|id| Shape {
@@ -161,7 +145,7 @@ impl WaterDemo {
             })
             .collect();
         let bump: Vec<f32> = BodyId::all().map(|id| (id.kind().bump_radius)(&value)).collect();
-        let shown: Vec<BodyId> = BodyId::all().filter(|&id| self.shows(id)).collect();
+        let shown: Vec<BodyId> = BodyId::all().filter(|&id| Self::shows(sh.params, id)).collect();
         let mut pushes = Vec::with_capacity(steps as usize);
         for _ in 0..steps.max(1) {
             for id in BodyId::all() {
@@ -183,7 +167,7 @@ impl WaterDemo {
                 }
             }
             if steps > 0 {
-                pushes.push(self.take_pushes());
+                pushes.push(self.take_pushes(sh));
             }
         }
         pushes
@@ -191,11 +175,11 @@ impl WaterDemo {
 
     /// How each body's hull moved since the water last took it in; records where it is now.
     /// A body that just appeared only records its place (the rest level accounts for it).
-    pub(super) fn take_pushes(&mut self) -> Vec<HullMove> {
+    fn take_pushes(&mut self, sh: Shared<'_>) -> Vec<HullMove> {
         let mut moves = Vec::new();
         for id in BodyId::all() {
-            if self.shows(id) {
-                let hull = self.hull(id);
+            if Self::shows(sh.params, id) {
+                let hull = hull(sh, id);
                 self.bodies[id.0].take_moves(&hull, &mut moves);
             } else {
                 self.bodies[id.0].pushed = None;
@@ -207,38 +191,38 @@ impl WaterDemo {
     /// Tells the water what the bodies did this frame: how their hulls moved in each step
     /// (`pushes`), the rest level their submerged volume raises, and where to sample heights
     /// for the next frames.
-    pub(super) fn couple_water(&mut self, pushes: Vec<Vec<HullMove>>) {
+    pub(super) fn couple_water(&mut self, sh: Shared<'_>, pushes: Vec<Vec<HullMove>>) {
         let mut probes = Vec::with_capacity(self.bodies.len() * PROBES_PER_BODY);
         for id in BodyId::all() {
             let pose = self.bodies[id.0].motion.pose;
-            if self.shows(id) && self.bodies[id.0].pushed.is_none() {
-                self.bodies[id.0].pushed = Some(self.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
+            if Self::shows(sh.params, id) && self.bodies[id.0].pushed.is_none() {
+                self.bodies[id.0].pushed = Some(hull(sh, id).iter().map(|e| e.hull_slot(&pose)).collect());
             }
-            let radius = (id.kind().probe_ring)(&|name: &str| self.value(name));
+            let radius = (id.kind().probe_ring)(&|name: &str| sh.value(name));
             probes.extend(ring(Vec2::new(pose.position.x, pose.position.z), radius));
         }
-        let rest_level = self.submerged_volume() / sim::pool_area(scene::HALF_WIDTH);
+        let rest_level = self.submerged_volume(sh.params) / sim::pool_area(scene::HALF_WIDTH);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
     }
 }
 
-/// Pushes every two of the `shown` bodies apart where their bumping balls (radii `bump`, m, by
-/// kind) overlap, the lighter more (`mass`, kg; infinite for one held in place).
-pub(super) fn bump_apart(bodies: &mut [Body], shown: &[BodyId], bump: &[f32], mass: &dyn Fn(BodyId) -> f32) {
-    for (i, &a) in shown.iter().enumerate() {
-        for &b in &shown[i + 1..] {
-            let (first, second) = bodies.split_at_mut(b.0);
-            let (a_motion, b_motion) = (&mut first[a.0].motion, &mut second[0].motion);
-            physics::separate(a_motion, bump[a.0], mass(a), b_motion, bump[b.0], mass(b));
-        }
-    }
+/// A body's hull ellipsoids, in its own frame.
+pub(crate) fn hull(sh: Shared<'_>, id: BodyId) -> Vec<Ellipsoid> {
+    (id.kind().hull)(&|name: &str| sh.value(name))
 }
 
-/// `PROBES_PER_BODY` points on a ring of `radius` (m) round `centre`: where the water is read
-/// for a body's buoyancy.
-pub(super) fn ring(centre: Vec2, radius: f32) -> impl Iterator<Item = Vec2> {
-    (0..PROBES_PER_BODY).map(move |i| {
-        let a = std::f32::consts::TAU * i as f32 / PROBES_PER_BODY as f32;
-        centre + radius * Vec2::new(a.cos(), a.sin())
-    })
+impl PoolScene {
+    /// The nearest body under pixel `pixel` and the point hit (m), if any.
+    pub fn body_under(&self, sh: Shared<'_>, pixel: Vec2) -> Option<(BodyId, Vec3)> {
+        let ray = self.camera.ray(pixel, sh.viewport);
+        let value = |name: &str| sh.value(name);
+        let mut nearest: Option<(BodyId, f32)> = None;
+        for id in BodyId::all().filter(|&id| Self::shows(sh.params, id)) {
+            let t = (id.kind().pick)(&self.body(id).pose, &value, ray.origin, ray.dir);
+            if let Some(t) = t.filter(|&t| nearest.is_none_or(|(_, best)| t < best)) {
+                nearest = Some((id, t));
+            }
+        }
+        nearest.map(|(id, t)| (id, ray.origin + ray.dir * t))
+    }
 }
