@@ -22,9 +22,9 @@ use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORMAT};
 use wavepool::params::ParamId;
 use wavepool::presets;
-use wavepool::scene::HALF_WIDTH;
 use wavepool::scenes::SceneKind;
 use wavepool::sim::random_drops;
+use wavepool::world::HALF_WIDTH;
 
 const SIZE: (u32, u32) = (800, 600);
 /// The reference is drawn this many times larger on each side.

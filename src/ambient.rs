@@ -18,8 +18,8 @@ mod waves;
 
 use waves::{gerstner, sharp_sine, standing, SHARP_SINE_MEAN};
 
-use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
+use crate::world::{DEPTH, HALF_WIDTH};
 use ocean::{Ocean, OceanNow};
 
 crate::choices! {

@@ -2,7 +2,7 @@
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
-use crate::scene::HALF_WIDTH;
+use crate::world::HALF_WIDTH;
 
 /// A camera circling a target point at a distance, looking at it.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -24,7 +24,6 @@ pub mod physics;
 pub mod presets;
 pub mod quality;
 pub mod render;
-pub mod scene;
 pub mod scenes;
 pub mod sea;
 pub mod sim;
@@ -34,5 +33,6 @@ pub mod timing;
 pub mod util;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+pub mod world;
 
 pub use demo::{DemoOptions, Key, WaterDemo};

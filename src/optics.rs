@@ -6,7 +6,7 @@
 //! the tests hold the GPU's pixels to them.
 
 use crate::param_spec::{slider, Control, ParamSpec};
-use crate::scene::IOR_WATER;
+use crate::world::IOR_WATER;
 
 crate::choices! {
     /// A Fresnel reflectance model. Each takes the cosine of the incidence angle; below the

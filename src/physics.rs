@@ -8,7 +8,7 @@
 use glam::{Mat3, Quat, Vec2, Vec3};
 
 use crate::param_spec::{Control, ParamSpec};
-use crate::scene;
+use crate::world;
 
 /// Gravitational acceleration (m/s²).
 pub const GRAVITY: f32 = 9.81;
@@ -219,7 +219,7 @@ impl Shape<'_> {
             }
         }
         let floating = 0.5 * (lo + hi);
-        let resting = floating - bottom(floating) - scene::DEPTH;
+        let resting = floating - bottom(floating) - world::DEPTH;
         floating.max(resting)
     }
 
@@ -311,8 +311,8 @@ pub struct Bounds {
 
 impl Bounds {
     pub fn pool() -> Self {
-        let w = scene::HALF_WIDTH;
-        Self { least: Vec3::new(-w, -scene::DEPTH, -w), most: Vec3::new(w, scene::RIM + 0.5, w) }
+        let w = world::HALF_WIDTH;
+        Self { least: Vec3::new(-w, -world::DEPTH, -w), most: Vec3::new(w, world::RIM + 0.5, w) }
     }
 
     /// Moves a body back inside the box, by its hull's support in each direction. Returns, per
@@ -474,7 +474,7 @@ mod tests {
             body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
         }
         let y = body.pose.position.y;
-        assert!((y - (-scene::DEPTH + 0.2)).abs() < 1e-3, "{y}");
+        assert!((y - (-world::DEPTH + 0.2)).abs() < 1e-3, "{y}");
         assert!((shape.floating_height(0.0) - y).abs() < 1e-3);
     }
 

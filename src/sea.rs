@@ -105,7 +105,7 @@ pub fn patch_wave_speed() -> f32 {
 /// [`PATCH_DROP_HEIGHT`] times more, so that the rings stand out of a sea whose waves are as
 /// steep as they.
 pub fn patch_scale() -> f32 {
-    PATCH_HALF_WIDTH / crate::scene::HALF_WIDTH
+    PATCH_HALF_WIDTH / crate::world::HALF_WIDTH
 }
 pub const PATCH_DROP_HEIGHT: f32 = 3.0;
 

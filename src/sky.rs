@@ -8,7 +8,7 @@
 //! zenith value times F(θ, γ) / F(0, θ_s), with coefficients linear in the turbidity T.
 
 use crate::param_spec::{slider, ParamSpec};
-use crate::scene::sun_direction;
+use crate::world::sun_direction;
 use glam::Vec3;
 use std::sync::OnceLock;
 
@@ -249,7 +249,7 @@ pub const EXPOSURE_PARAMS: &[ParamSpec] = &[ParamSpec {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::sun_direction;
+    use crate::world::sun_direction;
 
     #[test]
     fn the_noon_sky_is_blue_overhead_brighter_at_the_horizon_and_lights_a_fifth_of_the_sun() {

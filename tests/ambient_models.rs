@@ -5,7 +5,7 @@
 
 use wavepool::ambient::ocean::{lattice_k, Ocean, MAX_CHOPPINESS};
 use wavepool::ambient::{angular_frequency, AmbientModel, AmbientSettings, AmbientWaves, Spectrum, MAX_STEEPNESS};
-use wavepool::scene::{HALF_WIDTH, RIM};
+use wavepool::world::{HALF_WIDTH, RIM};
 
 fn settings(model: AmbientModel) -> AmbientSettings {
     AmbientSettings::default_for(model)

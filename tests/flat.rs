@@ -121,7 +121,7 @@ fn the_sphere_above_the_water_appears_where_the_mirrored_camera_puts_it() {
     // The sphere's mirror image through the mirrored camera: the centre mirrored in the
     // plane (y = 0: the sphere is out of the water and raises no level).
     let size = Vec2::new(W as f32, H as f32);
-    let predicted = |y: f32| above.camera.project(Vec3::new(0.1, -y, -0.1), size).expect("in front");
+    let predicted = |y: f32| above.camera().project(Vec3::new(0.1, -y, -0.1), size).expect("in front");
     // In the reflection texture: where the two spheres differ, the mirror images are, and
     // the lower sphere's image lies nearer the water line (above the higher one's on screen).
     let centroid = changed_centroid(&mirror_above, &mirror_higher, 16).expect("the reflection changed");

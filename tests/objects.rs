@@ -239,9 +239,9 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     let duck_px = demo.camera().project(demo.duck().unwrap().position, size).unwrap();
     // Where sunlight through the duck's waterline meets the floor.
     let sun = demo.sun();
-    let r = wavepool::scene::refracted_sun(sun);
+    let r = wavepool::world::refracted_sun(sun);
     let waterline = Vec3::new(0.25, 0.0, 0.0);
-    let floor = waterline + r * (-wavepool::scene::DEPTH / r.y);
+    let floor = waterline + r * (-wavepool::world::DEPTH / r.y);
     let shadow_px = demo.camera().project(floor, size).unwrap();
     let (yellow_with, yellow_without) = (yellow_pixels(&with, duck_px, 14), yellow_pixels(&without, duck_px, 14));
     let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
@@ -339,8 +339,8 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
             })
             .count()
     };
-    let r = wavepool::scene::refracted_sun(demo.sun());
-    let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::scene::DEPTH / r.y);
+    let r = wavepool::world::refracted_sun(demo.sun());
+    let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::world::DEPTH / r.y);
     let shadow_px = demo.camera().project(floor, size).unwrap();
     let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
@@ -407,7 +407,7 @@ fn the_water_round_a_bobbing_duck_has_no_ripples_at_the_grids_own_scale() {
     let h = heights(&demo);
     let n = demo.water().size() as usize;
     let duck = demo.body(BodyId::named("duck").unwrap()).pose.position;
-    let share = grid_scale_share(&h, n, wavepool::scene::HALF_WIDTH, Vec2::new(duck.x, duck.z), 0.3);
+    let share = grid_scale_share(&h, n, wavepool::world::HALF_WIDTH, Vec2::new(duck.x, duck.z), 0.3);
     println!("within 0.3 m of the duck ({n}² cells): grid-scale ripples {:.1} % of the waves (RMS)", share * 100.0);
     // Pushes taken at the cells' centres (before 2026-11-27, 7abb3de) left 4.6 %: the duck's waterline
     // crossing a cell at once rang at the grid's own scale, dark specks round it on screen.

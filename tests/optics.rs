@@ -12,8 +12,8 @@ use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::optics::{fresnel_table, reflectance, FresnelModel};
 use wavepool::params::{spec, ParamId};
 use wavepool::render::DebugChoice;
-use wavepool::scene::{HALF_WIDTH, IOR_WATER};
 use wavepool::sim::random_drops;
+use wavepool::world::{HALF_WIDTH, IOR_WATER};
 
 const W: u32 = 320;
 const H: u32 = 240;

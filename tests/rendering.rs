@@ -50,7 +50,7 @@ fn frame_is_not_uniform() {
     assert!(mean > 0.15 && mean < 0.9, "frame too dark or washed out: mean luma {mean}");
     // The water: a band of the pool's left half, clear of the sphere in the middle and of the walls.
     let size = Vec2::new(W as f32, H as f32);
-    let (w, x0, x1) = (wavepool::scene::HALF_WIDTH, -0.9, -0.55);
+    let (w, x0, x1) = (wavepool::world::HALF_WIDTH, -0.9, -0.55);
     let corners: Vec<Vec2> = [(x0 * w, -0.5 * w), (x0 * w, 0.5 * w), (x1 * w, -0.5 * w), (x1 * w, 0.5 * w)]
         .iter()
         .map(|&(x, z)| demo.camera().project(Vec3::new(x, 0.0, z), size).expect("the pool in view"))

@@ -26,15 +26,15 @@ fn sea(pitch: f32, distance: f32, fog: bool) -> WaterDemo {
     d.params.set(ParamId::SeaObjects, 0.0);
     d.params.set(ParamId::SeaFog, if fog { 1.0 } else { 0.0 });
     d.sync_scene();
-    (d.camera.yaw, d.camera.pitch, d.camera.distance) = (-25.0, pitch, distance);
-    d.camera.clamp();
+    (d.camera_mut().yaw, d.camera_mut().pitch, d.camera_mut().distance) = (-25.0, pitch, distance);
+    d.camera_mut().clamp();
     d
 }
 
 /// The row where the horizon (the sea plane's vanishing line) crosses the frame, with the eye
 /// looking `pitch` degrees down: tan(pitch) / tan(half the field) above the middle.
 fn horizon_row(d: &WaterDemo, height: u32) -> f32 {
-    let ndc = d.camera.pitch.to_radians().tan() / (d.camera.fov_y.to_radians() * 0.5).tan();
+    let ndc = d.camera().pitch.to_radians().tan() / (d.camera().fov_y.to_radians() * 0.5).tan();
     (1.0 - ndc) * 0.5 * height as f32
 }
 
@@ -64,7 +64,7 @@ fn the_horizon_has_no_seam_in_the_fog_at_any_height_and_shows_one_without() {
             let row = horizon_row(&d, SIZE.1);
             steps.push(horizon_step(&frame, row, 1));
         }
-        let eye = sea(pitch, distance, true).camera.eye().y;
+        let eye = sea(pitch, distance, true).camera().eye().y;
         println!("eye {eye:.1} m: step across the horizon {:.1}/255 with fog, {:.1}/255 without", steps[0], steps[1]);
         assert!(steps[0] < 6.0, "a seam at the horizon in the fog from {eye:.1} m: {:.1}/255", steps[0]);
         assert!(steps[1] >= 12.0, "without fog the sea's edge should show from {eye:.1} m: {:.1}/255", steps[1]);
@@ -208,7 +208,7 @@ fn a_click_on_the_sea_makes_ripples_that_run_out_at_the_speed_of_shallow_water()
     // deep water show in what they mirror: the glint's and the sky's light).
     let (mut clicked, mut calm) = (sea(25.0, 20.0, true), sea(25.0, 20.0, true));
     for d in [&mut clicked, &mut calm] {
-        d.params.set(ParamId::SunAzimuth, d.camera.yaw + 180.0);
+        d.params.set(ParamId::SunAzimuth, d.camera().yaw + 180.0);
         d.params.set(ParamId::SunElevation, 30.0);
     }
     render(&mut clicked, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
@@ -274,10 +274,10 @@ fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
 /// Where the eye's ray through pixel (x, y) of a `size` frame meets the mean sea plane (x, z in
 /// m), if it does.
 fn rest_point(d: &WaterDemo, size: (u32, u32), x: u32, y: u32) -> Option<Vec2> {
-    let inverse = d.camera.view_projection(size.0 as f32 / size.1 as f32).inverse();
+    let inverse = d.camera().view_projection(size.0 as f32 / size.1 as f32).inverse();
     let ndc = Vec2::new((x as f32 + 0.5) / size.0 as f32 * 2.0 - 1.0, 1.0 - (y as f32 + 0.5) / size.1 as f32 * 2.0);
     let far = inverse * Vec4::new(ndc.x, ndc.y, 1.0, 1.0);
-    let eye = d.camera.eye();
+    let eye = d.camera().eye();
     let dir = (far.truncate() / far.w - eye).normalize();
     (dir.y < 0.0).then(|| {
         let p = eye + dir * (eye.y / -dir.y);
@@ -305,9 +305,9 @@ fn sea_over(spot: Vec2, (pitch, distance): (f32, f32), shore: bool, setup: impl 
     d.params.set(ParamId::SeaObjects, 0.0);
     setup(&mut d);
     d.sync_scene();
-    (d.camera.pitch, d.camera.distance, d.camera.yaw) = (pitch, distance, 20.0);
-    d.camera.target = Vec3::new(spot.x, 0.0, spot.y);
-    d.camera.clamp();
+    (d.camera_mut().pitch, d.camera_mut().distance, d.camera_mut().yaw) = (pitch, distance, 20.0);
+    d.camera_mut().target = Vec3::new(spot.x, 0.0, spot.y);
+    d.camera_mut().clamp();
     d.set_sea_foam(false, false, shore);
     d
 }
@@ -442,7 +442,7 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     use wavepool::sim::cpu::CpuHeightField;
     use wavepool::sim::{Drop, SplitMix64, WaveSettings, MAX_HEIGHT};
     let steps = 100_000u32;
-    let scale = PATCH_HALF_WIDTH / wavepool::scene::HALF_WIDTH;
+    let scale = PATCH_HALF_WIDTH / wavepool::world::HALF_WIDTH;
     let mut patch = CpuHeightField::new(64, PATCH_HALF_WIDTH);
     let settings = WaveSettings { wave_speed: patch_wave_speed(), damping: PATCH_DAMPING, absorbing_walls: true };
     let mut rng = SplitMix64(29);

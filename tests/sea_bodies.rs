@@ -22,8 +22,8 @@ fn sea_with(objects: u32, distance: f32) -> WaterDemo {
     d.params.set(ParamId::SeaIsland, 0.0);
     d.params.set(ParamId::SeaObjects, objects as f32);
     d.sync_scene();
-    (d.camera.yaw, d.camera.pitch, d.camera.distance) = (-25.0, 20.0, distance);
-    d.camera.clamp();
+    (d.camera_mut().yaw, d.camera_mut().pitch, d.camera_mut().distance) = (-25.0, 20.0, distance);
+    d.camera_mut().clamp();
     d
 }
 
@@ -223,7 +223,7 @@ fn a_body_in_the_sea_can_be_dragged_across_it() {
     render(&mut d, size.0, size.1, 30, 1.0 / 60.0);
     d.set_viewport(size.0, size.1);
     let on_screen = |d: &WaterDemo, p: Vec3| {
-        let clip = d.camera.view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
+        let clip = d.camera().view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
         let ndc = clip.truncate() / clip.w;
         ((ndc.x + 1.0) * 0.5 * size.0 as f32, (1.0 - ndc.y) * 0.5 * size.1 as f32)
     };
@@ -249,12 +249,12 @@ fn the_water_mirrors_the_bodies_floating_on_it() {
     // Low over the water, where it mirrors much: the duck with and without its mirror image.
     let frame = |mirror: bool| {
         let mut d = sea_with(duck.bit(), 25.0);
-        (d.camera.pitch, d.camera.yaw) = (8.0, 160.0);
-        d.camera.clamp();
+        (d.camera_mut().pitch, d.camera_mut().yaw) = (8.0, 160.0);
+        d.camera_mut().clamp();
         d.set_sea_body_mirror(mirror);
         let frame = render(&mut d, size.0, size.1, 30, 1.0 / 60.0);
         let p = d.sea_body(duck).expect("the sea's bodies").pose.position;
-        let clip = d.camera.view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
+        let clip = d.camera().view_projection(size.0 as f32 / size.1 as f32) * p.extend(1.0);
         let ndc = clip.truncate() / clip.w;
         (frame, ((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5))
     };
@@ -291,9 +291,9 @@ fn a_body_over_the_shallows_shades_the_sand_under_it() {
         d.params.set(ParamId::Caustics, 0.0);
         d.params.set(ParamId::SunElevation, 45.0);
         d.sync_scene();
-        (d.camera.pitch, d.camera.yaw) = (75.0, 160.0);
-        d.camera.clamp();
-        d.params.set(ParamId::SunAzimuth, d.camera.yaw);
+        (d.camera_mut().pitch, d.camera_mut().yaw) = (75.0, 160.0);
+        d.camera_mut().clamp();
+        d.params.set(ParamId::SunAzimuth, d.camera().yaw);
         render(&mut d, size.0, size.1, 1, 1.0 / 60.0);
         d.set_sea_body(duck, Vec3::new(0.0, floating_height(&d, duck), 0.0), Vec3::ZERO);
         render(&mut d, size.0, size.1, 20, 1.0 / 60.0)

@@ -11,8 +11,8 @@
 //! in seconds.
 
 use super::{angular_frequency_in, AmbientSettings, Spectrum, G, LONGEST_WAVELENGTH};
-use crate::scene::{DEPTH, HALF_WIDTH};
 use crate::sim::SplitMix64;
+use crate::world::{DEPTH, HALF_WIDTH};
 
 /// A complex number (re, im) in f32, as the GPU holds it.
 pub type Complex = [f32; 2];

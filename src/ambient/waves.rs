@@ -3,8 +3,8 @@
 //! formulas `scene_surface.wgsl` evaluates).
 
 use super::{angular_frequency, phillips, AmbientSettings, Wave, GERSTNER_NEWTON_STEPS, MAX_AMBIENT_WAVES, SINE_WAVES};
-use crate::scene::HALF_WIDTH;
 use crate::sim::SplitMix64;
+use crate::world::HALF_WIDTH;
 
 /// The `sines` and `gerstner` models' travelling waves: wavenumbers evenly in log between the
 /// shortest and longest wavelengths, each direction within the spread around the wind, each

@@ -5,8 +5,8 @@ use glam::Vec3;
 use super::{BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
 use crate::physics::{Ellipsoid, Pose};
-use crate::scene::Sphere;
 use crate::util::unit_sphere;
+use crate::world::Sphere;
 
 /// Where the sphere starts (m).
 const START_CENTRE: Vec3 = Vec3::new(-0.35, -0.45, 0.3);

@@ -6,8 +6,8 @@ use glam::{Vec2, Vec3};
 use super::{BodyId, WaterDemo};
 use crate::camera::Pick;
 use crate::params::ParamId;
-use crate::scene;
 use crate::sim::Drop;
+use crate::world;
 
 /// Keys the core understands; shells map their key events to these.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -174,7 +174,7 @@ impl WaterDemo {
                 self.params.set(ParamId::Gravity, if on { 0.0 } else { 1.0 });
             }
             Key::L => {
-                let (azimuth, elevation) = scene::direction_angles(self.camera().back());
+                let (azimuth, elevation) = world::direction_angles(self.camera().back());
                 self.params.set(ParamId::SunAzimuth, azimuth);
                 self.params.set(ParamId::SunElevation, elevation);
             }

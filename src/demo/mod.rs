@@ -28,12 +28,12 @@ pub use crate::gpu::FrameContext;
 use crate::params::{ParamId, Params};
 use crate::quality::{ResolutionGovernor, StepGovernor};
 use crate::render::{RenderSettings, Renderer};
-use crate::scene;
 pub use crate::scenes::pool::DIVIDER_GRAB_PX;
 pub use crate::scenes::sea::sea_settings;
 use crate::scenes::{SceneFrame, SceneKind, Scenes};
 pub use crate::scenes::{Stage, STEPS_PER_SECOND, STEP_DT};
 use crate::sim::{FixedStep, HeightField, SimEngine};
+use crate::world;
 use input::Drag;
 pub use input::Key;
 pub use options::{DemoOptions, OptionSpec, SizeCaps, SOFTWARE_CAPS};
@@ -95,7 +95,7 @@ impl DemoBuild {
         }
         let Some(water) = self.water.take() else {
             let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
-            self.water = Some(HeightField::new_on(device, options.sim_size, scene::HALF_WIDTH, engine));
+            self.water = Some(HeightField::new_on(device, options.sim_size, world::HALF_WIDTH, engine));
             return None;
         };
         let settings = RenderSettings {

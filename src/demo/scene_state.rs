@@ -7,10 +7,10 @@ use super::{BodyId, WaterDemo};
 use crate::ambient::gpu_ocean::GpuOcean;
 use crate::ambient::AmbientWaves;
 use crate::physics::{FloatingBody, Pose};
-use crate::scene::Sphere;
 use crate::scenes::pool::PoolScene;
 use crate::sea::SeaSettings;
 use crate::sim::{HeightField, WaterLevel};
+use crate::world::Sphere;
 
 /// The pool's state.
 impl WaterDemo {

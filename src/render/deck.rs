@@ -5,10 +5,10 @@
 use glam::{Mat4, Vec2, Vec3};
 
 use crate::param_spec::{Control, ParamSpec};
-use crate::scene;
 use crate::sim::MAX_HEIGHT;
 use crate::sky::Daylight;
 use crate::util::push_triangle;
+use crate::world;
 
 /// How far the deck reaches from the pool's centre (m): past any frame the camera can show.
 pub const DECK_EXTENT: f32 = 400.0;
@@ -147,7 +147,7 @@ fn shows_sky(view_proj: Mat4, inverse: Mat4, eye: Vec3, ndc: Vec2) -> bool {
     if dir.y >= 0.0 {
         return true;
     }
-    let hit = eye + dir * ((scene::RIM - eye.y) / dir.y);
+    let hit = eye + dir * ((world::RIM - eye.y) / dir.y);
     hit.x.abs().max(hit.z.abs()) > DECK_EXTENT || view_proj.project_point3(hit).z > 1.0
 }
 
@@ -157,7 +157,7 @@ const SKY_ROWS_MARGIN: u32 = 4;
 /// The deck as four quads around the opening at the rim's height, facing up, with the pool
 /// mesh's vertex layout (position, normal).
 pub fn deck_ring() -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, e, y) = (scene::HALF_WIDTH, DECK_EXTENT, scene::RIM);
+    let (w, e, y) = (world::HALF_WIDTH, DECK_EXTENT, world::RIM);
     let inner = [Vec3::new(-w, y, -w), Vec3::new(w, y, -w), Vec3::new(w, y, w), Vec3::new(-w, y, w)];
     let outer = [Vec3::new(-e, y, -e), Vec3::new(e, y, -e), Vec3::new(e, y, e), Vec3::new(-e, y, e)];
     let positions: Vec<Vec3> = inner.iter().chain(outer.iter()).copied().collect();
@@ -207,7 +207,7 @@ mod tests {
         let views = [(-25.0, 34.0, 3.4), (-25.0, 2.0, 3.4), (60.0, 5.0, 12.0), (150.0, 60.0, 12.0), (10.0, 1.0, 1.5)];
         for (yaw, pitch, distance) in views {
             let mut camera = OrbitCamera { yaw, pitch, distance, ..OrbitCamera::default() };
-            camera.keep_eye_above(scene::RIM + EYE_CLEARANCE);
+            camera.keep_eye_above(world::RIM + EYE_CLEARANCE);
             let view_proj = camera.view_projection(size.0 as f32 / size.1 as f32);
             let rows = sky_rows(view_proj, camera.eye(), size);
             // Every pixel of every other column (sky_rows samples nine).
@@ -239,7 +239,7 @@ mod tests {
     fn the_water_never_falls_below_the_dry_band_the_deck_shows_the_pool_in() {
         use crate::ambient::{params, AmbientModel, AmbientSettings, AmbientWaves};
         let spec = |name: &str| params::PARAMS.iter().find(|p| p.name == name).expect("an ambient parameter");
-        let w = scene::HALF_WIDTH;
+        let w = world::HALF_WIDTH;
         let mut deepest = 0.0f32;
         for model in [AmbientModel::Sines, AmbientModel::Modes, AmbientModel::Gerstner, AmbientModel::Fft] {
             for wind in [spec("wind_speed").min(), spec("wind_speed").max()] {

@@ -7,8 +7,8 @@ use std::ops::Range;
 use glam::Vec3;
 use wgpu::util::DeviceExt;
 
-use crate::scene;
 use crate::util::push_triangle;
+use crate::world;
 
 /// A triangle mesh in GPU buffers.
 pub struct Mesh {
@@ -155,13 +155,13 @@ pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
 /// The pool's floor and four walls up to the rim, as (position, inward normal), wound to
 /// face inwards so that walls between the eye and the pool are culled.
 pub fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
-    pool_walls(-scene::DEPTH, true)
+    pool_walls(-world::DEPTH, true)
 }
 
 /// The pool's four walls from `bottom` (m, under the rest level) up to the rim, and its floor
 /// if `floor`, laid out as [`pool_box`]'s.
 pub fn pool_walls(bottom: f32, floor: bool) -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, d, r) = (scene::HALF_WIDTH, -bottom, scene::RIM);
+    let (w, d, r) = (world::HALF_WIDTH, -bottom, world::RIM);
     let faces: [(Vec3, [Vec3; 4]); 5] = [
         (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
         (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),

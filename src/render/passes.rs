@@ -21,7 +21,7 @@ pub(super) struct Picture<'a> {
 impl Renderer {
     /// Draws sky, pool, sphere and water into `target` (of `size` pixels) at the view's
     /// render scale, the split view's divider and the debug view over them.
-    pub fn encode_scene(
+    pub fn encode_pool(
         &mut self,
         device: &wgpu::Device,
         encoder: &mut wgpu::CommandEncoder,

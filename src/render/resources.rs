@@ -199,7 +199,7 @@ impl Renderer {
     }
 
     /// Copies the foam amounts into the foam map the surface reads (remade, and rebound, when
-    /// the foam's grid changes size). Call before [`Renderer::encode_scene`] when foam is on.
+    /// the foam's grid changes size). Call before [`Renderer::encode_pool`] when foam is on.
     pub fn upload_foam(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, foam: &Foam) {
         let size = foam.size();
         if self.scene_textures.foam.0.width() != size {

@@ -42,7 +42,7 @@ pub fn scene_prelude(features: Features, target: wgpu::TextureFormat) -> String 
 pub fn scene_prelude_in(features: Features, target: wgpu::TextureFormat, seen: &str) -> String {
     let numbers = format!(
         "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
-        crate::scene::IOR_WATER,
+        crate::world::IOR_WATER,
         !target.is_srgb()
     );
     [

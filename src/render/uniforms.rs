@@ -5,8 +5,8 @@ use super::{flat, flat_shown, Renderer, View};
 use crate::ambient::MAX_AMBIENT_WAVES;
 use crate::bodies::{BodyId, UNIFORM_SLOTS};
 use crate::optics;
-use crate::scene;
 use crate::sim::HeightField;
+use crate::world;
 
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
@@ -46,7 +46,7 @@ fn bodies_uniform(view: &View) -> [[f32; 4]; UNIFORM_SLOTS] {
 
 impl Renderer {
     /// Writes this frame's uniforms and repaints the sky if the sun moved.
-    /// Call once per submission, before [`Renderer::encode_caustics`] and [`Renderer::encode_scene`].
+    /// Call once per submission, before [`Renderer::encode_caustics`] and [`Renderer::encode_pool`].
     pub fn prepare(
         &mut self,
         queue: &wgpu::Queue,
@@ -59,7 +59,7 @@ impl Renderer {
         if self.horizon.0 != daylight.sun {
             self.horizon = (daylight.sun, super::deck::horizon_fit(&daylight));
         }
-        let refracted = scene::refracted_sun(view.sun);
+        let refracted = world::refracted_sun(view.sun);
         let n = water.size() as f32;
         let u = SceneUniforms {
             view_proj: view.view_proj.to_cols_array_2d(),
@@ -67,7 +67,7 @@ impl Renderer {
             eye: view.eye.extend(1.0).to_array(),
             sun: [view.sun.x, view.sun.y, view.sun.z, 0.0],
             refracted_sun: refracted.extend(0.0).to_array(),
-            pool: [scene::HALF_WIDTH, scene::DEPTH, scene::RIM, view.tile_gloss],
+            pool: [world::HALF_WIDTH, world::DEPTH, world::RIM, view.tile_gloss],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
             output: [0.0, view.debug.map_or(0.0, |d| d.texture as u32 as f32), 0.0, 0.0],
             optics: {

@@ -224,5 +224,5 @@ pub fn common_view(sh: Shared<'_>, camera: &OrbitCamera) -> View {
 
 /// Unit vector towards the sun of the parameters.
 pub fn sun(params: &Params) -> Vec3 {
-    crate::scene::sun_direction(params.get(ParamId::SunAzimuth), params.get(ParamId::SunElevation))
+    crate::world::sun_direction(params.get(ParamId::SunAzimuth), params.get(ParamId::SunElevation))
 }

@@ -9,9 +9,9 @@ use crate::ambient::AmbientModel;
 use crate::bodies::{bump_apart, ring, Body, BodyId, BodyView, AMBIENT_RING_RADIUS, KINDS, PROBES_PER_BODY};
 use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
-use crate::scene::{self, Sphere};
 use crate::scenes::{Shared, STEP_DT};
 use crate::sim::{self, BodyCoupling, HullMove};
+use crate::world::{self, Sphere};
 
 impl PoolScene {
     /// Every body at its start, at rest, not yet felt by the water (its submerged volume
@@ -91,7 +91,7 @@ impl PoolScene {
     /// there now (flat at the rest level before any probes have arrived).
     fn water_planes(&mut self, sh: Shared<'_>) -> Vec<WaterPlane> {
         let frame = self.water.frames() + 1;
-        let level = self.submerged_volume(sh.params) / sim::pool_area(scene::HALF_WIDTH);
+        let level = self.submerged_volume(sh.params) / sim::pool_area(world::HALF_WIDTH);
         let mut planes = vec![WaterPlane::flat(level); self.bodies.len()];
         let t = sh.sim_time();
         // The ambient surface now, made once for all bodies' probes.
@@ -201,7 +201,7 @@ impl PoolScene {
             let radius = (id.kind().probe_ring)(&|name: &str| sh.value(name));
             probes.extend(ring(Vec2::new(pose.position.x, pose.position.z), radius));
         }
-        let rest_level = self.submerged_volume(sh.params) / sim::pool_area(scene::HALF_WIDTH);
+        let rest_level = self.submerged_volume(sh.params) / sim::pool_area(world::HALF_WIDTH);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
     }
 }

@@ -15,8 +15,8 @@ use crate::camera::OrbitCamera;
 use crate::params::{ParamId, Params};
 use crate::physics::Pose;
 use crate::render::{DebugTexture, RenderMode, Renderer};
-use crate::scene;
 use crate::sim::{Drop, HeightField, WaveSettings};
+use crate::world;
 
 /// How near (pixels) to the split view's divider a press grabs it.
 pub const DIVIDER_GRAB_PX: f32 = 12.0;
@@ -127,7 +127,7 @@ impl super::Scene for PoolScene {
     fn follow_params(&mut self, params: &Params) {
         if Self::on_deck(params) {
             // The camera stays above the paving.
-            self.camera.keep_eye_above(scene::RIM + crate::render::EYE_CLEARANCE);
+            self.camera.keep_eye_above(world::RIM + crate::render::EYE_CLEARANCE);
         }
         self.refresh_ambient(params);
         self.water.set_foam(Self::foam(params));
@@ -179,7 +179,7 @@ impl super::Scene for PoolScene {
         renderer.prepare(queue, cx.encoder, &view, &self.water);
         renderer.encode_caustics(device, cx.encoder, &view, &self.water);
         mark(cx.encoder, Stage::AfterMaps);
-        renderer.encode_scene(device, cx.encoder, cx.target, cx.size, &view, &self.water);
+        renderer.encode_pool(device, cx.encoder, cx.target, cx.size, &view, &self.water);
         mark(cx.encoder, Stage::AfterShading);
     }
 
@@ -212,7 +212,7 @@ impl super::Scene for PoolScene {
     }
 
     fn drop_area(&self) -> (f32, &'static str) {
-        (scene::HALF_WIDTH, "the pool")
+        (world::HALF_WIDTH, "the pool")
     }
 
     fn add_drop(&mut self, drop: Drop) {

@@ -7,9 +7,9 @@ use crate::params::{ParamId, Params};
 use crate::render::flat::FlatView;
 use crate::render::RenderMode;
 use crate::render::{AmbientView, DebugChoice, DebugView, View};
-use crate::scene;
 use crate::scenes::{common_view, Shared};
 use crate::sim;
+use crate::world;
 
 impl PoolScene {
     /// Remakes the ambient waves if their parameters changed.
@@ -65,7 +65,7 @@ impl PoolScene {
             resolution: p.get(ParamId::FlatResolution),
             caustics: p.choice(ParamId::FlatCaustics),
             soft_edge: p.get(ParamId::FlatSoftEdge),
-            plane: self.submerged_volume(p) / sim::pool_area(scene::HALF_WIDTH),
+            plane: self.submerged_volume(p) / sim::pool_area(world::HALF_WIDTH),
         })
     }
 

@@ -1,4 +1,4 @@
-//! The physical scene, in metres: the pool's shape, the sphere and the sun.
+//! The physical world, in metres: the pool's shape, the sphere and the sun.
 //! The water rests at y = 0; the pool spans x, z in [-HALF_WIDTH, HALF_WIDTH].
 
 use glam::Vec3;
