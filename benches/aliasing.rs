@@ -24,7 +24,7 @@ use wavepool::params::ParamId;
 use wavepool::presets;
 use wavepool::scenes::SceneKind;
 use wavepool::sim::random_drops;
-use wavepool::world::HALF_WIDTH;
+use wavepool::world::PoolShape;
 
 const SIZE: (u32, u32) = (800, 600);
 /// The reference is drawn this many times larger on each side.
@@ -145,7 +145,7 @@ fn waterline_band(demo: &WaterDemo) -> Vec<bool> {
 /// pool's views only; none in the sea).
 fn pool_water(demo: &WaterDemo) -> Vec<bool> {
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
-    let w = HALF_WIDTH;
+    let w = PoolShape::CLASSIC.half_width;
     let corners: Vec<Vec2> = [(-w, -w), (w, -w), (w, w), (-w, w)]
         .iter()
         .filter_map(|&(x, z)| demo.camera().project(Vec3::new(x, 0.0, z), size))

@@ -55,7 +55,7 @@ use std::time::Duration;
 
 use serde_json::{json, Value};
 use support::picture::{self, Image, PictureStats};
-use support::{canvas_rect_js, Browser, Graphics, Rect, Shot, StaticServer};
+use support::{canvas_rect_js, Browser, Graphics, Rect, StaticServer};
 
 /// The viewport (CSS px) and the canvas size both pages are measured at: the classic's canvas
 /// in that viewport.
@@ -265,7 +265,7 @@ async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &s
     let (width, height, rgba) = crop(&shot, rect);
     let file = dir.join(format!("{page}-{measurement}.png"));
     save_png(&file, width, height, &rgba);
-    let img = Image::new(width, height, &rgba);
+    let img = Image::new(width, height, rgba);
     let mut stats = PictureStats::of(&img, img.full());
     if measurement == "caustics" {
         stats = stats.with_caustic_contrast(&img, picture::Rect::centred_square(width, height, FLOOR_SQUARE));
@@ -280,7 +280,7 @@ async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &s
 }
 
 /// The pixels of `r` (clipped to the shot): width, height, RGBA8.
-fn crop(shot: &Shot, r: Rect) -> (u32, u32, Vec<u8>) {
+fn crop(shot: &Image, r: Rect) -> (u32, u32, Vec<u8>) {
     let (x, y) = (r.x.min(shot.width), r.y.min(shot.height));
     let (w, h) = (r.w.min(shot.width - x), r.h.min(shot.height - y));
     let mut rgba = Vec::with_capacity(w as usize * h as usize * 4);

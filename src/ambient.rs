@@ -19,7 +19,7 @@ mod waves;
 use waves::{gerstner, sharp_sine, standing, SHARP_SINE_MEAN};
 
 use crate::sim::SplitMix64;
-use crate::world::{DEPTH, HALF_WIDTH};
+use crate::world::PoolShape;
 use ocean::{Ocean, OceanNow};
 
 crate::choices! {
@@ -78,14 +78,9 @@ pub const G: f32 = 9.81;
 /// gravity in the dispersion relation.
 pub const CAPILLARY_WAVENUMBER: f32 = 370.0;
 
-/// Angular frequency (rad/s) of a water wave of wavenumber `k` (rad/m) on water `DEPTH` deep:
-/// ω² = g k tanh(k D) (1 + (k/k_m)²), gravity and surface tension. (Beware the widely copied
-/// `k * k / KM * KM`: that is k², not (k/k_m)².)
-pub fn angular_frequency(k: f32) -> f32 {
-    angular_frequency_in(k, DEPTH)
-}
-
-/// The same on water `depth` deep (m).
+/// Angular frequency (rad/s) of a water wave of wavenumber `k` (rad/m) on water `depth` (m)
+/// deep: ω² = g k tanh(k D) (1 + (k/k_m)²), gravity and surface tension. (Beware the widely
+/// copied `k * k / KM * KM`: that is k², not (k/k_m)².)
 pub fn angular_frequency_in(k: f32, depth: f32) -> f32 {
     let ratio = k / CAPILLARY_WAVENUMBER;
     // tanh(9) = 1 − 3e-8; the cap keeps the shader's copy finite where tanh overflows.
@@ -112,6 +107,9 @@ pub struct AmbientSettings {
     pub fft_size: usize,
     /// The FFT ocean's choppiness λ (see [`Ocean::choppiness`]).
     pub choppiness: f32,
+    /// The pool the waves are in: the basin's modes fit its width, the FFT ocean tiles it,
+    /// every wave runs at the speed its depth gives.
+    pub basin: PoolShape,
 }
 
 impl AmbientSettings {
@@ -128,6 +126,7 @@ impl AmbientSettings {
             spectrum: Spectrum::from(params::SPECTRUM.default),
             fft_size: params::FFT_SIZE.default as usize,
             choppiness: params::CHOPPINESS.default,
+            basin: PoolShape::CLASSIC,
         }
     }
 }
@@ -154,6 +153,8 @@ pub struct AmbientWaves {
     pub gerstner_c: f32,
     /// The FFT ocean's spectrum (model `Fft`).
     pub ocean: Option<Ocean>,
+    /// The pool the waves are in.
+    pub basin: PoolShape,
 }
 
 /// The ambient surface at one moment, to sample at many points (the floating bodies' probes,
@@ -195,12 +196,18 @@ impl AmbientWaves {
             AmbientModel::Fft => {
                 let size = settings.fft_size.clamp(8, 256).next_power_of_two();
                 let ocean = Some(Ocean::new(settings, size));
-                return Self { model: settings.model, waves: Vec::new(), gerstner_c: 0.0, ocean };
+                return Self {
+                    model: settings.model,
+                    waves: Vec::new(),
+                    gerstner_c: 0.0,
+                    ocean,
+                    basin: settings.basin,
+                };
             }
             AmbientModel::Sines | AmbientModel::Gerstner => waves::travelling_waves(settings, &mut rng, k_min, k_max),
             AmbientModel::Modes => waves::basin_modes(settings, &mut rng, k_min, k_max),
         };
-        let mut set = Self { model: settings.model, waves, gerstner_c: 0.0, ocean: None };
+        let mut set = Self { model: settings.model, waves, gerstner_c: 0.0, ocean: None, basin: settings.basin };
         // Scale to the significant height, measured over the pool and a few instants.
         let hs = set.measured_significant_height();
         if hs > 0.0 {
@@ -233,8 +240,9 @@ impl AmbientWaves {
         for t in [0.0, 0.37, 1.1, 2.9] {
             for i in 0..40 {
                 for j in 0..40 {
-                    let x = (i as f32 + 0.5) / 40.0 * 2.0 * HALF_WIDTH - HALF_WIDTH;
-                    let z = (j as f32 + 0.5) / 40.0 * 2.0 * HALF_WIDTH - HALF_WIDTH;
+                    let w = self.basin.half_width;
+                    let x = (i as f32 + 0.5) / 40.0 * 2.0 * w - w;
+                    let z = (j as f32 + 0.5) / 40.0 * 2.0 * w - w;
                     let h = self.sample(x, z, t)[0] as f64;
                     sum += h;
                     sq += h * h;
@@ -281,7 +289,9 @@ impl AmbientWaves {
         let mut out = [0.0f32; 3];
         for (w, &p) in self.waves.iter().zip(phases) {
             let [h, dx, dz] = match self.model {
-                AmbientModel::Modes => standing(w.kx, w.kz, w.amplitude, p, x, z),
+                AmbientModel::Modes => {
+                    standing(w.kx, w.kz, w.amplitude, p, x + self.basin.half_width, z + self.basin.half_width)
+                }
                 _ => sharp_sine(w.kx, w.kz, w.amplitude, p, x, z),
             };
             out = [out[0] + h, out[1] + dx, out[2] + dz];
@@ -310,7 +320,7 @@ impl AmbientWaves {
     pub fn spectrum_image(&self) -> Vec<f32> {
         let n = SPECTRUM_IMAGE_SIZE;
         let mut amplitude = vec![0.0f32; n * n];
-        let unit = std::f32::consts::PI / HALF_WIDTH;
+        let unit = std::f32::consts::PI / self.basin.half_width;
         let mut add = |kx: f32, kz: f32, a: f32| {
             let (i, j) = ((kx / unit).round() as i32 + n as i32 / 2, (kz / unit).round() as i32 + n as i32 / 2);
             if (0..n as i32).contains(&i) && (0..n as i32).contains(&j) {
@@ -321,7 +331,7 @@ impl AmbientWaves {
         if let Some(ocean) = &self.ocean {
             let m = ocean.size;
             for (idx, h) in ocean.h0.iter().enumerate() {
-                let (kx, kz) = (ocean::lattice_k(idx % m, m), ocean::lattice_k(idx / m, m));
+                let (kx, kz) = (ocean::lattice_k(idx % m, m, self.basin), ocean::lattice_k(idx / m, m, self.basin));
                 add(kx, kz, (h[0] * h[0] + h[1] * h[1]).sqrt());
             }
         } else {
@@ -374,6 +384,11 @@ pub fn wgsl_constants() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// On the classic pool's water.
+    fn angular_frequency(k: f32) -> f32 {
+        angular_frequency_in(k, PoolShape::CLASSIC.depth)
+    }
 
     fn settings(model: AmbientModel) -> AmbientSettings {
         AmbientSettings::default_for(model)
@@ -459,10 +474,10 @@ mod tests {
         for i in 0..=20 {
             let along = i as f32 / 10.0 - 1.0;
             for t in [0.0, 0.7, 1.9] {
-                let [_, dx, _] = modes.sample(HALF_WIDTH, along, t);
-                let [_, dx2, _] = modes.sample(-HALF_WIDTH, along, t);
-                let [_, _, dz] = modes.sample(along, HALF_WIDTH, t);
-                let [_, _, dz2] = modes.sample(along, -HALF_WIDTH, t);
+                let [_, dx, _] = modes.sample(PoolShape::CLASSIC.half_width, along, t);
+                let [_, dx2, _] = modes.sample(-PoolShape::CLASSIC.half_width, along, t);
+                let [_, _, dz] = modes.sample(along, PoolShape::CLASSIC.half_width, t);
+                let [_, _, dz2] = modes.sample(along, -PoolShape::CLASSIC.half_width, t);
                 steepest_at_wall = steepest_at_wall.max(dx.abs()).max(dx2.abs()).max(dz.abs()).max(dz2.abs());
             }
         }

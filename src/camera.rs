@@ -2,8 +2,6 @@
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
-use crate::world::HALF_WIDTH;
-
 /// A camera circling a target point at a distance, looking at it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OrbitCamera {
@@ -63,7 +61,7 @@ pub struct Ray {
 /// What lies under a screen point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Pick {
-    /// The water surface (at rest level) at pool coordinates x, z (m).
+    /// The water surface (at rest level) at x, z (m).
     Water {
         x: f32,
         z: f32,
@@ -150,14 +148,9 @@ impl OrbitCamera {
         Ray { origin: self.eye(), dir: (far - near).normalize() }
     }
 
-    /// What is under pixel (x, y): the water surface inside the pool, or nothing (the
-    /// bodies are picked first, by `WaterDemo::pick_body`).
-    pub fn pick(&self, pixel: Vec2, size: Vec2) -> Pick {
-        self.pick_within(pixel, size, HALF_WIDTH)
-    }
-
     /// What lies under a screen point of water `half_width` (m) each way from the origin (the
-    /// pool's, or the open sea's patch of simulated water).
+    /// pool's, or the open sea's patch of simulated water): the water surface at its rest level
+    /// there, or nothing (a scene picks its bodies first).
     pub fn pick_within(&self, pixel: Vec2, size: Vec2, half_width: f32) -> Pick {
         let ray = self.ray(pixel, size);
         let water_t = if ray.dir.y.abs() > 1e-6 { -ray.origin.y / ray.dir.y } else { f32::INFINITY };
@@ -210,12 +203,12 @@ mod tests {
     fn pick_finds_the_water_and_nothing() {
         let cam = OrbitCamera { yaw: 0.0, pitch: 60.0, distance: 4.0, target: Vec3::ZERO, ..Default::default() };
         let size = Vec2::new(800.0, 600.0);
-        match cam.pick(Vec2::new(400.0, 300.0), size) {
+        match cam.pick_within(Vec2::new(400.0, 300.0), size, 1.0) {
             Pick::Water { x, z } => assert!(x.abs() < 1e-3 && z.abs() < 1e-3),
             other => panic!("expected water, got {other:?}"),
         }
         // The top-left corner looks past the pool into the sky.
-        assert_eq!(cam.pick(Vec2::new(0.0, 0.0), size), Pick::Nothing);
+        assert_eq!(cam.pick_within(Vec2::new(0.0, 0.0), size, 1.0), Pick::Nothing);
     }
 
     #[test]

@@ -155,17 +155,9 @@ pub fn table() -> &'static [Param] {
 }
 
 /// Parameters that matter only for some values of another (a model's own settings): the
-/// controls show them only then. (parameter, the one it depends on, the choices it needs)
+/// controls show them only then. (parameter, the one it depends on, the choices it needs.) The
+/// scenes each parameter is shown in are the scenes' own (`scenes::shown_when`).
 pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
-    (ParamId::SeaWind, ParamId::Scene, &["sea"]),
-    (ParamId::SeaWindDirection, ParamId::Scene, &["sea"]),
-    (ParamId::SeaWaveHeight, ParamId::Scene, &["sea"]),
-    (ParamId::SeaChoppiness, ParamId::Scene, &["sea"]),
-    (ParamId::SeaFog, ParamId::Scene, &["sea"]),
-    (ParamId::SeaFogDistance, ParamId::Scene, &["sea"]),
-    (ParamId::SeaIsland, ParamId::Scene, &["sea"]),
-    (ParamId::SeaObjects, ParamId::Scene, &["sea"]),
-    (ParamId::SeaGrid, ParamId::Scene, &["sea"]),
     (ParamId::WindSpeed, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
     (ParamId::WindDirection, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
     (ParamId::WaveHeight, ParamId::Ambient, &["sines", "modes", "gerstner", "fft"]),
@@ -206,26 +198,17 @@ impl ParamId {
     }
 }
 
-/// What `name`'s control is shown for: each condition a parameter and the values (of its
-/// choices) that show it, all of them to hold; none for a control always shown. A model's own
-/// settings need their model ([`SHOWN_WHEN`]); the pool's, which the sea does not read
-/// ([`crate::sea::USES_OF_THE_POOL`]), need the pool.
-pub fn shown_when(name: &str) -> Vec<(&'static str, Vec<f32>)> {
-    let condition = |on: ParamId, names: &[&str]| {
-        let values = names.iter().map(|n| on.spec().parse(n).expect("a choice of the parameter")).collect();
-        (on.spec().name, values)
-    };
-    let mut conditions: Vec<_> = SHOWN_WHEN
+/// The conditions of [`SHOWN_WHEN`] on `name`'s control: each a parameter and the values (of
+/// its choices) that show it.
+pub fn model_conditions(name: &str) -> Vec<(&'static str, Vec<f32>)> {
+    SHOWN_WHEN
         .iter()
         .filter(|(id, _, _)| id.spec().name == name)
-        .map(|&(_, on, names)| condition(on, names))
-        .collect();
-    let the_sea_s = crate::sea::SCENE_PARAMS.iter().chain(crate::sea::PARAMS).any(|p| p.name == name);
-    let read_by_the_sea = crate::sea::USES_OF_THE_POOL.contains(&name) || bodies::kind_params().any(|n| n == name);
-    if !the_sea_s && !read_by_the_sea {
-        conditions.push(condition(ParamId::Scene, &["pool"]));
-    }
-    conditions
+        .map(|&(_, on, names)| {
+            let values = names.iter().map(|n| on.spec().parse(n).expect("a choice of the parameter")).collect();
+            (on.spec().name, values)
+        })
+        .collect()
 }
 
 pub fn spec(id: ParamId) -> &'static ParamSpec {
@@ -328,22 +311,6 @@ impl Params {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_controls_show_in_the_sea_only_what_the_sea_reads() {
-        for name in crate::sea::USES_OF_THE_POOL {
-            assert!(find(name).is_some(), "the sea reads {name}, which is not a parameter");
-        }
-        let scene_of = |name: &str| shown_when(name).into_iter().find(|(on, _)| *on == "scene").map(|(_, v)| v);
-        assert_eq!(scene_of("wave_speed"), Some(vec![0.0]), "the pool's own");
-        assert_eq!(scene_of("sea_wind"), Some(vec![1.0]), "the sea's own");
-        assert_eq!(scene_of("sun_elevation"), None, "read by both");
-        assert_eq!(scene_of("scene"), None);
-        assert_eq!(scene_of("objects"), Some(vec![0.0]), "the pool's bodies");
-        assert_eq!(scene_of("sea_objects"), Some(vec![1.0]), "the sea's bodies");
-        assert_eq!(scene_of("duck_density"), None, "a kind's own, read by both");
-        assert_eq!(shown_when("wind_speed").len(), 2, "an ambient model's own setting, in the pool");
-    }
 
     #[test]
     fn choices_snap_to_the_nearest_value_and_show_their_names() {

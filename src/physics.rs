@@ -201,7 +201,8 @@ impl Shape<'_> {
 
     /// Height of the frame's origin (m) at which the body, upright, floats at rest on calm
     /// water at `level`: its submerged volume equals its mass over the water's density
-    /// (bisection). A body denser than water gives the height at which it rests on the floor.
+    /// (bisection). A body denser than water gives the height at which it rests on the classic
+    /// pool's floor (where the kinds' table entries start bodies).
     pub fn floating_height(&self, level: f32) -> f32 {
         let target = self.mass() / WATER_DENSITY;
         let water = WaterPlane::flat(level);
@@ -219,7 +220,7 @@ impl Shape<'_> {
             }
         }
         let floating = 0.5 * (lo + hi);
-        let resting = floating - bottom(floating) - world::DEPTH;
+        let resting = floating - bottom(floating) - world::PoolShape::CLASSIC.depth;
         floating.max(resting)
     }
 
@@ -310,9 +311,10 @@ pub struct Bounds {
 }
 
 impl Bounds {
-    pub fn pool() -> Self {
-        let w = world::HALF_WIDTH;
-        Self { least: Vec3::new(-w, -world::DEPTH, -w), most: Vec3::new(w, world::RIM + 0.5, w) }
+    /// The box of `pool`, up to half a metre over its rim.
+    pub fn pool(pool: world::PoolShape) -> Self {
+        let w = pool.half_width;
+        Self { least: Vec3::new(-w, -pool.depth, -w), most: Vec3::new(w, pool.rim + 0.5, w) }
     }
 
     /// Moves a body back inside the box, by its hull's support in each direction. Returns, per
@@ -342,9 +344,9 @@ impl Bounds {
     }
 }
 
-/// Moves a body back inside the pool box ([`Bounds::pool`]).
-pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid]) -> [bool; 3] {
-    Bounds::pool().keep(pose, hull)
+/// Moves a body back inside `pool`'s box ([`Bounds::pool`]).
+pub fn keep_in_pool(pose: &mut Pose, hull: &[Ellipsoid], pool: world::PoolShape) -> [bool; 3] {
+    Bounds::pool(pool).keep(pose, hull)
 }
 
 /// Pushes two bodies, approximated by balls of the given radii (m) around their positions,
@@ -449,7 +451,7 @@ mod tests {
             let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density, scale: 1.0 };
             let mut body = FloatingBody::at(Pose::at(Vec3::new(0.0, 0.5, 0.0)));
             for _ in 0..120 * 20 {
-                body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
+                body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool(world::PoolShape::CLASSIC));
             }
             let expected = shape.floating_height(0.0);
             // The cap formula: pi h^2 (3r - h) / 3 = mass / water density, h = r - y.
@@ -471,10 +473,10 @@ mod tests {
         let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: 1500.0, scale: 1.0 };
         let mut body = FloatingBody::at(Pose::at(Vec3::new(0.2, 0.0, 0.0)));
         for _ in 0..120 * 10 {
-            body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool());
+            body.step(&shape, true, &WaterPlane::flat(0.0), 1.0 / 120.0, &Bounds::pool(world::PoolShape::CLASSIC));
         }
         let y = body.pose.position.y;
-        assert!((y - (-world::DEPTH + 0.2)).abs() < 1e-3, "{y}");
+        assert!((y - (-world::PoolShape::CLASSIC.depth + 0.2)).abs() < 1e-3, "{y}");
         assert!((shape.floating_height(0.0) - y).abs() < 1e-3);
     }
 
@@ -487,7 +489,7 @@ mod tests {
         // Water rising towards +x: the body slides towards -x.
         let water = WaterPlane { level: 0.0, normal: Vec3::new(-0.05, 1.0, 0.0).normalize() };
         for _ in 0..60 {
-            body.step(&shape, true, &water, 1.0 / 120.0, &Bounds::pool());
+            body.step(&shape, true, &water, 1.0 / 120.0, &Bounds::pool(world::PoolShape::CLASSIC));
         }
         assert!(body.velocity.x < -0.01, "{}", body.velocity);
     }

@@ -1,6 +1,6 @@
 //! The open sea (`scene` = sea): water to the horizon under the same sky as the pool, its waves
 //! the FFT cascades of [`crate::ambient::cascades`], drawn on a grid projected from the screen
-//! onto the sea plane (render/sea.rs), with a height fog that takes water and sky to one colour
+//! onto the sea plane (scenes/sea/render/mod.rs), with a height fog that takes water and sky to one colour
 //! at the horizon. This file holds the scene's choice, its parameters and its camera's limits.
 //! Lengths in metres, angles in degrees.
 
@@ -105,7 +105,7 @@ pub fn patch_wave_speed() -> f32 {
 /// [`PATCH_DROP_HEIGHT`] times more, so that the rings stand out of a sea whose waves are as
 /// steep as they.
 pub fn patch_scale() -> f32 {
-    PATCH_HALF_WIDTH / crate::world::HALF_WIDTH
+    PATCH_HALF_WIDTH / crate::world::PoolShape::CLASSIC.half_width
 }
 pub const PATCH_DROP_HEIGHT: f32 = 3.0;
 
@@ -297,27 +297,6 @@ pub const SEA_GRID: ParamSpec = ParamSpec {
     default: 0.0,
     help: "Outline the cells of the grid the sea is drawn on: it is laid over the screen and projected onto the water, so its cells stay about the same size on screen, small near you and long towards the horizon.",
 };
-
-/// The pool's parameters the sea reads too (the controls show the others only in the pool):
-/// the caustics (on the shallows' floor), the clicks' drops, the sun and the exposure, the optics of reflection and highlight, the
-/// bodies' gravity, the running and the frame's quality. (The kinds of body's own sizes and
-/// densities are read by both as well: `params::shown_when`.)
-pub const USES_OF_THE_POOL: &[&str] = &[
-    "caustics",
-    "drop_radius",
-    "drop_strength",
-    "sun_azimuth",
-    "sun_elevation",
-    "sun_size",
-    "exposure",
-    "fresnel",
-    "specular",
-    "shininess",
-    "gravity",
-    "paused",
-    "quality",
-    "frame_budget",
-];
 
 /// Which variant of the sea's shaders a frame needs: a feature left out costs nothing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -33,7 +33,7 @@ pub use random::{random_drops, SplitMix64};
 /// A field's width against the pool's: its sponge and bounds grow with it, so a field of any
 /// width (the open sea's patch) behaves as the pool would at that size; exactly 1 for the pool.
 pub fn scale_of(half_width: f32) -> f32 {
-    half_width / crate::world::HALF_WIDTH
+    half_width / crate::world::PoolShape::CLASSIC.half_width
 }
 
 /// Format of the state textures: 32-bit floats, read with `textureLoad` only (no filtering).

@@ -190,7 +190,7 @@ impl Viewer {
             // a group with none of them shown not at all.
             let params = &self.demo.params;
             let shown = |spec: &&params::Param| {
-                params::shown_when(spec.name).iter().all(|(on, values)| {
+                wavepool::scenes::shown_when(spec.name).iter().all(|(on, values)| {
                     values.contains(&params.get_by_name(on).expect("a parameter of the table"))
                 })
             };

@@ -1,14 +1,31 @@
-//! The physical world, in metres: the pool's shape, the sphere and the sun.
-//! The water rests at y = 0; the pool spans x, z in [-HALF_WIDTH, HALF_WIDTH].
+//! The physical world, in metres: a pool's shape, the sphere and the sun.
+//! The water rests at y = 0; a pool spans x, z in [-half_width, half_width].
 
 use glam::Vec3;
 
-/// Half the pool's side (m): the pool is 2 m x 2 m.
-pub const HALF_WIDTH: f32 = 1.0;
-/// Depth of the floor below the rest level (m).
-pub const DEPTH: f32 = 1.0;
-/// Height of the rim above the rest level (m).
-pub const RIM: f32 = 1.0 / 6.0;
+/// A pool's box (m): half its side, the floor's depth below the rest level and the rim's
+/// height above it. A value of the scene that has the pool, handed to what simulates, draws
+/// and floats bodies in it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoolShape {
+    pub half_width: f32,
+    pub depth: f32,
+    pub rim: f32,
+}
+
+/// The classic pool.
+impl Default for PoolShape {
+    fn default() -> Self {
+        Self::CLASSIC
+    }
+}
+
+impl PoolShape {
+    /// The demo's pool: 2 m x 2 m, 1 m deep, its rim a sixth of a metre above the water. It is
+    /// also the unit the simulation's sponge and bounds are written for (`sim::scale_of`) and
+    /// the pool the bodies' table entries start in.
+    pub const CLASSIC: PoolShape = PoolShape { half_width: 1.0, depth: 1.0, rim: 1.0 / 6.0 };
+}
 /// Refractive index of water (air is 1).
 pub const IOR_WATER: f32 = 1.333;
 
@@ -48,13 +65,13 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// Keeps the sphere inside the pool box and not above the rim by more than its size.
-    pub fn clamp_to_pool(&mut self) {
+    /// Keeps the sphere inside `pool`'s box and not above its rim by more than its size.
+    pub fn clamp_to_pool(&mut self, pool: PoolShape) {
         let r = self.radius;
-        let lim = HALF_WIDTH - r;
+        let lim = pool.half_width - r;
         self.centre.x = self.centre.x.clamp(-lim, lim);
         self.centre.z = self.centre.z.clamp(-lim, lim);
-        self.centre.y = self.centre.y.clamp(-DEPTH + r, RIM + 2.0 * r);
+        self.centre.y = self.centre.y.clamp(-pool.depth + r, pool.rim + 2.0 * r);
     }
 }
 

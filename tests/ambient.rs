@@ -47,7 +47,7 @@ fn ambient_waves_move_the_picture_with_simulated_time_only() {
         slow.params.set(ParamId::Paused, 1.0);
         let paused_a = render(&mut slow, W, H, 1, 1.0 / 30.0);
         let paused_b = render(&mut slow, W, H, 20, 1.0 / 30.0);
-        let all = common::Rect::ALL;
+        let all = common::Area::ALL;
         let (vs_calm, rates, moving, paused) = (
             at_30.changed_fraction(&still, all, 8),
             at_30.mean_abs_diff(&at_144, all).max(at_60.mean_abs_diff(&at_144, all)),
@@ -151,7 +151,7 @@ fn the_height_and_normals_views_show_the_ambient_waves() {
         };
         let (calm, waves) = (frame(0.0), frame(model));
         // The view is the centred square (H pixels); compare inside it.
-        let square = common::Rect(0.5 - 0.5 * H as f32 / W as f32 + 0.02, 0.02, H as f32 / W as f32 - 0.04, 0.96);
+        let square = common::Area(0.5 - 0.5 * H as f32 / W as f32 + 0.02, 0.02, H as f32 / W as f32 - 0.04, 0.96);
         let changed = waves.changed_fraction(&calm, square, 8);
         println!("{name} view: {:.1} % of the pool's square changed by ambient model {model}", changed * 100.0);
         assert!(changed > 0.3, "{name} view does not show the ambient waves ({:.1} %)", changed * 100.0);
@@ -223,7 +223,7 @@ fn the_gpu_fft_matches_the_cpu_reference() {
 /// without a click.
 #[test]
 fn each_model_draws_its_own_picture_and_moves_the_caustics() {
-    let all = common::Rect::ALL;
+    let all = common::Area::ALL;
     let mut frames = Vec::new();
     for (model, name) in MODELS {
         let mut demo = pool_with(model);
@@ -268,7 +268,7 @@ fn without_float_targets_the_cpu_fft_draws_the_same_ocean() {
         demo.params.set(ParamId::DebugInset, 0.0);
         render(&mut demo, W, H, 20, 1.0 / 60.0)
     };
-    let all = common::Rect::ALL;
+    let all = common::Area::ALL;
     let (gpu, cpu, calm) = (frame(true, 4.0), frame(false, 4.0), frame(false, 0.0));
     let (same, shows) = (gpu.mean_abs_diff(&cpu, all), cpu.changed_fraction(&calm, all, 8));
     println!(
@@ -291,7 +291,7 @@ fn the_spectrum_view_shows_the_waves_downwind() {
         let mut points = Vec::new();
         for y in 0..H {
             for x in 0..H {
-                let [r, g, b] = frame.pixel(x, y);
+                let [r, g, b] = frame.unit_rgb(x, y);
                 if b.max(r) > 0.15 && (b - r).abs() > 0.1 && (r - g).abs() + (g - b).abs() > 0.1 {
                     points.push((x as f32 / H as f32 - 0.5, y as f32 / H as f32 - 0.5));
                 }
@@ -367,7 +367,7 @@ fn the_choppy_ocean_draws_its_own_picture() {
         demo.params.set(ParamId::Choppiness, choppiness);
         render(&mut demo, W, H, frames, 1.0 / 60.0)
     };
-    let all = common::Rect::ALL;
+    let all = common::Area::ALL;
     let (plain, choppy, later) = (frame(0.0, 30), frame(3.0, 30), frame(3.0, 45));
     let mut still = pool_with(0.0);
     let calm = render(&mut still, W, H, 30, 1.0 / 60.0);

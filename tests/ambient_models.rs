@@ -4,8 +4,11 @@
 //! finite and below the rim at every parameter's extreme.
 
 use wavepool::ambient::ocean::{lattice_k, Ocean, MAX_CHOPPINESS};
-use wavepool::ambient::{angular_frequency, AmbientModel, AmbientSettings, AmbientWaves, Spectrum, MAX_STEEPNESS};
-use wavepool::world::{HALF_WIDTH, RIM};
+use wavepool::ambient::{angular_frequency_in, AmbientModel, AmbientSettings, AmbientWaves, Spectrum, MAX_STEEPNESS};
+use wavepool::world::PoolShape;
+
+const HALF_WIDTH: f32 = PoolShape::CLASSIC.half_width;
+const RIM: f32 = PoolShape::CLASSIC.rim;
 
 fn settings(model: AmbientModel) -> AmbientSettings {
     AmbientSettings::default_for(model)
@@ -27,12 +30,17 @@ fn a_single_sine_and_a_single_fft_wave_travel_at_the_speed_the_dispersion_relati
     let mut worst = 0.0f32;
     for wavelength in [0.25f32, 0.5, 1.0] {
         let k = std::f32::consts::TAU / wavelength;
-        let expected = angular_frequency(k) / k;
+        let expected = angular_frequency_in(k, PoolShape::CLASSIC.depth) / k;
         // A sharpened sine along +x.
         let sines = AmbientWaves::new(&settings(AmbientModel::Sines));
         let mut one = sines.clone();
-        one.waves =
-            vec![wavepool::ambient::Wave { kx: k, kz: 0.0, amplitude: 0.01, omega: angular_frequency(k), phase: 0.3 }];
+        one.waves = vec![wavepool::ambient::Wave {
+            kx: k,
+            kz: 0.0,
+            amplitude: 0.01,
+            omega: angular_frequency_in(k, PoolShape::CLASSIC.depth),
+            phase: 0.3,
+        }];
         let dt = 0.1 * (wavelength / expected) as f64; // a tenth of a period
         let sine = measured_phase_speed(|x, t| one.sample(x, 0.1, t)[0], dt, 0.5 * wavelength);
         // One lattice wave of the FFT ocean: k = (π/W) m along x, m = 2W/λ.
@@ -40,9 +48,10 @@ fn a_single_sine_and_a_single_fft_wave_travel_at_the_speed_the_dispersion_relati
         let m = (2.0 * HALF_WIDTH / wavelength).round() as usize;
         let mut h0 = vec![[0.0f32; 4]; n * n];
         h0[m] = [0.004, 0.001, 0.0, 0.0];
-        let ocean = Ocean { size: n, band: wavepool::ambient::ocean::Band::pool(n), h0, choppiness: 0.0 };
-        let k_lattice = lattice_k(m, n);
-        let expected_lattice = angular_frequency(k_lattice) / k_lattice;
+        let ocean =
+            Ocean { size: n, band: wavepool::ambient::ocean::Band::pool(n, PoolShape::CLASSIC), h0, choppiness: 0.0 };
+        let k_lattice = lattice_k(m, n, PoolShape::CLASSIC);
+        let expected_lattice = angular_frequency_in(k_lattice, PoolShape::CLASSIC.depth) / k_lattice;
         let fft = measured_phase_speed(|x, t| ocean.sample(x, 0.2, t)[0], dt, 0.5 * wavelength);
         // And the same from the FFT's grid: the crest's position between texels (sub-texel
         // by the phase of the fundamental along a row).
@@ -179,6 +188,7 @@ fn every_model_stays_finite_and_below_the_rim_at_every_extreme() {
                         spectrum,
                         fft_size,
                         choppiness,
+                        basin: PoolShape::CLASSIC,
                     };
                     let waves = AmbientWaves::new(&s);
                     for i in 0..300 {

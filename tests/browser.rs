@@ -12,7 +12,7 @@ mod support;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{canvas_rect_js, changed_fraction, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
+use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// Opens the page, waits for the first frame and checks the backend and that the canvas
 /// shows a picture (not a flat fill).
@@ -466,7 +466,7 @@ async fn objects_float(graphics: Graphics, backend: &str) {
     assert!(y.abs() < 0.05, "{backend}: the duck is not floating at the surface: {stats}");
     let p = browser.js(&format!("return window.demo.project({}, {}, {});", duck[0], duck[1], duck[2])).await;
     let (x, y) = (p["x"].as_f64().unwrap(), p["y"].as_f64().unwrap());
-    let yellow = |shot: &support::Shot| {
+    let yellow = |shot: &support::Image| {
         shot.region(Rect::around(x, y, 14))
             .iter()
             .filter(|p| p[0] > 180 && p[1] > 115 && p[2] < 90 && p[0] as i32 - p[2] as i32 > 120)
@@ -654,7 +654,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     browser.wait_frames(3).await;
     let after_plot = browser.js(plot).await;
     let after = browser.screenshot().await;
-    let changed = changed_fraction(&before, &after, rect, 8);
+    let changed = before.changed_fraction(&after, rect, 8);
     println!("{backend}: plot {before_plot} -> {after_plot}; {:.1} % of the canvas changed", changed * 100.0);
     assert_eq!(before_plot["model"], "0");
     // Plot area: x from 30 over 180 units for 0-90°, y from 8 over 100 units for 1-0.
@@ -671,7 +671,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
         browser.js(&format!("window.demo.set('{name}', {value}); return true;")).await;
         browser.wait_frames(3).await;
         let after = browser.screenshot().await;
-        let changed = changed_fraction(&before, &after, rect, 8);
+        let changed = before.changed_fraction(&after, rect, 8);
         let state = browser
             .js("const e = document.querySelector('#pool'); return { error: e.dataset.error || null, fps: window.demo.stats().fps };")
             .await;
@@ -689,7 +689,7 @@ async fn fresnel_models_in_the_page(graphics: Graphics, backend: &str) {
     let c = browser.screenshot().await;
     browser.wait_frames(3).await;
     let d = browser.screenshot().await;
-    let (moving, paused) = (changed_fraction(&a, &b, rect, 8), changed_fraction(&c, &d, rect, 8));
+    let (moving, paused) = (a.changed_fraction(&b, rect, 8), c.changed_fraction(&d, rect, 8));
     println!(
         "{backend}: ambient sines: {:.1} % changed in 0.5 s of water with no input; paused: {:.2} %",
         moving * 100.0,
@@ -811,8 +811,8 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
             .js("return { error: document.querySelector('#pool').dataset.error || null, model: window.demo.get('ambient'),
                           fps: window.demo.stats().fps };")
             .await;
-        let vs_previous = changed_fraction(&previous, &a, rect, 8);
-        let (paused_motion, moving) = (changed_fraction(&a, &still, rect, 8), changed_fraction(&a, &b, rect, 8));
+        let vs_previous = previous.changed_fraction(&a, rect, 8);
+        let (paused_motion, moving) = (a.changed_fraction(&still, rect, 8), a.changed_fraction(&b, rect, 8));
         println!(
             "{backend}: {name}: {:.1} % of the canvas differs from the model before (both paused; {:.2} % moves \
              while paused), {:.1} % moved in 0.5 s of water; settings shown [{}]; {state}",
@@ -838,7 +838,7 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
         .js("return { error: document.querySelector('#pool').dataset.error || null, size: window.demo.get('fft_size'),
                       spectrum: window.demo.get('spectrum') };")
         .await;
-    let changed = changed_fraction(&previous, &after, rect, 8);
+    let changed = previous.changed_fraction(&after, rect, 8);
     println!("{backend}: fft 128² JONSWAP: {:.1} % changed; {state}", changed * 100.0);
     assert!(state["error"].is_null() && state["size"] == 128.0 && state["spectrum"] == 1.0, "{backend}: {state}");
     assert!(changed > 0.01);
@@ -851,7 +851,7 @@ async fn ambient_models_in_the_page(graphics: Graphics, backend: &str) {
     browser.wait_sim_time(0.5).await;
     let later = browser.screenshot().await;
     // A surface lost to NaN shows the bare pool, which does not move.
-    let (changed, moving) = (changed_fraction(&before, &choppy, rect, 8), changed_fraction(&choppy, &later, rect, 8));
+    let (changed, moving) = (before.changed_fraction(&choppy, rect, 8), choppy.changed_fraction(&later, rect, 8));
     println!(
         "{backend}: choppiness 3: {:.1} % changed, {:.1} % moved in 0.5 s of water; {state}",
         changed * 100.0,
@@ -899,11 +899,11 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
     // Halves, leaving out the divider's grip in the middle.
     let (left, right) = rect.halves(8);
     let (left_diff, right_diff, modes) = (
-        changed_fraction(&split, &flat, left, 16),
-        changed_fraction(&split, &traced, right, 16),
-        changed_fraction(&flat, &traced, rect, 16),
+        split.changed_fraction(&flat, left, 16),
+        split.changed_fraction(&traced, right, 16),
+        flat.changed_fraction(&traced, rect, 16),
     );
-    let history = changed_fraction(&split_again, &split, rect, 16);
+    let history = split_again.changed_fraction(&split, rect, 16);
     let state = browser
         .js("return { error: document.querySelector('#pool').dataset.error || null, note: window.demo.stats().flatNote,
                       splitShown: !document.querySelector('#pool').shadowRoot.querySelector('[name=split]').closest('.row').hidden };")

@@ -15,7 +15,7 @@ mod support;
 use std::time::Duration;
 
 use serde_json::{json, Value};
-use support::{canvas_rect_js, changed_fraction, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
+use support::{canvas_rect_js, serial, Browser, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// Clicks the centre of an element of the demo's shadow root (real pointer events).
 async fn click_in_demo(browser: &Browser, selector: &str) {
@@ -78,7 +78,7 @@ async fn with_reduced_motion_the_demo_starts_still_until_play_is_pressed() {
     tokio::time::sleep(Duration::from_secs(2)).await; // a span in which running water would move
     let second = browser.screenshot().await;
     let after = browser.js("return { s: window.demo.stats(), paused: window.demo.get('paused') };").await;
-    let still = changed_fraction(&first, &second, rect, 4);
+    let still = first.changed_fraction(&second, rect, 4);
     println!(
         "reduced motion: paused {}, simulated {} s, {:.2}% of the canvas changed over 2 s, sphere {} -> {}",
         after["paused"],

@@ -15,9 +15,7 @@ mod support;
 use std::time::Duration;
 
 use serde_json::Value;
-use support::{
-    canvas_rect_js, changed_fraction, serial, Browser, Engine, Graphics, Rect, StaticServer, MESSAGE_JS, READY,
-};
+use support::{canvas_rect_js, serial, Browser, Engine, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// The demo page without objects (calm water until the drag), at a fixed scale.
 const CALM: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03";
@@ -71,7 +69,7 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
         w: ((from.0 - to.0).abs() + 80.0) as u32,
         h: ((from.1 - to.1).abs() + 80.0) as u32,
     };
-    let (still, changed) = (changed_fraction(&idle, &before, band, 12), changed_fraction(&before, &after, band, 12));
+    let (still, changed) = (idle.changed_fraction(&before, band, 12), before.changed_fraction(&after, band, 12));
     let stats = browser.js("return window.demo.stats();").await;
     assert!(rose, "{engine:?}: the drag raised no waves: {stats}");
     assert!(still < 0.01, "{engine:?}: {:.1}% of the band changed with no input", still * 100.0);
@@ -87,7 +85,7 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     let split = browser.screenshot().await;
     let (left, right) = rect.halves(8);
     let (flat_changed, traced_changed) =
-        (changed_fraction(&traced, &split, left, 16), changed_fraction(&traced, &split, right, 16));
+        (traced.changed_fraction(&split, left, 16), traced.changed_fraction(&split, right, 16));
     assert!(
         flat_changed > 0.03,
         "{engine:?}: the split view's flat half looks ray-traced ({:.1}%)",

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::{render, Frame, Rect};
+use common::{render, Area, Image};
 use glam::{Vec2, Vec3};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::params::ParamId;
@@ -47,10 +47,10 @@ fn sphere_over_flat_water(centre: Vec3) -> WaterDemo {
 }
 
 /// The flat water's reflection texture as a frame.
-fn reflection(demo: &WaterDemo) -> Frame {
+fn reflection(demo: &WaterDemo) -> Image {
     let g = common::gpu();
     let texture = demo.flat_reflection_texture().expect("flat water was drawn");
-    Frame {
+    Image {
         width: texture.width(),
         height: texture.height(),
         rgba: wavepool::gpu::read_texture(&g.device, &g.queue, texture),
@@ -58,9 +58,9 @@ fn reflection(demo: &WaterDemo) -> Frame {
 }
 
 /// Centroid (pixels) of the pixels where two frames differ by more than `threshold`.
-fn changed_centroid(a: &Frame, b: &Frame, threshold: u8) -> Option<Vec2> {
+fn changed_centroid(a: &Image, b: &Image, threshold: u8) -> Option<Vec2> {
     let (mut sum, mut count) = (Vec2::ZERO, 0.0);
-    for (x, y) in Rect::ALL.pixels(a) {
+    for (x, y) in Area::ALL.pixels(a) {
         let i = ((y * a.width + x) * 4) as usize;
         if (0..3).any(|k| a.rgba[i + k].abs_diff(b.rgba[i + k]) > threshold) {
             sum += Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
@@ -87,11 +87,11 @@ fn split_at_half_equals_flat_on_the_left_and_raytraced_on_the_right() {
         render(&mut demo, W, H, 1, 1.0 / 60.0)
     };
     let (flat, split, traced, flat_again) = (frame(1.0), frame(2.0), frame(0.0), frame(1.0));
-    let history = flat_again.changed_fraction(&flat, Rect::ALL, 0);
+    let history = flat_again.changed_fraction(&flat, Area::ALL, 0);
     // The divider is drawn over column W/2 (and its grip 5 px either side).
-    let (left, right) = (Rect(0.0, 0.0, 0.48, 1.0), Rect(0.52, 0.0, 1.0, 1.0));
+    let (left, right) = (Area(0.0, 0.0, 0.48, 1.0), Area(0.52, 0.0, 1.0, 1.0));
     let (left_diff, right_diff) = (split.changed_fraction(&flat, left, 0), split.changed_fraction(&traced, right, 0));
-    let modes_differ = flat.changed_fraction(&traced, Rect::ALL, 8);
+    let modes_differ = flat.changed_fraction(&traced, Area::ALL, 8);
     println!(
         "split vs flat on the left: {:.4} % of pixels differ; vs ray-traced on the right: {:.4} %; flat vs ray-traced \
          anywhere: {:.1} %; flat after the other modes vs flat from the start: {:.4} %",
@@ -105,7 +105,7 @@ fn split_at_half_equals_flat_on_the_left_and_raytraced_on_the_right() {
     assert_eq!(right_diff, 0.0, "the split frame's right half is not the ray-traced frame");
     assert!(modes_differ > 0.05, "flat and ray-traced water look alike ({:.1} %)", modes_differ * 100.0);
     // The divider is there: a bright line down the middle.
-    let line = split.mean_colour(Rect(0.5 - 1.0 / W as f32, 0.0, 0.5 + 1.0 / W as f32, 1.0));
+    let line = split.mean_colour(Area(0.5 - 1.0 / W as f32, 0.0, 0.5 + 1.0 / W as f32, 1.0));
     assert!(line.iter().all(|&c| c > 0.85), "no divider at the middle: {line:?}");
 }
 
@@ -145,9 +145,9 @@ fn the_sphere_above_the_water_appears_where_the_mirrored_camera_puts_it() {
     let without = render(&mut empty, W, H, 2, 1.0 / 60.0);
     // A faint change (over 2/255): at this grazing angle the pale sphere's image is blended in by
     // a reflectance of about 0.1 over the bright horizon it hides.
-    let at_image = frame.changed_fraction(&without, Rect::around(p35.x, p35.y, &frame, 0.01), 2);
-    let beside = frame.changed_fraction(&without, Rect::around(p35.x + 0.12 * W as f32, p35.y, &frame, 0.01), 8);
-    let moved = frame.changed_fraction(&frame_higher, Rect::around(p45.x, p45.y, &frame, 0.01), 8);
+    let at_image = frame.changed_fraction(&without, Area::around(p35.x, p35.y, &frame, 0.01), 2);
+    let beside = frame.changed_fraction(&without, Area::around(p35.x + 0.12 * W as f32, p35.y, &frame, 0.01), 8);
+    let moved = frame.changed_fraction(&frame_higher, Area::around(p45.x, p45.y, &frame, 0.01), 8);
     println!(
         "at the predicted image {:.0} % of pixels differ from the empty pool, beside it {:.0} %; the higher sphere's \
          image changes {:.0} % at its own predicted pixel",
@@ -170,8 +170,8 @@ fn geometry_under_the_water_never_appears_in_the_reflection() {
     // change; two places above it: it does.
     let (deep, deeper) = (setup(-0.5), setup(-0.65));
     let (high, higher) = (setup(0.35), setup(0.5));
-    let under = deep.changed_fraction(&deeper, Rect::ALL, 3);
-    let over = high.changed_fraction(&higher, Rect::ALL, 3);
+    let under = deep.changed_fraction(&deeper, Area::ALL, 3);
+    let over = high.changed_fraction(&higher, Area::ALL, 3);
     println!(
         "moving the sphere 15 cm under the water changes {:.4} % of the reflection texture; above it {:.2} %",
         under * 100.0,
@@ -186,7 +186,7 @@ fn dudv_distortion_moves_on_calm_water_and_stops_when_paused() {
     let mut demo = pool(0.0);
     demo.params.set(ParamId::RenderMode, 1.0);
     demo.params.set(ParamId::DudvSpeed, 0.05);
-    let water = Rect(0.25, 0.3, 0.75, 0.8);
+    let water = Area(0.25, 0.3, 0.75, 0.8);
     let a = render(&mut demo, W, H, 10, 1.0 / 60.0);
     let b = render(&mut demo, W, H, 30, 1.0 / 60.0);
     let level = demo.water_level().map_or(0.0, |l| l.max_abs);
@@ -233,9 +233,9 @@ fn ripples_distortion_follows_a_click() {
     demo.pointer_up();
     let after = render(&mut demo, W, H, 20, 1.0 / 60.0);
     let (still, near, away) = (
-        before.changed_fraction(&calm, Rect::ALL, 0),
-        after.changed_fraction(&calm, Rect::around(click.x, click.y, &after, 0.05), 8),
-        after.changed_fraction(&calm, Rect::around(far.x, far.y, &after, 0.05), 8),
+        before.changed_fraction(&calm, Area::ALL, 0),
+        after.changed_fraction(&calm, Area::around(click.x, click.y, &after, 0.05), 8),
+        after.changed_fraction(&calm, Area::around(far.x, far.y, &after, 0.05), 8),
     );
     println!(
         "calm: {:.4} % changed; 1/3 s after a click {:.1} % changed around it, {:.2} % across the pool",
@@ -290,7 +290,7 @@ fn under_the_water_flat_mode_draws_the_ray_traced_picture_and_says_why() {
     demo.params.set(ParamId::RenderMode, 1.0);
     let flat = render(&mut demo, W, H, 1, 1.0 / 60.0);
     let note = demo.flat_water_note();
-    let diff = flat.changed_fraction(&traced, Rect::ALL, 0);
+    let diff = flat.changed_fraction(&traced, Area::ALL, 0);
     println!("under water: flat vs ray-traced {:.4} % of pixels differ; note: {note:?}", diff * 100.0);
     assert_eq!(diff, 0.0);
     assert!(note.is_some_and(|n| n.contains("above-water")), "no note says why");

@@ -90,7 +90,7 @@ fn foam_shows_white_on_the_surface_and_off_nothing_is_integrated() {
         let (w, h) = (2 * W, 2 * H);
         let frame = render(&mut demo, w, h, 8, 1.0 / 60.0);
         let count = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).filter(|&(x, y)| {
-            let p = frame.pixel(x, y);
+            let p = frame.unit_rgb(x, y);
             p[0] > 0.85 && p[1] > 0.85 && p[2] > 0.85
         });
         (count.count(), demo.water().foam().is_some())

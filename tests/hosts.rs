@@ -359,7 +359,7 @@ fn contrast(a: [u8; 3], b: [u8; 3]) -> f64 {
 /// The share of points along the middle of the canvas's four edges where the focus ring (its
 /// light band 1 px in, its dark band 4 px in, in `focused`) stands out at 3:1 or more from the
 /// picture next to it (9 px in, in `plain`, the same frame unfocused).
-fn ring_contrast_share(focused: &support::Shot, plain: &support::Shot, r: &Rect) -> f64 {
+fn ring_contrast_share(focused: &support::Image, plain: &support::Image, r: &Rect) -> f64 {
     let (x0, y0, x1, y1) = (r.x, r.y, r.x + r.w - 1, r.y + r.h - 1);
     let mut points = Vec::new();
     for i in 1..20 {

@@ -26,7 +26,10 @@ fn dragging_on_the_water_makes_ripples_along_the_stroke() {
     let size = Vec2::new(SIZE.0 as f32, SIZE.1 as f32);
     let a = demo.camera().project(Vec3::new(-0.5, 0.0, 0.0), size).unwrap();
     let b = demo.camera().project(Vec3::new(0.5, 0.0, 0.0), size).unwrap();
-    assert!(demo.pick_body(a).is_none() && matches!(demo.camera().pick(a, size), Pick::Water { .. }));
+    assert!(
+        demo.pick_body(a).is_none()
+            && matches!(demo.camera().pick_within(a, size, demo.drop_area().0), Pick::Water { .. })
+    );
     let yaw = demo.camera().yaw;
     demo.pointer_down(a.x, a.y);
     demo.pointer_move(b.x, b.y);

@@ -197,7 +197,7 @@ fn a_dropped_duck_floats_upright_at_its_waterline() {
 
 /// A `w` x `h` frame from nearly straight above, the sun from the side at 50°, with `objects`
 /// held still where `place` puts them.
-fn top_view(objects: f32, w: u32, h: u32, place: impl Fn(&mut WaterDemo)) -> (WaterDemo, common::Frame) {
+fn top_view(objects: f32, w: u32, h: u32, place: impl Fn(&mut WaterDemo)) -> (WaterDemo, common::Image) {
     let mut demo = demo_with(objects, true);
     demo.params.set(ParamId::Gravity, 0.0);
     demo.params.set(ParamId::SunAzimuth, 90.0);
@@ -211,11 +211,11 @@ fn top_view(objects: f32, w: u32, h: u32, place: impl Fn(&mut WaterDemo)) -> (Wa
 }
 
 /// Counts duck-yellow pixels in a square around pixel `p`.
-fn yellow_pixels(frame: &common::Frame, p: Vec2, half: u32) -> u32 {
+fn yellow_pixels(frame: &common::Image, p: Vec2, half: u32) -> u32 {
     let mut count = 0;
     for y in (p.y as u32).saturating_sub(half)..(p.y as u32 + half).min(frame.height) {
         for x in (p.x as u32).saturating_sub(half)..(p.x as u32 + half).min(frame.width) {
-            let [r, g, b] = frame.pixel(x, y);
+            let [r, g, b] = frame.unit_rgb(x, y);
             if r > 0.7 && g > 0.45 && b < 0.35 && r - b > 0.5 {
                 count += 1;
             }
@@ -241,10 +241,10 @@ fn a_frame_shows_the_duck_and_its_shadow_on_the_floor() {
     let sun = demo.sun();
     let r = wavepool::world::refracted_sun(sun);
     let waterline = Vec3::new(0.25, 0.0, 0.0);
-    let floor = waterline + r * (-wavepool::world::DEPTH / r.y);
+    let floor = waterline + r * (-wavepool::world::PoolShape::CLASSIC.depth / r.y);
     let shadow_px = demo.camera().project(floor, size).unwrap();
     let (yellow_with, yellow_without) = (yellow_pixels(&with, duck_px, 14), yellow_pixels(&without, duck_px, 14));
-    let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
+    let rect = common::Area::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
     println!(
         "duck at pixel {duck_px}: {yellow_with} yellow pixels (none: {yellow_without}); floor at {floor} (pixel \
@@ -274,7 +274,7 @@ fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
     let (mut warm, mut sky_lit) = (0u32, 0u32);
     for y in (centre.y as u32).saturating_sub(60)..(centre.y as u32 + 30).min(h) {
         for x in (centre.x as u32).saturating_sub(70)..(centre.x as u32 + 70).min(w) {
-            let [r, g, b] = frame.pixel(x, y);
+            let [r, g, b] = frame.unit_rgb(x, y);
             if r > 0.35 && r > g && r - b > 0.15 {
                 warm += 1;
                 if b > 0.3 * r {
@@ -328,21 +328,21 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     let (_, without) = shot(NONE);
     let size = Vec2::new(w as f32, h as f32);
     let ball_px = demo.camera().project(demo.body(ball).pose.position, size).unwrap();
-    let gores = |frame: &common::Frame| {
-        let rect = common::Rect::around(ball_px.x, ball_px.y, frame, 0.08);
+    let gores = |frame: &common::Image| {
+        let rect = common::Area::around(ball_px.x, ball_px.y, frame, 0.08);
         rect.pixels(frame)
             .into_iter()
             .filter(|&(x, y)| {
-                let [r, g, b] = frame.pixel(x, y);
+                let [r, g, b] = frame.unit_rgb(x, y);
                 // The red and orange gores (water and tiles are never this warm).
                 r > 0.55 && b < 0.3 && r - b > 0.4 && r > g
             })
             .count()
     };
     let r = wavepool::world::refracted_sun(demo.sun());
-    let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::world::DEPTH / r.y);
+    let floor = Vec3::new(0.2, 0.0, 0.0) + r * (-wavepool::world::PoolShape::CLASSIC.depth / r.y);
     let shadow_px = demo.camera().project(floor, size).unwrap();
-    let rect = common::Rect::around(shadow_px.x, shadow_px.y, &with, 0.015);
+    let rect = common::Area::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
     let (seen, unseen) = (gores(&with), gores(&without));
     println!("ball at pixel {ball_px}: {seen} red or orange pixels (none: {unseen}); floor luma {shadow:.3} with it, {lit:.3} without");
@@ -407,7 +407,7 @@ fn the_water_round_a_bobbing_duck_has_no_ripples_at_the_grids_own_scale() {
     let h = heights(&demo);
     let n = demo.water().size() as usize;
     let duck = demo.body(BodyId::named("duck").unwrap()).pose.position;
-    let share = grid_scale_share(&h, n, wavepool::world::HALF_WIDTH, Vec2::new(duck.x, duck.z), 0.3);
+    let share = grid_scale_share(&h, n, wavepool::world::PoolShape::CLASSIC.half_width, Vec2::new(duck.x, duck.z), 0.3);
     println!("within 0.3 m of the duck ({n}² cells): grid-scale ripples {:.1} % of the waves (RMS)", share * 100.0);
     // Pushes taken at the cells' centres (before 2026-11-27, 7abb3de) left 4.6 %: the duck's waterline
     // crossing a cell at once rang at the grid's own scale, dark specks round it on screen.

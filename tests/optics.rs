@@ -6,14 +6,16 @@
 
 mod common;
 
-use common::{render, Frame};
+use common::{render, Image};
 use glam::{Vec2, Vec3};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::optics::{fresnel_table, reflectance, FresnelModel};
 use wavepool::params::{spec, ParamId};
 use wavepool::render::DebugChoice;
 use wavepool::sim::random_drops;
-use wavepool::world::{HALF_WIDTH, IOR_WATER};
+use wavepool::world::{PoolShape, IOR_WATER};
+
+const HALF_WIDTH: f32 = PoolShape::CLASSIC.half_width;
 
 const W: u32 = 320;
 const H: u32 = 240;
@@ -31,7 +33,7 @@ fn empty_pool() -> WaterDemo {
 /// Largest difference (0-1) between the grey the `reflectance` view drew and the formula of
 /// `model` at the calm surface point under each sampled pixel, and how many pixels were
 /// compared and how many of them were under total internal reflection.
-fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f32, usize, usize) {
+fn worst_difference(demo: &WaterDemo, frame: &Image, model: FresnelModel) -> (f32, usize, usize) {
     let table = fresnel_table();
     let size = Vec2::new(W as f32, H as f32);
     let (mut worst, mut compared, mut total_reflection) = (0.0f32, 0, 0);
@@ -47,7 +49,7 @@ fn worst_difference(demo: &WaterDemo, frame: &Frame, model: FresnelModel) -> (f3
             let from_above = ray.origin.y > 0.0;
             let eta = if from_above { 1.0 / IOR_WATER } else { IOR_WATER };
             let expected = reflectance(model, ray.dir.y.abs(), eta, &table);
-            let drawn = frame.pixel(x, y)[0];
+            let drawn = frame.unit_rgb(x, y)[0];
             total_reflection += usize::from(expected == 1.0);
             compared += 1;
             worst = worst.max((drawn - expected).abs());
@@ -76,7 +78,7 @@ fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_s
         // The comparison tells the models apart: held to the exact formula, an approximation's
         // pixels fail; the table's pass within 1 % (2.55/255).
         let (off_exact, _, _) = worst_difference(&demo, &below, FresnelModel::Exact);
-        let mean = (0..H).step_by(4).map(|y| above.pixel(W / 2, y)[0]).sum::<f32>() / (H / 4) as f32;
+        let mean = (0..H).step_by(4).map(|y| above.unit_rgb(W / 2, y)[0]).sum::<f32>() / (H / 4) as f32;
         println!(
             "{model:?}: largest difference from its formula {:.1}/255 over {n_above} pixels from above, \
              {:.1}/255 over {n_below} from below ({tir} of them totally reflected), {:.1}/255 from the exact formula; \
@@ -103,13 +105,13 @@ fn each_fresnel_model_draws_the_reflectance_of_its_formula_above_and_below_the_s
 }
 
 /// Pixels of the water (below the horizon row `from_row`) bright enough to be the sun's glint.
-fn glint_pixels(frame: &Frame, from_row: u32) -> usize {
-    (from_row..H).flat_map(|y| (0..W).map(move |x| (x, y))).filter(|&(x, y)| frame.luma(x, y) > 0.97).count()
+fn glint_pixels(frame: &Image, from_row: u32) -> usize {
+    (from_row..H).flat_map(|y| (0..W).map(move |x| (x, y))).filter(|&(x, y)| frame.unit_luma(x, y) > 0.97).count()
 }
 
 /// Rippled water seen towards the sun, at the sun's elevation: its glitter on the far half
 /// (Blinn-Phong's stretched along the view).
-fn towards_the_sun(specular: f32, shininess: f32, sun_size: f32, drops: u32) -> Frame {
+fn towards_the_sun(specular: f32, shininess: f32, sun_size: f32, drops: u32) -> Image {
     let mut demo = empty_pool();
     demo.params.set(ParamId::SunElevation, 30.0);
     demo.params.set(ParamId::SunAzimuth, 0.0);
@@ -160,7 +162,7 @@ type WallPixel = ((u32, u32), f32);
 
 /// Under water, looking straight at the far wall 1.5 m away, with `set` parameters: the frame
 /// and the wall's sampled pixels.
-fn facing_a_wall(set: &[(ParamId, f32)]) -> (Frame, Vec<WallPixel>) {
+fn facing_a_wall(set: &[(ParamId, f32)]) -> (Image, Vec<WallPixel>) {
     let mut demo = empty_pool();
     demo.params.set(ParamId::Caustics, 0.0);
     // The sun the formulas were checked under (35°, 55°): behind the camera's left shoulder
@@ -215,7 +217,8 @@ fn the_water_absorbs_by_beer_lambert_and_in_scattering_fills_in_what_it_takes() 
     let (mut off_scatter, mut off_tint, mut off_ratio) = ([0.0f32; 3], [0.0f32; 3], 0.0f32);
     let (mut green_added, mut green_added_tinted) = (0.0f32, 0.0f32);
     for &((x, y), d) in &wall {
-        let (p, s, t, r) = (plain.pixel(x, y), scattering.pixel(x, y), tinted.pixel(x, y), redder.pixel(x, y));
+        let (p, s, t, r) =
+            (plain.unit_rgb(x, y), scattering.unit_rgb(x, y), tinted.unit_rgb(x, y), redder.unit_rgb(x, y));
         for k in 0..3 {
             let filled = 1.0 - (-default_absorption[k] * d).exp();
             let tint = [1.0, 0.5, 1.0][k]; // a horizontal path: optics::GRAZING_TINT
@@ -227,7 +230,7 @@ fn the_water_absorbs_by_beer_lambert_and_in_scattering_fills_in_what_it_takes() 
         let expected_ratio = (-(0.6 - default_absorption[0]) * d).exp();
         off_ratio = off_ratio.max((linear(r[0]) / linear(p[0]) / expected_ratio - 1.0).abs());
     }
-    let centre = plain.pixel(W / 2, H / 2);
+    let centre = plain.unit_rgb(W / 2, H / 2);
     println!(
         "{} wall pixels 1.5 m away (centre {centre:?}): in-scattering off its formula by at most {off_scatter:.4?} (linear), \
          tinted by view angle {off_tint:.4?} (green added {:.4} untinted, {:.4} tinted, mean); red absorbed at 0.6 /m \
@@ -288,7 +291,7 @@ fn dispersion_splits_red_and_blue_at_caustics_and_at_the_rim_of_snells_window() 
             if t.is_nan() || t <= 0.0 || p.x.abs() > HALF_WIDTH - 0.05 || p.z.abs() > HALF_WIDTH - 0.05 {
                 continue; // not the surface
             }
-            let drawn = below.pixel(x, y);
+            let drawn = below.unit_rgb(x, y);
             let expected = iors.map(|n| wavepool::optics::fresnel_exact(ray.dir.y, n));
             for k in 0..3 {
                 worst[k] = worst[k].max((drawn[k] - expected[k]).abs());
@@ -342,7 +345,7 @@ fn every_model_draws_its_formula_at_0_30_60_80_and_89_degrees() {
                     for (k, &target) in targets.iter().enumerate() {
                         if (angle - target).abs() < nearest[k].0 {
                             let formula = reflectance(model, -ray.dir.y, 1.0 / IOR_WATER, &table);
-                            nearest[k] = ((angle - target).abs(), frame.pixel(x, y)[0], formula);
+                            nearest[k] = ((angle - target).abs(), frame.unit_rgb(x, y)[0], formula);
                         }
                     }
                 }
@@ -398,7 +401,7 @@ fn dispersion_moves_the_red_caustics_farther_along_the_light_than_the_blue() {
         let (mut sx, mut sy, mut sw) = (0.0f64, 0.0f64, 0.0f64);
         for y in 0..H {
             for x in 0..W {
-                let w = (split.pixel(x, y)[k] - plain.pixel(x, y)[k]).max(0.0) as f64;
+                let w = (split.unit_rgb(x, y)[k] - plain.unit_rgb(x, y)[k]).max(0.0) as f64;
                 (sx, sy, sw) = (sx + w * x as f64, sy + w * y as f64, sw + w);
             }
         }

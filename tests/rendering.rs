@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{render, Frame, Rect};
+use common::{render, Area, Image};
 use glam::{Vec2, Vec3};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::headless::{read_png, write_png};
@@ -44,19 +44,19 @@ fn low_view(demo: &mut WaterDemo) {
 fn frame_is_not_uniform() {
     let mut demo = with_drops(3, 10);
     let frame = render(&mut demo, W, H, 20, 1.0 / 60.0);
-    let (mean, var) = frame.luma_stats(Rect::ALL);
+    let (mean, var) = frame.luma_stats(Area::ALL);
     println!("frame: luma mean {mean:.3}, std {:.3}", var.sqrt());
     assert!(var.sqrt() > 0.05, "frame is nearly uniform: luma std {}", var.sqrt());
     assert!(mean > 0.15 && mean < 0.9, "frame too dark or washed out: mean luma {mean}");
     // The water: a band of the pool's left half, clear of the sphere in the middle and of the walls.
     let size = Vec2::new(W as f32, H as f32);
-    let (w, x0, x1) = (wavepool::world::HALF_WIDTH, -0.9, -0.55);
+    let (w, x0, x1) = (wavepool::world::PoolShape::CLASSIC.half_width, -0.9, -0.55);
     let corners: Vec<Vec2> = [(x0 * w, -0.5 * w), (x0 * w, 0.5 * w), (x1 * w, -0.5 * w), (x1 * w, 0.5 * w)]
         .iter()
         .map(|&(x, z)| demo.camera().project(Vec3::new(x, 0.0, z), size).expect("the pool in view"))
         .collect();
     let (lo, hi) = corners.iter().fold((size, Vec2::ZERO), |(lo, hi), p| (lo.min(*p), hi.max(*p)));
-    let water = Rect(lo.x / size.x, lo.y / size.y, hi.x / size.x, hi.y / size.y);
+    let water = Area(lo.x / size.x, lo.y / size.y, hi.x / size.x, hi.y / size.y);
     let (water_mean, water_var) = frame.luma_stats(water);
     println!("the water ({water:?}): luma mean {water_mean:.3}, std {:.3}", water_var.sqrt());
     assert!(water_var.sqrt() > 0.03, "the water is nearly uniform: luma std {}", water_var.sqrt());
@@ -68,11 +68,11 @@ fn sky_region_has_the_sky_colour() {
     let mut demo = with_drops(4, 6);
     low_view(&mut demo);
     let frame = render(&mut demo, W, H, 4, 1.0 / 60.0);
-    let [r, g, b] = frame.mean_colour(Rect(0.0, 0.0, 1.0, 0.08));
+    let [r, g, b] = frame.mean_colour(Area(0.0, 0.0, 1.0, 0.08));
     println!("top of frame: r {r:.3} g {g:.3} b {b:.3}");
     assert!(b > g && g > r, "sky should be blue-dominant, got {r} {g} {b}");
     assert!(b - r > 0.12 && b > 0.5, "sky too grey or dark: {r} {g} {b}");
-    let (_, var) = frame.luma_stats(Rect(0.0, 0.0, 1.0, 0.08));
+    let (_, var) = frame.luma_stats(Area(0.0, 0.0, 1.0, 0.08));
     assert!(var.sqrt() < 0.08, "sky region is not smooth (std {})", var.sqrt());
 }
 
@@ -85,7 +85,7 @@ fn caustics_add_contrast_on_the_floor() {
     demo.camera_mut().target = Vec3::new(0.0, -1.0, 0.0);
     let _ = render(&mut demo, W, H, 40, 1.0 / 60.0);
     demo.params.set(ParamId::Paused, 1.0);
-    let floor = Rect(0.35, 0.3, 0.65, 0.7);
+    let floor = Area(0.35, 0.3, 0.65, 0.7);
     let on = render(&mut demo, W, H, 1, 1.0 / 60.0);
     demo.params.set(ParamId::Caustics, 0.0);
     let off = render(&mut demo, W, H, 1, 1.0 / 60.0);
@@ -116,9 +116,9 @@ fn a_drop_changes_the_water_but_not_the_sky() {
     };
     let (calm, _) = run(false);
     let (rippled, pixel) = run(true);
-    let near = Rect::around(pixel.x, pixel.y, &rippled, 0.1);
+    let near = Area::around(pixel.x, pixel.y, &rippled, 0.1);
     let water_change = rippled.changed_fraction(&calm, near, 16);
-    let sky = Rect(0.0, 0.0, 1.0, 0.08);
+    let sky = Area(0.0, 0.0, 1.0, 0.08);
     let sky_change = rippled.mean_abs_diff(&calm, sky);
     println!(
         "drop at pixel {pixel:?}: {:.1}% of nearby pixels changed by > 16/255, sky by {sky_change:.3}/255 on average",
@@ -130,8 +130,8 @@ fn a_drop_changes_the_water_but_not_the_sky() {
 
 #[test]
 fn same_inputs_give_the_same_image() {
-    let frames: Vec<Frame> = (0..2).map(|_| render(&mut with_drops(9, 12), W, H, 15, 1.0 / 60.0)).collect();
-    let diff = frames[0].mean_abs_diff(&frames[1], Rect::ALL);
+    let frames: Vec<Image> = (0..2).map(|_| render(&mut with_drops(9, 12), W, H, 15, 1.0 / 60.0)).collect();
+    let diff = frames[0].mean_abs_diff(&frames[1], Area::ALL);
     assert_eq!(diff, 0.0, "two identical runs differ by {diff}/255 on average");
 }
 
@@ -150,13 +150,13 @@ fn reference_frame_matches() {
     }
     let (w, h, rgba) = read_png(&path).unwrap_or_else(|e| panic!("{e}; create it with WAVEPOOL_BLESS=1"));
     assert_eq!((w, h), (W, H), "reference has another size");
-    let reference = Frame { width: w, height: h, rgba };
-    let mean = frame.mean_abs_diff(&reference, Rect::ALL);
-    let far_off = Rect::ALL
+    let reference = Image { width: w, height: h, rgba };
+    let mean = frame.mean_abs_diff(&reference, Area::ALL);
+    let far_off = Area::ALL
         .pixels(&frame)
         .iter()
         .filter(|&&(x, y)| {
-            let (a, b) = (frame.pixel(x, y), reference.pixel(x, y));
+            let (a, b) = (frame.unit_rgb(x, y), reference.unit_rgb(x, y));
             (0..3).any(|k| (a[k] - b[k]).abs() > 32.0 / 255.0)
         })
         .count() as f64
@@ -195,10 +195,10 @@ fn the_no_float_path_renders_the_same_frame() {
     let float = run(true, 20);
     let no_float = run(false, 20);
     let calm = run(true, 0);
-    let (diff, changed) = (float.mean_abs_diff(&no_float, Rect::ALL), float.changed_fraction(&no_float, Rect::ALL, 16));
+    let (diff, changed) = (float.mean_abs_diff(&no_float, Area::ALL), float.changed_fraction(&no_float, Area::ALL, 16));
     let (ripple_diff, ripple_changed) =
-        (float.mean_abs_diff(&calm, Rect::ALL), float.changed_fraction(&calm, Rect::ALL, 16));
-    let (mean_f, mean_n) = (float.luma_stats(Rect::ALL), no_float.luma_stats(Rect::ALL));
+        (float.mean_abs_diff(&calm, Area::ALL), float.changed_fraction(&calm, Area::ALL, 16));
+    let (mean_f, mean_n) = (float.luma_stats(Area::ALL), no_float.luma_stats(Area::ALL));
     println!(
         "float vs no float: mean |diff| {diff:.3}/255, {:.2}% of pixels off by >16; ripples vs calm: {ripple_diff:.3}/255, {:.2}%; luma mean/var {mean_f:?} vs {mean_n:?}",
         changed * 100.0,
@@ -234,9 +234,9 @@ fn debug_views_show_the_ring_where_it_is() {
         let (cx, cy) = (W as f32 / 2.0, H as f32 / 2.0);
         // How far each pixel of the centre row is from the view's rest colour, sampled where
         // the pool is calm (a corner of the square).
-        let corner = frame.pixel((cx - side * 0.45) as u32, (cy - side * 0.45) as u32);
+        let corner = frame.unit_rgb((cx - side * 0.45) as u32, (cy - side * 0.45) as u32);
         let strength = |x: u32| {
-            let p = frame.pixel(x, cy as u32);
+            let p = frame.unit_rgb(x, cy as u32);
             (0..3).map(|k| (p[k] - corner[k]).abs()).sum::<f32>()
         };
         let xs = (cx - side * 0.48) as u32..(cx + side * 0.48) as u32;
@@ -301,8 +301,8 @@ fn the_objects_regions_draw_what_tracing_the_objects_everywhere_draws() {
         render(&mut demo, w, h, 30, 1.0 / 60.0)
     };
     let (regions, everywhere) = (frame(true), frame(false));
-    let off = regions.changed_fraction(&everywhere, Rect::ALL, 8);
-    let again = regions.changed_fraction(&frame(true), Rect::ALL, 0);
+    let off = regions.changed_fraction(&everywhere, Area::ALL, 8);
+    let again = regions.changed_fraction(&frame(true), Area::ALL, 0);
     println!("{:.4} % of pixels differ by more than 8/255 (the same run again: {:.4} %)", off * 100.0, again * 100.0);
     assert_eq!(again, 0.0, "two identical runs drew different frames");
     assert!(off <= 3.0e-5, "the regions changed {:.4} % of the picture", off * 100.0);
@@ -337,11 +337,11 @@ fn the_spheres_outline_is_blended_on_its_edge_and_nowhere_else() {
             changed += 1;
             let around: Vec<f32> = (-1..=1)
                 .flat_map(|dy| (-1..=1).map(move |dx| (x as i32 + dx, y as i32 + dy)))
-                .map(|(nx, ny)| stepped.luma(nx as u32, ny as u32))
+                .map(|(nx, ny)| stepped.unit_luma(nx as u32, ny as u32))
                 .collect();
             let (lo, hi) = around.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &l| (lo.min(l), hi.max(l)));
             let on_edge = hi - lo > 0.08;
-            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.luma(x, y));
+            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.unit_luma(x, y));
             if !(on_edge && between) {
                 elsewhere += 1;
             }
@@ -365,7 +365,7 @@ fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
     let mut gain = 0.0;
     for y in 0..h {
         for x in 0..w {
-            let d = glazed.luma(x, y) - matte.luma(x, y);
+            let d = glazed.unit_luma(x, y) - matte.unit_luma(x, y);
             if d > 2.0 / 255.0 {
                 brighter += 1;
                 gain += d;
@@ -375,7 +375,7 @@ fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
             }
         }
     }
-    let (deck_top, deck_bottom) = (Rect(0.0, 0.0, 1.0, 0.15), Rect(0.0, 0.72, 1.0, 1.0));
+    let (deck_top, deck_bottom) = (Area(0.0, 0.0, 1.0, 0.15), Area(0.0, 0.72, 1.0, 1.0));
     let unchanged = glazed.changed_fraction(&matte, deck_top, 1).max(glazed.changed_fraction(&matte, deck_bottom, 1));
     println!(
         "glaze: {brighter} pixels brighter (mean {:.1}/255, lowest row {lowest} of {h}), {darker} darker; deck changed {unchanged:.4}",

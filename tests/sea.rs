@@ -5,10 +5,8 @@
 #![allow(clippy::disallowed_methods)]
 
 mod common;
-#[path = "support/picture.rs"]
-mod picture;
 
-use common::{demo, render, Frame, Rect};
+use common::{demo, picture, render, Area, Image};
 use glam::{Vec2, Vec3, Vec4};
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::params::ParamId;
@@ -41,11 +39,11 @@ fn horizon_row(d: &WaterDemo, height: u32) -> f32 {
 /// Largest channel difference (0-255) between the pixels `gap` rows clear of the horizon's own
 /// row above and below it (the last water row and the first sky row for 1), per column: the
 /// median over the frame's columns.
-fn horizon_step(frame: &Frame, row: f32, gap: u32) -> f32 {
+fn horizon_step(frame: &Image, row: f32, gap: u32) -> f32 {
     let (above, below) = (row.floor() as u32 - gap, row.ceil() as u32 + gap);
     let mut steps: Vec<f32> = (0..frame.width)
         .map(|x| {
-            let (a, b) = (frame.pixel(x, above), frame.pixel(x, below));
+            let (a, b) = (frame.unit_rgb(x, above), frame.unit_rgb(x, below));
             (0..3).map(|c| (a[c] - b[c]).abs() * 255.0).fold(0.0, f32::max)
         })
         .collect();
@@ -77,7 +75,7 @@ fn the_sea_shows_sky_above_and_moving_waves_below() {
     let first = render(&mut d, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     let later = render(&mut d, SIZE.0, SIZE.1, 30, 1.0 / 60.0);
     let row = horizon_row(&d, SIZE.1) / SIZE.1 as f32;
-    let (sky, water) = (Rect(0.0, 0.0, 1.0, row - 0.05), Rect(0.0, row + 0.1, 1.0, 1.0));
+    let (sky, water) = (Area(0.0, 0.0, 1.0, row - 0.05), Area(0.0, row + 0.1, 1.0, 1.0));
     let (sky_colour, water_colour) = (later.mean_colour(sky), later.mean_colour(water));
     let (_, water_var) = later.luma_stats(water);
     let moved = later.changed_fraction(&first, water, 4);
@@ -110,7 +108,7 @@ fn the_gpus_fft_draws_the_sea_the_cpus_does() {
     };
     for preset in [None, Some("storm")] {
         let (gpu, cpu, later) = (frame(preset, true, 20), frame(preset, false, 20), frame(preset, false, 35));
-        let all = Rect(0.0, 0.0, 1.0, 1.0);
+        let all = Area(0.0, 0.0, 1.0, 1.0);
         let (same, moved) = (gpu.changed_fraction(&cpu, all, 8), later.changed_fraction(&cpu, all, 8));
         println!(
             "{}: GPU's FFT against the CPU's: {:.2} % of pixels differ by over 8/255 ({:.3}/255 on average); \
@@ -144,8 +142,8 @@ fn the_far_sea_does_not_sparkle() {
             let frame = render(&mut d, w, h, 20, 1.0 / 60.0);
             let row = horizon_row(&d, h).ceil() as u32 + 2;
             let band = picture::Rect { x: 0, y: row, w, h: (h - row) / 2 };
-            let share = picture::sparkle_share(&picture::Image::new(w, h, &frame.rgba), band);
-            let water = Rect(0.0, row as f32 / h as f32, 1.0, 0.5 + 0.5 * row as f32 / h as f32);
+            let share = picture::sparkle_share(&frame, band);
+            let water = Area(0.0, row as f32 / h as f32, 1.0, 0.5 + 0.5 * row as f32 / h as f32);
             let (_, var) = frame.luma_stats(water);
             println!(
                 "{name}, the sun {sun}: {:.2} % of the far water's pixels sparkle (luma std {:.3})",
@@ -172,7 +170,7 @@ fn the_pool_comes_back_byte_for_byte_after_the_sea() {
     let at_sea = render(&mut visited, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     visited.params.set(ParamId::Scene, 0.0);
     let after = render(&mut visited, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
-    let sea_differs = at_sea.changed_fraction(&before, Rect(0.0, 0.0, 1.0, 1.0), 16);
+    let sea_differs = at_sea.changed_fraction(&before, Area(0.0, 0.0, 1.0, 1.0), 16);
     println!("the sea differs from the pool in {:.0} % of pixels", sea_differs * 100.0);
     assert!(sea_differs > 0.5, "the sea was not drawn");
     assert!(before.rgba == after.rgba, "the pool after the sea is not the pool before it");
@@ -229,7 +227,7 @@ fn a_click_on_the_sea_makes_ripples_that_run_out_at_the_speed_of_shallow_water()
     let expected = wavepool::sea::patch_wave_speed();
     let with = render(&mut clicked, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     let without = render(&mut calm, SIZE.0, SIZE.1, 61, 1.0 / 60.0);
-    let near = Rect(0.25, 0.35, 0.75, 0.85);
+    let near = Area(0.25, 0.35, 0.75, 0.85);
     let changed = with.changed_fraction(&without, near, 8);
     println!(
         "crest at {:.2} m and {:.2} m half a second apart: {speed:.2} m/s against sqrt(g d) = {expected:.2} m/s; \
@@ -255,10 +253,10 @@ fn whitecaps_break_on_a_storm_and_not_on_a_calm_sea() {
             // At the page's size: on a coarser grid the finest cascades, the steepest, fade.
             frames.push(render(&mut d, 800, 600, 10, 0.1));
         }
-        let whitened = Rect(0.0, 0.0, 1.0, 1.0)
+        let whitened = Area(0.0, 0.0, 1.0, 1.0)
             .pixels(&frames[0])
             .into_iter()
-            .filter(|&(x, y)| frames[0].luma(x, y) > frames[1].luma(x, y) + 0.05)
+            .filter(|&(x, y)| frames[0].unit_luma(x, y) > frames[1].unit_luma(x, y) + 0.05)
             .count();
         shares.push(whitened as f64 / (800.0 * 600.0));
     }
@@ -324,9 +322,9 @@ fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
         frames.push(render(&mut d, SIZE.0, SIZE.1, 5, 1.0 / 60.0));
     }
     let (mut foamed, mut foamed_shallow, mut deep, mut deep_foamed, mut edge, mut edge_foamed) = (0, 0, 0, 0, 0, 0);
-    for (x, y) in Rect::ALL.pixels(&frames[0]) {
+    for (x, y) in Area::ALL.pixels(&frames[0]) {
         let Some(depth) = rest_point(&d, SIZE, x, y).map(depth_at) else { continue };
-        let whiter = frames[0].luma(x, y) > frames[1].luma(x, y) + 0.05;
+        let whiter = frames[0].unit_luma(x, y) > frames[1].unit_luma(x, y) + 0.05;
         foamed += usize::from(whiter);
         // The waves (1.2 m significant height) lift and lower the water over the rest plane.
         foamed_shallow += usize::from(whiter && depth < island::SHORE_FOAM_DEPTH + 1.2);
@@ -361,7 +359,7 @@ fn the_island_is_mirrored_in_the_sea_below_it() {
         frames.push(render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0));
     }
     let changed = |x: u32, y: u32| {
-        let (a, b) = (frames[0].pixel(x, y), frames[1].pixel(x, y));
+        let (a, b) = (frames[0].unit_rgb(x, y), frames[1].unit_rgb(x, y));
         (0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f32::max) > 4.0 / 255.0
     };
     // The island's columns: where it stands over the horizon.
@@ -408,11 +406,11 @@ fn the_grid_view_outlines_cells_of_the_same_size_on_screen() {
         frames.push(render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0));
     }
     let row = horizon_row(&d, SIZE.1) / SIZE.1 as f32;
-    let water = frames[0].changed_fraction(&frames[1], Rect(0.0, row + 0.05, 1.0, 1.0), 8);
-    let sky = frames[0].changed_fraction(&frames[1], Rect(0.0, 0.0, 1.0, row - 0.05), 8);
+    let water = frames[0].changed_fraction(&frames[1], Area(0.0, row + 0.05, 1.0, 1.0), 8);
+    let sky = frames[0].changed_fraction(&frames[1], Area(0.0, 0.0, 1.0, row - 0.05), 8);
     // Along the bottom row: the spacing of the lines crossing it (pixels).
     let y = SIZE.1 - 4;
-    let on: Vec<u32> = (0..SIZE.0).filter(|&x| frames[0].luma(x, y) > frames[1].luma(x, y) + 0.03).collect();
+    let on: Vec<u32> = (0..SIZE.0).filter(|&x| frames[0].unit_luma(x, y) > frames[1].unit_luma(x, y) + 0.03).collect();
     let mut starts: Vec<u32> = on.windows(2).filter(|w| w[1] > w[0] + 1).map(|w| w[1]).collect();
     starts.insert(0, on.first().copied().unwrap_or(0));
     let mut gaps: Vec<u32> = starts.windows(2).map(|w| w[1] - w[0]).collect();
@@ -442,7 +440,7 @@ fn a_storm_of_a_hundred_thousand_steps_leaves_no_nan_and_stays_bounded() {
     use wavepool::sim::cpu::CpuHeightField;
     use wavepool::sim::{Drop, SplitMix64, WaveSettings, MAX_HEIGHT};
     let steps = 100_000u32;
-    let scale = PATCH_HALF_WIDTH / wavepool::world::HALF_WIDTH;
+    let scale = PATCH_HALF_WIDTH / wavepool::world::PoolShape::CLASSIC.half_width;
     let mut patch = CpuHeightField::new(64, PATCH_HALF_WIDTH);
     let settings = WaveSettings { wave_speed: patch_wave_speed(), damping: PATCH_DAMPING, absorbing_walls: true };
     let mut rng = SplitMix64(29);
@@ -515,8 +513,9 @@ fn a_storm_keeps_its_whitecaps_a_while_and_the_same_at_every_frame_rate() {
         render(&mut d, SIZE.0, SIZE.1, 2 * fps, 1.0 / fps as f32)
     };
     let bare = storm(30, false, false);
-    let whitened = |f: &Frame| {
-        let count = Rect::ALL.pixels(f).into_iter().filter(|&(x, y)| f.luma(x, y) > bare.luma(x, y) + 0.05).count();
+    let whitened = |f: &Image| {
+        let count =
+            Area::ALL.pixels(f).into_iter().filter(|&(x, y)| f.unit_luma(x, y) > bare.unit_luma(x, y) + 0.05).count();
         count as f64 / (SIZE.0 * SIZE.1) as f64
     };
     let moment = whitened(&storm(30, true, false));
@@ -548,11 +547,11 @@ fn the_waves_focus_sunlight_into_caustics_on_the_shallows_floor() {
     }
     // Over water 2-10 m deep, the floor's light with the caustics against without, pixel by
     // pixel: focused here, spread thin there, about as much in all.
-    let ratios: Vec<f64> = Rect::ALL
+    let ratios: Vec<f64> = Area::ALL
         .pixels(&frames[0])
         .into_iter()
         .filter(|&(x, y)| rest_point(&d, SIZE, x, y).map(depth_at).is_some_and(|depth| depth > 2.0 && depth < 10.0))
-        .map(|(x, y)| (frames[0].luma(x, y) / frames[1].luma(x, y).max(1e-3)) as f64)
+        .map(|(x, y)| (frames[0].unit_luma(x, y) / frames[1].unit_luma(x, y).max(1e-3)) as f64)
         .collect();
     let n = ratios.len().max(1) as f64;
     let mean = ratios.iter().sum::<f64>() / n;
@@ -592,13 +591,15 @@ fn a_click_in_the_shallows_lights_the_sand_under_it_with_the_ripples_caustics() 
             view = Some(d);
         }
         let view = view.expect("a demo");
-        let near = Rect(0.2, 0.2, 0.8, 0.8).pixels(&frames[0]);
+        let near = Area(0.2, 0.2, 0.8, 0.8).pixels(&frames[0]);
         let depth =
             |&(x, y): &(u32, u32)| rest_point(&view, SIZE, x, y).map(|p| -island::height(p, island::Place::Shore));
         let shallow: Vec<_> = near.into_iter().filter(|p| depth(p).is_some_and(|d| d > 1.0 && d < 12.0)).collect();
-        let mean =
-            shallow.iter().map(|&(x, y)| (frames[0].luma(x, y) - frames[1].luma(x, y)).abs() as f64).sum::<f64>()
-                / shallow.len().max(1) as f64;
+        let mean = shallow
+            .iter()
+            .map(|&(x, y)| (frames[0].unit_luma(x, y) - frames[1].unit_luma(x, y)).abs() as f64)
+            .sum::<f64>()
+            / shallow.len().max(1) as f64;
         changes.push((mean, shallow.len()));
     }
     println!(

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{demo, render, Rect};
+use common::{demo, render, Area};
 use glam::Vec3;
 use wavepool::bodies::{BodyId, KINDS};
 use wavepool::demo::{DemoOptions, WaterDemo};
@@ -117,7 +117,7 @@ fn the_sea_s_bodies_ride_the_same_at_30_60_and_144_frames_a_second() {
     for fps in [30, 144] {
         let (places, frame) = ride(fps);
         worst = places.iter().zip(&at_60).map(|(a, b)| a.distance(*b)).fold(worst, f32::max);
-        differs = differs.max(frame.mean_abs_diff(&frame_60, Rect::ALL));
+        differs = differs.max(frame.mean_abs_diff(&frame_60, Area::ALL));
     }
     println!(
         "after 2 s at 30 and 144 against 60 frames a second: bodies {worst:.4} m apart, frames {differs:.3}/255 apart"
@@ -199,14 +199,14 @@ fn the_sea_draws_its_bodies_in_its_light() {
     let duck = BodyId::named("duck").expect("the duck");
     let frame = |objects: u32| render(&mut sea_with(objects, 20.0), 320, 240, 30, 1.0 / 60.0);
     let (with, without) = (frame(duck.bit()), frame(0));
-    let changed: Vec<(u32, u32)> = Rect::ALL
+    let changed: Vec<(u32, u32)> = Area::ALL
         .pixels(&with)
         .into_iter()
-        .filter(|&(x, y)| (0..3).any(|c| (with.pixel(x, y)[c] - without.pixel(x, y)[c]).abs() > 0.1))
+        .filter(|&(x, y)| (0..3).any(|c| (with.unit_rgb(x, y)[c] - without.unit_rgb(x, y)[c]).abs() > 0.1))
         .collect();
     let share = changed.len() as f64 / (320.0 * 240.0);
     let mean = changed.iter().fold([0.0f32; 3], |m, &(x, y)| {
-        let p = with.pixel(x, y);
+        let p = with.unit_rgb(x, y);
         [m[0] + p[0], m[1] + p[1], m[2] + p[2]]
     });
     let mean = mean.map(|c| c / changed.len().max(1) as f32);
@@ -259,9 +259,9 @@ fn the_water_mirrors_the_bodies_floating_on_it() {
         (frame, ((ndc.x + 1.0) * 0.5, (1.0 - ndc.y) * 0.5))
     };
     let ((with, (x, y)), (without, _)) = (frame(true), frame(false));
-    let below = Rect(x - 0.1, y, x + 0.1, y + 0.15);
+    let below = Area(x - 0.1, y, x + 0.1, y + 0.15);
     // The water beyond the duck mirrors only the sky: its reflected rays run away from it.
-    let elsewhere = [Rect(0.0, 0.0, 1.0, y - 0.15)];
+    let elsewhere = [Area(0.0, 0.0, 1.0, y - 0.15)];
     let changed = with.changed_fraction(&without, below, 8);
     let stray = elsewhere.iter().map(|&r| with.changed_fraction(&without, r, 0)).fold(0.0, f64::max);
 
@@ -300,14 +300,14 @@ fn a_body_over_the_shallows_shades_the_sand_under_it() {
     };
     let (with, without) = (frame(duck.bit()), frame(0));
     // The water's pixels (bluer than red: the duck's are yellow) that the duck darkens.
-    let water = Rect::ALL.pixels(&with).into_iter().filter(|&(x, y)| {
-        let c = with.pixel(x, y);
+    let water = Area::ALL.pixels(&with).into_iter().filter(|&(x, y)| {
+        let c = with.unit_rgb(x, y);
         c[2] >= c[0]
     });
     let (mut water_pixels, mut shaded) = (0, 0);
     for (x, y) in water {
         water_pixels += 1;
-        shaded += usize::from(with.luma(x, y) < 0.8 * without.luma(x, y));
+        shaded += usize::from(with.unit_luma(x, y) < 0.8 * without.unit_luma(x, y));
     }
     let share = shaded as f64 / (size.0 * size.1) as f64;
     println!(

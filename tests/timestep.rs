@@ -1,4 +1,4 @@
-//! Frame-rate independence: the core advances in fixed steps of simulated time, so driving
+//! Image-rate independence: the core advances in fixed steps of simulated time, so driving
 //! it at 30, 60 or 144 frames per second to the same simulated time, with the same drops at
 //! the same simulated times, gives the same water.
 // Tests read results back and wait for the GPU (clippy.toml: not in the frame path).
@@ -38,7 +38,7 @@ fn run_with(fps: f64, until: f64, objects: f32) -> (Vec<[f32; 4]>, [Vec3; 2]) {
             }
         }
         demo.frame(&g.device, &g.queue, &target.view, target.size(), (1.0 / fps) as f32);
-        // Frame pacing as on a display: the next frame starts once the GPU is done.
+        // Image pacing as on a display: the next frame starts once the GPU is done.
         g.device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
     }
     assert!(drops.is_empty());

@@ -12,7 +12,7 @@
 
 use super::{angular_frequency_in, AmbientSettings, Spectrum, G, LONGEST_WAVELENGTH};
 use crate::sim::SplitMix64;
-use crate::world::{DEPTH, HALF_WIDTH};
+use crate::world::PoolShape;
 
 /// A complex number (re, im) in f32, as the GPU holds it.
 pub type Complex = [f32; 2];
@@ -58,14 +58,14 @@ pub struct Band {
 }
 
 impl Band {
-    /// The pool's: the pool itself is the tile, from [`LONGEST_WAVELENGTH`] down to
+    /// A pool's: the pool itself is the tile, from [`LONGEST_WAVELENGTH`] down to
     /// [`SHORTEST_WAVE_CELLS`] cells of a `size`² lattice.
-    pub fn pool(size: usize) -> Self {
+    pub fn pool(size: usize, pool: PoolShape) -> Self {
         Self {
-            half_tile: HALF_WIDTH,
+            half_tile: pool.half_width,
             longest: LONGEST_WAVELENGTH,
-            shortest: SHORTEST_WAVE_CELLS * 2.0 * HALF_WIDTH / size as f32,
-            depth: DEPTH,
+            shortest: SHORTEST_WAVE_CELLS * 2.0 * pool.half_width / size as f32,
+            depth: pool.depth,
             seed: 0x0cea_4f17,
             fetch: JONSWAP_FETCH,
             shared_with: [0.0; 2],
@@ -117,10 +117,10 @@ pub const CHOP_NEWTON_STEPS: usize = 4;
 pub const CHOP_STEP_LIMIT: f32 = 0.05;
 pub const CHOP_SLOPE_LIMIT: f32 = 4.0;
 
-/// Wavenumber (rad/m) of the pool's lattice index `i` (0..N) along one axis: indices past N/2
+/// Wavenumber (rad/m) of `pool`'s lattice index `i` (0..N) along one axis: indices past N/2
 /// are negative.
-pub fn lattice_k(i: usize, size: usize) -> f32 {
-    Band::pool(size).k(i, size)
+pub fn lattice_k(i: usize, size: usize, pool: PoolShape) -> f32 {
+    Band::pool(size, pool).k(i, size)
 }
 
 /// The spectrum's density (m⁴ per unit of k², up to a scale) at wavevector (kx, kz), zero
@@ -174,7 +174,7 @@ impl Ocean {
     /// The lattice of `size`² points for `settings`, scaled so that the significant height
     /// (4 × the surface's standard deviation, averaged over time) is the asked one.
     pub fn new(settings: &AmbientSettings, size: usize) -> Self {
-        let mut ocean = Self::unscaled(settings, size, Band::pool(size));
+        let mut ocean = Self::unscaled(settings, size, Band::pool(size, settings.basin));
         let variance = ocean.variance();
         if variance > 0.0 {
             ocean.scale(settings.significant_height / 4.0 / variance.sqrt() as f32);

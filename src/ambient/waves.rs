@@ -2,9 +2,10 @@
 //! are chosen from the spectrum, and each model's height and slopes at a point (the same
 //! formulas `scene_surface.wgsl` evaluates).
 
-use super::{angular_frequency, phillips, AmbientSettings, Wave, GERSTNER_NEWTON_STEPS, MAX_AMBIENT_WAVES, SINE_WAVES};
+use super::{
+    angular_frequency_in, phillips, AmbientSettings, Wave, GERSTNER_NEWTON_STEPS, MAX_AMBIENT_WAVES, SINE_WAVES,
+};
 use crate::sim::SplitMix64;
-use crate::world::HALF_WIDTH;
 
 /// The `sines` and `gerstner` models' travelling waves: wavenumbers evenly in log between the
 /// shortest and longest wavelengths, each direction within the spread around the wind, each
@@ -23,7 +24,7 @@ pub(super) fn travelling_waves(settings: &AmbientSettings, rng: &mut SplitMix64,
             kx,
             kz,
             amplitude: weight.sqrt(),
-            omega: angular_frequency(k),
+            omega: angular_frequency_in(k, settings.basin.depth),
             phase: rng.range(0.0, 1.0) as f64 * std::f64::consts::TAU,
         });
     }
@@ -41,7 +42,7 @@ pub(super) fn basin_modes(settings: &AmbientSettings, rng: &mut SplitMix64, k_mi
     // picks the modes lined up with it): in each of MAX_AMBIENT_WAVES bands of
     // wavenumber (even in log, as the sines) the strongest, so short and long
     // waves are all there.
-    let width = 2.0 * HALF_WIDTH;
+    let width = 2.0 * settings.basin.half_width;
     let unit = std::f32::consts::PI / width;
     let mut candidates = Vec::new();
     let top = (k_max / unit).ceil() as i32;
@@ -73,7 +74,7 @@ pub(super) fn basin_modes(settings: &AmbientSettings, rng: &mut SplitMix64, k_mi
             kx,
             kz,
             amplitude: w.max(0.0).sqrt(),
-            omega: angular_frequency(k),
+            omega: angular_frequency_in(k, settings.basin.depth),
             phase: rng.range(0.0, 1.0) as f64 * std::f64::consts::TAU,
         });
     }
@@ -133,9 +134,10 @@ pub(super) fn sharp_sine(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f
     [h, dh * kx, dh * kz]
 }
 
-/// A standing mode and its slopes: h = a cos(kx (x + W)) cos(kz (z + W)) cos p.
+/// A standing mode and its slopes at (x, z) measured from the basin's corner (m): h = a cos(kx x)
+/// cos(kz z) cos p.
 pub(super) fn standing(kx: f32, kz: f32, a: f32, p: f32, x: f32, z: f32) -> [f32; 3] {
-    let (u, v) = (kx * (x + HALF_WIDTH), kz * (z + HALF_WIDTH));
+    let (u, v) = (kx * x, kz * z);
     let c = a * p.cos();
     [c * u.cos() * v.cos(), -c * kx * u.sin() * v.cos(), -c * kz * u.cos() * v.sin()]
 }

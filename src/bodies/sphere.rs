@@ -45,11 +45,11 @@ pub const KIND: BodyKind = BodyKind {
     edge: true,
 };
 
-/// A ball of `radius` as drawn for a body at `pose`: kept inside the pool box (the sphere's and
-/// the beach ball's).
+/// A ball of `radius` as drawn for a body at `pose`: kept inside the classic pool's box, where
+/// the kinds' table entries place bodies (the sphere's and the beach ball's).
 pub fn drawn(pose: &Pose, radius: f32) -> Sphere {
     let mut s = Sphere { centre: pose.position, radius };
-    s.clamp_to_pool();
+    s.clamp_to_pool(crate::world::PoolShape::CLASSIC);
     s
 }
 

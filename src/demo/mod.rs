@@ -33,7 +33,7 @@ pub use crate::scenes::sea::sea_settings;
 use crate::scenes::{SceneFrame, SceneKind, Scenes};
 pub use crate::scenes::{Stage, STEPS_PER_SECOND, STEP_DT};
 use crate::sim::{FixedStep, HeightField, SimEngine};
-use crate::world;
+use crate::world::PoolShape;
 use input::Drag;
 pub use input::Key;
 pub use options::{DemoOptions, OptionSpec, SizeCaps, SOFTWARE_CAPS};
@@ -47,6 +47,9 @@ pub const REAL_TIME_DOWN_TO_FPS: u32 = 10;
 /// steps themselves would push frames under 10 frames/s, fewer are allowed
 /// ([`StepGovernor`]).
 pub const MAX_STEPS_PER_FRAME: u32 = STEPS_PER_SECOND / REAL_TIME_DOWN_TO_FPS;
+
+/// The pool the demo is made with.
+const POOL: PoolShape = PoolShape::CLASSIC;
 
 pub struct WaterDemo {
     pub params: Params,
@@ -95,7 +98,7 @@ impl DemoBuild {
         }
         let Some(water) = self.water.take() else {
             let engine = if options.float_targets { SimEngine::Gpu } else { SimEngine::Cpu };
-            self.water = Some(HeightField::new_on(device, options.sim_size, world::HALF_WIDTH, engine));
+            self.water = Some(HeightField::new_on(device, options.sim_size, POOL.half_width, engine));
             return None;
         };
         let settings = RenderSettings {
@@ -103,6 +106,7 @@ impl DemoBuild {
             caustics_size: options.caustics_size,
             surface_grid: options.surface_grid,
             float_targets: options.float_targets,
+            pool: POOL,
         };
         let renderer = Renderer::new(device, queue, settings, &water, self.tile_mips.as_deref().unwrap_or_default());
         let software = device.adapter_info().device_type == wgpu::DeviceType::Cpu;
@@ -132,7 +136,7 @@ impl WaterDemo {
         params.set(ParamId::SimSize, options.sim_size as f32);
         let mut demo = Self {
             params,
-            scenes: Scenes::new(water, options.float_targets, software),
+            scenes: Scenes::new(POOL, water, options.float_targets, software),
             shown: SceneKind::default(),
             renderer,
             clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),

@@ -8,7 +8,7 @@ use crate::param_spec::{Control, ParamSpec};
 use crate::sim::MAX_HEIGHT;
 use crate::sky::Daylight;
 use crate::util::push_triangle;
-use crate::world;
+use crate::world::PoolShape;
 
 /// How far the deck reaches from the pool's centre (m): past any frame the camera can show.
 pub const DECK_EXTENT: f32 = 400.0;
@@ -130,24 +130,24 @@ pub const DRY_BAND_BOTTOM: f32 = -(2.0 * MAX_HEIGHT + 0.1);
 /// columns (a row's rays reach farthest at its ends), plus a margin of [`SKY_ROWS_MARGIN`]; the
 /// sky's pass is held to them (software rasterisers shade every pixel a pass covers, hidden or
 /// not).
-pub fn sky_rows(view_proj: Mat4, eye: Vec3, size: (u32, u32)) -> u32 {
+pub fn sky_rows(view_proj: Mat4, eye: Vec3, size: (u32, u32), rim: f32) -> u32 {
     let inverse = view_proj.inverse();
     let at = |x: f32, y: f32| Vec2::new(x / size.0 as f32 * 2.0 - 1.0, 1.0 - y / size.1 as f32 * 2.0);
-    let lowest = (0..=size.1.div_ceil(2))
-        .rev()
-        .map(|k| (2 * k).min(size.1))
-        .find(|&y| (0..=8).any(|i| shows_sky(view_proj, inverse, eye, at(size.0 as f32 * i as f32 / 8.0, y as f32))));
+    let lowest = (0..=size.1.div_ceil(2)).rev().map(|k| (2 * k).min(size.1)).find(|&y| {
+        (0..=8).any(|i| shows_sky(view_proj, inverse, (eye, rim), at(size.0 as f32 * i as f32 / 8.0, y as f32)))
+    });
     lowest.map_or(0, |y| (y + SKY_ROWS_MARGIN).min(size.1))
 }
 
 /// Whether the ray through `ndc` (x, y in -1..1) from `eye` misses the deck: above the horizon,
-/// beyond [`DECK_EXTENT`], or meeting the deck past the far plane. `inverse`: `view_proj`'s.
-fn shows_sky(view_proj: Mat4, inverse: Mat4, eye: Vec3, ndc: Vec2) -> bool {
+/// beyond [`DECK_EXTENT`], or meeting the deck (at the `rim`'s height, m) past the far plane.
+/// `inverse`: `view_proj`'s.
+fn shows_sky(view_proj: Mat4, inverse: Mat4, (eye, rim): (Vec3, f32), ndc: Vec2) -> bool {
     let dir = inverse.project_point3(ndc.extend(1.0)) - eye;
     if dir.y >= 0.0 {
         return true;
     }
-    let hit = eye + dir * ((world::RIM - eye.y) / dir.y);
+    let hit = eye + dir * ((rim - eye.y) / dir.y);
     hit.x.abs().max(hit.z.abs()) > DECK_EXTENT || view_proj.project_point3(hit).z > 1.0
 }
 
@@ -156,8 +156,8 @@ const SKY_ROWS_MARGIN: u32 = 4;
 
 /// The deck as four quads around the opening at the rim's height, facing up, with the pool
 /// mesh's vertex layout (position, normal).
-pub fn deck_ring() -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, e, y) = (world::HALF_WIDTH, DECK_EXTENT, world::RIM);
+pub fn deck_ring(pool: PoolShape) -> (Vec<[f32; 6]>, Vec<u32>) {
+    let (w, e, y) = (pool.half_width, DECK_EXTENT, pool.rim);
     let inner = [Vec3::new(-w, y, -w), Vec3::new(w, y, -w), Vec3::new(w, y, w), Vec3::new(-w, y, w)];
     let outer = [Vec3::new(-e, y, -e), Vec3::new(e, y, -e), Vec3::new(e, y, e), Vec3::new(-e, y, e)];
     let positions: Vec<Vec3> = inner.iter().chain(outer.iter()).copied().collect();
@@ -207,9 +207,9 @@ mod tests {
         let views = [(-25.0, 34.0, 3.4), (-25.0, 2.0, 3.4), (60.0, 5.0, 12.0), (150.0, 60.0, 12.0), (10.0, 1.0, 1.5)];
         for (yaw, pitch, distance) in views {
             let mut camera = OrbitCamera { yaw, pitch, distance, ..OrbitCamera::default() };
-            camera.keep_eye_above(world::RIM + EYE_CLEARANCE);
+            camera.keep_eye_above(PoolShape::CLASSIC.rim + EYE_CLEARANCE);
             let view_proj = camera.view_projection(size.0 as f32 / size.1 as f32);
-            let rows = sky_rows(view_proj, camera.eye(), size);
+            let rows = sky_rows(view_proj, camera.eye(), size, PoolShape::CLASSIC.rim);
             // Every pixel of every other column (sky_rows samples nine).
             let inverse = view_proj.inverse();
             let mut lowest_sky: Option<u32> = None;
@@ -219,7 +219,7 @@ mod tests {
                         (x as f32 + 0.5) / size.0 as f32 * 2.0 - 1.0,
                         1.0 - (y as f32 + 0.5) / size.1 as f32 * 2.0,
                     );
-                    let sky = shows_sky(view_proj, inverse, camera.eye(), ndc);
+                    let sky = shows_sky(view_proj, inverse, (camera.eye(), PoolShape::CLASSIC.rim), ndc);
                     if sky {
                         lowest_sky = Some(y);
                     }
@@ -239,7 +239,7 @@ mod tests {
     fn the_water_never_falls_below_the_dry_band_the_deck_shows_the_pool_in() {
         use crate::ambient::{params, AmbientModel, AmbientSettings, AmbientWaves};
         let spec = |name: &str| params::PARAMS.iter().find(|p| p.name == name).expect("an ambient parameter");
-        let w = world::HALF_WIDTH;
+        let w = PoolShape::CLASSIC.half_width;
         let mut deepest = 0.0f32;
         for model in [AmbientModel::Sines, AmbientModel::Modes, AmbientModel::Gerstner, AmbientModel::Fft] {
             for wind in [spec("wind_speed").min(), spec("wind_speed").max()] {

@@ -8,7 +8,7 @@ use glam::Vec3;
 use wgpu::util::DeviceExt;
 
 use crate::util::push_triangle;
-use crate::world;
+use crate::world::PoolShape;
 
 /// A triangle mesh in GPU buffers.
 pub struct Mesh {
@@ -154,14 +154,14 @@ pub fn banded_grid(n: u32) -> (Vec<[f32; 2]>, Vec<u32>) {
 
 /// The pool's floor and four walls up to the rim, as (position, inward normal), wound to
 /// face inwards so that walls between the eye and the pool are culled.
-pub fn pool_box() -> (Vec<[f32; 6]>, Vec<u32>) {
-    pool_walls(-world::DEPTH, true)
+pub fn pool_box(pool: PoolShape) -> (Vec<[f32; 6]>, Vec<u32>) {
+    pool_walls(-pool.depth, true, pool)
 }
 
-/// The pool's four walls from `bottom` (m, under the rest level) up to the rim, and its floor
-/// if `floor`, laid out as [`pool_box`]'s.
-pub fn pool_walls(bottom: f32, floor: bool) -> (Vec<[f32; 6]>, Vec<u32>) {
-    let (w, d, r) = (world::HALF_WIDTH, -bottom, world::RIM);
+/// `pool`'s four walls from `bottom` (m, under the rest level) up to the rim, and its floor if
+/// `floor`, laid out as [`pool_box`]'s.
+pub fn pool_walls(bottom: f32, floor: bool, pool: PoolShape) -> (Vec<[f32; 6]>, Vec<u32>) {
+    let (w, d, r) = (pool.half_width, -bottom, pool.rim);
     let faces: [(Vec3, [Vec3; 4]); 5] = [
         (Vec3::Y, [Vec3::new(-w, -d, -w), Vec3::new(w, -d, -w), Vec3::new(w, -d, w), Vec3::new(-w, -d, w)]),
         (Vec3::X, [Vec3::new(-w, -d, -w), Vec3::new(-w, r, -w), Vec3::new(-w, r, w), Vec3::new(-w, -d, w)]),

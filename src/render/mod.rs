@@ -14,11 +14,7 @@ mod passes;
 mod regions;
 mod render_mode;
 mod resources;
-mod sea;
-mod sea_bodies;
-mod sea_foam;
-mod sea_island;
-mod sea_lattices;
+pub mod scene_parts;
 mod shaders;
 mod uniforms;
 mod upscale;
@@ -40,8 +36,6 @@ use flat::FlatWater;
 use meshes::{pool_box, pool_walls, GridMesh, Mesh};
 pub use render_mode::{Distortion, FlatCaustics, RenderMode};
 use resources::{ambient_map, water_bind_groups, DepthBuffer, SceneTextures};
-pub use sea::{SeaView, SEA_CASCADES};
-pub use sea_lattices::SeaLattices;
 use uniforms::SceneUniforms;
 use upscale::Upscale;
 use variants::{PipelineTargets, ScenePipelines, VariantBuild};
@@ -77,6 +71,8 @@ pub struct RenderSettings {
     /// Whether the device can render (and blend) into float textures; without, the caustics
     /// map is 8-bit ([`CAUSTICS_FORMAT_8BIT`]).
     pub float_targets: bool,
+    /// The box of the pool it draws (m).
+    pub pool: crate::world::PoolShape,
 }
 
 impl RenderSettings {
@@ -146,8 +142,6 @@ pub struct Renderer {
     object_regions: bool,
     /// The bodies' outlines are blended in (`BodyKind::edge`); off for tests to compare with.
     body_outlines: bool,
-    /// The open sea's pipelines and maps, once it has been drawn.
-    sea: Option<sea::SeaRenderer>,
 }
 
 impl Renderer {
@@ -184,7 +178,7 @@ impl Renderer {
             &layouts,
             FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) },
         );
-        let (pool_vertices, pool_indices) = pool_box();
+        let (pool_vertices, pool_indices) = pool_box(settings.pool);
         Self {
             settings,
             uniforms,
@@ -208,11 +202,11 @@ impl Renderer {
             grid: GridMesh::new(device, settings.surface_grid.clamp(8, 1024)),
             pool_mesh: Mesh::new(device, "pool", &pool_vertices, &pool_indices),
             dry_band_mesh: {
-                let (vertices, indices) = pool_walls(deck::DRY_BAND_BOTTOM, false);
+                let (vertices, indices) = pool_walls(deck::DRY_BAND_BOTTOM, false, settings.pool);
                 Mesh::new(device, "pool's dry band", &vertices, &indices)
             },
             deck_mesh: {
-                let (vertices, indices) = deck::deck_ring();
+                let (vertices, indices) = deck::deck_ring(settings.pool);
                 Mesh::new(device, "deck", &vertices, &indices)
             },
             body_meshes: crate::bodies::KINDS
@@ -226,7 +220,6 @@ impl Renderer {
             upscale: Upscale::new(device, settings.target_format),
             object_regions: true,
             body_outlines: true,
-            sea: None,
         }
     }
 

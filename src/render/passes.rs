@@ -219,7 +219,12 @@ impl Renderer {
                     if let Some([x, y, w, h]) = overlap(region, rect) {
                         pass.set_pipeline(&self.variants[&needs].surface);
                         pass.set_scissor_rect(x, y, w, h);
-                        match regions::grid_band(view, [x, y, w, h], size, self.grid.n()) {
+                        match regions::grid_band(
+                            view,
+                            [x, y, w, h],
+                            size,
+                            (self.grid.n(), self.settings.pool.half_width),
+                        ) {
                             Some(band) => self.grid.draw_band(&mut pass, &band),
                             None => self.grid.draw(&mut pass),
                         }
@@ -234,8 +239,11 @@ impl Renderer {
         }
         self.draw_pool(&mut pass, features);
         // Past the deck the sky shows only in the rows above its far edge.
-        let sky_rows =
-            if view.deck { deck::sky_rows(view.view_proj, view.eye, size).saturating_sub(y).min(h) } else { h };
+        let sky_rows = if view.deck {
+            deck::sky_rows(view.view_proj, view.eye, size, self.settings.pool.rim).saturating_sub(y).min(h)
+        } else {
+            h
+        };
         if sky_rows > 0 {
             pass.set_scissor_rect(x, y, w, sky_rows);
             self.sky.draw(&mut pass, &[water_group, &self.textures_group]);
@@ -303,7 +311,7 @@ pub(super) fn overlap(a: [u32; 4], b: [u32; 4]) -> Option<[u32; 4]> {
 
 /// A render pass on a colour and a depth target, clearing the colour (to `clear`) or keeping
 /// it, and clearing the depth.
-pub(super) fn begin_scene_pass<'e>(
+pub fn begin_scene_pass<'e>(
     encoder: &'e mut wgpu::CommandEncoder,
     label: &str,
     colour: &wgpu::TextureView,

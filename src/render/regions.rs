@@ -13,7 +13,6 @@ use super::meshes::GridBand;
 use super::View;
 use crate::bodies::BodyId;
 use crate::sim::MAX_HEIGHT;
-use crate::world;
 
 /// Margin around an object's region of the water surface, as a fraction of the region's
 /// larger side, plus [`REGION_MARGIN_PX`]: waves tilt the surface and bend what it shows by
@@ -127,13 +126,14 @@ fn screen_bounds(view: &View, low: Vec3, high: Vec3, size: (u32, u32)) -> Option
     Some([(lo.x * 0.5 + 0.5) * w, (0.5 - hi.y * 0.5) * h, (hi.x * 0.5 + 0.5) * w, (0.5 - lo.y * 0.5) * h])
 }
 
-/// The band of the `n` x `n` water grid (rows or columns, whichever has fewer cells) a draw
+/// The band of the `n` x `n` water grid over a pool `half_width` (m) each way (rows or columns,
+/// whichever has fewer cells) a draw
 /// into `rect` (x, y, width, height in pixels of a `size` target) needs: every row and every
 /// column whose strip of the surface, moved as far as any wave can move it, can reach a pixel
 /// of the rectangle. `None`: the whole grid (a strip behind the eye).
-pub fn grid_band(view: &View, rect: [u32; 4], size: (u32, u32), n: u32) -> Option<GridBand> {
+pub fn grid_band(view: &View, rect: [u32; 4], size: (u32, u32), (n, half_width): (u32, f32)) -> Option<GridBand> {
     let (x0, y0, x1, y1) = (rect[0] as f32, rect[1] as f32, (rect[0] + rect[2]) as f32, (rect[1] + rect[3]) as f32);
-    let half = world::HALF_WIDTH + SURFACE_REACH_SIDEWAYS;
+    let half = half_width + SURFACE_REACH_SIDEWAYS;
     let reaches = |across: Range<f32>, rows: bool| -> Option<bool> {
         let (side0, side1) = (across.start - SURFACE_REACH_SIDEWAYS, across.end + SURFACE_REACH_SIDEWAYS);
         let (low, high) = if rows {
@@ -144,11 +144,11 @@ pub fn grid_band(view: &View, rect: [u32; 4], size: (u32, u32), n: u32) -> Optio
         let [px0, py0, px1, py1] = screen_bounds(view, low, high, size)?;
         Some(px1 >= x0 && px0 <= x1 && py1 >= y0 && py0 <= y1)
     };
-    let cell = 2.0 * world::HALF_WIDTH / n as f32;
+    let cell = 2.0 * half_width / n as f32;
     let strips = |rows: bool| -> Option<Range<u32>> {
         let mut hit: Option<Range<u32>> = None;
         for k in 0..n {
-            let across = -world::HALF_WIDTH + cell * k as f32..-world::HALF_WIDTH + cell * (k + 1) as f32;
+            let across = -half_width + cell * k as f32..-half_width + cell * (k + 1) as f32;
             if reaches(across, rows)? {
                 hit = Some(hit.map_or(k..k + 1, |r| r.start..k + 1));
             }

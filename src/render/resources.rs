@@ -110,7 +110,7 @@ pub(super) fn foam_map(device: &wgpu::Device, size: u32) -> (wgpu::Texture, wgpu
 
 /// The scene uniforms with each of the water's two state textures and the ambient map (group
 /// 0 of every scene pass).
-pub(super) fn water_bind_groups(
+pub fn water_bind_groups(
     device: &wgpu::Device,
     layout: &wgpu::BindGroupLayout,
     uniforms: &wgpu::Buffer,

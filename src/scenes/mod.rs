@@ -154,12 +154,17 @@ pub struct Scenes {
 }
 
 impl Scenes {
-    /// The scenes at their starts: the pool with `water`; `float_targets`: whether the device
-    /// renders into float textures; `software`: whether it is a software rasteriser.
-    pub fn new(water: crate::sim::HeightField, float_targets: bool, software: bool) -> Self {
+    /// The scenes at their starts: the pool of `shape` with `water`; `float_targets`: whether
+    /// the device renders into float textures; `software`: whether it is a software rasteriser.
+    pub fn new(
+        shape: crate::world::PoolShape,
+        water: crate::sim::HeightField,
+        float_targets: bool,
+        software: bool,
+    ) -> Self {
         let engine = water.engine();
         Self {
-            pool: pool::PoolScene::new(water, float_targets),
+            pool: pool::PoolScene::new(shape, water, float_targets),
             sea: sea::SeaScene::new(engine, float_targets, software),
         }
     }
@@ -183,6 +188,30 @@ impl Scenes {
     pub fn all_mut(&mut self) -> [&mut dyn Scene; 2] {
         [&mut self.pool, &mut self.sea]
     }
+}
+
+/// What `name`'s control is shown for: each condition a parameter and the values (of its
+/// choices) that show it, all of them to hold; none for a control always shown. A model's own
+/// settings need their model (`params::SHOWN_WHEN`); a scene's own parameters need that scene,
+/// and the others the scenes that read them (the pool reads every parameter no other scene
+/// owns).
+pub fn shown_when(name: &str) -> Vec<(&'static str, Vec<f32>)> {
+    let owns = |kind: SceneKind| match kind {
+        SceneKind::Pool => false,
+        SceneKind::Sea => sea::owns(name),
+    };
+    let reads = |kind: SceneKind| match kind {
+        SceneKind::Pool => true,
+        SceneKind::Sea => sea::reads(name),
+    };
+    let owners: Vec<SceneKind> = SceneKind::ALL.iter().copied().filter(|&k| owns(k)).collect();
+    let showing =
+        if owners.is_empty() { SceneKind::ALL.iter().copied().filter(|&k| reads(k)).collect() } else { owners };
+    let mut conditions = crate::params::model_conditions(name);
+    if showing.len() < SceneKind::ALL.len() {
+        conditions.push((ParamId::Scene.name(), showing.iter().map(|&k| k.value()).collect()));
+    }
+    conditions
 }
 
 /// What every scene's picture shares: the camera's view, the sun, the optics, the exposure
@@ -225,4 +254,33 @@ pub fn common_view(sh: Shared<'_>, camera: &OrbitCamera) -> View {
 /// Unit vector towards the sun of the parameters.
 pub fn sun(params: &Params) -> Vec3 {
     crate::world::sun_direction(params.get(ParamId::SunAzimuth), params.get(ParamId::SunElevation))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_controls_show_in_each_scene_only_what_it_reads() {
+        let scene_of = |name: &str| shown_when(name).into_iter().find(|(on, _)| *on == "scene").map(|(_, v)| v);
+        assert_eq!(scene_of("wave_speed"), Some(vec![0.0]), "the pool's own");
+        assert_eq!(scene_of("sea_wind"), Some(vec![1.0]), "the sea's own");
+        assert_eq!(scene_of("sun_elevation"), None, "read by both");
+        assert_eq!(scene_of("scene"), None);
+        assert_eq!(scene_of("objects"), Some(vec![0.0]), "the pool's bodies");
+        assert_eq!(scene_of("sea_objects"), Some(vec![1.0]), "the sea's bodies");
+        assert_eq!(scene_of("duck_density"), None, "a kind's own, read by both");
+        assert_eq!(shown_when("wind_speed").len(), 2, "an ambient model's own setting, in the pool");
+        let counts: Vec<usize> = SceneKind::ALL
+            .iter()
+            .map(|k| {
+                crate::params::table()
+                    .iter()
+                    .filter(|p| scene_of(p.name).is_none_or(|v| v.contains(&k.value())))
+                    .count()
+            })
+            .collect();
+        println!("controls shown: {counts:?} of {} (pool, sea)", crate::params::table().len());
+        assert!(counts.iter().all(|&n| n > 10 && n < crate::params::table().len()));
+    }
 }

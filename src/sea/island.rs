@@ -54,7 +54,7 @@ pub const LAND_GRID: u32 = 128;
 /// draws its floor there.
 const LAND_LOWEST: f32 = -2.0;
 /// Water deeper than this (m) hides its floor: through twice the depth, exp(-c L) is a few %
-/// in the blue (sea_island.wgsl fades the floor out from 60 % of it).
+/// in the blue (shaders/sea/island.wgsl fades the floor out from 60 % of it).
 pub const SEE_DEPTH: f32 = 25.0;
 /// Water shallower than this (m) foams along the shore.
 pub const SHORE_FOAM_DEPTH: f32 = 1.2;

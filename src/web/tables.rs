@@ -5,7 +5,7 @@
 use wasm_bindgen::prelude::*;
 
 use crate::demo::DemoOptions;
-use crate::params::{self, table, Control};
+use crate::params::{table, Control};
 
 /// The creation options (`meshSize`, `causticsSize`) as an array of
 /// `{ name, label, min, max, default }`, for mount() to check and document them.
@@ -107,7 +107,7 @@ pub fn param_table() -> js_sys::Array {
             set(&o, "step", to_js_number(step));
             set(&o, "default", to_js_number(p.default));
             set(&o, "help", p.help);
-            let shown_when = params::shown_when(p.name)
+            let shown_when = crate::scenes::shown_when(p.name)
                 .into_iter()
                 .map(|(on, values)| {
                     let w = js_sys::Object::new();

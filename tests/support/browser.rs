@@ -18,7 +18,9 @@ use serde_json::{json, Value};
 
 #[path = "picture.rs"]
 pub mod picture;
-pub use picture::Rect;
+// For the test files (a binary that takes only some of them leaves the others unused).
+#[allow(unused_imports)]
+pub use picture::{Image, Rect};
 
 pub const CHROMIUM: &str = "/usr/bin/chromium";
 pub const CHROMEDRIVER: &str = "/usr/bin/chromedriver";
@@ -564,8 +566,8 @@ impl Browser {
         false
     }
 
-    pub async fn screenshot(&self) -> Shot {
-        Shot::decode(&self.client.screenshot().await.expect("screenshot"))
+    pub async fn screenshot(&self) -> Image {
+        Image::decode(&self.client.screenshot().await.expect("screenshot"))
     }
 
     /// Presses the left mouse button at viewport point (x, y) (CSS pixels) and releases it.
@@ -862,83 +864,6 @@ impl Drop for Browser {
         self.xvfb.take();
         let _ = std::fs::remove_dir_all(&self.profile);
     }
-}
-
-/// A decoded screenshot (RGBA8).
-pub struct Shot {
-    pub width: u32,
-    pub height: u32,
-    pub rgba: Vec<u8>,
-}
-
-impl Shot {
-    /// With WAVEPOOL_DUMP_FRAMES=DIR, writes the screenshot there as `name`.png, to look at
-    /// what a test saw.
-    pub fn dump(&self, name: &str) {
-        if let Some(dir) = std::env::var_os("WAVEPOOL_DUMP_FRAMES") {
-            let dir = std::path::PathBuf::from(dir);
-            let _ = std::fs::create_dir_all(&dir);
-            let path = dir.join(format!("{name}.png"));
-            wavepool::headless::write_png(&path, self.width, self.height, &self.rgba).expect("dump screenshot");
-        }
-    }
-
-    pub fn decode(png_bytes: &[u8]) -> Self {
-        let mut decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
-        decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
-        let mut reader = decoder.read_info().expect("png header");
-        let mut buf = vec![0; reader.output_buffer_size().expect("png size")];
-        let info = reader.next_frame(&mut buf).expect("png frame");
-        buf.truncate(info.buffer_size());
-        let rgba = match info.color_type {
-            png::ColorType::Rgba => buf,
-            png::ColorType::Rgb => buf.chunks(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect(),
-            other => panic!("unexpected screenshot colour type {other:?}"),
-        };
-        Self { width: info.width, height: info.height, rgba }
-    }
-
-    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
-        let i = ((y.min(self.height - 1) * self.width + x.min(self.width - 1)) * 4) as usize;
-        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2]]
-    }
-
-    /// Pixels of the rectangle (CSS px = screenshot px at scale factor 1).
-    pub fn region(&self, r: Rect) -> Vec<[u8; 3]> {
-        let mut out = Vec::new();
-        for y in r.y..r.y + r.h {
-            for x in r.x..r.x + r.w {
-                out.push(self.pixel(x, y));
-            }
-        }
-        out
-    }
-
-    /// Standard deviation of luma (0-255) over a rectangle: 0 for a flat fill.
-    pub fn luma_spread(&self, r: Rect) -> f64 {
-        let lumas: Vec<f64> = self.region(r).iter().map(|p| picture::luma(p.map(f64::from))).collect();
-        let mean = lumas.iter().sum::<f64>() / lumas.len() as f64;
-        (lumas.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / lumas.len() as f64).sqrt()
-    }
-
-    /// Mean colour over a rectangle.
-    pub fn mean(&self, r: Rect) -> [f64; 3] {
-        let px = self.region(r);
-        let mut m = [0.0; 3];
-        for p in &px {
-            for c in 0..3 {
-                m[c] += p[c] as f64 / px.len() as f64;
-            }
-        }
-        m
-    }
-}
-
-/// Share of pixels in `r` whose largest channel difference between two shots exceeds `threshold`.
-pub fn changed_fraction(a: &Shot, b: &Shot, r: Rect, threshold: u8) -> f64 {
-    let (pa, pb) = (a.region(r), b.region(r));
-    let changed = pa.iter().zip(&pb).filter(|(x, y)| (0..3).any(|c| x[c].abs_diff(y[c]) > threshold)).count();
-    changed as f64 / pa.len() as f64
 }
 
 /// The canvas rectangle of the demo mounted in `selector`, as JS code.

@@ -17,18 +17,46 @@
 
 use serde_json::{json, Value};
 
-/// An RGBA8 picture, rows top to bottom, 4 bytes a pixel (alpha is ignored).
-#[derive(Clone, Copy, Debug)]
-pub struct Image<'a> {
+/// A picture: RGBA8 sRGB, rows top to bottom, 4 bytes a pixel (alpha is ignored): a frame
+/// rendered natively, a browser's screenshot. The one picture type of the tests.
+#[derive(Clone, Debug)]
+pub struct Image {
     pub width: u32,
     pub height: u32,
-    pub rgba: &'a [u8],
+    pub rgba: Vec<u8>,
 }
 
-impl<'a> Image<'a> {
-    pub fn new(width: u32, height: u32, rgba: &'a [u8]) -> Self {
+impl Image {
+    pub fn new(width: u32, height: u32, rgba: Vec<u8>) -> Self {
         assert_eq!(rgba.len(), width as usize * height as usize * 4, "RGBA8 data of {width}x{height}");
         Self { width, height, rgba }
+    }
+
+    /// A PNG's pixels (a browser's screenshot).
+    pub fn decode(png_bytes: &[u8]) -> Self {
+        let mut decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
+        decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+        let mut reader = decoder.read_info().expect("png header");
+        let mut buf = vec![0; reader.output_buffer_size().expect("png size")];
+        let info = reader.next_frame(&mut buf).expect("png frame");
+        buf.truncate(info.buffer_size());
+        let rgba = match info.color_type {
+            png::ColorType::Rgba => buf,
+            png::ColorType::Rgb => buf.chunks(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect(),
+            other => panic!("unexpected screenshot colour type {other:?}"),
+        };
+        Self { width: info.width, height: info.height, rgba }
+    }
+
+    /// With WAVEPOOL_DUMP_FRAMES=DIR, writes the picture there as `name`.png, to look at what a
+    /// test saw.
+    pub fn dump(&self, name: &str) {
+        if let Some(dir) = std::env::var_os("WAVEPOOL_DUMP_FRAMES") {
+            let dir = std::path::PathBuf::from(dir);
+            let _ = std::fs::create_dir_all(&dir);
+            let path = dir.join(format!("{name}.png"));
+            wavepool::headless::write_png(&path, self.width, self.height, &self.rgba).expect("dump a picture");
+        }
     }
 
     /// The whole picture as a rectangle.
@@ -47,16 +75,145 @@ impl<'a> Image<'a> {
         luma(self.rgb(x, y))
     }
 
+    /// (R, G, B) at (x, y) as 0-1.
+    pub fn unit_rgb(&self, x: u32, y: u32) -> [f32; 3] {
+        let i = ((y * self.width + x) * 4) as usize;
+        [self.rgba[i] as f32 / 255.0, self.rgba[i + 1] as f32 / 255.0, self.rgba[i + 2] as f32 / 255.0]
+    }
+
+    /// Rec. 709 luma at (x, y) as 0-1, summed in f32 (as the native tests' bounds were set).
+    pub fn unit_luma(&self, x: u32, y: u32) -> f32 {
+        let [r, g, b] = self.unit_rgb(x, y);
+        let [wr, wg, wb] = REC709.map(|w| w as f32);
+        wr * r + wg * g + wb * b
+    }
+
+    /// The bytes (R, G, B) at (x, y), clamped into the picture.
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
+        let i = ((y.min(self.height - 1) * self.width + x.min(self.width - 1)) * 4) as usize;
+        [self.rgba[i], self.rgba[i + 1], self.rgba[i + 2]]
+    }
+
+    /// The pixels of a region, row by row (clamped into the picture).
+    pub fn region(&self, r: impl Region) -> Vec<[u8; 3]> {
+        let r = r.on(self);
+        (r.y..r.y + r.h).flat_map(|y| (r.x..r.x + r.w).map(move |x| (x, y))).map(|(x, y)| self.pixel(x, y)).collect()
+    }
+
     /// Lumas of a rectangle, row by row.
     fn lumas(&self, r: Rect) -> Vec<f64> {
         let r = r.within(self);
         (r.y..r.y + r.h).flat_map(|y| (r.x..r.x + r.w).map(move |x| (x, y))).map(|(x, y)| self.luma(x, y)).collect()
     }
+
+    /// Mean colour over a region, 0-255.
+    pub fn mean(&self, r: impl Region) -> [f64; 3] {
+        let px = self.region(r);
+        let mut m = [0.0; 3];
+        for p in &px {
+            for c in 0..3 {
+                m[c] += p[c] as f64 / px.len() as f64;
+            }
+        }
+        m
+    }
+
+    /// Mean colour over a region as 0-1.
+    pub fn mean_colour(&self, r: impl Region) -> [f32; 3] {
+        let mut sum = [0.0f64; 3];
+        let pts = r.on(self).points();
+        for &(x, y) in &pts {
+            let p = self.unit_rgb(x, y);
+            for k in 0..3 {
+                sum[k] += p[k] as f64;
+            }
+        }
+        sum.map(|s| (s / pts.len() as f64) as f32)
+    }
+
+    /// Mean and variance of luma as 0-1 over a region.
+    pub fn luma_stats(&self, r: impl Region) -> (f64, f64) {
+        let values: Vec<f64> = r.on(self).points().iter().map(|&(x, y)| self.unit_luma(x, y) as f64).collect();
+        let mean = values.iter().sum::<f64>() / values.len() as f64;
+        let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / values.len() as f64;
+        (mean, var)
+    }
+
+    /// Standard deviation of luma (0-255) over a region: 0 for a flat fill.
+    pub fn luma_spread(&self, r: impl Region) -> f64 {
+        let lumas: Vec<f64> = self.region(r).iter().map(|p| luma(p.map(f64::from))).collect();
+        mean_and_std(lumas.into_iter()).1
+    }
+
+    /// Mean absolute difference per channel (0-255) against `other` over a region.
+    pub fn mean_abs_diff(&self, other: &Image, r: impl Region) -> f64 {
+        let (a, b) = (self.region(&r), other.region(&r));
+        let sum: u64 = a.iter().zip(&b).flat_map(|(p, q)| (0..3).map(move |k| p[k].abs_diff(q[k]) as u64)).sum();
+        sum as f64 / (a.len() * 3) as f64
+    }
+
+    /// Share of the region's pixels where any channel differs from `other`'s by more than
+    /// `threshold` (0-255).
+    pub fn changed_fraction(&self, other: &Image, r: impl Region, threshold: u8) -> f64 {
+        let (a, b) = (self.region(&r), other.region(&r));
+        let changed = a.iter().zip(&b).filter(|(p, q)| (0..3).any(|k| p[k].abs_diff(q[k]) > threshold)).count();
+        changed as f64 / a.len() as f64
+    }
 }
+
+/// A part of a picture, in pixels ([`Rect`]) or in fractions of its size ([`Area`]).
+pub trait Region {
+    /// The pixels it covers on `img`.
+    fn on(&self, img: &Image) -> Rect;
+}
+
+/// As it is: reading past the picture's edge repeats the edge's pixels.
+impl Region for Rect {
+    fn on(&self, _img: &Image) -> Rect {
+        *self
+    }
+}
+
+impl<R: Region> Region for &R {
+    fn on(&self, img: &Image) -> Rect {
+        (*self).on(img)
+    }
+}
+
+/// A rectangle in fractions of the picture: x0, y0 (top left) to x1, y1.
+#[derive(Clone, Copy, Debug)]
+pub struct Area(pub f32, pub f32, pub f32, pub f32);
+
+impl Area {
+    pub const ALL: Area = Area(0.0, 0.0, 1.0, 1.0);
+
+    /// The coordinates of its pixels on `img`, row by row.
+    pub fn pixels(&self, img: &Image) -> Vec<(u32, u32)> {
+        self.on(img).points()
+    }
+
+    /// A square of half-size `r` (fraction of the width) around a pixel of `img`.
+    pub fn around(px: f32, py: f32, img: &Image, r: f32) -> Area {
+        let (cx, cy) = (px / img.width as f32, py / img.height as f32);
+        let ry = r * img.width as f32 / img.height as f32;
+        Area(cx - r, cy - ry, cx + r, cy + ry)
+    }
+}
+
+impl Region for Area {
+    fn on(&self, img: &Image) -> Rect {
+        let (x0, x1) = ((self.0 * img.width as f32) as u32, ((self.2 * img.width as f32) as u32).min(img.width));
+        let (y0, y1) = ((self.1 * img.height as f32) as u32, ((self.3 * img.height as f32) as u32).min(img.height));
+        Rect { x: x0, y: y0, w: x1.saturating_sub(x0), h: y1.saturating_sub(y0) }
+    }
+}
+
+/// Rec. 709 luma's weights of R, G and B.
+pub const REC709: [f64; 3] = [0.2126, 0.7152, 0.0722];
 
 /// Rec. 709 luma of sRGB-encoded (R, G, B), 0-255: 0.2126 R + 0.7152 G + 0.0722 B.
 pub fn luma([r, g, b]: [f64; 3]) -> f64 {
-    0.2126 * r + 0.7152 * g + 0.0722 * b
+    REC709[0] * r + REC709[1] * g + REC709[2] * b
 }
 
 /// A rectangle of pixels (left, top, width, height); clipped to the picture where used.
@@ -85,6 +242,11 @@ impl Rect {
 
     pub fn pixels(self) -> u64 {
         self.w as u64 * self.h as u64
+    }
+
+    /// Its pixels' coordinates, row by row.
+    pub fn points(self) -> Vec<(u32, u32)> {
+        (self.y..self.y + self.h).flat_map(|y| (self.x..self.x + self.w).map(move |x| (x, y))).collect()
     }
 
     /// From a JS `{left, top, width, height}` (CSS px).

@@ -11,7 +11,7 @@ use crate::params::{ParamId, Params};
 use crate::physics::{self, Ellipsoid, FloatingBody, Pose, Shape, WaterPlane};
 use crate::scenes::{Shared, STEP_DT};
 use crate::sim::{self, BodyCoupling, HullMove};
-use crate::world::{self, Sphere};
+use crate::world::Sphere;
 
 impl PoolScene {
     /// Every body at its start, at rest, not yet felt by the water (its submerged volume
@@ -70,7 +70,7 @@ impl PoolScene {
     pub fn set_body_pose(&mut self, sh: Shared<'_>, id: BodyId, pose: Pose) {
         if pose.position.is_finite() && pose.rotation.is_finite() {
             let mut pose = Pose { position: pose.position, rotation: pose.rotation.normalize() };
-            physics::keep_in_pool(&mut pose, &hull(sh, id));
+            physics::keep_in_pool(&mut pose, &hull(sh, id), self.shape);
             self.bodies[id.0].motion = FloatingBody::at(pose);
         }
     }
@@ -91,7 +91,7 @@ impl PoolScene {
     /// there now (flat at the rest level before any probes have arrived).
     fn water_planes(&mut self, sh: Shared<'_>) -> Vec<WaterPlane> {
         let frame = self.water.frames() + 1;
-        let level = self.submerged_volume(sh.params) / sim::pool_area(world::HALF_WIDTH);
+        let level = self.submerged_volume(sh.params) / sim::pool_area(self.shape.half_width);
         let mut planes = vec![WaterPlane::flat(level); self.bodies.len()];
         let t = sh.sim_time();
         // The ambient surface now, made once for all bodies' probes.
@@ -156,14 +156,14 @@ impl PoolScene {
                     }
                     shapes[k].submerged(&body.motion.pose, &planes[k]).0
                 } else {
-                    body.motion.step(&shapes[k], gravity, &planes[k], STEP_DT, &physics::Bounds::pool())
+                    body.motion.step(&shapes[k], gravity, &planes[k], STEP_DT, &physics::Bounds::pool(self.shape))
                 };
             }
             if shown.len() > 1 {
                 let mass = |id: BodyId| if held == Some(id) { f32::INFINITY } else { shapes[id.0].mass() };
                 bump_apart(&mut self.bodies, &shown, &bump, &mass);
                 for id in BodyId::all() {
-                    physics::keep_in_pool(&mut self.bodies[id.0].motion.pose, &hulls[id.0]);
+                    physics::keep_in_pool(&mut self.bodies[id.0].motion.pose, &hulls[id.0], self.shape);
                 }
             }
             if steps > 0 {
@@ -201,7 +201,7 @@ impl PoolScene {
             let radius = (id.kind().probe_ring)(&|name: &str| sh.value(name));
             probes.extend(ring(Vec2::new(pose.position.x, pose.position.z), radius));
         }
-        let rest_level = self.submerged_volume(sh.params) / sim::pool_area(world::HALF_WIDTH);
+        let rest_level = self.submerged_volume(sh.params) / sim::pool_area(self.shape.half_width);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
     }
 }

@@ -16,7 +16,7 @@ use crate::params::{ParamId, Params};
 use crate::physics::Pose;
 use crate::render::{DebugTexture, RenderMode, Renderer};
 use crate::sim::{Drop, HeightField, WaveSettings};
-use crate::world;
+use crate::world::PoolShape;
 
 /// How near (pixels) to the split view's divider a press grabs it.
 pub const DIVIDER_GRAB_PX: f32 = 12.0;
@@ -24,6 +24,8 @@ pub const DIVIDER_GRAB_PX: f32 = 12.0;
 /// The pool's state: its camera, water, bodies and ambient waves.
 pub struct PoolScene {
     pub camera: OrbitCamera,
+    /// The pool's box (m).
+    shape: PoolShape,
     /// The `sim_size` parameter value the water was last built or resampled for (set by
     /// [`PoolScene::start`]).
     applied_sim_size: f32,
@@ -44,10 +46,12 @@ pub struct PoolScene {
 }
 
 impl PoolScene {
-    /// The pool with `water`; the FFT ocean on the GPU where it renders into `float_targets`.
-    pub fn new(water: HeightField, float_targets: bool) -> Self {
+    /// The pool of `shape` with `water` (as wide); the FFT ocean on the GPU where it renders
+    /// into `float_targets`.
+    pub fn new(shape: PoolShape, water: HeightField, float_targets: bool) -> Self {
         Self {
             camera: OrbitCamera::default(),
+            shape,
             applied_sim_size: 0.0,
             bodies: Vec::new(),
             probe_latency: None,
@@ -66,6 +70,11 @@ impl PoolScene {
         self.applied_sim_size = sh.params.get(ParamId::SimSize);
         self.refresh_ambient(sh.params);
         self.place_bodies_at_start(sh);
+    }
+
+    /// The pool's box (m).
+    pub fn shape(&self) -> PoolShape {
+        self.shape
     }
 
     pub fn water(&self) -> &HeightField {
@@ -127,7 +136,7 @@ impl super::Scene for PoolScene {
     fn follow_params(&mut self, params: &Params) {
         if Self::on_deck(params) {
             // The camera stays above the paving.
-            self.camera.keep_eye_above(world::RIM + crate::render::EYE_CLEARANCE);
+            self.camera.keep_eye_above(self.shape.rim + crate::render::EYE_CLEARANCE);
         }
         self.refresh_ambient(params);
         self.water.set_foam(Self::foam(params));
@@ -212,7 +221,7 @@ impl super::Scene for PoolScene {
     }
 
     fn drop_area(&self) -> (f32, &'static str) {
-        (world::HALF_WIDTH, "the pool")
+        (self.shape.half_width, "the pool")
     }
 
     fn add_drop(&mut self, drop: Drop) {

@@ -9,7 +9,6 @@ use crate::render::RenderMode;
 use crate::render::{AmbientView, DebugChoice, DebugView, View};
 use crate::scenes::{common_view, Shared};
 use crate::sim;
-use crate::world;
 
 impl PoolScene {
     /// Remakes the ambient waves if their parameters changed.
@@ -24,6 +23,7 @@ impl PoolScene {
             spectrum: p.choice(ParamId::Spectrum),
             fft_size: p.get(ParamId::FftSize) as usize,
             choppiness: p.get(ParamId::Choppiness),
+            basin: self.shape,
         };
         if settings != self.ambient_settings {
             self.ambient = AmbientWaves::new(&settings);
@@ -65,7 +65,7 @@ impl PoolScene {
             resolution: p.get(ParamId::FlatResolution),
             caustics: p.choice(ParamId::FlatCaustics),
             soft_edge: p.get(ParamId::FlatSoftEdge),
-            plane: self.submerged_volume(p) / sim::pool_area(world::HALF_WIDTH),
+            plane: self.submerged_volume(p) / sim::pool_area(self.shape.half_width),
         })
     }
 

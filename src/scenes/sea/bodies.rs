@@ -19,7 +19,7 @@ use crate::sim::{BodyCoupling, SPONGE_WIDTH};
 /// The box the sea's bodies keep in (m): the pool's enlarged with the patch, inside the patch's
 /// absorbing border (where the water would swallow their pushes).
 pub fn sea_bounds() -> Bounds {
-    let (s, pool) = (sea::patch_scale(), Bounds::pool());
+    let (s, pool) = (sea::patch_scale(), Bounds::pool(crate::world::PoolShape::CLASSIC));
     let inner = sea::PATCH_HALF_WIDTH - SPONGE_WIDTH * s;
     Bounds { least: Vec3::new(-inner, pool.least.y * s, -inner), most: Vec3::new(inner, pool.most.y * s, inner) }
 }

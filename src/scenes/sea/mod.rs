@@ -5,6 +5,7 @@
 //! parameters, constants and settings are in `crate::sea`; its passes in the renderer.
 
 mod bodies;
+mod render;
 #[cfg(not(target_arch = "wasm32"))]
 mod timings;
 
@@ -18,9 +19,44 @@ use crate::bodies::BodyId;
 use crate::camera::OrbitCamera;
 use crate::gpu::FrameContext;
 use crate::params::{ParamId, Params};
-use crate::render::{SeaLattices, SeaView, View, SEA_CASCADES};
+use crate::render::View;
 use crate::sea::{self, island, IslandChoice, SeaSettings, EYE_OVER_CRESTS, SEA_LATTICE};
 use crate::sim::{Drop, HeightField, SimEngine, WaveSettings};
+use render::{SeaLattices, SeaRenderer, SeaView, SEA_CASCADES};
+
+/// The pool's parameters the sea reads too: the caustics (on the shallows' floor), the clicks'
+/// drops, the sun and the exposure, the optics of reflection and highlight, the bodies'
+/// gravity, the running and the frame's quality; and the scene's choice. (The kinds of body's
+/// own sizes and densities it reads as well.)
+const READS_OF_THE_POOL: &[ParamId] = &[
+    ParamId::Scene,
+    ParamId::Caustics,
+    ParamId::DropRadius,
+    ParamId::DropStrength,
+    ParamId::SunAzimuth,
+    ParamId::SunElevation,
+    ParamId::SunSize,
+    ParamId::Exposure,
+    ParamId::Fresnel,
+    ParamId::Specular,
+    ParamId::Shininess,
+    ParamId::Gravity,
+    ParamId::Paused,
+    ParamId::Quality,
+    ParamId::FrameBudget,
+];
+
+/// Whether parameter `name` is the sea's own (shown only in the sea).
+pub fn owns(name: &str) -> bool {
+    sea::PARAMS.iter().any(|p| p.name == name)
+}
+
+/// Whether the sea reads parameter `name`, its own or one it shares.
+pub fn reads(name: &str) -> bool {
+    owns(name)
+        || READS_OF_THE_POOL.iter().any(|id| id.name() == name)
+        || crate::bodies::kind_params().any(|n| n == name)
+}
 
 /// The sea's settings in `params`.
 pub fn sea_settings(params: &Params) -> SeaSettings {
@@ -68,6 +104,8 @@ pub struct SeaScene {
     engine: SimEngine,
     /// Whether the device renders into float textures.
     float_targets: bool,
+    /// Its pipelines and maps, made at its first frame.
+    drawing: Option<SeaRenderer>,
     /// Whether the cascades are summed by the GPU's FFT: with float render targets, unless the
     /// adapter is a software rasteriser. There the GPU's passes run on the CPU as well, each
     /// paying for every texel it writes, where the CPU's radix-2 stages sum the cascades ahead
@@ -96,7 +134,7 @@ struct Sea {
     /// bodies start from (and the tests' sea). `None` once they no longer hold this sea's
     /// waves (new waves, a reset).
     pub(super) now: Option<(u64, SeaNow)>,
-    /// The floating bodies in the sea, one per kind (demo/sea_bodies.rs).
+    /// The floating bodies in the sea, one per kind (`bodies.rs`).
     pub(super) bodies: Vec<crate::bodies::Body>,
 }
 
@@ -111,6 +149,7 @@ impl SeaScene {
             engine,
             float_targets,
             fft_on_gpu: float_targets && !software,
+            drawing: None,
         }
     }
 
@@ -166,29 +205,35 @@ impl SeaScene {
         View { bodies: self.drawn_bodies(sh), ..common_view(sh, &self.camera) }
     }
 
-    /// What the renderer's sea pass is told of this frame (after its `steps` fixed steps).
-    fn drawn<'a>(&'a self, sh: Shared<'_>, view: &View, lattices: SeaLattices<'a>, steps: u32) -> SeaView<'a> {
+    /// What the sea's passes are told of this frame (after its `steps` fixed steps), seen by
+    /// `camera`.
+    fn drawn<'a>(
+        (camera, sea, extras): (&'a OrbitCamera, &'a Sea, SeaExtras),
+        sh: Shared<'_>,
+        view: &View,
+        lattices: SeaLattices<'a>,
+        steps: u32,
+    ) -> SeaView<'a> {
         let settings = sea_settings(sh.params);
-        let sea = self.sea.as_ref().expect("made by the frame");
         SeaView {
-            camera: &self.camera,
+            camera,
             fog_distance: settings.fog_distance,
             choppiness: settings.choppiness,
             crest: settings.crest_bound(),
             cascades: sea.cascades_drawn(),
             lattices,
             patch: &sea.patch,
-            whitecaps: self.extras.whitecaps,
-            shore_foam: self.extras.shore_foam,
+            whitecaps: extras.whitecaps,
+            shore_foam: extras.shore_foam,
             variant: sea::SeaVariant {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
                 whitecap_map: sea.may_break,
                 shallow_caustics: settings.island.is_some() && sh.params.flag(ParamId::Caustics),
-                mirrored_bodies: self.extras.mirrored_bodies && view.bodies.iter().any(Option::is_some),
+                mirrored_bodies: extras.mirrored_bodies && view.bodies.iter().any(Option::is_some),
             },
             // Not kept (tests): the map holds only the frame's own foam.
-            whitecaps_kept: if self.extras.kept_whitecaps {
+            whitecaps_kept: if extras.kept_whitecaps {
                 (-(steps as f32) * STEP_DT / sea::WHITECAP_LIFETIME).exp()
             } else {
                 0.0
@@ -262,13 +307,14 @@ impl super::Scene for SeaScene {
             None => SeaLattices::Fft { oceans: &oceans, t },
         };
         renderer.prepare(queue, encoder, &view, &sea.patch);
-        let drawn = self.drawn(sh, &view, lattices, steps);
+        let drawn = Self::drawn((&self.camera, sea, self.extras), sh, &view, lattices, steps);
         // The sea's waves' stage is its cascades' FFT; its maps' stage the island's mirror
         // and the kept whitecaps.
         let mut marks = |encoder: &mut wgpu::CommandEncoder, maps: bool| {
             mark(encoder, if maps { Stage::AfterMaps } else { Stage::AfterWaves })
         };
-        renderer.encode_sea(FrameContext { device, queue, encoder, target, size }, &view, &drawn, &mut marks);
+        let cx = FrameContext { device, queue, encoder: &mut *encoder, target, size };
+        render::encode(&mut self.drawing, renderer, cx, (&view, &drawn), &mut marks);
         mark(encoder, Stage::AfterShading);
         let sea = self.sea.as_mut().expect("made above");
         sea.now = Some((step, now));

@@ -1,34 +1,42 @@
-//! Drawing the open sea (`shaders/sea.wgsl`): the projected grid, which has no vertex buffer
+//! Drawing the open sea (`shaders/sea/sea.wgsl`): the projected grid, which has no vertex buffer
 //! (its vertices come from their index, a cell about every [`GRID_CELL_PX`] pixels), and the
 //! sky pass behind it. The grid covers the screen from a margin below its bottom edge up to
 //! the horizon of [`GRID_FAR`]; the margin is what the largest waves can pull the grid's edge
 //! in by, so the moved edge never uncovers the background. The cascades' maps are filled
-//! each frame from the GPU's FFT or the CPU's (render/sea_lattices.rs).
+//! each frame from the GPU's FFT or the CPU's (`lattices.rs`). The sea's passes, its own: the
+//! renderer lends it the scene uniforms, the textures, the depth target and the upscaler
+//! (`render::scene_parts`).
 
 use glam::{Vec2, Vec3};
 
-use super::resources::water_bind_groups;
-use super::sea_foam::{no_map, WhitecapMaps};
-use super::sea_island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
-use super::sea_lattices::{LatticeMaps, SeaLattices};
-use super::{shaders, Features, Renderer, DEPTH_FORMAT};
+mod bodies;
+mod foam;
+mod island;
+mod lattices;
+
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FrameContext, FullscreenPass, FullscreenTarget};
+use crate::render::scene_parts::{begin_scene_pass, scene_prelude_in, water_bind_groups, DEPTH_FORMAT};
+use crate::render::{Features, Renderer, View};
 use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS};
 use crate::sim::HeightField;
+use foam::{no_map, WhitecapMaps};
+use island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
+use lattices::LatticeMaps;
+pub use lattices::SeaLattices;
 
-/// Cascades the sea's shader sums (`CASCADES` in sea.wgsl).
+/// Cascades the sea's shader sums (`CASCADES` in shaders/sea/sea.wgsl).
 pub const SEA_CASCADES: usize = crate::ambient::cascades::CASCADE_COUNT;
 /// The most the grid reaches past the screen's edges (NDC): a camera low over a storm asks
 /// about one screen; past that the cells spread thin.
 const MAX_GRID_MARGIN: f32 = 1.5;
 
-const WGSL: &str = crate::wgsl!("sea.wgsl");
-const ISLAND_WGSL: &str = crate::wgsl!("sea_island.wgsl");
-const FOAM_WGSL: &str = crate::wgsl!("sea_foam.wgsl");
-const WAVES_WGSL: &str = crate::wgsl!("sea_waves.wgsl");
+const WGSL: &str = crate::wgsl!("sea/sea.wgsl");
+const ISLAND_WGSL: &str = crate::wgsl!("sea/island.wgsl");
+const FOAM_WGSL: &str = crate::wgsl!("sea/foam.wgsl");
+const WAVES_WGSL: &str = crate::wgsl!("sea/waves.wgsl");
 
-/// What a frame of the sea depends on besides the scene's [`super::View`].
+/// What a frame of the sea depends on besides the scene's [`View`].
 pub struct SeaView<'a> {
     pub camera: &'a OrbitCamera,
     /// The fog's distance at sea level (m); `None`: no fog.
@@ -125,16 +133,17 @@ impl SeaRenderer {
                 gpu::filtered_texture_entry(1, wgpu::ShaderStages::FRAGMENT),
             ],
         });
-        let format = renderer.settings.target_format;
-        let base = shaders::scene_prelude_in(features, format, super::sea_bodies::WGSL);
+        let format = renderer.settings().target_format;
+        let base = scene_prelude_in(features, format, bodies::WGSL);
         // The plain grid's variant leaves out the island and the bodies' mirror images: the
         // rows that can show them are drawn with variants of their own.
         let prelude = |island: bool, mirrored_bodies| {
             let variant = SeaVariant { island: variant.island.filter(|_| island), mirrored_bodies, ..variant };
-            let constants = [crate::sea::wgsl_constants(variant), super::sea_island::wgsl_constants()];
+            let constants = [crate::sea::wgsl_constants(variant), island::wgsl_constants()];
             [base.clone(), constants.concat()].join("\n")
         };
-        let layouts = [&renderer.water_layout, &renderer.textures_layout, &layout, &frame_layout];
+        let [water_layout, textures_layout] = renderer.scene_layouts();
+        let layouts = [water_layout, textures_layout, &layout, &frame_layout];
         let module = |island, bodies| {
             let parts = [gpu::wgsl::FULLSCREEN, &prelude(island, bodies), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
             gpu::shader(device, "sea", &parts)
@@ -143,7 +152,7 @@ impl SeaRenderer {
         let plain = module(false, false);
         let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
         let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
-        let bodies = super::sea_bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
+        let bodies = bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
         let island_drawing = variant.island.map(|place| {
@@ -168,7 +177,7 @@ impl SeaRenderer {
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
         let sky = FullscreenPass::new(device, "sea sky", &parts, "fs_sea_sky", &layouts, sky);
         let patch_groups =
-            water_bind_groups(device, &renderer.water_layout, &renderer.uniforms, patch, &renderer.ambient_views);
+            water_bind_groups(device, water_layout, renderer.uniforms(), patch, renderer.ambient_views());
         let (mirror, no_whitecap_map) = (MirrorTarget::new(device, (1, 1)), no_map(device));
         let frame_groups = frame_groups(device, &frame_layout, &mirror, whitecaps.as_ref(), &no_whitecap_map);
         Self {
@@ -407,78 +416,78 @@ fn grid_layout(camera: &OrbitCamera, (crest, carry): (f32, f32), size: (u32, u32
     (rect, cells, angle)
 }
 
-impl Renderer {
-    /// Draws the sea into `target` (`size` pixels) at the view's render scale, after
-    /// [`Renderer::prepare`] wrote this frame's scene uniforms for `view` (the sea camera's,
-    /// with its bodies, no caustics or deck).
-    pub fn encode_sea(
-        &mut self,
-        cx: FrameContext<'_>,
-        view: &super::View,
-        sea: &SeaView<'_>,
-        mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
-    ) {
-        let FrameContext { device, queue, encoder, target, size } = cx;
-        let features = view.features();
-        let variant =
-            SeaVariant { whitecap_map: sea.variant.whitecap_map && self.settings.float_targets, ..sea.variant };
-        if self.sea.as_ref().is_none_or(|s| (s.features, s.variant) != (features, variant)) {
-            let lattices = self.sea.take().map(|s| s.lattices);
-            self.sea = Some(SeaRenderer::new(self, device, queue, (features, variant), sea.patch, lattices));
-        }
-        let scaled = self.scaled_size(view, size);
-        let bodies = super::sea_bodies::mirror_boxes(view, sea.crest * sea.choppiness);
-        if scaled != size {
-            let image = self.upscale.image(device, self.settings.target_format, scaled);
-            self.draw_sea(device, queue, encoder, (&image, scaled), (sea, &bodies), mark);
-            self.upscale.run(encoder, target);
-        } else {
-            self.draw_sea(device, queue, encoder, (target, size), (sea, &bodies), mark);
-        }
+/// Draws the sea into `target` (`size` pixels) at the view's render scale with `drawing`, its
+/// pipelines and maps (made at the first frame, and again when the view's features or the sea's
+/// variant change), after [`Renderer::prepare`] wrote this frame's scene uniforms for `view`
+/// (the sea camera's, with its bodies, no caustics or deck).
+pub fn encode(
+    drawing: &mut Option<SeaRenderer>,
+    renderer: &mut Renderer,
+    cx: FrameContext<'_>,
+    (view, sea): (&View, &SeaView<'_>),
+    mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
+) {
+    let FrameContext { device, queue, encoder, target, size } = cx;
+    let features = view.features();
+    let variant =
+        SeaVariant { whitecap_map: sea.variant.whitecap_map && renderer.settings().float_targets, ..sea.variant };
+    if drawing.as_ref().is_none_or(|s| (s.features, s.variant) != (features, variant)) {
+        let lattices = drawing.take().map(|s| s.lattices);
+        *drawing = Some(SeaRenderer::new(renderer, device, queue, (features, variant), sea.patch, lattices));
     }
+    let drawn = drawing.as_mut().expect("made above");
+    let scaled = renderer.scene_size(view, size);
+    let bodies = bodies::mirror_boxes(view, sea.crest * sea.choppiness);
+    if scaled != size {
+        let image = renderer.upscale_image(device, scaled);
+        let cx = FrameContext { device, queue, encoder: &mut *encoder, target: &image, size: scaled };
+        drawn.draw(renderer, cx, (sea, &bodies), mark);
+        renderer.upscale_into(encoder, target);
+    } else {
+        drawn.draw(renderer, FrameContext { device, queue, encoder, target, size }, (sea, &bodies), mark);
+    }
+}
 
-    /// The sea's grid and sky into `target` of `size` pixels, after the passes that make the
-    /// frame's maps (the island's mirror, the kept whitecaps) and then `mark`; `bodies`: boxes
-    /// round the floating bodies and their mirror images.
-    fn draw_sea(
+impl SeaRenderer {
+    /// The sea's grid and sky into the frame's target, after the passes that make the frame's
+    /// maps (the island's mirror, the kept whitecaps) and then `mark`; `bodies`: boxes round
+    /// the floating bodies and their mirror images.
+    fn draw(
         &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        encoder: &mut wgpu::CommandEncoder,
-        (target, size): (&wgpu::TextureView, (u32, u32)),
+        renderer: &mut Renderer,
+        cx: FrameContext<'_>,
         (sea, bodies): (&SeaView<'_>, &[(Vec3, Vec3)]),
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
-        let drawn = self.sea.as_mut().expect("made by encode_sea");
+        let FrameContext { device, queue, encoder, target, size } = cx;
         let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
-        if drawn.island_drawing.is_some() && drawn.mirror.size() != mirror_size {
-            drawn.mirror = MirrorTarget::new(device, mirror_size);
-            let whitecaps = drawn.whitecaps.as_ref();
-            drawn.frame_groups =
-                frame_groups(device, &drawn.frame_layout, &drawn.mirror, whitecaps, &drawn.no_whitecap_map);
+        if self.island_drawing.is_some() && self.mirror.size() != mirror_size {
+            self.mirror = MirrorTarget::new(device, mirror_size);
+            let whitecaps = self.whitecaps.as_ref();
+            self.frame_groups =
+                frame_groups(device, &self.frame_layout, &self.mirror, whitecaps, &self.no_whitecap_map);
         }
         let (u, (rect, cells), up) = sea_uniforms(sea, size);
-        queue.write_buffer(&drawn.uniforms, 0, bytemuck::bytes_of(&u));
-        drawn.lattices.fill(device, queue, encoder, sea.lattices);
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
+        self.lattices.fill(device, queue, encoder, sea.lattices);
         mark(encoder, false);
-        let depth = self.depth_view(device, size).clone();
-        let drawn = self.sea.as_mut().expect("made by encode_sea");
-        let scene_groups = [&drawn.patch_groups[sea.patch.state().current()], &self.textures_group, &drawn.group];
-        if let Some(whitecaps) = &mut drawn.whitecaps {
-            whitecaps.update(encoder, scene_groups, &drawn.frame_groups);
+        let depth = renderer.scene_depth(device, size).clone();
+        let scene_groups = [&self.patch_groups[sea.patch.state().current()], renderer.textures_group(), &self.group];
+        if let Some(whitecaps) = &mut self.whitecaps {
+            whitecaps.update(encoder, scene_groups, &self.frame_groups);
         }
-        let frame_group = &drawn.frame_groups[drawn.whitecaps.as_ref().map_or(0, WhitecapMaps::current)];
+        let frame_group = &self.frame_groups[self.whitecaps.as_ref().map_or(0, WhitecapMaps::current)];
         let [a, b, c] = scene_groups;
         let groups = [a, b, c, frame_group];
-        if let Some(island) = &drawn.island_drawing {
-            island.draw_mirrored(encoder, &drawn.mirror, &groups[..3]);
+        if let Some(island) = &self.island_drawing {
+            island.draw_mirrored(encoder, &self.mirror, &groups[..3]);
         }
         mark(encoder, true);
-        let mut pass = super::passes::begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
+        let mut pass = begin_scene_pass(encoder, "sea", target, &depth, Some(wgpu::Color::BLACK));
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
-        for (pipeline, mesh) in drawn.bodies.iter().zip(&self.body_meshes) {
+        for (pipeline, mesh) in self.bodies.iter().zip(renderer.body_meshes()) {
             if let Some(pipeline) = pipeline {
                 pass.set_pipeline(pipeline);
                 mesh.draw(&mut pass);
@@ -487,16 +496,16 @@ impl Renderer {
         // Which cells can show the island and which the bodies' mirror images.
         let view_proj = sea.camera.view_projection(size.0 as f32 / size.1.max(1) as f32);
         let reach = (sea.crest, up.length());
-        let island_rows = drawn.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
-        let (body_columns, body_rows) = match drawn.near_bodies {
+        let island_rows = self.island_drawing.as_ref().map_or(0..0, |i| i.rows_near(view_proj, rect, cells.1, reach));
+        let (body_columns, body_rows) = match self.near_bodies {
             Some(_) => cells_showing(bodies, view_proj, rect, cells, (sea.crest, 0.0)),
             None => (0..0, 0..0),
         };
-        drawn.draw_grid(&mut pass, GridRuns { cells, island_rows, body_columns, body_rows });
-        if let Some(island) = &drawn.island_drawing {
+        self.draw_grid(&mut pass, GridRuns { cells, island_rows, body_columns, body_rows });
+        if let Some(island) = &self.island_drawing {
             island.draw_land(&mut pass);
         }
-        drawn.sky.draw(&mut pass, &groups);
+        self.sky.draw(&mut pass, &groups);
     }
 }
 

@@ -1,4 +1,4 @@
-//! Drawing the sea's island (`shaders/sea_island.wgsl`): its heightmap as a texture the sea
+//! Drawing the sea's island (`shaders/sea/island.wgsl`): its heightmap as a texture the sea
 //! reads its floor from, its land's mesh (the quads above the water), and the mirror: the land
 //! drawn upside down in the sea plane into a texture at half the frame's size, which the sea
 //! reads at its own pixel, moved by its waves' slopes, wherever it mirrors the island (a planar
@@ -7,8 +7,8 @@
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
-use super::DEPTH_FORMAT;
 use crate::gpu;
+use crate::render::DEPTH_FORMAT;
 use crate::sea::island;
 
 /// The mirror's texels: colours stored as sqrt(c / MIRROR_RANGE) (8 bits hold the land's
@@ -75,7 +75,7 @@ pub(super) fn island_map(device: &wgpu::Device, queue: &wgpu::Queue, with_island
     let n = if with_island { island::MAP_TEXELS } else { 1 };
     let texture = gpu::texture_2d(device, "island", (n, n, 1), 1, wgpu::TextureFormat::Rgba16Float, usage);
     let texels = if with_island { island::map() } else { vec![[-island::FLOOR_DEPTH, 0.0, 0.0, 0.0]] };
-    let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::sea_lattices::f16_bits)).collect();
+    let halves: Vec<[u16; 4]> = texels.iter().map(|t| t.map(super::lattices::f16_bits)).collect();
     gpu::write_texture_2d(queue, &texture, 0, bytemuck::cast_slice(&halves));
     texture
 }
@@ -134,8 +134,13 @@ impl IslandDrawing {
         groups: &[&wgpu::BindGroup],
     ) {
         let clear = wgpu::Color::TRANSPARENT;
-        let mut pass =
-            super::passes::begin_scene_pass(encoder, "island mirrored", &mirror.view, &mirror.depth, Some(clear));
+        let mut pass = crate::render::scene_parts::begin_scene_pass(
+            encoder,
+            "island mirrored",
+            &mirror.view,
+            &mirror.depth,
+            Some(clear),
+        );
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
@@ -221,9 +226,9 @@ pub(super) fn mesh_pipeline(
     (format, cull): (wgpu::TextureFormat, Option<wgpu::Face>),
 ) -> wgpu::RenderPipeline {
     let [vertex_entry, fragment_entry] = entries;
-    super::variants::mesh_pipeline(
+    crate::render::scene_parts::mesh_pipeline(
         device,
-        super::variants::MeshPipeline {
+        crate::render::scene_parts::MeshPipeline {
             label,
             module: p.module,
             vertex_entry,
@@ -236,7 +241,7 @@ pub(super) fn mesh_pipeline(
             format,
             blend: None,
             write_mask: wgpu::ColorWrites::ALL,
-            depth: super::variants::DepthUse::TestAndWrite,
+            depth: crate::render::scene_parts::DepthUse::TestAndWrite,
         },
     )
 }

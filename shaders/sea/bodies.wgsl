@@ -1,4 +1,4 @@
-// The floating bodies in the open sea (render/sea_bodies.rs): the sea's answers to what every
+// The floating bodies in the open sea (scenes/sea/render/bodies.rs): the sea's answers to what every
 // body's mesh asks of the scene it is in, in place of the pool's (scene_seen.wgsl). A body is
 // lit by the sun and by the sky above it, and from below by the little light the deep water
 // sends back up; it is seen through the haze like the sea around it. Its part under the water

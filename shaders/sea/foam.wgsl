@@ -1,4 +1,4 @@
-// The whitecaps kept over time (render/sea_foam.rs): foam (0-1) in red over the sea plane
+// The whitecaps kept over time (scenes/sea/render/foam.rs): foam (0-1) in red over the sea plane
 // round the origin, WHITECAP_MAP_TEXELS a side over WHITECAP_MAP_HALF_WIDTH each way, indexed
 // by rest point (where the eye's ray meets the mean plane). Each frame a texel keeps its foam
 // times sea.foam.w (e^(-steps dt / lifetime): the same fade at every frame rate) or takes the

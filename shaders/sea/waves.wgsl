@@ -1,4 +1,4 @@
-// The open sea's waves (render/sea.rs): the five FFT cascades read from their maps at a rest
+// The open sea's waves (scenes/sea/render/mod.rs): the five FFT cascades read from their maps at a rest
 // point (each a turned lattice of its own tile, faded where a footprint outgrows its texels),
 // summed into the surface's height, the water's sideways carry and the Jacobian of the choppy
 // map that makes whitecaps; and the grid's outline for its debug view.

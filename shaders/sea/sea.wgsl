@@ -1,4 +1,4 @@
-// The open sea (render/sea.rs). A grid laid over the screen is projected along the eye's rays
+// The open sea (scenes/sea/render/mod.rs). A grid laid over the screen is projected along the eye's rays
 // onto the mean sea plane (capped GRID_FAR away), so its cells stay about the same size in
 // pixels from the bow to the horizon; each vertex is then moved by the FFT cascades (heights,
 // and the choppy sideways carry x0 - lambda D) and the clicks' ripples (a patch of the pool's
@@ -20,7 +20,7 @@ struct Sea {
                                    // foam drawn or not, the highest crest (m), the share of
                                    // the kept whitecaps left after this frame's steps
     mirror: vec4<f32>,             // 1 / the target's width and height (px): a pixel's place
-                                   // in the island's mirror (sea_island.wgsl)
+                                   // in the island's mirror (shaders/sea/island.wgsl)
     fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m)
     cascades: array<vec4<f32>, CASCADES>, // cos, sin of the turn, tile (m), slope variance
 }

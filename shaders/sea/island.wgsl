@@ -9,7 +9,7 @@
 @group(2) @binding(3) var island_map: texture_2d<f32>;
 // The land mirrored in the sea plane, at half the frame's size: sqrt(colour / MIRROR_RANGE),
 // coverage in alpha.
-@group(3) @binding(0) var mirror_map: texture_2d<f32>; // (binding 1: sea_foam.wgsl)
+@group(3) @binding(0) var mirror_map: texture_2d<f32>; // (binding 1: shaders/sea/foam.wgsl)
 
 
 const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);

@@ -1,16 +1,16 @@
 //! The floating bodies drawn in the open sea: each present kind's mesh with its own entry
-//! points, built in the sea's shader module, where `shaders/sea_bodies.wgsl` lights them as the
+//! points, built in the sea's shader module, where `shaders/sea/bodies.wgsl` lights them as the
 //! sea is lit and hazes them with it. Drawn before the sea's grid, so that the water's costly
 //! fragments behind their parts above it fail the depth test (their parts under it are then
 //! hidden by the water).
 
 use glam::Vec3;
 
-use super::variants::{mesh_pipeline, DepthUse, MeshPipeline};
-use super::View;
 use crate::bodies::{BodyId, KINDS};
+use crate::render::scene_parts::{mesh_pipeline, DepthUse, MeshPipeline};
+use crate::render::View;
 
-pub(super) const WGSL: &str = crate::wgsl!("sea_bodies.wgsl");
+pub(super) const WGSL: &str = crate::wgsl!("sea/bodies.wgsl");
 
 /// Per kind of `bodies::KINDS`, its mesh's pipeline if it is among `present` (bits of the kinds).
 pub(super) fn body_pipelines(

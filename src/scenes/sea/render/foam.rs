@@ -1,4 +1,4 @@
-//! The sea's whitecaps kept over time (`shaders/sea_foam.wgsl`): a map of foam over the sea
+//! The sea's whitecaps kept over time (`shaders/sea/foam.wgsl`): a map of foam over the sea
 //! plane round the origin (the clicks' patch, the camera's target), [`WHITECAP_MAP_TEXELS`] a
 //! side. Each frame one pass writes the other of its two textures: every texel the larger of
 //! its foam faded by the frame's fixed steps (e^(-steps dt / lifetime)) and the foam the waves'
