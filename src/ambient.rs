@@ -11,6 +11,7 @@
 //! their precision. Lengths in metres, times in seconds, angles in radians unless named `_deg`.
 
 pub mod cascades;
+mod fft;
 pub mod gpu_ocean;
 pub mod ocean;
 pub mod params;

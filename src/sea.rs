@@ -76,6 +76,19 @@ pub fn deep_water_albedo() -> [f32; 3] {
 /// How far under the horizon (rad, about 2°) a ray down to the sea takes the haze of the ray
 /// as far above it, so that water and sky meet in one colour there.
 pub const HORIZON_HAZE_BAND: f32 = 0.035;
+/// In a gale the wind tears spray off the crests, and the air just over the sea turns murky
+/// (Beaufort 8 and up: "spray affects visibility"): the band widens to this (rad, about 4.6°)
+/// as the wind rises over [`SPRAY_WINDS`] (m/s), so that a storm's dark sea fades into its
+/// sky instead of meeting it in a line.
+pub const SPRAY_HAZE_BAND: f32 = 0.08;
+pub const SPRAY_WINDS: (f32, f32) = (12.0, 20.0);
+
+/// The band under the horizon (rad) where the sea takes the sky's haze, for `wind` (m/s).
+pub fn horizon_haze_band(wind: f32) -> f32 {
+    let (calm, gale) = SPRAY_WINDS;
+    let t = ((wind - calm) / (gale - calm)).clamp(0.0, 1.0);
+    HORIZON_HAZE_BAND + (SPRAY_HAZE_BAND - HORIZON_HAZE_BAND) * t * t * (3.0 - 2.0 * t)
+}
 
 /// The fog's scale height (m): its density falls by e every this much above the sea.
 pub const FOG_HEIGHT: f32 = 100.0;
@@ -348,7 +361,6 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
             "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
          const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst PATCH_SPONGE: f32 = {sponge:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\n\
          const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
-         const HORIZON_HAZE_BAND: f32 = {HORIZON_HAZE_BAND:?};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
         )
 }

@@ -610,3 +610,29 @@ fn a_click_in_the_shallows_lights_the_sand_under_it_with_the_ripples_caustics() 
     assert!(changes[0].1 > 5000, "the shallows are not in view");
     assert!(changes[0].0 > 2.0 * changes[1].0, "the ripples' caustics do not show on the sand");
 }
+
+/// Issue 46: the storm's dark sea meets its lighter sky in a line unless the air over the
+/// water turns murky with spray in a gale (`sea::horizon_haze_band`). Down the upper half of
+/// the frame, the middle luma of each row (over its 320 pixels: the sky, then the sea) may fall
+/// by at most 10/255 from one row to the next (0.19° a row: 53/255 a degree). With the calm
+/// sea's band the storm fell by 14.9/255 in one row at its horizon; with the spray's, 5.9.
+#[test]
+fn the_storms_sea_fades_into_its_sky_without_a_line() {
+    let mut d = demo(DemoOptions::default());
+    d.apply_preset(wavepool::presets::find("storm").expect("the storm preset"));
+    let frame = render(&mut d, SIZE.0, SIZE.1, 60, 1.0 / 60.0);
+    let medians: Vec<f32> = (0..SIZE.1 / 2)
+        .map(|y| {
+            let mut row: Vec<f32> = (0..SIZE.0).map(|x| frame.unit_luma(x, y)).collect();
+            row.sort_by(f32::total_cmp);
+            row[row.len() / 2]
+        })
+        .collect();
+    let (row, fall) = medians
+        .windows(2)
+        .enumerate()
+        .map(|(y, w)| (y, w[0] - w[1]))
+        .fold((0, f32::MIN), |best, (y, f)| if f > best.1 { (y, f) } else { best });
+    println!("storm: the rows' middle luma falls by at most {:.1}/255 a row (row {row})", fall * 255.0);
+    assert!(fall < 10.0 / 255.0, "a line at the storm's horizon: {:.1}/255 in one row", fall * 255.0);
+}

@@ -21,7 +21,8 @@ struct Sea {
                                    // the kept whitecaps left after this frame's steps
     mirror: vec4<f32>,             // 1 / the target's width and height (px): a pixel's place
                                    // in the island's mirror (shaders/sea/island.wgsl)
-    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m)
+    fog: vec4<f32>,                // 1 / fog distance (1/m; 0 off), scale height (m), the
+                                   // band under the horizon that takes the sky's haze (rad)
     cascades: array<vec4<f32>, CASCADES>, // cos, sin of the turn, tile (m), slope variance
 }
 
@@ -70,7 +71,7 @@ fn rest_point(dir: vec3<f32>) -> vec2<f32> {
 
 // Optical depth of the haze along `dist` m of a ray from the eye in unit direction dir:
 // (1/L) e^(-y0/H) times the integral of e^(-dir.y t / H) over the path, which for a ray into
-// the sky is H / dir.y. Just under the horizon (within HORIZON_HAZE_BAND rad) a ray down to the
+// the sky is H / dir.y. Just under the horizon (within sea.fog.z rad) a ray down to the
 // sea takes at least the depth of the ray as far above it: both sides of the horizon meet in
 // the same haze, with no seam, from any height (`skims`: the sea's rays; the land and the
 // bodies take their own distance's).
@@ -78,7 +79,7 @@ fn haze_depth(dir: vec3<f32>, dist: f32, skims: bool) -> f32 {
     let h = sea.fog.y;
     let k = max(dir.y * dist / h, -40.0);
     let shape = select((1.0 - exp(-k)) / k, 1.0 - 0.5 * k, abs(k) < 1.0e-3);
-    let skim = select(0.0, h / max(-dir.y, 1.0e-6) * (1.0 - smoothstep(0.0, HORIZON_HAZE_BAND, -dir.y)), skims && dir.y < 0.0);
+    let skim = select(0.0, h / max(-dir.y, 1.0e-6) * (1.0 - smoothstep(0.0, sea.fog.z, -dir.y)), skims && dir.y < 0.0);
     return sea.fog.x * exp(-sea.eye.y / h) * max(dist * shape, skim);
 }
 

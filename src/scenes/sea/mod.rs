@@ -218,6 +218,7 @@ impl SeaScene {
         SeaView {
             camera,
             fog_distance: settings.fog_distance,
+            horizon_band: sea::horizon_haze_band(settings.wind_speed),
             choppiness: settings.choppiness,
             crest: settings.crest_bound(),
             cascades: sea.cascades_drawn(),

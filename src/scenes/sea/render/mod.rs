@@ -41,6 +41,9 @@ pub struct SeaView<'a> {
     pub camera: &'a OrbitCamera,
     /// The fog's distance at sea level (m); `None`: no fog.
     pub fog_distance: Option<f32>,
+    /// The band under the horizon (rad) where the sea takes the sky's haze
+    /// (`sea::horizon_haze_band`).
+    pub horizon_band: f32,
     /// Choppiness λ the displacement maps are carried by.
     pub choppiness: f32,
     /// About the highest crest above the mean level (m).
@@ -265,7 +268,7 @@ fn sea_uniforms(sea: &SeaView<'_>, size: (u32, u32)) -> (SeaUniforms, ([f32; 4],
         waves: [sea.choppiness, sea.cascades.iter().map(|c| c.2).sum(), 0.0, 0.0],
         foam: [f32::from(u8::from(sea.whitecaps)), f32::from(u8::from(sea.shore_foam)), sea.crest, sea.whitecaps_kept],
         mirror: [1.0 / size.0.max(1) as f32, 1.0 / size.1.max(1) as f32, 0.0, 0.0],
-        fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, 0.0, 0.0],
+        fog: [sea.fog_distance.map_or(0.0, |d| 1.0 / d), FOG_HEIGHT, sea.horizon_band, 0.0],
         cascades: sea.cascades.map(|(turn, tile, variance)| [turn.cos(), turn.sin(), tile, variance]),
     };
     (uniforms, (rect, cells), up)
