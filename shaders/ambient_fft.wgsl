@@ -5,8 +5,9 @@
 // horizontal displacement D = sum(-i k/|k| h e^{ik.x}) and its derivatives (two more, a
 // second target). Then Stockham's stages of radix FFT_RADIX (a module per radix: the loop
 // over a stage's inputs must unroll, software rasterisers crawl through a loop of unknown
-// length) along the rows, then the columns, sum the waves (inverse DFT). ambient/ocean.rs
-// runs the very same arithmetic on the CPU (`advance`, `advance_choppy`, `stockham_gather`).
+// length) along the rows, then the columns, sum the waves (inverse DFT). ambient/ocean.rs and
+// ambient/fft.rs run the very same arithmetic on the CPU (`advance`, `advance_choppy`,
+// `stockham_gather`).
 // Several lattices of one size (the sea's cascades) may lie side by side, N texels wide
 // each: every pass handles them all, each with its own band.
 

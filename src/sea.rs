@@ -81,6 +81,7 @@ pub const HORIZON_HAZE_BAND: f32 = 0.035;
 /// as the wind rises over [`SPRAY_WINDS`] (m/s), so that a storm's dark sea fades into its
 /// sky instead of meeting it in a line.
 pub const SPRAY_HAZE_BAND: f32 = 0.08;
+/// The winds (m/s) over which the band widens from the calm sea's to the gale's.
 pub const SPRAY_WINDS: (f32, f32) = (12.0, 20.0);
 
 /// The band under the horizon (rad) where the sea takes the sky's haze, for `wind` (m/s).

@@ -1,7 +1,7 @@
 //! GPU time per stage of a frame from timestamp queries at five marks (the frame's start, the
-//! end of each of its four stages: for the demo simulation, waves, caustics (the sea's maps),
-//! scene), read back without waiting (one to a few frames late), for the viewer's readout and
-//! the bench.
+//! end of each of its four stages, which the scene names: the pool's simulation, waves, caustics,
+//! shading; the sea's maps in place of caustics), read back without waiting (one to a few
+//! frames late), for the viewer's readout and the bench.
 
 use crate::gpu::AsyncReadback;
 
@@ -92,7 +92,7 @@ impl StageTimer {
         self.readback.after_submit();
     }
 
-    /// Milliseconds of (simulation, waves, caustics, scene) of a recent frame.
+    /// Milliseconds of each of a recent frame's four stages (the scene's `stage_names`).
     pub fn latest(&self) -> Option<[f64; 4]> {
         self.latest
     }

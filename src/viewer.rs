@@ -231,7 +231,7 @@ impl Viewer {
             if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
                 let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
                 self.mode_costs.observe(mode, stages);
-                ui.label(format!("drawing the water (caustics + scene): {}", self.mode_costs.summary()));
+                ui.label(format!("drawing the water (caustics + shading): {}", self.mode_costs.summary()));
             }
             if let Some(note) = self.demo.flat_water_note() {
                 ui.colored_label(egui::Color32::from_rgb(230, 180, 60), note);

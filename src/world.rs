@@ -22,8 +22,9 @@ impl Default for PoolShape {
 
 impl PoolShape {
     /// The demo's pool: 2 m x 2 m, 1 m deep, its rim a sixth of a metre above the water. It is
-    /// also the unit the simulation's sponge and bounds are written for (`sim::scale_of`) and
-    /// the pool the bodies' table entries start in.
+    /// also the unit the simulation's sponge and bounds are written for (`sim::scale_of`), and
+    /// the pool the bodies' table entries assume: their start poses, the balls' drawn clamp
+    /// (`bodies::sphere::drawn`) and the floor a body denser than water rests on.
     pub const CLASSIC: PoolShape = PoolShape { half_width: 1.0, depth: 1.0, rim: 1.0 / 6.0 };
 }
 /// Refractive index of water (air is 1).

@@ -1,6 +1,7 @@
-//! The platform-free core of the demo: parameters, camera, water, sphere and renderer, driven
-//! by a small input API (pointer in pixels, keys, frame time). The browser and native shells
-//! only forward events to it and hand it a target to draw into.
+//! The platform-free core of the demo: the parameters, the clock, the governors, the renderer
+//! and the scenes (`crate::scenes`), driven by a small input API (pointer in pixels, keys,
+//! frame time). The browser and native shells only forward events to it and hand it a target
+//! to draw into.
 
 /// What the scenes' hooks are told now: a macro, so that it borrows only the fields it reads
 /// and a scene can be borrowed beside it.

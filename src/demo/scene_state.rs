@@ -81,15 +81,21 @@ impl WaterDemo {
         self.renderer.flat_reflection_texture()
     }
 
-    /// Whether the pool's flat water is drawn now: flat or split chosen and the camera above
-    /// the water (it is an above-water technique; under water the ray tracer draws).
+    /// Whether the pool's flat water is drawn now: the pool shown, flat or split chosen and the
+    /// camera above the water (it is an above-water technique; under water the ray tracer
+    /// draws).
     pub fn flat_water_drawn(&self) -> bool {
-        self.scenes.pool.flat_water_drawn(shared!(self))
+        self.scenes.get(self.shown).has_render_modes() && self.scenes.pool.flat_water_drawn(shared!(self))
     }
 
-    /// Why the chosen flat water is not drawn, if it is not (for the page and the viewer).
+    /// Why the chosen flat water is not drawn in the pool shown, if it is not (for the page and
+    /// the viewer; nothing in a scene without render modes).
     pub fn flat_water_note(&self) -> Option<&'static str> {
-        self.scenes.pool.flat_water_note(shared!(self))
+        self.scenes
+            .get(self.shown)
+            .has_render_modes()
+            .then(|| self.scenes.pool.flat_water_note(shared!(self)))
+            .flatten()
     }
 }
 

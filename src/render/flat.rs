@@ -396,7 +396,7 @@ mod tests {
     }
 }
 
-/// GPU time of drawing the water (the caustics and scene stages) per render mode, smoothed
+/// GPU time of drawing the water (the caustics and shading stages) per render mode, smoothed
 /// over recent frames and kept after switching away, so the panel can set the modes' costs
 /// side by side.
 #[derive(Clone, Debug, Default)]

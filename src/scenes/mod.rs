@@ -6,7 +6,7 @@
 //!
 //! This file is the registry: the one place that names every scene ([`Scenes::get`]). Adding a
 //! scene is a folder beside `pool/` and `sea/`, a choice of the `scene` parameter and an arm
-//! here (docs/ARCHITECTURE.md, "How to add a scene").
+//! here (docs/ARCHITECTURE.md, Recipes: "A scene").
 
 pub mod pool;
 pub mod sea;
@@ -60,6 +60,12 @@ impl Shared<'_> {
     /// A parameter's value by name, for the body kinds' table entries.
     pub fn value(&self, name: &str) -> f32 {
         self.params.get_by_name(name).expect("a body kind reads its own parameters")
+    }
+
+    /// A kind of body's hull ellipsoids at its parameters, in its own frame (m; as the kinds'
+    /// table sizes it for the classic pool).
+    pub fn hull(&self, id: BodyId) -> Vec<crate::physics::Ellipsoid> {
+        (id.kind().hull)(&|name: &str| self.value(name))
     }
 }
 

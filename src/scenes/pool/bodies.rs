@@ -70,7 +70,7 @@ impl PoolScene {
     pub fn set_body_pose(&mut self, sh: Shared<'_>, id: BodyId, pose: Pose) {
         if pose.position.is_finite() && pose.rotation.is_finite() {
             let mut pose = Pose { position: pose.position, rotation: pose.rotation.normalize() };
-            physics::keep_in_pool(&mut pose, &hull(sh, id), self.shape);
+            physics::keep_in_pool(&mut pose, &sh.hull(id), self.shape);
             self.bodies[id.0].motion = FloatingBody::at(pose);
         }
     }
@@ -179,7 +179,7 @@ impl PoolScene {
         let mut moves = Vec::new();
         for id in BodyId::all() {
             if Self::shows(sh.params, id) {
-                let hull = hull(sh, id);
+                let hull = sh.hull(id);
                 self.bodies[id.0].take_moves(&hull, &mut moves);
             } else {
                 self.bodies[id.0].pushed = None;
@@ -196,7 +196,7 @@ impl PoolScene {
         for id in BodyId::all() {
             let pose = self.bodies[id.0].motion.pose;
             if Self::shows(sh.params, id) && self.bodies[id.0].pushed.is_none() {
-                self.bodies[id.0].pushed = Some(hull(sh, id).iter().map(|e| e.hull_slot(&pose)).collect());
+                self.bodies[id.0].pushed = Some(sh.hull(id).iter().map(|e| e.hull_slot(&pose)).collect());
             }
             let radius = (id.kind().probe_ring)(&|name: &str| sh.value(name));
             probes.extend(ring(Vec2::new(pose.position.x, pose.position.z), radius));
@@ -204,11 +204,6 @@ impl PoolScene {
         let rest_level = self.submerged_volume(sh.params) / sim::pool_area(self.shape.half_width);
         self.water.set_bodies(BodyCoupling { moves: pushes, rest_level, probes });
     }
-}
-
-/// A body's hull ellipsoids, in its own frame.
-pub(crate) fn hull(sh: Shared<'_>, id: BodyId) -> Vec<Ellipsoid> {
-    (id.kind().hull)(&|name: &str| sh.value(name))
 }
 
 impl PoolScene {

@@ -29,15 +29,10 @@ pub fn in_sea(params: &Params, id: BodyId) -> bool {
     (params.get(ParamId::SeaObjects) as u32) & id.bit() != 0
 }
 
-/// A kind's hull ellipsoids in the pool, in its own frame (m).
-fn pool_hull(sh: Shared<'_>, id: BodyId) -> Vec<Ellipsoid> {
-    (id.kind().hull)(&|name: &str| sh.value(name))
-}
-
 /// Every kind's hull in the sea: its ellipsoids enlarged (in its own frame, m).
 fn hulls(sh: Shared<'_>) -> Vec<Vec<Ellipsoid>> {
     let s = sea::patch_scale();
-    BodyId::all().map(|id| pool_hull(sh, id).into_iter().map(|e| e.scaled(s)).collect()).collect()
+    BodyId::all().map(|id| sh.hull(id).into_iter().map(|e| e.scaled(s)).collect()).collect()
 }
 
 /// Every body at its start in the sea: the pool's start enlarged, upright at its floating
@@ -48,7 +43,7 @@ pub(super) fn at_start(sh: Shared<'_>) -> Vec<Body> {
         .map(|id| {
             let value = |name: &str| sh.value(name);
             let start = (id.kind().start)(&value);
-            let hull = pool_hull(sh, id);
+            let hull = sh.hull(id);
             let shape = Shape {
                 hull: &hull,
                 centre_of_mass: id.kind().centre_of_mass,

@@ -1,8 +1,9 @@
-//! The open sea (`scene` = sea): its camera, and its frame: the patch of simulated water round the camera's target
-//! stepped (the clicks' ripples), the cascades' FFT at the simulated time (on the GPU where it
-//! renders into float textures, else on the CPU), both drawn by the renderer's sea pass; the
-//! bodies ride the waves summed at their probes on the CPU (`bodies.rs`). The feature's
-//! parameters, constants and settings are in `crate::sea`; its passes in the renderer.
+//! The open sea (`scene` = sea): its camera, and its frame: the patch of simulated water round
+//! the camera's target stepped (the clicks' ripples), the cascades' FFT at the simulated time
+//! (on the GPU where it renders into float textures, else on the CPU), both drawn by the sea's
+//! own passes (`render/`, on what `render::scene_parts` lends); the bodies ride the waves
+//! summed at their probes on the CPU (`bodies.rs`). The feature's parameters, constants and
+//! settings are in `crate::sea`.
 
 mod bodies;
 mod render;
@@ -125,7 +126,7 @@ struct Sea {
     pub(super) patch: HeightField,
     /// Where the device renders into no float textures: the cascades summed ahead on the CPU,
     /// after the last frame was submitted (while the GPU drew it), for the fixed step the next
-    /// frame was expected at: used when it comes then. (Elsewhere the renderer runs their FFT
+    /// frame was expected at: used when it comes then. (Elsewhere the sea's passes run their FFT
     /// on the GPU.)
     ahead: Option<(u64, [Vec<[f32; 4]>; 2])>,
     /// The fixed steps the last frame took (the next is expected to take as many).
@@ -278,7 +279,7 @@ impl super::Scene for SeaScene {
         let (t, step) = (sh.sim_time(), sh.steps_taken);
         let on_gpu = self.fft_on_gpu;
         let sea = self.sea(device, sh);
-        // The waves' lattices for the sea's shader: the GPU's FFT (the renderer's), or the
+        // The waves' lattices for the sea's shader: the GPU's FFT (the sea's passes'), or the
         // CPU's.
         let texels = if on_gpu {
             None
@@ -335,6 +336,7 @@ impl super::Scene for SeaScene {
     }
 
     fn reset(&mut self, queue: &wgpu::Queue, sh: Shared<'_>) {
+        self.early_drops.clear();
         if let Some(sea) = &mut self.sea {
             sea.patch.reset(queue);
             sea.bodies = bodies::at_start(sh);

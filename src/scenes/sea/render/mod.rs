@@ -547,7 +547,7 @@ mod tests {
                 (camera.pitch, camera.distance) = (pitch, distance);
                 camera.clamp();
                 if camera.eye().y < crest + crate::sea::EYE_OVER_CRESTS {
-                    continue; // the demo lifts such a view over the crests
+                    continue; // `SeaScene::follow_params` lifts such a view over the crests
                 }
                 let (rect, _, _) = grid_layout(&camera, (crest, choppiness * crest), (800, 600));
                 if rect[2] <= -1.0 - MAX_GRID_MARGIN {
