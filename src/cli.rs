@@ -396,7 +396,7 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     let apart: serde_json::Map<_, _> = demo
         .timed_apart(&gpu.device, &gpu.queue)
         .into_iter()
-        .map(|(name, ms)| (name.to_string(), serde_json::Value::from(round(ms))))
+        .map(|(name, ms)| (name.to_string(), serde_json::Value::from(round(percentile(&ms, 0.5)))))
         .collect();
     let report = serde_json::json!({
         "adapter": info.name,

@@ -179,10 +179,10 @@ impl WaterDemo {
         self.scenes.get(self.shown).stage_names()
     }
 
-    /// What `wavepool bench` times apart in the shown scene beside its frame's stages: (name,
+    /// What `wavepool bench` times apart in the shown scene beside its frame's stages: (name, each run's
     /// ms); waits for the GPU.
     #[cfg(not(target_arch = "wasm32"))]
-    pub fn timed_apart(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<(&'static str, f64)> {
+    pub fn timed_apart(&self, device: &wgpu::Device, queue: &wgpu::Queue) -> Vec<(&'static str, Vec<f64>)> {
         self.scenes.get(self.shown).timed_apart(device, queue, &self.params)
     }
 

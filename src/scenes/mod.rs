@@ -113,9 +113,15 @@ pub trait Scene {
     /// What each timed stage of a frame does, in the order of the marks between them.
     fn stage_names(&self) -> [&'static str; 4];
 
-    /// What `wavepool bench` times apart in this scene beside its frame's stages: (name, ms).
+    /// What `wavepool bench` times apart in this scene beside its frame's stages: (name, each
+    /// run's ms).
     #[cfg(not(target_arch = "wasm32"))]
-    fn timed_apart(&self, _device: &wgpu::Device, _queue: &wgpu::Queue, _params: &Params) -> Vec<(&'static str, f64)> {
+    fn timed_apart(
+        &self,
+        _device: &wgpu::Device,
+        _queue: &wgpu::Queue,
+        _params: &Params,
+    ) -> Vec<(&'static str, Vec<f64>)> {
         Vec::new()
     }
 

@@ -349,7 +349,12 @@ impl super::Scene for SeaScene {
     }
 
     #[cfg(not(target_arch = "wasm32"))]
-    fn timed_apart(&self, device: &wgpu::Device, queue: &wgpu::Queue, params: &Params) -> Vec<(&'static str, f64)> {
+    fn timed_apart(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        params: &Params,
+    ) -> Vec<(&'static str, Vec<f64>)> {
         timings::timed_apart(device, queue, params)
     }
 
