@@ -28,6 +28,7 @@ pub mod scenes;
 pub mod sea;
 pub mod sim;
 pub mod sky;
+pub mod tank;
 pub mod textures;
 pub mod timing;
 pub mod util;

@@ -8,7 +8,7 @@ use std::ops::Deref;
 use std::sync::OnceLock;
 
 pub use crate::param_spec::{choice_label, Control, ParamSpec};
-use crate::{ambient, bodies, optics, physics, quality, render, sea, sim, sky};
+use crate::{ambient, bodies, optics, physics, quality, render, sea, sim, sky, tank};
 
 /// Writes `ParamId` with `ParamId::ALL`, its variants in table order.
 macro_rules! param_ids {
@@ -56,6 +56,16 @@ param_ids! {
     SeaIsland = "sea_island",
     SeaObjects = "sea_objects",
     SeaGrid = "sea_grid",
+    TankSetup = "tank_setup",
+    TankView = "tank_view",
+    TankFrequency = "tank_frequency",
+    TankAmplitude = "tank_amplitude",
+    TankDepth = "tank_depth",
+    TankSize = "tank_size",
+    TankSlitWidth = "tank_slit_width",
+    TankSlitSpacing = "tank_slit_spacing",
+    TankLampHeight = "tank_lamp_height",
+    TankBeaches = "tank_beaches",
     Setting = "setting",
     Caustics = "caustics",
     TileGloss = "tile_gloss",
@@ -112,6 +122,7 @@ fn slices() -> Vec<&'static [ParamSpec]> {
         sky::EXPOSURE_PARAMS,
         sea::SCENE_PARAMS,
         sea::PARAMS,
+        tank::PARAMS,
         render::deck::PARAMS,
         render::caustics::PARAMS,
         render::glaze::PARAMS,

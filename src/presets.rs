@@ -19,6 +19,10 @@ pub struct Preset {
     pub camera: Option<[f32; 3]>,
 }
 
+/// The bar's amplitude in the tank's lessons (mm): plane waves keep their height, so less than a
+/// dipper's focuses the lamp's light near the screen.
+const PLANE_WAVE_AMPLITUDE: f32 = 0.15;
+
 pub const PRESETS: &[Preset] = &[
     Preset {
         name: "classic",
@@ -197,6 +201,41 @@ pub const PRESETS: &[Preset] = &[
         ],
         camera: Some([-30.0, 12.0, 80.0]),
     },
+    Preset {
+        name: "tank",
+        label: "Ripple tank: one dipper",
+        help: "A school ripple tank seen from above: a dipper bobs ten times a second in the middle of a tray of water 10 mm deep, and the lamp over the tank throws its rings onto the screen below as bright circles, because every crest focuses the light like a lens. Switch the view to the heights to see the waves themselves; change the frequency and watch the rings crowd together (the wavelength is the speed over the frequency).",
+        values: &[("scene", 2.0), ("tank_setup", 0.0)],
+        camera: Some(crate::tank::START_VIEW),
+    },
+    Preset {
+        name: "single_slit",
+        label: "Ripple tank: one slit",
+        help: "A straight bar makes plane waves that meet a barrier with one gap. Past the gap they spread out in a fan; the narrower the gap against the wavelength, the wider the fan (try the slit width).",
+        values: &[("scene", 2.0), ("tank_setup", 3.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
+    Preset {
+        name: "double_slit",
+        label: "Ripple tank: two slits",
+        help: "Plane waves through two gaps 90 mm apart: the waves from the two gaps cross, and where crest meets crest the screen shows bright lines, while between them, where crest meets trough, the water stays still. The still lines fan out at angles where the paths differ by half a wavelength; switch the view to the intensity to see them.",
+        values: &[("scene", 2.0), ("tank_setup", 4.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
+    Preset {
+        name: "refraction",
+        label: "Ripple tank: refraction",
+        help: "Plane waves run onto a glass plate under the water. The water over it is shallower, so the waves slow down and come closer together, and where they cross the plate's slanting edge they bend: Snell's law for water waves.",
+        values: &[("scene", 2.0), ("tank_setup", 5.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
+    Preset {
+        name: "lens",
+        label: "Ripple tank: a lens",
+        help: "A lens-shaped glass plate under the water: the waves slow down over it, most at its thick middle, so the straight fronts come out curved and meet at a focus behind it, as light does behind a glass lens.",
+        values: &[("scene", 2.0), ("tank_setup", 6.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
 ];
 
 impl Preset {
@@ -225,9 +264,7 @@ pub fn find(name: &str) -> Option<&'static Preset> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::camera::POOL_LIMITS;
     use crate::params;
-    use crate::sea::SEA_LIMITS;
 
     #[test]
     fn every_preset_names_known_parameters_with_values_in_their_ranges() {
@@ -242,7 +279,8 @@ mod tests {
                 );
             }
             // Each scene's camera has its own limits.
-            let limits = if preset.values.contains(&("scene", 1.0)) { SEA_LIMITS } else { POOL_LIMITS };
+            let scene = preset.values.iter().find(|(name, _)| *name == "scene").map_or(0.0, |&(_, v)| v);
+            let limits = crate::scenes::camera_limits(scene.into());
             if let Some([_, pitch, distance]) = preset.camera {
                 assert!((limits.pitch.0..=limits.pitch.1).contains(&pitch), "{}: pitch {pitch}", preset.name);
                 assert!(

@@ -14,12 +14,13 @@ use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
 
 crate::choices! {
-    /// Which scene is drawn: the pool, or the open sea (the `scene` parameter).
+    /// Which scene is drawn: the pool, the open sea or the ripple tank (the `scene` parameter).
     #[derive(Default)]
     pub enum SceneKind {
         #[default]
         Pool = "pool",
         Sea = "sea",
+        Tank = "tank",
     }
 }
 
@@ -197,7 +198,7 @@ pub const SCENE_PARAMS: &[ParamSpec] = &[ParamSpec {
     unit: "",
     control: Control::Choice { values: SceneKind::VALUES, names: SceneKind::NAMES },
     default: 0.0,
-    help: "The pool, or the open sea to the horizon under the same sky.",
+    help: "The pool, the open sea to the horizon under the same sky, or the ripple tank of the school lab with its lamp and screen.",
 }];
 
 /// The sea's own parameters (shown only with `scene` sea).

@@ -103,7 +103,7 @@ export interface Stats {
   /** GPU time per render mode (ms), where the browser measures it; null otherwise. */
   gpuMs: { raytraced: number | null; flat: number | null; split: number | null } | null;
   /** The latest measured frame's GPU time per stage of the scene drawn (ms), where the browser measures it: the pool's simulation, waves, caustics and shading; the sea's simulation, waves, maps (its mirror and whitecaps) and shading. */
-  stageMs: PoolStageMs | SeaStageMs | null;
+  stageMs: PoolStageMs | SeaStageMs | TankStageMs | null;
   /** Why flat water is not drawn now (under the water), or null. */
   flatNote: string | null;
   /** Sizes held to what this device affords. */
@@ -124,6 +124,8 @@ export interface SuspendedStats {
 export interface PoolStageMs { simulation: number; waves: number; caustics: number; shading: number }
 /** The sea's frame stages (ms): its maps are the island's mirror and the kept whitecaps. */
 export interface SeaStageMs { simulation: number; waves: number; maps: number; shading: number }
+/** The ripple tank's stages: its water, (no free waves), the lamp's image on the screen, the picture. */
+export interface TankStageMs { simulation: number; waves: number; screen: number; shading: number }
 
 /** The handle mount() resolves to, and <wave-pool>'s `demo` once it is ready. */
 export interface WavePool {

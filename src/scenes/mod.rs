@@ -1,5 +1,5 @@
-//! The scenes the demo shows, each in a home of its own: the pool (`scenes/pool/`) and the open
-//! sea (`scenes/sea/`). A scene owns what differs between scenes: its camera and limits, its
+//! The scenes the demo shows, each in a home of its own: the pool (`scenes/pool/`), the open
+//! sea (`scenes/sea/`) and the ripple tank (`scenes/tank/`). A scene owns what differs between scenes: its camera and limits, its
 //! state (water, waves, bodies), its stepping, what a press or a drag does in it, its picture
 //! and the names of its frame's stages. The demo (`demo/`) keeps what they share: the
 //! parameters, the clock, the governors, the renderer, the pointer.
@@ -10,6 +10,7 @@
 
 pub mod pool;
 pub mod sea;
+pub mod tank;
 
 use glam::{Vec2, Vec3};
 
@@ -163,6 +164,7 @@ pub trait Scene {
 pub struct Scenes {
     pub pool: pool::PoolScene,
     pub sea: sea::SeaScene,
+    pub tank: tank::TankScene,
 }
 
 impl Scenes {
@@ -178,6 +180,7 @@ impl Scenes {
         Self {
             pool: pool::PoolScene::new(shape, water, float_targets),
             sea: sea::SeaScene::new(engine, float_targets, software),
+            tank: tank::TankScene::new(float_targets),
         }
     }
 
@@ -186,6 +189,7 @@ impl Scenes {
         match kind {
             SceneKind::Pool => &self.pool,
             SceneKind::Sea => &self.sea,
+            SceneKind::Tank => &self.tank,
         }
     }
 
@@ -193,12 +197,22 @@ impl Scenes {
         match kind {
             SceneKind::Pool => &mut self.pool,
             SceneKind::Sea => &mut self.sea,
+            SceneKind::Tank => &mut self.tank,
         }
     }
 
     /// Every scene, to reset them all.
-    pub fn all_mut(&mut self) -> [&mut dyn Scene; 2] {
-        [&mut self.pool, &mut self.sea]
+    pub fn all_mut(&mut self) -> [&mut dyn Scene; 3] {
+        [&mut self.pool, &mut self.sea, &mut self.tank]
+    }
+}
+
+/// The limits of the camera of the scene of `kind`.
+pub fn camera_limits(kind: SceneKind) -> crate::camera::CameraLimits {
+    match kind {
+        SceneKind::Pool => crate::camera::POOL_LIMITS,
+        SceneKind::Sea => crate::sea::SEA_LIMITS,
+        SceneKind::Tank => crate::tank::TANK_LIMITS,
     }
 }
 
@@ -211,10 +225,12 @@ pub fn shown_when(name: &str) -> Vec<(&'static str, Vec<f32>)> {
     let owns = |kind: SceneKind| match kind {
         SceneKind::Pool => false,
         SceneKind::Sea => sea::owns(name),
+        SceneKind::Tank => tank::owns(name),
     };
     let reads = |kind: SceneKind| match kind {
         SceneKind::Pool => true,
         SceneKind::Sea => sea::reads(name),
+        SceneKind::Tank => tank::reads(name),
     };
     let owners: Vec<SceneKind> = SceneKind::ALL.iter().copied().filter(|&k| owns(k)).collect();
     let showing =
@@ -277,11 +293,13 @@ mod tests {
         let scene_of = |name: &str| shown_when(name).into_iter().find(|(on, _)| *on == "scene").map(|(_, v)| v);
         assert_eq!(scene_of("wave_speed"), Some(vec![0.0]), "the pool's own");
         assert_eq!(scene_of("sea_wind"), Some(vec![1.0]), "the sea's own");
-        assert_eq!(scene_of("sun_elevation"), None, "read by both");
+        assert_eq!(scene_of("sun_elevation"), Some(vec![0.0, 1.0]), "read by the pool and the sea");
+        assert_eq!(scene_of("exposure"), None, "read by all three");
+        assert_eq!(scene_of("tank_setup"), Some(vec![2.0]), "the tank's own");
         assert_eq!(scene_of("scene"), None);
         assert_eq!(scene_of("objects"), Some(vec![0.0]), "the pool's bodies");
         assert_eq!(scene_of("sea_objects"), Some(vec![1.0]), "the sea's bodies");
-        assert_eq!(scene_of("duck_density"), None, "a kind's own, read by both");
+        assert_eq!(scene_of("duck_density"), Some(vec![0.0, 1.0]), "a kind's own, read where bodies float");
         assert_eq!(shown_when("wind_speed").len(), 2, "an ambient model's own setting, in the pool");
         let counts: Vec<usize> = SceneKind::ALL
             .iter()
@@ -292,7 +310,7 @@ mod tests {
                     .count()
             })
             .collect();
-        println!("controls shown: {counts:?} of {} (pool, sea)", crate::params::table().len());
+        println!("controls shown: {counts:?} of {} (pool, sea, tank)", crate::params::table().len());
         assert!(counts.iter().all(|&n| n > 10 && n < crate::params::table().len()));
     }
 }

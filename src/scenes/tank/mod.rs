@@ -1,0 +1,193 @@
+//! The ripple tank (`scene` = tank): the school lab's tray of shallow water with its dippers,
+//! barriers and glass plates ([`crate::tank`]), a lamp above and a screen below. Its picture
+//! is the tray's plane seen through an orbit camera that starts straight above it, as the
+//! class looks down at the screen: the lamp's image there, or the heights or the intensity as
+//! colour. A click drops a small pulse into the water.
+
+mod render;
+
+use glam::{Vec2, Vec3};
+
+use super::{SceneFrame, Shared, Stage, STEPS_PER_SECOND, STEP_DT};
+use crate::bodies::BodyId;
+use crate::camera::OrbitCamera;
+use crate::params::{ParamId, Params};
+use crate::sim::Drop;
+use crate::tank::gpu::TankWater;
+use crate::tank::medium::Medium;
+use crate::tank::{plan, Setup, TankSettings, START_VIEW, TANK_CELLS, TANK_LIMITS};
+pub use render::{TankPicture, SCREEN_TEXELS};
+
+/// A click's drop against the pool's: its radius shrinks with the tray against the pool, its
+/// height to the dippers' scale (millimetres, not centimetres).
+const DROP_HEIGHT_SCALE: f32 = 0.04;
+
+/// The parameters the tank reads besides its own.
+const READS: &[ParamId] = &[
+    ParamId::Scene,
+    ParamId::DropRadius,
+    ParamId::DropStrength,
+    ParamId::Exposure,
+    ParamId::Paused,
+    ParamId::Quality,
+    ParamId::FrameBudget,
+];
+
+/// Whether parameter `name` is the tank's own (shown only in the tank).
+pub fn owns(name: &str) -> bool {
+    crate::tank::PARAMS.iter().any(|p| p.name == name)
+}
+
+/// Whether the tank reads parameter `name`.
+pub fn reads(name: &str) -> bool {
+    owns(name) || READS.iter().any(|id| id.name() == name)
+}
+
+/// The tank's settings in `params`.
+pub fn tank_settings(params: &Params) -> TankSettings {
+    TankSettings {
+        setup: params.choice::<Setup>(ParamId::TankSetup),
+        size: params.get(ParamId::TankSize),
+        depth: params.get(ParamId::TankDepth) * 1e-3,
+        frequency: params.get(ParamId::TankFrequency),
+        amplitude: params.get(ParamId::TankAmplitude) * 1e-3,
+        slit_width: params.get(ParamId::TankSlitWidth) * 1e-3,
+        slit_spacing: params.get(ParamId::TankSlitSpacing) * 1e-3,
+        lamp_height: params.get(ParamId::TankLampHeight),
+        beaches: params.flag(ParamId::TankBeaches),
+    }
+}
+
+/// The camera that shows a tray of `size` (m) whole from straight above ([`START_VIEW`] for
+/// the default tray).
+pub fn start_camera(size: f32) -> OrbitCamera {
+    let [yaw, pitch, distance] = START_VIEW;
+    let distance = distance * size / crate::tank::TANK_SIZE.default;
+    OrbitCamera { yaw, pitch, distance, target: Vec3::ZERO, fov_y: 45.0, limits: TANK_LIMITS }
+}
+
+/// The tank's state: its camera, its settings and cells, its water and its picture (made on
+/// the first frame, when the device is known).
+pub struct TankScene {
+    camera: OrbitCamera,
+    settings: TankSettings,
+    medium: Medium,
+    water: Option<TankWater>,
+    picture: Option<TankPicture>,
+    /// Whether the medium changed since the water last saw it.
+    medium_changed: bool,
+    drops: Vec<Drop>,
+    float_targets: bool,
+}
+
+impl TankScene {
+    /// The tank at its defaults; its water on the GPU where the device renders into
+    /// `float_targets`.
+    pub fn new(float_targets: bool) -> Self {
+        let settings = TankSettings::default();
+        Self {
+            camera: start_camera(settings.size),
+            medium: Medium::of(&settings, TANK_CELLS),
+            settings,
+            water: None,
+            picture: None,
+            medium_changed: false,
+            drops: Vec::new(),
+            float_targets,
+        }
+    }
+
+    pub fn settings(&self) -> &TankSettings {
+        &self.settings
+    }
+
+    pub fn medium(&self) -> &Medium {
+        &self.medium
+    }
+
+    /// The water, once a frame has been drawn.
+    pub fn water(&self) -> Option<&TankWater> {
+        self.water.as_ref()
+    }
+}
+
+impl super::Scene for TankScene {
+    fn camera(&self) -> &OrbitCamera {
+        &self.camera
+    }
+
+    fn camera_mut(&mut self) -> &mut OrbitCamera {
+        &mut self.camera
+    }
+
+    fn follow_params(&mut self, params: &Params) {
+        let settings = tank_settings(params);
+        if settings != self.settings {
+            if settings.size != self.settings.size {
+                self.camera = start_camera(settings.size);
+            }
+            self.medium = Medium::of(&settings, TANK_CELLS);
+            self.settings = settings;
+            self.medium_changed = true;
+        }
+    }
+
+    fn encode_frame(&mut self, sh: Shared<'_>, frame: SceneFrame<'_, '_>) {
+        let SceneFrame { cx, renderer, steps, mark } = frame;
+        let (device, queue) = (cx.device, cx.queue);
+        let float_targets = self.float_targets;
+        let water = self.water.get_or_insert_with(|| TankWater::new(device, queue, &self.medium, float_targets));
+        if std::mem::take(&mut self.medium_changed) {
+            water.set_medium(queue, &self.medium);
+        }
+        let picture = self
+            .picture
+            .get_or_insert_with(|| TankPicture::new(device, renderer.settings().target_format, float_targets));
+        let t0 = sh.steps_taken.saturating_sub(steps as u64) as f64 / STEPS_PER_SECOND as f64;
+        let updates = plan::plan(&self.medium, &self.settings, t0, steps, STEP_DT, &mut self.drops);
+        mark(cx.encoder, Stage::Start);
+        water.encode(device, queue, cx.encoder, &updates);
+        mark(cx.encoder, Stage::AfterSimulation);
+        // No waves move here on their own (the stage of the pool's and the sea's FFT).
+        mark(cx.encoder, Stage::AfterWaves);
+        let shot = render::Shot {
+            view_proj: self.camera.view_projection(sh.viewport.x / sh.viewport.y),
+            eye: self.camera.eye(),
+            view: sh.params.choice(ParamId::TankView),
+            exposure: 2f32.powf(sh.params.get(ParamId::Exposure)),
+        };
+        let group = picture.encode_screen(device, queue, cx.encoder, water, &self.settings, &shot);
+        mark(cx.encoder, Stage::AfterMaps);
+        picture.encode_show(cx.encoder, cx.target, &group);
+        mark(cx.encoder, Stage::AfterShading);
+    }
+
+    fn reset(&mut self, queue: &wgpu::Queue, _sh: Shared<'_>) {
+        self.drops.clear();
+        if let Some(water) = &mut self.water {
+            water.clear(queue);
+        }
+    }
+
+    fn stage_names(&self) -> [&'static str; 4] {
+        ["simulation", "waves", "screen", "shading"]
+    }
+
+    fn drop_area(&self) -> (f32, &'static str) {
+        (self.settings.half_width(), "the tank")
+    }
+
+    fn drop_scale(&self) -> (f32, f32) {
+        (self.settings.half_width() / crate::world::PoolShape::CLASSIC.half_width, DROP_HEIGHT_SCALE)
+    }
+
+    fn add_drop(&mut self, drop: Drop) {
+        self.drops.push(drop);
+    }
+
+    fn pick_body(&self, _sh: Shared<'_>, _pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {
+        None
+    }
+
+    fn move_body(&mut self, _sh: Shared<'_>, _id: BodyId, _position: Vec3) {}
+}

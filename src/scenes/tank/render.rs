@@ -1,0 +1,200 @@
+//! The tank's picture: the lamp's image on the screen below (`shaders/tank/screen.wgsl`, the
+//! surface's cells drawn where their light lands, summed) and the view of the tray's plane
+//! through the orbit camera (`shaders/tank/show.wgsl`).
+
+use bytemuck::Zeroable;
+use glam::Mat4;
+
+use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::tank::gpu::TankWater;
+use crate::tank::{TankSettings, TankView, SCREEN_BELOW};
+
+/// Texels along each side of the screen's image.
+pub const SCREEN_TEXELS: u32 = 512;
+/// How far past the tray's shadow the screen's image reaches (a share of it).
+const SCREEN_MARGIN: f32 = 1.1;
+/// The screen's light for flat water at the middle is 1; shown as paper * (1 - exp(-k light))
+/// with k this times the exposure, so flat water is a dim grey and the crests' lines bright.
+const SCREEN_EXPOSURE: f32 = 0.45;
+/// Where the device cannot blend into float textures, light is stored in 8 bits at this scale.
+const LOW_PRECISION_SCALE: f32 = 0.25;
+
+#[repr(C)]
+#[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
+struct PictureUniforms {
+    inverse_view_proj: [[f32; 4]; 4],
+    eye: [f32; 4],
+    tray: [f32; 4],
+    screen: [f32; 4],
+    view: [f32; 4],
+}
+
+/// What the picture shows beyond the settings: the camera's view-projection, its eye, and
+/// the exposure of the screen's light.
+pub struct Shot {
+    pub view_proj: Mat4,
+    pub eye: glam::Vec3,
+    pub view: TankView,
+    pub exposure: f32,
+}
+
+/// The tank's two passes, their uniforms and the screen's image.
+pub struct TankPicture {
+    uniforms: wgpu::Buffer,
+    layout: wgpu::BindGroupLayout,
+    screen_pipeline: wgpu::RenderPipeline,
+    screen_view: wgpu::TextureView,
+    image_group: wgpu::BindGroup,
+    show: FullscreenPass,
+    /// What one unit of light is stored as in the screen's image.
+    scale: f32,
+}
+
+impl TankPicture {
+    /// The passes for a target of `target_format`; the screen's image in half floats where
+    /// the device renders into float textures (`float_targets`).
+    pub fn new(device: &wgpu::Device, target_format: wgpu::TextureFormat, float_targets: bool) -> Self {
+        let stage = wgpu::ShaderStages::VERTEX_FRAGMENT;
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("tank picture layout"),
+            entries: &[
+                gpu::uniform_entry(0, stage),
+                gpu::float_texture_entry(1, stage),
+                gpu::float_texture_entry(2, stage),
+            ],
+        });
+        let image_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("tank screen image layout"),
+            entries: &[
+                gpu::filtered_texture_entry(0, wgpu::ShaderStages::FRAGMENT),
+                gpu::sampler_entry(1, wgpu::ShaderStages::FRAGMENT),
+            ],
+        });
+        let (format, scale) = if float_targets {
+            (wgpu::TextureFormat::Rgba16Float, 1.0)
+        } else {
+            (wgpu::TextureFormat::Rgba8Unorm, LOW_PRECISION_SCALE)
+        };
+        let image = gpu::texture_2d(
+            device,
+            "tank screen image",
+            (SCREEN_TEXELS, SCREEN_TEXELS, 1),
+            1,
+            format,
+            wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+        );
+        let screen_view = image.create_view(&Default::default());
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            ..Default::default()
+        });
+        let image_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("tank screen image"),
+            layout: &image_layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&screen_view) },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&sampler) },
+            ],
+        });
+        let numbers = format!(
+            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
+            crate::world::IOR_WATER,
+            !target_format.is_srgb()
+        );
+        let picture = crate::wgsl!("tank/picture.wgsl");
+        let module =
+            gpu::shader(device, "tank screen", &[gpu::wgsl::MATH, &numbers, picture, crate::wgsl!("tank/screen.wgsl")]);
+        let additive = wgpu::BlendComponent {
+            src_factor: wgpu::BlendFactor::One,
+            dst_factor: wgpu::BlendFactor::One,
+            operation: wgpu::BlendOperation::Add,
+        };
+        let screen_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("tank screen"),
+            layout: Some(&gpu::pipeline_layout(device, "tank screen", &[&layout])),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_screen"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: None,
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_screen"),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format,
+                    blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let show = FullscreenPass::new(
+            device,
+            "tank picture",
+            &[gpu::wgsl::MATH, &numbers, picture, crate::wgsl!("tank/show.wgsl")],
+            "fs_show",
+            &[&layout, &image_layout],
+            FullscreenTarget { format: target_format, blend: None, depth: None },
+        );
+        let uniforms = gpu::uniform_buffer(device, "tank picture", &PictureUniforms::zeroed());
+        Self { uniforms, layout, screen_pipeline, screen_view, image_group, show, scale }
+    }
+
+    /// The screen image's half extent on the screen (m) for `settings`.
+    pub fn screen_half_extent(settings: &TankSettings) -> f32 {
+        settings.half_width() * settings.magnification() * SCREEN_MARGIN
+    }
+
+    /// Records the screen's image (in the screen view) into `encoder`; call before
+    /// [`TankPicture::encode_show`].
+    pub fn encode_screen(
+        &self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        encoder: &mut wgpu::CommandEncoder,
+        water: &TankWater,
+        settings: &TankSettings,
+        shot: &Shot,
+    ) -> wgpu::BindGroup {
+        let uniforms = PictureUniforms {
+            inverse_view_proj: shot.view_proj.inverse().to_cols_array_2d(),
+            eye: shot.eye.extend(1.0).to_array(),
+            tray: [settings.half_width(), settings.depth, settings.lamp_height, SCREEN_BELOW],
+            screen: [Self::screen_half_extent(settings), settings.magnification(), water.cells() as f32, self.scale],
+            view: [shot.view.value(), settings.amplitude, shot.exposure * SCREEN_EXPOSURE, SCREEN_TEXELS as f32],
+        };
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("tank picture"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: self.uniforms.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(water.state_view()) },
+                wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(water.medium_view()) },
+            ],
+        });
+        if shot.view == TankView::Screen {
+            let mut pass =
+                gpu::colour_pass(encoder, "tank screen", &self.screen_view, wgpu::LoadOp::Clear(wgpu::Color::BLACK));
+            pass.set_pipeline(&self.screen_pipeline);
+            pass.set_bind_group(0, Some(&group), &[]);
+            let quads = (water.cells() - 1) * (water.cells() - 1);
+            pass.draw(0..quads * 6, 0..1);
+        }
+        group
+    }
+
+    /// Draws the picture over the whole of `target` with the group [`TankPicture::encode_screen`] made.
+    pub fn encode_show(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView, group: &wgpu::BindGroup) {
+        self.show.run(encoder, target, &[group, &self.image_group]);
+    }
+}

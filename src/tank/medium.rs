@@ -1,0 +1,189 @@
+//! What the tray holds, cell by cell: the water's depth (so its wave speed), the barriers the
+//! water cannot enter, the glass plates that make it shallower and the beaches along the
+//! walls; and what makes the waves (dippers, a bar). The GPU and the CPU read the same cells.
+
+use super::{
+    Setup, TankSettings, BEACH_SHARE, BEACH_STRENGTH, DIPPER_MIN_CELLS, DIPPER_RADIUS, MAX_DIPPERS, PLATE_DEPTH_SHARE,
+};
+use crate::physics::GRAVITY;
+
+/// What a cell is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CellKind {
+    Water,
+    /// A barrier: no water, no flux across its faces.
+    Wall,
+    /// Water over a glass plate, shallower than the rest.
+    Plate,
+}
+
+impl CellKind {
+    /// The code the shaders read (`medium.z`).
+    pub fn code(self) -> f32 {
+        match self {
+            CellKind::Water => 0.0,
+            CellKind::Wall => 1.0,
+            CellKind::Plate => 2.0,
+        }
+    }
+}
+
+/// A point dipper: centre (m), radius (m) and phase (rad) against the others.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dipper {
+    pub x: f32,
+    pub z: f32,
+    pub radius: f32,
+    pub phase: f32,
+}
+
+/// What drives the waves: point dippers, or a straight bar across the tray at `z` (m) whose
+/// half thickness is `half_thickness` (m), all at one frequency and amplitude.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Sources {
+    pub dippers: Vec<Dipper>,
+    pub bar: Option<(f32, f32)>,
+}
+
+/// The tray's cells: `cells` x `cells` over a square of side `size` (m); cell (i, j) has its
+/// centre at x = -size/2 + (i + 0.5) dx, z = -size/2 + (j + 0.5) dx.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Medium {
+    pub cells: u32,
+    pub size: f32,
+    /// The open tray's water depth (m).
+    pub depth: f32,
+    /// Per cell: c² (m²/s², 0 in a wall), the beach's damping rate (1/s), the kind's code, 0.
+    pub texels: Vec<[f32; 4]>,
+    pub sources: Sources,
+}
+
+impl Medium {
+    /// An open tray of water `depth` deep, with beaches along its walls if `beaches`.
+    pub fn open(cells: u32, size: f32, depth: f32, beaches: bool) -> Self {
+        let c2 = GRAVITY * depth;
+        let beach = BEACH_SHARE * size;
+        let rate = BEACH_STRENGTH * c2.sqrt() / beach;
+        let mut medium = Self { cells, size, depth, texels: Vec::new(), sources: Sources::default() };
+        medium.texels = (0..cells * cells)
+            .map(|k| {
+                let (x, z) = medium.centre(k % cells, k / cells);
+                let from_wall = 0.5 * size - x.abs().max(z.abs());
+                let t = if beaches { (1.0 - from_wall / beach).max(0.0) } else { 0.0 };
+                [c2, rate * t * t, CellKind::Water.code(), 0.0]
+            })
+            .collect();
+        medium
+    }
+
+    /// The tray of `settings` with its set-up's barriers, plates and sources.
+    pub fn of(settings: &TankSettings, cells: u32) -> Self {
+        let mut m = Self::open(cells, settings.size, settings.depth, settings.beaches);
+        let (l, dx) = (settings.size, m.dx());
+        let bar_z = -0.5 * l + BEACH_SHARE * l + 2.0 * dx;
+        let barrier_z = bar_z + 0.12 * l;
+        let (w, s) = (settings.slit_width, settings.slit_spacing);
+        let radius = DIPPER_RADIUS.max(DIPPER_MIN_CELLS * dx);
+        let dipper = |x: f32, z: f32| Dipper { x, z, radius, phase: 0.0 };
+        match settings.setup {
+            Setup::Dipper => m.sources.dippers.push(dipper(0.0, 0.0)),
+            Setup::TwoDippers => m.sources.dippers.extend([dipper(-0.5 * s, 0.0), dipper(0.5 * s, 0.0)]),
+            _ => m.sources.bar = Some((bar_z, dx)),
+        }
+        match settings.setup {
+            Setup::SingleSlit => m.barrier(barrier_z, 2.0 * dx, |x| x.abs() < 0.5 * w),
+            Setup::DoubleSlit => m.barrier(barrier_z, 2.0 * dx, |x| (x.abs() - 0.5 * s).abs() < 0.5 * w),
+            Setup::Refraction => {
+                // The plate's straight edge crosses the middle at 30° to the bar.
+                let slope = 30f32.to_radians().tan();
+                m.paint(|x, z| (z > -0.05 * l + slope * x).then_some(CellKind::Plate));
+            }
+            Setup::Lens => {
+                // Two circular arcs of radius 0.25 l meeting 0.1 l apart on the axis.
+                let (r, t, zc) = (0.25 * l, 0.1 * l, -0.1 * l);
+                let inside = |x: f32, z: f32, cz: f32| x * x + (z - cz) * (z - cz) < r * r;
+                m.paint(|x, z| {
+                    (inside(x, z, zc + r - 0.5 * t) && inside(x, z, zc - r + 0.5 * t)).then_some(CellKind::Plate)
+                });
+            }
+            _ => {}
+        }
+        debug_assert!(m.sources.dippers.len() <= MAX_DIPPERS);
+        m
+    }
+
+    /// Cell size (m).
+    pub fn dx(&self) -> f32 {
+        self.size / self.cells as f32
+    }
+
+    /// Centre of cell (i, j) (m).
+    pub fn centre(&self, i: u32, j: u32) -> (f32, f32) {
+        let dx = self.dx();
+        (-0.5 * self.size + (i as f32 + 0.5) * dx, -0.5 * self.size + (j as f32 + 0.5) * dx)
+    }
+
+    /// The cell holding point (x, z) (m), if in the tray.
+    pub fn cell_at(&self, x: f32, z: f32) -> Option<(u32, u32)> {
+        let f = |v: f32| ((v + 0.5 * self.size) / self.dx()).floor();
+        let (i, j) = (f(x), f(z));
+        let n = self.cells as f32;
+        (i >= 0.0 && j >= 0.0 && i < n && j < n).then_some((i as u32, j as u32))
+    }
+
+    pub fn kind(&self, i: u32, j: u32) -> CellKind {
+        match self.texels[(j * self.cells + i) as usize][2] as u32 {
+            1 => CellKind::Wall,
+            2 => CellKind::Plate,
+            _ => CellKind::Water,
+        }
+    }
+
+    /// The fastest wave speed in the tray (m/s).
+    pub fn fastest(&self) -> f32 {
+        self.texels.iter().map(|t| t[0]).fold(0.0, f32::max).sqrt()
+    }
+
+    /// Makes each cell whose centre `kind_at` gives a kind that kind (a plate leaves
+    /// [`PLATE_DEPTH_SHARE`] of the depth over it; a wall none).
+    pub fn paint(&mut self, kind_at: impl Fn(f32, f32) -> Option<CellKind>) {
+        let plate_c2 = GRAVITY * self.depth * PLATE_DEPTH_SHARE;
+        for j in 0..self.cells {
+            for i in 0..self.cells {
+                let (x, z) = self.centre(i, j);
+                let Some(kind) = kind_at(x, z) else { continue };
+                let texel = &mut self.texels[(j * self.cells + i) as usize];
+                texel[0] = match kind {
+                    CellKind::Water => GRAVITY * self.depth,
+                    CellKind::Wall => 0.0,
+                    CellKind::Plate => plate_c2,
+                };
+                texel[2] = kind.code();
+            }
+        }
+    }
+
+    /// A barrier across the tray: the cells within `thickness` / 2 of line z = `z` (m), except
+    /// where `open(x)` leaves a gap.
+    pub fn barrier(&mut self, z: f32, thickness: f32, open: impl Fn(f32) -> bool) {
+        self.paint(|x, cz| ((cz - z).abs() < 0.5 * thickness && !open(x)).then_some(CellKind::Wall));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_double_slit_leaves_two_gaps_of_the_slit_width_in_its_barrier() {
+        let settings = TankSettings { setup: Setup::DoubleSlit, ..Default::default() };
+        let m = Medium::of(&settings, 256);
+        let row = (0..m.cells).find(|&j| (0..m.cells).any(|i| m.kind(i, j) == CellKind::Wall)).unwrap();
+        let open: Vec<u32> = (0..m.cells).filter(|&i| m.kind(i, row) != CellKind::Wall).collect();
+        let gaps = open.windows(2).filter(|w| w[1] != w[0] + 1).count() + 1;
+        let width = open.len() as f32 * m.dx() / 2.0;
+        println!("gaps {gaps}, each {:.1} mm wide (asked {:.1})", width * 1e3, settings.slit_width * 1e3);
+        assert_eq!(gaps, 2);
+        assert!((width - settings.slit_width).abs() <= m.dx());
+    }
+}

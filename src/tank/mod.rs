@@ -1,0 +1,254 @@
+//! The ripple tank (`scene` = tank): a shallow glass-bottomed tray of water as the school lab
+//! has it, a lamp above and a white screen below. Its waves follow the shallow-water wave
+//! equation with a speed per cell, c = sqrt(g d), so water over a glass plate (shallower) runs
+//! slower and bends them; barriers are cells the water cannot enter. Lengths in metres (the
+//! parameters in millimetres where a lab's ruler would say so), times in seconds.
+//!
+//! This module holds the tank's parameters and settings, the apparatus' geometry
+//! ([`medium`]: depth and walls per cell, the sources), the step arithmetic the GPU and the
+//! CPU share ([`plan`]), the CPU reference ([`cpu`]) and the GPU engine ([`gpu`]). Its scene,
+//! view and picture are `scenes/tank/`.
+
+pub mod cpu;
+pub mod gpu;
+pub mod medium;
+pub mod plan;
+
+use crate::camera::CameraLimits;
+use crate::param_spec::{slider, Control, ParamSpec};
+
+crate::choices! {
+    /// The lab's set-up (the `tank_setup` parameter): what makes the waves and what stands
+    /// in their way.
+    #[derive(Default)]
+    pub enum Setup {
+        #[default]
+        Dipper = "dipper",
+        TwoDippers = "two_dippers",
+        PlaneWave = "plane_wave",
+        SingleSlit = "single_slit",
+        DoubleSlit = "double_slit",
+        Refraction = "refraction",
+        Lens = "lens",
+    }
+}
+
+crate::choices! {
+    /// What the tank's picture shows (the `tank_view` parameter): the lamp's image on the
+    /// screen below, the heights as colour, or the time-averaged intensity (h²).
+    #[derive(Default)]
+    pub enum TankView {
+        #[default]
+        Screen = "screen",
+        Heights = "heights",
+        Intensity = "intensity",
+    }
+}
+
+/// The tank's camera: from straight above to 20° over the bench, 0.2 to 5 m from the tray.
+pub const TANK_LIMITS: CameraLimits = CameraLimits { pitch: (20.0, 89.0), distance: (0.2, 5.0), near: 0.01, far: 20.0 };
+
+/// The camera's start for the default tray (yaw °, pitch °, distance m): straight above it,
+/// the bar's side at the bottom of the picture, the tray and its frame filling 90 % of the
+/// picture's height (a larger tray moves the camera back in proportion).
+pub const START_VIEW: [f32; 3] = [180.0, 89.0, 0.83];
+
+/// Cells along each side of the tray.
+pub const TANK_CELLS: u32 = 256;
+/// The white screen's distance under the tray's glass bottom (m).
+pub const SCREEN_BELOW: f32 = 0.5;
+/// Width of the beaches along the walls, as a share of the tray's side, and their damping
+/// rate at the wall in units of c / width (the pool's sponge profile: quadratic).
+pub const BEACH_SHARE: f32 = 0.1;
+pub const BEACH_STRENGTH: f32 = 12.0;
+/// A dipper's radius (m), at least this many cells.
+pub const DIPPER_RADIUS: f32 = 0.004;
+pub const DIPPER_MIN_CELLS: f32 = 1.5;
+/// The most point dippers.
+pub const MAX_DIPPERS: usize = 4;
+/// The most drops a click batch puts in at once.
+pub const MAX_TANK_DROPS: usize = 4;
+/// Largest Courant number c dt / dx an update uses (stable up to 1/sqrt(2)).
+pub const TANK_COURANT: f32 = 0.5;
+/// Bounds on the state: |h| (m) and |v| (m/s); beyond them a cell is clamped, NaN is rest.
+pub const MAX_TANK_HEIGHT: f32 = 0.01;
+pub const MAX_TANK_VELOCITY: f32 = 2.0;
+/// The time (s) over which the intensity h² is averaged: a few periods of the slowest dipper.
+pub const INTENSITY_TIME: f32 = 1.0;
+/// Depth left over a glass plate, as a share of the tray's water depth.
+pub const PLATE_DEPTH_SHARE: f32 = 0.35;
+
+/// The tank's settings, from its parameters (lengths in m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TankSettings {
+    pub setup: Setup,
+    /// The tray's side (m) and its water's depth (m).
+    pub size: f32,
+    pub depth: f32,
+    /// The dippers' frequency (Hz) and amplitude (m).
+    pub frequency: f32,
+    pub amplitude: f32,
+    /// A slit's width and the spacing of two slits' (or two dippers') centres (m).
+    pub slit_width: f32,
+    pub slit_spacing: f32,
+    /// The lamp's height over the water (m).
+    pub lamp_height: f32,
+    /// Beaches along the walls that swallow the waves, or reflecting walls.
+    pub beaches: bool,
+}
+
+impl Default for TankSettings {
+    /// Every setting at its parameter's default.
+    fn default() -> Self {
+        Self {
+            setup: Setup::from(TANK_SETUP.default),
+            size: TANK_SIZE.default,
+            depth: TANK_DEPTH.default * 1e-3,
+            frequency: TANK_FREQUENCY.default,
+            amplitude: TANK_AMPLITUDE.default * 1e-3,
+            slit_width: TANK_SLIT_WIDTH.default * 1e-3,
+            slit_spacing: TANK_SLIT_SPACING.default * 1e-3,
+            lamp_height: TANK_LAMP_HEIGHT.default,
+            beaches: TANK_BEACHES.default >= 0.5,
+        }
+    }
+}
+
+impl TankSettings {
+    /// The waves' speed in the open tray (m/s): shallow water's sqrt(g d).
+    pub fn wave_speed(&self) -> f32 {
+        (crate::physics::GRAVITY * self.depth).sqrt()
+    }
+
+    /// The dippers' wavelength in the open tray (m).
+    pub fn wavelength(&self) -> f32 {
+        self.wave_speed() / self.frequency
+    }
+
+    /// Half the tray's side (m): the tray spans [-half, half] each way.
+    pub fn half_width(&self) -> f32 {
+        0.5 * self.size
+    }
+
+    /// How much larger the tray's image is on the screen than the tray: the lamp's rays
+    /// spread from its height over the water to the screen (through water and glass they
+    /// bend towards the vertical, which the tray's few millimetres leave out).
+    pub fn magnification(&self) -> f32 {
+        (self.lamp_height + self.depth + SCREEN_BELOW) / self.lamp_height
+    }
+}
+
+/// The tank's own parameters (shown only with `scene` tank).
+pub const PARAMS: &[ParamSpec] = &[
+    TANK_SETUP,
+    TANK_VIEW,
+    TANK_FREQUENCY,
+    TANK_AMPLITUDE,
+    TANK_DEPTH,
+    TANK_SIZE,
+    TANK_SLIT_WIDTH,
+    TANK_SLIT_SPACING,
+    TANK_LAMP_HEIGHT,
+    TANK_BEACHES,
+];
+
+pub const TANK_SETUP: ParamSpec = ParamSpec {
+    name: "tank_setup",
+    label: "Set-up",
+    group: "Tank",
+    unit: "",
+    control: Control::Choice { values: Setup::VALUES, names: Setup::NAMES },
+    default: 0.0,
+    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), or a lens-shaped plate that brings them to a focus.",
+};
+
+pub const TANK_VIEW: ParamSpec = ParamSpec {
+    name: "tank_view",
+    label: "View",
+    group: "Tank",
+    unit: "",
+    control: Control::Choice { values: TankView::VALUES, names: TankView::NAMES },
+    default: 0.0,
+    help: "What the picture shows: the lamp's light on the screen under the tank (each crest focuses it like a lens into a bright line), the water's height as colour, or the intensity: the height squared, averaged over the last second.",
+};
+
+pub const TANK_FREQUENCY: ParamSpec = ParamSpec {
+    name: "tank_frequency",
+    label: "Frequency",
+    group: "Tank",
+    unit: "Hz",
+    control: slider(2.0, 25.0, 0.5),
+    default: 10.0,
+    help: "How often the dippers (or the bar) go up and down. The wavelength is the speed over the frequency.",
+};
+
+pub const TANK_AMPLITUDE: ParamSpec = ParamSpec {
+    name: "tank_amplitude",
+    label: "Amplitude",
+    group: "Tank",
+    unit: "mm",
+    control: slider(0.02, 1.0, 0.01),
+    default: 0.3,
+    help: "How far the dippers move the water up and down. A fraction of a millimetre is enough: each crest then focuses the lamp's light near the screen, as in a well-set lab tank; higher waves focus it above the screen, and the lines there break up.",
+};
+
+pub const TANK_DEPTH: ParamSpec = ParamSpec {
+    name: "tank_depth",
+    label: "Water depth",
+    group: "Tank",
+    unit: "mm",
+    control: slider(5.0, 40.0, 1.0),
+    default: 10.0,
+    help: "The water's depth: waves this long (much longer than the depth) run at sqrt(g d), faster in deeper water. Over a glass plate the water is shallower, so the waves slow there and bend.",
+};
+
+pub const TANK_SIZE: ParamSpec = ParamSpec {
+    name: "tank_size",
+    label: "Tray size",
+    group: "Tank",
+    unit: "m",
+    control: slider(0.4, 1.2, 0.05),
+    default: 0.6,
+    help: "The side of the square tray.",
+};
+
+pub const TANK_SLIT_WIDTH: ParamSpec = ParamSpec {
+    name: "tank_slit_width",
+    label: "Slit width",
+    group: "Tank",
+    unit: "mm",
+    control: slider(5.0, 100.0, 1.0),
+    default: 20.0,
+    help: "The width of each gap in the barrier.",
+};
+
+pub const TANK_SLIT_SPACING: ParamSpec = ParamSpec {
+    name: "tank_slit_spacing",
+    label: "Slit spacing",
+    group: "Tank",
+    unit: "mm",
+    control: slider(20.0, 300.0, 1.0),
+    default: 90.0,
+    help: "The distance between the centres of the two slits, or of the two dippers.",
+};
+
+pub const TANK_LAMP_HEIGHT: ParamSpec = ParamSpec {
+    name: "tank_lamp_height",
+    label: "Lamp height",
+    group: "Tank",
+    unit: "m",
+    control: slider(0.3, 2.0, 0.05),
+    default: 1.0,
+    help:
+        "The lamp's height over the water. The screen lies 0.5 m under the tray; a lower lamp spreads the image wider.",
+};
+
+pub const TANK_BEACHES: ParamSpec = ParamSpec {
+    name: "tank_beaches",
+    label: "Beaches",
+    group: "Tank",
+    unit: "",
+    control: Control::Toggle,
+    default: 1.0,
+    help: "Sloping beaches along the walls that swallow the waves (as the foam or mesh strips of a real tank do), or bare walls that reflect them.",
+};

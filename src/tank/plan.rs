@@ -1,0 +1,81 @@
+//! The arithmetic of a frame's updates, worked out once on the CPU and used by the GPU pass
+//! and the CPU reference alike: how many updates a fixed step takes (from the fastest cell),
+//! each update's uniforms (the sources' phase at its end, the drops of the first).
+
+use super::medium::Medium;
+use super::{TankSettings, MAX_DIPPERS, MAX_TANK_DROPS, MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, TANK_COURANT};
+use crate::sim::Drop;
+
+/// One update's uniforms, as `shaders/tank/update.wgsl` reads them (each in a 256-byte slot).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Update {
+    /// Cells per side, cell size dx (m), update length dt (s), the tray's half width (m).
+    pub grid: [f32; 4],
+    /// The sources' phase at the update's end (rad), amplitude (m), angular frequency (rad/s),
+    /// number of point dippers.
+    pub wave: [f32; 4],
+    /// The bar's z (m) and half thickness (m), 1 if there is a bar, number of drops.
+    pub bar: [f32; 4],
+    /// Largest |h| (m) and |v| (m/s) the update leaves.
+    pub bounds: [f32; 4],
+    /// Each dipper's centre x, z (m), radius (m), phase (rad).
+    pub dippers: [[f32; 4]; MAX_DIPPERS],
+    /// Each drop's centre x, z (m), radius (m), height (m), added before the update.
+    pub drops: [[f32; 4]; MAX_TANK_DROPS],
+}
+
+/// Bytes between updates' uniforms in the GPU's buffer (its uniform offset alignment).
+pub const UPDATE_SLOT: u64 = 256;
+const _: () = assert!(std::mem::size_of::<Update>() as u64 <= UPDATE_SLOT);
+
+/// Updates per fixed step of `step_dt` (s) in `medium`: enough that the fastest cell's
+/// Courant number stays under [`TANK_COURANT`].
+pub fn updates_per_step(medium: &Medium, step_dt: f32) -> u32 {
+    ((medium.fastest() * step_dt / (TANK_COURANT * medium.dx())).ceil() as u32).max(1)
+}
+
+/// The updates of `steps` fixed steps of `step_dt` (s) starting at simulated time `t0` (s):
+/// the sources of `medium` at the frequency and amplitude of `settings`; `drops` go into the
+/// first (at most [`MAX_TANK_DROPS`]; the rest are left in the vector for the next frame).
+pub fn plan(
+    medium: &Medium,
+    settings: &TankSettings,
+    t0: f64,
+    steps: u32,
+    step_dt: f32,
+    drops: &mut Vec<Drop>,
+) -> Vec<Update> {
+    let per_step = updates_per_step(medium, step_dt);
+    let dt = step_dt / per_step as f32;
+    let omega = std::f64::consts::TAU * settings.frequency as f64;
+    let mut dippers = [[0.0; 4]; MAX_DIPPERS];
+    for (slot, d) in dippers.iter_mut().zip(&medium.sources.dippers) {
+        *slot = [d.x, d.z, d.radius, d.phase];
+    }
+    let (bar_z, bar_half) = medium.sources.bar.unwrap_or((0.0, 0.0));
+    let base = Update {
+        grid: [medium.cells as f32, medium.dx(), dt, 0.5 * medium.size],
+        wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len() as f32],
+        bar: [bar_z, bar_half, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
+        bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, 0.0, 0.0],
+        dippers,
+        drops: [[0.0; 4]; MAX_TANK_DROPS],
+    };
+    let count = steps * per_step;
+    (0..count)
+        .map(|k| {
+            let mut update = base;
+            let t = t0 + (k + 1) as f64 * (step_dt as f64 / per_step as f64);
+            update.wave[0] = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
+            if k == 0 {
+                let n = drops.len().min(MAX_TANK_DROPS);
+                for (slot, d) in update.drops.iter_mut().zip(drops.drain(..n)) {
+                    *slot = [d.x, d.z, d.radius, d.strength];
+                }
+                update.bar[3] = n as f32;
+            }
+            update
+        })
+        .collect()
+}
