@@ -156,3 +156,10 @@ impl WaterDemo {
         self.scenes.sea.set_fft_on_gpu(on);
     }
 }
+
+/// The ripple tank's state.
+impl WaterDemo {
+    pub fn tank(&self) -> &crate::scenes::tank::TankScene {
+        &self.scenes.tank
+    }
+}

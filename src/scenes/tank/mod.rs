@@ -109,6 +109,11 @@ impl TankScene {
     pub fn water(&self) -> Option<&TankWater> {
         self.water.as_ref()
     }
+
+    /// The picture's passes and the screen's image, once a frame has been drawn.
+    pub fn picture(&self) -> Option<&TankPicture> {
+        self.picture.as_ref()
+    }
 }
 
 impl super::Scene for TankScene {

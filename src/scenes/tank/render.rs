@@ -43,6 +43,7 @@ pub struct TankPicture {
     uniforms: wgpu::Buffer,
     layout: wgpu::BindGroupLayout,
     screen_pipeline: wgpu::RenderPipeline,
+    screen_image: wgpu::Texture,
     screen_view: wgpu::TextureView,
     image_group: wgpu::BindGroup,
     show: FullscreenPass,
@@ -146,7 +147,19 @@ impl TankPicture {
             FullscreenTarget { format: target_format, blend: None, depth: None },
         );
         let uniforms = gpu::uniform_buffer(device, "tank picture", &PictureUniforms::zeroed());
-        Self { uniforms, layout, screen_pipeline, screen_view, image_group, show, scale }
+        Self { uniforms, layout, screen_pipeline, screen_image: image, screen_view, image_group, show, scale }
+    }
+
+    /// The screen's image: light per texel (1 for flat water under the lamp) times
+    /// [`TankPicture::scale`], the screen's +z side in its first rows; its half extent on the
+    /// screen is [`TankPicture::screen_half_extent`].
+    pub fn screen_image(&self) -> &wgpu::Texture {
+        &self.screen_image
+    }
+
+    /// What one unit of light is stored as in the screen's image.
+    pub fn scale(&self) -> f32 {
+        self.scale
     }
 
     /// The screen image's half extent on the screen (m) for `settings`.

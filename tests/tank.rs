@@ -1,0 +1,231 @@
+//! The ripple tank (`scene` = tank): its waves on the CPU reference (walls, the double slit),
+//! the GPU engine against the CPU's, and the lamp's image on the screen below in the demo.
+// The tests read the tank's state and screen back from the GPU, waiting for it.
+#![allow(clippy::disallowed_methods)]
+
+mod common;
+
+use common::picture::Rect;
+use common::{demo, gpu, render};
+use wavepool::demo::{DemoOptions, STEP_DT};
+use wavepool::params::ParamId;
+use wavepool::tank::cpu::CpuTank;
+use wavepool::tank::gpu::TankWater;
+use wavepool::tank::medium::{CellKind, Dipper, Medium};
+use wavepool::tank::plan::plan;
+use wavepool::tank::{Setup, TankSettings, TANK_CELLS};
+
+/// Runs `tank` for `seconds` of fixed steps (two a batch, as a frame at 60 frames/s takes),
+/// calling `each` after every update.
+fn run(tank: &mut CpuTank, settings: &TankSettings, seconds: f32, mut each: impl FnMut(&CpuTank)) {
+    let steps = (seconds / STEP_DT).round() as u32;
+    let mut drops = Vec::new();
+    for batch in 0..steps / 2 {
+        let t0 = (2 * batch) as f64 * STEP_DT as f64;
+        for update in plan(&tank.medium, settings, t0, 2, STEP_DT, &mut drops) {
+            tank.update(&update);
+            each(tank);
+        }
+    }
+}
+
+#[test]
+fn a_closed_wall_lets_no_wave_through_and_a_gap_does() {
+    let settings = TankSettings { size: 0.3, ..Default::default() };
+    let mut far_side = Vec::new();
+    for gap in [false, true] {
+        let mut medium = Medium::open(128, settings.size, settings.depth, true);
+        let dx = medium.dx();
+        medium.barrier(0.0, 2.0 * dx, |x| gap && x.abs() < 0.02);
+        medium.sources.dippers.push(Dipper { x: 0.0, z: -0.07, radius: 0.004, phase: 0.0 });
+        let mut tank = CpuTank::new(medium);
+        let (mut near, mut far) = (0.0f32, 0.0f32);
+        run(&mut tank, &settings, 1.5, |t| {
+            for j in 0..128 {
+                for i in 0..128 {
+                    let z = t.medium.centre(i, j).1;
+                    let h = t.height(i, j).abs();
+                    if z < -2.0 * dx && t.medium.kind(i, j) != CellKind::Wall {
+                        near = near.max(h);
+                    } else if z > 2.0 * dx {
+                        far = far.max(h);
+                    }
+                }
+            }
+        });
+        println!("gap {gap}: largest |h| on the dipper's side {near:.3e} m, beyond the wall {far:.3e} m");
+        far_side.push(far / near);
+    }
+    assert!(far_side[0] <= 1e-6, "a closed wall leaked {:.2e} of the peak", far_side[0]);
+    assert!(far_side[1] > 1e-2, "the gap let only {:.2e} of the peak through", far_side[1]);
+}
+
+#[test]
+fn the_double_slits_bright_lines_leave_at_arcsin_m_lambda_over_d() {
+    // A tray of 1.2 m so that an arc 0.65 m from the slits is about in their far field
+    // (d² / λ = 0.46 m).
+    let settings = TankSettings {
+        setup: Setup::DoubleSlit,
+        size: 1.2,
+        slit_width: 0.012,
+        slit_spacing: 0.12,
+        ..Default::default()
+    };
+    let medium = Medium::of(&settings, 512);
+    let barrier_z = (0..512)
+        .map(|j| medium.centre(0, j).1)
+        .find(|&z| medium.cell_at(0.0, z).is_some_and(|(i, j)| medium.kind(i, j) == CellKind::Wall))
+        .expect("a barrier");
+    let (lambda, d, radius) = (settings.wavelength(), settings.slit_spacing, 0.65);
+    let angles: Vec<f32> = (-240..=240).map(|k| k as f32 * 0.25).collect();
+    let points: Vec<(u32, u32)> = angles
+        .iter()
+        .map(|a| {
+            let (s, c) = a.to_radians().sin_cos();
+            medium.cell_at(radius * s, barrier_z + radius * c).expect("the arc inside the tray")
+        })
+        .collect();
+    let mut tank = CpuTank::new(medium);
+    // The waves reach the arc after about 2.3 s; then the intensity is summed over 10 periods.
+    run(&mut tank, &settings, 3.0, |_| {});
+    let mut intensity = vec![0.0f64; points.len()];
+    run(&mut tank, &settings, 10.0 / settings.frequency, |t| {
+        for (sum, &(i, j)) in intensity.iter_mut().zip(&points) {
+            *sum += (t.height(i, j) as f64).powi(2);
+        }
+    });
+    for m in [1.0f32, 2.0] {
+        let predicted = (m * lambda / d).asin().to_degrees();
+        for side in [-1.0f32, 1.0] {
+            // The brightest angle within 6° of the prediction, refined by a parabola.
+            let near: Vec<usize> = (0..angles.len()).filter(|&k| (angles[k] - side * predicted).abs() < 6.0).collect();
+            let k = *near.iter().max_by(|&&a, &&b| intensity[a].total_cmp(&intensity[b])).unwrap();
+            let (a, b, c) = (intensity[k - 1], intensity[k], intensity[k + 1]);
+            let found = (angles[k] + 0.25 * (0.5 * (a - c) / (a - 2.0 * b + c)) as f32).abs();
+            println!(
+                "m = {m}, {}: bright line at {found:.2}°, arcsin(m λ / d) = {predicted:.2}° (λ = {:.1} mm, d = {:.0} mm)",
+                if side < 0.0 { "left" } else { "right" },
+                lambda * 1e3,
+                d * 1e3
+            );
+            assert!((found - predicted).abs() <= 0.05 * predicted, "m = {m}: {found:.2}° against {predicted:.2}°");
+            assert!(near.first() != Some(&k) && near.last() != Some(&k), "no maximum near {predicted:.1}°");
+        }
+    }
+}
+
+#[test]
+fn the_gpu_and_the_cpu_run_the_same_tank() {
+    let settings = TankSettings { setup: Setup::DoubleSlit, ..Default::default() };
+    let medium = Medium::of(&settings, TANK_CELLS);
+    let g = gpu();
+    let mut water = TankWater::new(&g.device, &g.queue, &medium, true);
+    assert!(!water.on_cpu());
+    let mut cpu = CpuTank::new(medium.clone());
+    let mut drops = vec![wavepool::sim::Drop { x: 0.1, z: 0.1, radius: 0.01, strength: 0.0005 }];
+    let mut cpu_drops = drops.clone();
+    for frame in 0..60u32 {
+        let t0 = (2 * frame) as f64 * STEP_DT as f64;
+        let mut encoder = g.device.create_command_encoder(&Default::default());
+        water.encode(&g.device, &g.queue, &mut encoder, &plan(&medium, &settings, t0, 2, STEP_DT, &mut drops));
+        g.queue.submit([encoder.finish()]);
+        cpu.run(&plan(&medium, &settings, t0, 2, STEP_DT, &mut cpu_drops));
+    }
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, water.state_texture());
+    let on_gpu: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+    let (mut diff, mut sum, mut worst) = (0.0f64, 0.0f64, 0.0f32);
+    for (a, b) in on_gpu.iter().zip(&cpu.state) {
+        diff += ((a[0] - b[0]) as f64).powi(2);
+        sum += (b[0] as f64).powi(2);
+        worst = worst.max((a[0] - b[0]).abs());
+    }
+    let relative = (diff / sum).sqrt();
+    println!("1 s of the double slit: GPU against CPU, RMS difference {relative:.2e} of the RMS height, largest {worst:.2e} m");
+    assert!(sum > 0.0 && relative < 1e-3);
+}
+
+/// The value of an IEEE half float.
+fn half(bits: u16) -> f32 {
+    let (sign, exponent, mantissa) = (bits >> 15, ((bits >> 10) & 0x1f) as i32, (bits & 0x3ff) as f32);
+    let magnitude = match exponent {
+        0 => mantissa * 2f32.powi(-24),
+        _ => (1.0 + mantissa / 1024.0) * 2f32.powi(exponent - 15),
+    };
+    if sign == 1 {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+#[test]
+fn the_lamp_draws_a_plane_waves_crests_on_the_screen_as_bright_lines_at_its_magnified_period() {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 2.0);
+    d.params.set(ParamId::TankSetup, Setup::PlaneWave.value());
+    d.params.set(ParamId::TankAmplitude, 0.15);
+    d.sync_scene();
+    let frame = render(&mut d, 320, 240, 150, 1.0 / 60.0);
+    let tank = d.tank();
+    let (settings, g) = (*tank.settings(), gpu());
+    let picture = tank.picture().expect("drawn");
+    let texels = picture.screen_image().width();
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, picture.screen_image());
+    let halves: &[u16] = bytemuck::cast_slice(&bytes);
+    let extent = wavepool::scenes::tank::TankPicture::screen_half_extent(&settings);
+    let magnification = settings.magnification();
+    // The screen's middle column across the tray's middle half, light per row; and the
+    // water's heights along the same line, each at the point of the screen it lights.
+    let row_z = |row: u32| extent * (1.0 - 2.0 * (row as f32 + 0.5) / texels as f32);
+    let rows: Vec<u32> = (0..texels).filter(|&r| row_z(r).abs() < 0.25 * settings.size * magnification).collect();
+    let light: Vec<f32> = rows.iter().map(|&r| half(halves[((r * texels + texels / 2) * 4) as usize])).collect();
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, tank.water().unwrap().state_texture());
+    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+    let medium = tank.medium();
+    let height_under = |z_screen: f32| {
+        let (i, j) = medium.cell_at(0.0, z_screen / magnification).unwrap();
+        state[(j * medium.cells + i) as usize][0]
+    };
+    // The period: the spacing of the bright lines (local maxima above the mean) on the screen.
+    let mean = light.iter().sum::<f32>() / light.len() as f32;
+    let peaks: Vec<usize> = (1..light.len() - 1)
+        .filter(|&k| light[k] > 1.5 * mean && light[k] >= light[k - 1] && light[k] > light[k + 1])
+        .collect();
+    let expected = settings.wavelength() * magnification;
+    // The period: the lag (rows) at which the light best matches itself, between half and
+    // one and a half of the expected, refined by a parabola.
+    let row_step = 2.0 * extent / texels as f32;
+    let correlation = |lag: usize| -> f32 {
+        let n = light.len() - lag;
+        (0..n).map(|k| (light[k] - mean) * (light[k + lag] - mean)).sum::<f32>() / n as f32
+    };
+    let lags: Vec<usize> = ((0.5 * expected / row_step) as usize..=(1.5 * expected / row_step) as usize).collect();
+    let best = *lags.iter().max_by(|&&a, &&b| correlation(a).total_cmp(&correlation(b))).unwrap();
+    let (a, b, c) = (correlation(best - 1), correlation(best), correlation(best + 1));
+    let spacing = (best as f32 + 0.5 * (a - c) / (a - 2.0 * b + c)) * row_step;
+    // Each bright line lies under a crest: the water there stands higher than a quarter
+    // wavelength to either side.
+    let crests = peaks
+        .iter()
+        .filter(|&&k| {
+            let z = row_z(rows[k]);
+            let quarter = 0.25 * expected;
+            height_under(z) > height_under(z + quarter) && height_under(z) > height_under(z - quarter)
+        })
+        .count();
+    println!(
+        "{} bright lines, their period on the screen {:.2} mm (λ × magnification = {:.2} mm); {crests} of them under crests; brightest {:.2}, mean {mean:.2}",
+        peaks.len(),
+        spacing * 1e3,
+        expected * 1e3,
+        light.iter().cloned().fold(0.0, f32::max)
+    );
+    assert!(peaks.len() >= 8);
+    assert!((spacing - expected).abs() <= 0.03 * expected);
+    assert!(crests * 10 >= peaks.len() * 9, "only {crests} of {} lines under crests", peaks.len());
+    // And the frame shows them: the paper under the tray is lit and striped.
+    let middle = Rect::centred_square(320, 240, 0.4);
+    let (mean_luma, spread) = (frame.luma_stats(middle).0 * 255.0, frame.luma_spread(middle));
+    println!("the frame's middle: luma mean {mean_luma:.1}, std {spread:.1}");
+    assert!(mean_luma > 60.0 && spread > 8.0);
+}
