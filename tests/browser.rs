@@ -967,9 +967,9 @@ async fn flat_water_splits_and_the_divider_drags_on_webgl2() {
 }
 
 /// The open sea in the page on both backends: a picture (sky over darker water), its own
-/// controls shown, and back to the pool without a reload or an error.
+/// controls shown, and back to the pool without a reload or an error; then the ripple tank.
 #[tokio::test]
-async fn the_sea_runs_in_the_page_on_both_backends_and_gives_the_pool_back() {
+async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_the_pool_back() {
     let _g = serial();
     for (graphics, backend) in [(Graphics::WebGpu, "webgpu"), (Graphics::WebGl2Only, "webgl2")] {
         // As a shared link opens it: the scene and the sea camera's view.
@@ -1012,6 +1012,29 @@ async fn the_sea_runs_in_the_page_on_both_backends_and_gives_the_pool_back() {
             state["error"].is_null() && state["wind"] == false && state["waveSpeed"] == true,
             "{backend}: back in the pool: {state}"
         );
+        // The ripple tank too: its double slit's lines on the screen under the tray, its own
+        // controls, and its heights as colour when asked.
+        browser.js("window.demo.set('scene', 'tank'); window.demo.set('tank_setup', 'double_slit'); return true;").await;
+        assert!(browser.wait_for("window.demo.stats().scene === 'tank'", Duration::from_secs(20)).await);
+        browser.wait_frames(20).await;
+        let screen = browser.screenshot().await;
+        screen.dump(&format!("tank-{backend}"));
+        let middle = Rect::centred_square(rect.w, rect.h, 0.5);
+        let middle = Rect { x: rect.x + middle.x, y: rect.y + middle.y, ..middle };
+        browser.js("window.demo.set('tank_view', 'heights'); return true;").await;
+        browser.wait_frames(3).await;
+        let heights = browser.screenshot().await;
+        let tank = browser
+            .js("const root = document.querySelector('#pool').shadowRoot;
+                 const shown = n => !root.querySelector(`[name=${n}]`).closest('.row').hidden;
+                 return { setup: shown('tank_setup'), sun: shown('sun_elevation'), waveSpeed: shown('wave_speed'),
+                          error: document.querySelector('#pool').dataset.error || null, stages: window.demo.stats().stageMs };")
+            .await;
+        let (spread, recoloured) = (screen.luma_spread(middle), screen.changed_fraction(&heights, middle, 24));
+        println!("{backend}: the tank's screen, luma spread {spread:.1}; {:.0}% changed for the heights; {tank}", recoloured * 100.0);
+        assert!(tank["error"].is_null() && tank["setup"] == true, "{backend}: the tank's controls: {tank}");
+        assert!(tank["sun"] == false && tank["waveSpeed"] == false, "{backend}: other scenes' controls show: {tank}");
+        assert!(spread > 10.0 && recoloured > 0.3, "{backend}: the tank's pictures are flat or alike");
         browser.close().await;
     }
 }

@@ -104,6 +104,13 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     let sea_spread = browser.screenshot().await.luma_spread(rect);
     println!("{}: the open sea, luma spread {sea_spread:.1}", engine.name());
     assert!(at_sea && sea_spread > 12.0, "{engine:?}: the sea did not draw (luma spread {sea_spread:.1})");
+    // And the ripple tank: its dipper's rings on the screen.
+    browser.js("window.demo.set('scene', 'tank'); return true;").await;
+    let in_tank = browser.wait_for("window.demo.stats().scene === 'tank'", Duration::from_secs(30)).await;
+    browser.wait_frames(10).await;
+    let tank_spread = browser.screenshot().await.luma_spread(rect);
+    println!("{}: the ripple tank, luma spread {tank_spread:.1}", engine.name());
+    assert!(in_tank && tank_spread > 12.0, "{engine:?}: the tank did not draw (luma spread {tank_spread:.1})");
 
     // Still running 5 s later, no error shown or printed (Firefox prints the page's console).
     tokio::time::sleep(Duration::from_secs(5)).await;
