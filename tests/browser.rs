@@ -1014,7 +1014,9 @@ async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_t
         );
         // The ripple tank too: its double slit's lines on the screen under the tray, its own
         // controls, and its heights as colour when asked.
-        browser.js("window.demo.set('scene', 'tank'); window.demo.set('tank_setup', 'double_slit'); return true;").await;
+        browser
+            .js("window.demo.set('scene', 'tank'); window.demo.set('tank_setup', 'double_slit'); return true;")
+            .await;
         assert!(browser.wait_for("window.demo.stats().scene === 'tank'", Duration::from_secs(20)).await);
         browser.wait_frames(20).await;
         let screen = browser.screenshot().await;
@@ -1031,7 +1033,10 @@ async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_t
                           error: document.querySelector('#pool').dataset.error || null, stages: window.demo.stats().stageMs };")
             .await;
         let (spread, recoloured) = (screen.luma_spread(middle), screen.changed_fraction(&heights, middle, 24));
-        println!("{backend}: the tank's screen, luma spread {spread:.1}; {:.0}% changed for the heights; {tank}", recoloured * 100.0);
+        println!(
+            "{backend}: the tank's screen, luma spread {spread:.1}; {:.0}% changed for the heights; {tank}",
+            recoloured * 100.0
+        );
         assert!(tank["error"].is_null() && tank["setup"] == true, "{backend}: the tank's controls: {tank}");
         assert!(tank["sun"] == false && tank["waveSpeed"] == false, "{backend}: other scenes' controls show: {tank}");
         assert!(spread > 10.0 && recoloured > 0.3, "{backend}: the tank's pictures are flat or alike");

@@ -3,7 +3,7 @@
 
 struct Picture {
     inverse_view_proj: mat4x4<f32>,
-    eye: vec4<f32>,
+    mesh: vec4<f32>,    // x the screen mesh's points per side, y cells between them
     tray: vec4<f32>,    // x half width (m), y water depth (m), z lamp height over the water (m),
                         // w the screen's distance under the glass (m)
     screen: vec4<f32>,  // x the screen image's half extent (m on the screen), y magnification,
@@ -23,7 +23,7 @@ fn cell_of(p: vec2<i32>) -> vec4<f32> {
 
 fn is_wall(p: vec2<i32>) -> bool {
     let n = i32(pic.screen.z);
-    return textureLoad(medium, clamp(p, vec2<i32>(0), vec2<i32>(n - 1)), 0).z == 1.0;
+    return textureLoad(medium, clamp(p, vec2<i32>(0), vec2<i32>(n - 1)), 0).w == 1.0;
 }
 
 // Where the lamp's ray through surface point `surface` (m) with unit normal `normal` meets the

@@ -1,4 +1,5 @@
-// The lamp's image on the screen under the tank: the water's surface as a mesh of its cells,
+// The lamp's image on the screen under the tank: the water's surface as a mesh of its cells
+// (ordered for a small vertex cache, render::banded_grid),
 // each vertex moved to where the lamp's ray through it lands on the screen. A patch of
 // surface whose rays converge (under a crest, which focuses like a lens) lights a smaller
 // patch of screen brighter: each fragment adds the ratio of the patch's area under flat
@@ -10,13 +11,11 @@ struct ScreenOut {
     @location(1) light: f32,
 };
 
+// `grid`: the point's place in the mesh, -1 to 1 from the first point to the last; a point
+// every pic.mesh.y cells.
 @vertex
-fn vs_screen(@builtin(vertex_index) index: u32) -> ScreenOut {
-    let n = u32(pic.screen.z);
-    let quad = index / 6u;
-    let corner = array<vec2<u32>, 6>(vec2<u32>(0u, 0u), vec2<u32>(1u, 0u), vec2<u32>(0u, 1u),
-        vec2<u32>(0u, 1u), vec2<u32>(1u, 0u), vec2<u32>(1u, 1u))[index % 6u];
-    let p = vec2<i32>(vec2<u32>(quad % (n - 1u), quad / (n - 1u)) + corner);
+fn vs_screen(@location(0) grid: vec2<f32>) -> ScreenOut {
+    let p = vec2<i32>(round((grid + 1.0) * 0.5 * (pic.mesh.x - 1.0)) * pic.mesh.y);
     let dx = 2.0 * pic.tray.x / pic.screen.z;
     let xz = (vec2<f32>(p) + 0.5) * dx - pic.tray.x;
     let h = cell_of(p).x;

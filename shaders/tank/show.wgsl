@@ -43,7 +43,7 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
     }
     let p = vec2<i32>((xz + w) / (2.0 * w) * pic.screen.z);
     let m = textureLoad(medium, p, 0);
-    if m.z == 1.0 {
+    if m.w == 1.0 {
         return vec3<f32>(0.35);
     }
     let c = cell_of(p);
@@ -56,8 +56,8 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
         colour = vec3<f32>(s * 1.2, s * s * 0.8, s * s * s * 0.3);
     }
     // Beaches a little darker; plates tinted green.
-    colour *= 1.0 - 0.35 * clamp(m.y / 400.0, 0.0, 1.0);
-    return select(colour, mix(colour, vec3<f32>(0.2, 0.6, 0.35), 0.3), m.z == 2.0);
+    colour *= 1.0 - 0.35 * clamp(m.z / 400.0, 0.0, 1.0);
+    return select(colour, mix(colour, vec3<f32>(0.2, 0.6, 0.35), 0.3), m.w == 2.0);
 }
 
 @fragment

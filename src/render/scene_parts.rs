@@ -6,7 +6,7 @@
 
 use super::{Renderer, View};
 
-pub use super::meshes::Mesh;
+pub use super::meshes::{banded_grid, Mesh};
 pub use super::passes::begin_scene_pass;
 pub use super::resources::water_bind_groups;
 pub use super::shaders::scene_prelude_in;

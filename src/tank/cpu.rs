@@ -2,7 +2,7 @@
 //! the same order: the tests' ground truth, and the engine where the device cannot render into
 //! float textures.
 
-use super::medium::Medium;
+use super::medium::{CellKind, Medium};
 use super::plan::Update;
 use super::INTENSITY_TIME;
 
@@ -10,6 +10,8 @@ use super::INTENSITY_TIME;
 #[derive(Clone, Debug)]
 pub struct CpuTank {
     pub medium: Medium,
+    /// The medium's faces as the update reads them ([`Medium::faces`]).
+    faces: Vec<[f32; 4]>,
     /// Per cell: h (m), v (m/s) and h² averaged over the last [`INTENSITY_TIME`] (m²).
     pub state: Vec<[f32; 3]>,
 }
@@ -32,7 +34,14 @@ impl CpuTank {
     /// Still water in `medium`.
     pub fn new(medium: Medium) -> Self {
         let n = (medium.cells * medium.cells) as usize;
-        Self { medium, state: vec![[0.0; 3]; n] }
+        let faces = medium.faces();
+        Self { medium, faces, state: vec![[0.0; 3]; n] }
+    }
+
+    /// Puts `medium` in the tray (same cells), keeping the water.
+    pub fn set_medium(&mut self, medium: Medium) {
+        self.faces = medium.faces();
+        self.medium = medium;
     }
 
     /// The height of cell (i, j) (m).
@@ -45,58 +54,61 @@ impl CpuTank {
         self.state[(j * self.medium.cells + i) as usize][2]
     }
 
-    /// Runs `updates` in order.
+    /// Runs `updates` in order, each after its drops.
     pub fn run(&mut self, updates: &[Update]) {
         for u in updates {
             self.update(u);
         }
     }
 
-    /// The height of cell (i, j) with the update's drops added (m).
-    fn raised(&self, u: &Update, i: u32, j: u32) -> f32 {
-        let mut h = self.height(i, j);
-        let (x, z) = self.medium.centre(i, j);
-        for d in &u.drops[..u.bar[3] as usize] {
-            h += drop_bump(((x - d[0]).powi(2) + (z - d[1]).powi(2)).sqrt(), d[2], d[3]);
+    /// Adds the update's drops to the water, not to walls (see `fs_drops`).
+    fn add_drops(&mut self, u: &Update) {
+        let n = self.medium.cells;
+        for k in 0..self.state.len() {
+            if self.faces[k][3] == CellKind::Wall.code() {
+                continue;
+            }
+            let (x, z) = self.medium.centre(k as u32 % n, k as u32 / n);
+            let mut h = self.state[k][0];
+            for d in &u.drops[..u.bar[3] as usize] {
+                h += drop_bump(((x - d[0]).powi(2) + (z - d[1]).powi(2)).sqrt(), d[2], d[3]);
+            }
+            self.state[k][0] = bounded(h, u.bounds[0]);
         }
-        h
     }
 
-    /// One update of every cell (see `update.wgsl`).
+    /// One update of every cell after its drops (see `update.wgsl`).
     pub fn update(&mut self, u: &Update) {
-        let n = self.medium.cells;
+        if u.bar[3] > 0.0 {
+            self.add_drops(u);
+        }
+        let n = self.medium.cells as usize;
         let [_, dx, dt, _] = u.grid;
+        let h_at = |k: usize| self.state[k][0];
         let mut next = vec![[0.0f32; 3]; self.state.len()];
         for j in 0..n {
             for i in 0..n {
-                let k = (j * n + i) as usize;
-                let m = self.medium.texels[k];
-                if m[2] == 1.0 {
+                let k = j * n + i;
+                let m = self.faces[k];
+                if m[3] == CellKind::Wall.code() {
                     continue;
                 }
-                let h = self.raised(u, i, j);
-                let mut flux = 0.0;
-                for (di, dj) in [(1i32, 0i32), (-1, 0), (0, 1), (0, -1)] {
-                    let (ni, nj) = (i as i32 + di, j as i32 + dj);
-                    if ni < 0 || nj < 0 || ni >= n as i32 || nj >= n as i32 {
-                        continue;
-                    }
-                    let mn = self.medium.texels[(nj as u32 * n + ni as u32) as usize];
-                    if mn[2] == 1.0 {
-                        continue;
-                    }
-                    flux += 0.5 * (m[0] + mn[0]) * (self.raised(u, ni as u32, nj as u32) - h);
-                }
-                let absorb = (-m[1] * dt).exp();
-                let mut v = (self.state[k][1] + dt / (dx * dx) * flux) * absorb;
+                let west = if i > 0 { self.faces[k - 1][0] } else { 0.0 };
+                let south = if j > 0 { self.faces[k - n][1] } else { 0.0 };
+                let [h, v0, intensity] = self.state[k];
+                let flux = m[0] * (h_at(if i + 1 < n { k + 1 } else { k }) - h)
+                    + west * (h_at(if i > 0 { k - 1 } else { k }) - h)
+                    + m[1] * (h_at(if j + 1 < n { k + n } else { k }) - h)
+                    + south * (h_at(if j > 0 { k - n } else { k }) - h);
+                let absorb = (-m[2] * dt).exp();
+                let mut v = (v0 + dt / (dx * dx) * flux) * absorb;
                 let mut hn = (h + dt * v) * absorb;
-                let (x, z) = self.medium.centre(i, j);
+                let (x, z) = self.medium.centre(i as u32, j as u32);
                 if let Some(phase) = source_phase(u, x, z) {
                     hn = u.wave[1] * phase.sin();
                     v = u.wave[1] * u.wave[2] * phase.cos();
                 }
                 let hn = bounded(hn, u.bounds[0]);
-                let intensity = self.state[k][2];
                 next[k] = [hn, bounded(v, u.bounds[1]), intensity + (hn * hn - intensity) * (dt / INTENSITY_TIME)];
             }
         }
@@ -111,5 +123,5 @@ pub fn source_phase(u: &Update, x: f32, z: f32) -> Option<f32> {
             return Some(u.wave[0] + d[3]);
         }
     }
-    (u.bar[2] > 0.0 && (z - u.bar[0]).abs() <= u.bar[1]).then_some(u.wave[0])
+    (u.bar[2] > 0.0 && (z - u.bar[0]).abs() <= u.bar[1] && x.abs() <= u.bounds[2]).then_some(u.wave[0])
 }

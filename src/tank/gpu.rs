@@ -20,8 +20,11 @@ fn wgsl_constants() -> String {
 }
 
 enum Engine {
+    /// The update pass and the drops' pass, their layout, the updates' uniform slots and a
+    /// bind group per slot and side of the state.
     Gpu {
-        pass: FullscreenPass,
+        update: FullscreenPass,
+        drops: FullscreenPass,
         layout: wgpu::BindGroupLayout,
         uniforms: wgpu::Buffer,
         groups: Vec<[wgpu::BindGroup; 2]>,
@@ -53,7 +56,7 @@ impl TankWater {
             TANK_STATE_FORMAT,
             wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         );
-        gpu::write_texture_2d(queue, &medium_texture, 0, bytemuck::cast_slice(&medium.texels));
+        gpu::write_texture_2d(queue, &medium_texture, 0, bytemuck::cast_slice(&medium.faces()));
         let medium_view = medium_texture.create_view(&Default::default());
         let engine = if float_targets {
             let stage = wgpu::ShaderStages::FRAGMENT;
@@ -66,16 +69,19 @@ impl TankWater {
                 ],
             });
             let constants = wgsl_constants();
-            let pass = FullscreenPass::new(
-                device,
-                "tank update",
-                &[gpu::wgsl::MATH, &constants, crate::wgsl!("tank/update.wgsl")],
-                "fs_update",
-                &[&layout],
-                FullscreenTarget { format: TANK_STATE_FORMAT, blend: None, depth: None },
-            );
+            let pass = |label: &str, entry: &str| {
+                FullscreenPass::new(
+                    device,
+                    label,
+                    &[gpu::wgsl::MATH, &constants, crate::wgsl!("tank/update.wgsl")],
+                    entry,
+                    &[&layout],
+                    FullscreenTarget { format: TANK_STATE_FORMAT, blend: None, depth: None },
+                )
+            };
+            let (update, drops) = (pass("tank update", "fs_update"), pass("tank drops", "fs_drops"));
             let uniforms = slots_buffer(device, 0);
-            Engine::Gpu { pass, layout, uniforms, groups: Vec::new() }
+            Engine::Gpu { update, drops, layout, uniforms, groups: Vec::new() }
         } else {
             Engine::Cpu(Box::new(CpuTank::new(medium.clone())))
         };
@@ -98,7 +104,8 @@ impl TankWater {
         self.state.current_texture()
     }
 
-    /// The medium's texture: c² (m²/s²), beach rate (1/s), kind code per cell.
+    /// The medium's texture: per cell its faces' c² (m²/s²), beach rate (1/s), kind code
+    /// ([`Medium::faces`]).
     pub fn medium_view(&self) -> &wgpu::TextureView {
         &self.medium_view
     }
@@ -110,9 +117,9 @@ impl TankWater {
 
     /// Puts `medium` in the tray (same cells per side), keeping the water.
     pub fn set_medium(&mut self, queue: &wgpu::Queue, medium: &Medium) {
-        gpu::write_texture_2d(queue, &self.medium, 0, bytemuck::cast_slice(&medium.texels));
+        gpu::write_texture_2d(queue, &self.medium, 0, bytemuck::cast_slice(&medium.faces()));
         if let Engine::Cpu(tank) = &mut self.engine {
-            tank.medium = medium.clone();
+            tank.set_medium(medium.clone());
         }
     }
 
@@ -136,7 +143,7 @@ impl TankWater {
         updates: &[Update],
     ) {
         match &mut self.engine {
-            Engine::Gpu { pass, layout, uniforms, groups } => {
+            Engine::Gpu { update, drops, layout, uniforms, groups } => {
                 if groups.len() < updates.len() {
                     *uniforms = slots_buffer(device, updates.len());
                     *groups = (0..updates.len())
@@ -149,8 +156,11 @@ impl TankWater {
                 for (slot, update) in updates.iter().enumerate() {
                     queue.write_buffer(uniforms, slot as u64 * UPDATE_SLOT, bytemuck::bytes_of(update));
                 }
-                for group in &groups[..updates.len()] {
-                    self.state.run(encoder, pass, group);
+                for (u, group) in updates.iter().zip(groups.iter()) {
+                    if u.bar[3] > 0.0 {
+                        self.state.run(encoder, drops, group);
+                    }
+                    self.state.run(encoder, update, group);
                 }
             }
             Engine::Cpu(tank) => {

@@ -37,12 +37,20 @@ pub struct Dipper {
     pub phase: f32,
 }
 
-/// What drives the waves: point dippers, or a straight bar across the tray at `z` (m) whose
-/// half thickness is `half_thickness` (m), all at one frequency and amplitude.
+/// A straight bar dipper along x at `z` (m), `half_thickness` (m) to either side of it, from
+/// -`half_length` to `half_length` (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bar {
+    pub z: f32,
+    pub half_thickness: f32,
+    pub half_length: f32,
+}
+
+/// What drives the waves: point dippers, or a bar, all at one frequency and amplitude.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Sources {
     pub dippers: Vec<Dipper>,
-    pub bar: Option<(f32, f32)>,
+    pub bar: Option<Bar>,
 }
 
 /// The tray's cells: `cells` x `cells` over a square of side `size` (m); cell (i, j) has its
@@ -88,7 +96,8 @@ impl Medium {
         match settings.setup {
             Setup::Dipper => m.sources.dippers.push(dipper(0.0, 0.0)),
             Setup::TwoDippers => m.sources.dippers.extend([dipper(-0.5 * s, 0.0), dipper(0.5 * s, 0.0)]),
-            _ => m.sources.bar = Some((bar_z, dx)),
+            // The bar spans the tray: its ends, in the side beaches, send no slanting waves across.
+            _ => m.sources.bar = Some(Bar { z: bar_z, half_thickness: dx, half_length: 0.5 * l }),
         }
         match settings.setup {
             Setup::SingleSlit => m.barrier(barrier_z, 2.0 * dx, |x| x.abs() < 0.5 * w),
@@ -137,6 +146,30 @@ impl Medium {
             2 => CellKind::Plate,
             _ => CellKind::Water,
         }
+    }
+
+    /// What the update reads per cell: c² (m²/s²) of its east face (+x) and of its north face
+    /// (+z), each the mean of its two cells' (0 into a wall or out of the tray), the beach's
+    /// damping rate (1/s) and the kind's code.
+    pub fn faces(&self) -> Vec<[f32; 4]> {
+        let n = self.cells;
+        let at = |i: u32, j: u32| self.texels[(j * n + i) as usize];
+        let face = |a: [f32; 4], b: [f32; 4]| {
+            if a[2] == CellKind::Wall.code() || b[2] == CellKind::Wall.code() {
+                0.0
+            } else {
+                0.5 * (a[0] + b[0])
+            }
+        };
+        (0..n * n)
+            .map(|k| {
+                let (i, j) = (k % n, k / n);
+                let m = at(i, j);
+                let east = if i + 1 < n { face(m, at(i + 1, j)) } else { 0.0 };
+                let north = if j + 1 < n { face(m, at(i, j + 1)) } else { 0.0 };
+                [east, north, m[1], m[2]]
+            })
+            .collect()
     }
 
     /// The fastest wave speed in the tray (m/s).

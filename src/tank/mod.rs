@@ -68,8 +68,6 @@ pub const DIPPER_MIN_CELLS: f32 = 1.5;
 pub const MAX_DIPPERS: usize = 4;
 /// The most drops a click batch puts in at once.
 pub const MAX_TANK_DROPS: usize = 4;
-/// Largest Courant number c dt / dx an update uses (stable up to 1/sqrt(2)).
-pub const TANK_COURANT: f32 = 0.5;
 /// Bounds on the state: |h| (m) and |v| (m/s); beyond them a cell is clamped, NaN is rest.
 pub const MAX_TANK_HEIGHT: f32 = 0.01;
 pub const MAX_TANK_VELOCITY: f32 = 2.0;

@@ -2,9 +2,10 @@
 //! and the CPU reference alike: how many updates a fixed step takes (from the fastest cell),
 //! each update's uniforms (the sources' phase at its end, the drops of the first).
 
-use super::medium::Medium;
-use super::{TankSettings, MAX_DIPPERS, MAX_TANK_DROPS, MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, TANK_COURANT};
+use super::medium::{Bar, Medium};
+use super::{TankSettings, MAX_DIPPERS, MAX_TANK_DROPS, MAX_TANK_HEIGHT, MAX_TANK_VELOCITY};
 use crate::sim::Drop;
+use crate::sim::MAX_COURANT;
 
 /// One update's uniforms, as `shaders/tank/update.wgsl` reads them (each in a 256-byte slot).
 #[repr(C)]
@@ -17,7 +18,7 @@ pub struct Update {
     pub wave: [f32; 4],
     /// The bar's z (m) and half thickness (m), 1 if there is a bar, number of drops.
     pub bar: [f32; 4],
-    /// Largest |h| (m) and |v| (m/s) the update leaves.
+    /// Largest |h| (m) and |v| (m/s) the update leaves, the bar's half length (m).
     pub bounds: [f32; 4],
     /// Each dipper's centre x, z (m), radius (m), phase (rad).
     pub dippers: [[f32; 4]; MAX_DIPPERS],
@@ -30,9 +31,10 @@ pub const UPDATE_SLOT: u64 = 256;
 const _: () = assert!(std::mem::size_of::<Update>() as u64 <= UPDATE_SLOT);
 
 /// Updates per fixed step of `step_dt` (s) in `medium`: enough that the fastest cell's
-/// Courant number stays under [`TANK_COURANT`].
+/// Courant number stays under the pool's [`MAX_COURANT`] (the same scheme, stable up to
+/// 1/sqrt(2)).
 pub fn updates_per_step(medium: &Medium, step_dt: f32) -> u32 {
-    ((medium.fastest() * step_dt / (TANK_COURANT * medium.dx())).ceil() as u32).max(1)
+    ((medium.fastest() * step_dt / (MAX_COURANT * medium.dx())).ceil() as u32).max(1)
 }
 
 /// The updates of `steps` fixed steps of `step_dt` (s) starting at simulated time `t0` (s):
@@ -53,12 +55,12 @@ pub fn plan(
     for (slot, d) in dippers.iter_mut().zip(&medium.sources.dippers) {
         *slot = [d.x, d.z, d.radius, d.phase];
     }
-    let (bar_z, bar_half) = medium.sources.bar.unwrap_or((0.0, 0.0));
+    let bar = medium.sources.bar.unwrap_or(Bar { z: 0.0, half_thickness: 0.0, half_length: 0.0 });
     let base = Update {
         grid: [medium.cells as f32, medium.dx(), dt, 0.5 * medium.size],
         wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len() as f32],
-        bar: [bar_z, bar_half, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
-        bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, 0.0, 0.0],
+        bar: [bar.z, bar.half_thickness, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
+        bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, bar.half_length, 0.0],
         dippers,
         drops: [[0.0; 4]; MAX_TANK_DROPS],
     };

@@ -145,9 +145,9 @@ impl super::Scene for TankScene {
         if std::mem::take(&mut self.medium_changed) {
             water.set_medium(queue, &self.medium);
         }
-        let picture = self
-            .picture
-            .get_or_insert_with(|| TankPicture::new(device, renderer.settings().target_format, float_targets));
+        let picture = self.picture.get_or_insert_with(|| {
+            TankPicture::new(device, renderer.settings().target_format, TANK_CELLS, float_targets)
+        });
         let t0 = sh.steps_taken.saturating_sub(steps as u64) as f64 / STEPS_PER_SECOND as f64;
         let updates = plan::plan(&self.medium, &self.settings, t0, steps, STEP_DT, &mut self.drops);
         mark(cx.encoder, Stage::Start);
@@ -157,7 +157,6 @@ impl super::Scene for TankScene {
         mark(cx.encoder, Stage::AfterWaves);
         let shot = render::Shot {
             view_proj: self.camera.view_projection(sh.viewport.x / sh.viewport.y),
-            eye: self.camera.eye(),
             view: sh.params.choice(ParamId::TankView),
             exposure: 2f32.powf(sh.params.get(ParamId::Exposure)),
         };

@@ -11,6 +11,10 @@ use crate::tank::{TankSettings, TankView, SCREEN_BELOW};
 
 /// Texels along each side of the screen's image.
 pub const SCREEN_TEXELS: u32 = 512;
+/// Cells between the points of the surface's mesh the screen's image is drawn with: every
+/// other cell keeps about seven points to a wavelength at the default 10 Hz, and draws a
+/// quarter of the triangles (lavapipe's cost is per triangle: 39 ms a frame with every cell).
+pub const SCREEN_MESH_STEP: u32 = 2;
 /// How far past the tray's shadow the screen's image reaches (a share of it).
 const SCREEN_MARGIN: f32 = 1.1;
 /// The screen's light for flat water at the middle is 1; shown as paper * (1 - exp(-k light))
@@ -23,17 +27,16 @@ const LOW_PRECISION_SCALE: f32 = 0.25;
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 struct PictureUniforms {
     inverse_view_proj: [[f32; 4]; 4],
-    eye: [f32; 4],
+    mesh: [f32; 4],
     tray: [f32; 4],
     screen: [f32; 4],
     view: [f32; 4],
 }
 
-/// What the picture shows beyond the settings: the camera's view-projection, its eye, and
-/// the exposure of the screen's light.
+/// What the picture shows beyond the settings: the camera's view-projection, the view and the
+/// exposure of the screen's light.
 pub struct Shot {
     pub view_proj: Mat4,
-    pub eye: glam::Vec3,
     pub view: TankView,
     pub exposure: f32,
 }
@@ -43,6 +46,8 @@ pub struct TankPicture {
     uniforms: wgpu::Buffer,
     layout: wgpu::BindGroupLayout,
     screen_pipeline: wgpu::RenderPipeline,
+    /// The surface's mesh: a point per cell (its place, -1 to 1), and its triangles' indices.
+    mesh: (wgpu::Buffer, wgpu::Buffer, u32),
     screen_image: wgpu::Texture,
     screen_view: wgpu::TextureView,
     image_group: wgpu::BindGroup,
@@ -52,9 +57,9 @@ pub struct TankPicture {
 }
 
 impl TankPicture {
-    /// The passes for a target of `target_format`; the screen's image in half floats where
-    /// the device renders into float textures (`float_targets`).
-    pub fn new(device: &wgpu::Device, target_format: wgpu::TextureFormat, float_targets: bool) -> Self {
+    /// The passes for a target of `target_format` and water of `cells` per side; the screen's
+    /// image in half floats where the device renders into float textures (`float_targets`).
+    pub fn new(device: &wgpu::Device, target_format: wgpu::TextureFormat, cells: u32, float_targets: bool) -> Self {
         let stage = wgpu::ShaderStages::VERTEX_FRAGMENT;
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("tank picture layout"),
@@ -120,7 +125,11 @@ impl TankPicture {
                 module: &module,
                 entry_point: Some("vs_screen"),
                 compilation_options: Default::default(),
-                buffers: &[],
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: 8,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+                })],
             },
             primitive: wgpu::PrimitiveState::default(),
             depth_stencil: None,
@@ -147,7 +156,19 @@ impl TankPicture {
             FullscreenTarget { format: target_format, blend: None, depth: None },
         );
         let uniforms = gpu::uniform_buffer(device, "tank picture", &PictureUniforms::zeroed());
-        Self { uniforms, layout, screen_pipeline, screen_image: image, screen_view, image_group, show, scale }
+        let (points, indices) = crate::render::scene_parts::banded_grid(cells / SCREEN_MESH_STEP - 1);
+        let buffer = |label: &str, contents: &[u8], usage| {
+            wgpu::util::DeviceExt::create_buffer_init(
+                device,
+                &wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage },
+            )
+        };
+        let mesh = (
+            buffer("tank surface points", bytemuck::cast_slice(&points), wgpu::BufferUsages::VERTEX),
+            buffer("tank surface triangles", bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
+            indices.len() as u32,
+        );
+        Self { uniforms, layout, screen_pipeline, mesh, screen_image: image, screen_view, image_group, show, scale }
     }
 
     /// The screen's image: light per texel (1 for flat water under the lamp) times
@@ -180,7 +201,7 @@ impl TankPicture {
     ) -> wgpu::BindGroup {
         let uniforms = PictureUniforms {
             inverse_view_proj: shot.view_proj.inverse().to_cols_array_2d(),
-            eye: shot.eye.extend(1.0).to_array(),
+            mesh: [(water.cells() / SCREEN_MESH_STEP) as f32, SCREEN_MESH_STEP as f32, 0.0, 0.0],
             tray: [settings.half_width(), settings.depth, settings.lamp_height, SCREEN_BELOW],
             screen: [Self::screen_half_extent(settings), settings.magnification(), water.cells() as f32, self.scale],
             view: [shot.view.value(), settings.amplitude, shot.exposure * SCREEN_EXPOSURE, SCREEN_TEXELS as f32],
@@ -200,8 +221,10 @@ impl TankPicture {
                 gpu::colour_pass(encoder, "tank screen", &self.screen_view, wgpu::LoadOp::Clear(wgpu::Color::BLACK));
             pass.set_pipeline(&self.screen_pipeline);
             pass.set_bind_group(0, Some(&group), &[]);
-            let quads = (water.cells() - 1) * (water.cells() - 1);
-            pass.draw(0..quads * 6, 0..1);
+            let (points, indices, count) = &self.mesh;
+            pass.set_vertex_buffer(0, points.slice(..));
+            pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..*count, 0, 0..1);
         }
         group
     }
