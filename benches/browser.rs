@@ -26,6 +26,9 @@
 //! - `WAVEPOOL_BENCH_BASELINE`: another build's `dist/` (e.g. an older commit's), served at
 //!   `/baseline/` and measured in place of the classic, with the same query as ours: our cost
 //!   against an earlier build's in one run;
+//! - `WAVEPOOL_BENCH_BASELINE_QUERY`: the baseline's options in place of ours, e.g. one scene of
+//!   this build against another (`WAVEPOOL_BENCH_BASELINE=dist WAVEPOOL_BENCH_QUERY=&scene=tank
+//!   WAVEPOOL_BENCH_BASELINE_QUERY=`: the tank against the pool);
 //! - `WAVEPOOL_BENCH_PAGE` (`index.html`): which of our pages to load (and of the baseline's);
 //!   `embed.html` fills the viewport, so two builds whose `index.html` lay out differently
 //!   draw canvases of the same size.
@@ -70,6 +73,8 @@ struct Settings {
     rounds: u32,
     /// Appended to our page's query string.
     extra_query: String,
+    /// The baseline's own options, if not the same as ours.
+    baseline_query: Option<String>,
     /// Names of the runs to make (of [`RUNS`]).
     runs: Vec<String>,
     /// Another build of our page to measure in place of the classic.
@@ -90,6 +95,7 @@ impl Settings {
             window: Duration::from_secs(number("WAVEPOOL_BENCH_SECONDS", 20)),
             rounds: number("WAVEPOOL_BENCH_ROUNDS", 2) as u32,
             extra_query: std::env::var("WAVEPOOL_BENCH_QUERY").unwrap_or_default(),
+            baseline_query: std::env::var("WAVEPOOL_BENCH_BASELINE_QUERY").ok(),
             runs: std::env::var("WAVEPOOL_BENCH_RUNS")
                 .map(|v| v.split_whitespace().map(str::to_owned).collect())
                 .unwrap_or_else(|_| RUNS.iter().map(|r| r.0.to_owned()).collect()),
@@ -121,7 +127,10 @@ impl Page {
         match self {
             Page::Ours => format!("/{page}?backend={backend}{extra_query}"),
             Page::Classic => "/classic/index.html".to_string(),
-            Page::Baseline => format!("/baseline/{page}?backend={backend}{extra_query}"),
+            Page::Baseline => {
+                let query = settings.baseline_query.as_ref().unwrap_or(extra_query);
+                format!("/baseline/{page}?backend={backend}{query}")
+            }
         }
     }
 

@@ -65,6 +65,7 @@ param_ids! {
     TankSlitWidth = "tank_slit_width",
     TankSlitSpacing = "tank_slit_spacing",
     TankLampHeight = "tank_lamp_height",
+    TankSourceSpeed = "tank_source_speed",
     TankBeaches = "tank_beaches",
     Setting = "setting",
     Caustics = "caustics",

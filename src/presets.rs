@@ -236,6 +236,13 @@ pub const PRESETS: &[Preset] = &[
         values: &[("scene", 2.0), ("tank_setup", 6.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
         camera: Some(crate::tank::START_VIEW),
     },
+    Preset {
+        name: "doppler",
+        label: "Ripple tank: a moving source",
+        help: "A dipper moving across the tank at 0.12 m/s, about 40 % of the waves' speed: ahead of it the crests crowd together, behind it they spread out, as the pitch of a passing siren rises and falls. Raise its speed past the waves' (about 0.31 m/s) and it outruns its own waves: a bow wave.",
+        values: &[("scene", 2.0), ("tank_setup", 7.0)],
+        camera: Some(crate::tank::START_VIEW),
+    },
 ];
 
 impl Preset {

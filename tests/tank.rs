@@ -37,7 +37,7 @@ fn a_closed_wall_lets_no_wave_through_and_a_gap_does() {
         let mut medium = Medium::open(128, settings.size, settings.depth, true);
         let dx = medium.dx();
         medium.barrier(0.0, 2.0 * dx, |x| gap && x.abs() < 0.02);
-        medium.sources.dippers.push(Dipper { x: 0.0, z: -0.07, radius: 0.004, phase: 0.0 });
+        medium.sources.dippers.push(Dipper::at(0.0, -0.07, 0.004));
         let mut tank = CpuTank::new(medium);
         let (mut near, mut far) = (0.0f32, 0.0f32);
         run(&mut tank, &settings, 1.5, |t| {
@@ -228,4 +228,129 @@ fn the_lamp_draws_a_plane_waves_crests_on_the_screen_as_bright_lines_at_its_magn
     let (mean_luma, spread) = (frame.luma_stats(middle).0 * 255.0, frame.luma_spread(middle));
     println!("the frame's middle: luma mean {mean_luma:.1}, std {spread:.1}");
     assert!(mean_luma > 60.0 && spread > 8.0);
+}
+
+/// Upward zero crossings of `values` sampled at `positions` (m), interpolated.
+fn crossings(positions: &[f32], values: &[f32]) -> Vec<f32> {
+    (1..values.len())
+        .filter(|&k| values[k - 1] < 0.0 && values[k] >= 0.0)
+        .map(|k| {
+            let t = values[k - 1] / (values[k - 1] - values[k]);
+            positions[k - 1] + t * (positions[k] - positions[k - 1])
+        })
+        .collect()
+}
+
+/// The mean spacing of the upward zero crossings of the heights along line z = `z` for x in
+/// `from..to` (m), or along x = `x` for z in that range when `along_z`.
+fn wavelength_along(tank: &CpuTank, fixed: f32, from: f32, to: f32, along_z: bool) -> f32 {
+    let m = &tank.medium;
+    let (mut at, mut h) = (Vec::new(), Vec::new());
+    for k in 0..m.cells {
+        let (x, z) = m.centre(k, k);
+        let s = if along_z { z } else { x };
+        if s < from || s > to {
+            continue;
+        }
+        let (i, j) = if along_z { m.cell_at(fixed, s) } else { m.cell_at(s, fixed) }.unwrap();
+        at.push(s);
+        h.push(tank.height(i, j));
+    }
+    let c = crossings(&at, &h);
+    (c[c.len() - 1] - c[0]) / (c.len() - 1) as f32
+}
+
+#[test]
+fn over_a_glass_plate_the_waves_shorten_by_the_root_of_the_depths_and_bend_by_snells_law() {
+    let settings = TankSettings { setup: Setup::PlaneWave, size: 0.8, ..Default::default() };
+    let share = wavepool::tank::PLATE_DEPTH_SHARE;
+    // A plate whose edge runs parallel to the bar: the wavelengths on either side.
+    let mut medium = Medium::of(&settings, 320);
+    medium.paint(|_, z| (z > 0.0).then_some(CellKind::Plate));
+    let mut tank = CpuTank::new(medium);
+    run(&mut tank, &settings, 2.5, |_| {});
+    let (deep, shallow) =
+        (wavelength_along(&tank, 0.0, -0.22, -0.02, true), wavelength_along(&tank, 0.0, 0.02, 0.25, true));
+    let (ratio, expected) = (shallow / deep, share.sqrt());
+    println!("edge parallel: λ {:.2} mm in the open, {:.2} mm over the plate: ratio {ratio:.3}, sqrt(d2 / d1) = {expected:.3}", deep * 1e3, shallow * 1e3);
+    assert!((ratio - expected).abs() <= 0.05 * expected);
+    // The refraction set-up's edge at 30° to the fronts (the angle of incidence): over the
+    // plate the fronts turn towards the edge, to θ2 from its normal with sin θ1 / sin θ2 =
+    // c1 / c2. Their direction over the plate, from the crossings' spacing along x (sx) and
+    // along z (sz): the wave vector is (2π / sx, 2π / sz), turned by atan(sz / sx) from +z.
+    let mut tank = CpuTank::new(Medium::of(&TankSettings { setup: Setup::Refraction, ..settings }, 320));
+    run(&mut tank, &settings, 3.0, |_| {});
+    let sx = wavelength_along(&tank, 0.2, -0.05, 0.25, false);
+    let sz = wavelength_along(&tank, 0.15, 0.1, 0.3, true);
+    let turned = (sz / sx).atan();
+    let (theta1, theta2) = (30f32.to_radians(), 30f32.to_radians() - turned);
+    let (measured, expected) = (theta1.sin() / theta2.sin(), 1.0 / share.sqrt());
+    println!(
+        "edge at 30°: fronts over the plate {:.1}° from the edge's normal (λ {:.2} mm): sin θ1 / sin θ2 = {measured:.3}, c1 / c2 = {expected:.3}",
+        theta2.to_degrees(),
+        1e3 / (1.0 / (sx * sx) + 1.0 / (sz * sz)).sqrt()
+    );
+    assert!((measured - expected).abs() <= 0.05 * expected);
+}
+
+#[test]
+fn a_moving_dipper_crowds_its_waves_ahead_and_spreads_them_behind() {
+    let settings = TankSettings { setup: Setup::Doppler, size: 0.8, source_speed: 0.1, ..Default::default() };
+    let mut tank = CpuTank::new(Medium::of(&settings, 320));
+    let t = 2.5;
+    run(&mut tank, &settings, t, |_| {});
+    let (x, z) = tank.medium.sources.dippers[0].centre_at(t as f64);
+    let ahead = wavelength_along(&tank, z, x + 0.03, x + 0.15, false);
+    let behind = wavelength_along(&tank, z, x - 0.17, x - 0.03, false);
+    let (c, f, v) = (settings.wave_speed(), settings.frequency, settings.source_speed);
+    println!(
+        "dipper at x = {x:.3} m moving at {v} m/s: λ ahead {:.2} mm ((c - v) / f = {:.2}), behind {:.2} mm ((c + v) / f = {:.2})",
+        ahead * 1e3,
+        (c - v) / f * 1e3,
+        behind * 1e3,
+        (c + v) / f * 1e3
+    );
+    assert!((ahead - (c - v) / f).abs() <= 0.05 * (c - v) / f);
+    assert!((behind - (c + v) / f).abs() <= 0.05 * (c + v) / f);
+}
+
+#[test]
+fn the_tanks_water_is_the_same_at_30_60_and_144_frames_a_second_and_bounded_with_four_dippers() {
+    // The same 1.2 s in frames of three rates: the steps are fixed, so the water is too.
+    let settings = TankSettings { setup: Setup::TwoDippers, size: 0.3, ..Default::default() };
+    let mut states = Vec::new();
+    for fps in [30.0f64, 60.0, 144.0] {
+        let medium = Medium::of(&settings, 96);
+        let mut tank = CpuTank::new(medium);
+        let mut clock = wavepool::sim::FixedStep::new(STEP_DT, 1000);
+        let (mut steps_taken, mut drops) = (0u32, Vec::new());
+        for _ in 0..(1.2 * fps).round() as u32 {
+            let steps = clock.advance(1.0 / fps as f32);
+            let t0 = steps_taken as f64 * STEP_DT as f64;
+            tank.run(&plan(&tank.medium.clone(), &settings, t0, steps, STEP_DT, &mut drops));
+            steps_taken += steps;
+        }
+        println!("{fps} frames/s: {steps_taken} steps");
+        states.push((steps_taken, tank.state));
+    }
+    let shortest = states.iter().map(|s| s.0).min().unwrap();
+    assert!(states.iter().all(|s| s.0 == shortest), "the rates took different numbers of steps");
+    assert!(states.windows(2).all(|w| w[0].1 == w[1].1), "the water differs between frame rates");
+    // Four dippers at full amplitude for 100,000 steps (a small tray, reflecting walls).
+    let loud = TankSettings { amplitude: 1e-3, beaches: false, size: 0.1, frequency: 25.0, ..settings };
+    let mut medium = Medium::open(24, loud.size, loud.depth, false);
+    for (x, z) in [(-0.02, -0.02), (0.02, -0.02), (-0.02, 0.02), (0.02, 0.02)] {
+        medium.sources.dippers.push(Dipper::at(x, z, 0.004));
+    }
+    let mut tank = CpuTank::new(medium);
+    let mut drops = Vec::new();
+    let mut largest = 0.0f32;
+    for batch in 0..1000u32 {
+        let t0 = (batch * 100) as f64 * STEP_DT as f64;
+        tank.run(&plan(&tank.medium.clone(), &loud, t0, 100, STEP_DT, &mut drops));
+        assert!(tank.state.iter().all(|s| s.iter().all(|v| v.is_finite())), "not finite after {} steps", batch * 100);
+        largest = tank.state.iter().fold(largest, |m, s| m.max(s[0].abs()));
+    }
+    println!("100,000 steps with four dippers at 1 mm: largest |h| {:.2} mm", largest * 1e3);
+    assert!(largest <= wavepool::tank::MAX_TANK_HEIGHT);
 }

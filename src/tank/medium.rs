@@ -28,13 +28,34 @@ impl CellKind {
     }
 }
 
-/// A point dipper: centre (m), radius (m) and phase (rad) against the others.
+/// A point dipper: centre (m) at time 0, radius (m), phase (rad) against the others, and the
+/// velocity it moves with (m/s, x and z) for `travel` (m), after which it starts again (a
+/// dipper at rest has no velocity).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dipper {
     pub x: f32,
     pub z: f32,
     pub radius: f32,
     pub phase: f32,
+    pub velocity: [f32; 2],
+    pub travel: f32,
+}
+
+impl Dipper {
+    /// A dipper standing at (x, z) (m).
+    pub fn at(x: f32, z: f32, radius: f32) -> Self {
+        Self { x, z, radius, phase: 0.0, velocity: [0.0; 2], travel: 0.0 }
+    }
+
+    /// Its centre (m) at time `t` (s).
+    pub fn centre_at(&self, t: f64) -> (f32, f32) {
+        let speed = (self.velocity[0].hypot(self.velocity[1])) as f64;
+        if speed == 0.0 {
+            return (self.x, self.z);
+        }
+        let s = (t % (self.travel as f64 / speed)) as f32;
+        (self.x + self.velocity[0] * s, self.z + self.velocity[1] * s)
+    }
 }
 
 /// A straight bar dipper along x at `z` (m), `half_thickness` (m) to either side of it, from
@@ -92,10 +113,16 @@ impl Medium {
         let barrier_z = bar_z + 0.12 * l;
         let (w, s) = (settings.slit_width, settings.slit_spacing);
         let radius = DIPPER_RADIUS.max(DIPPER_MIN_CELLS * dx);
-        let dipper = |x: f32, z: f32| Dipper { x, z, radius, phase: 0.0 };
+        let dipper = |x: f32, z: f32| Dipper::at(x, z, radius);
         match settings.setup {
             Setup::Dipper => m.sources.dippers.push(dipper(0.0, 0.0)),
             Setup::TwoDippers => m.sources.dippers.extend([dipper(-0.5 * s, 0.0), dipper(0.5 * s, 0.0)]),
+            Setup::Doppler => {
+                // Across the middle of the open water, then again from the start.
+                let start = -0.5 * l + BEACH_SHARE * l;
+                let travel = l - 2.0 * BEACH_SHARE * l;
+                m.sources.dippers.push(Dipper { velocity: [settings.source_speed, 0.0], travel, ..dipper(start, 0.0) });
+            }
             // The bar spans the tray: its ends, in the side beaches, send no slanting waves across.
             _ => m.sources.bar = Some(Bar { z: bar_z, half_thickness: dx, half_length: 0.5 * l }),
         }

@@ -30,6 +30,7 @@ crate::choices! {
         DoubleSlit = "double_slit",
         Refraction = "refraction",
         Lens = "lens",
+        Doppler = "doppler",
     }
 }
 
@@ -91,6 +92,8 @@ pub struct TankSettings {
     pub slit_spacing: f32,
     /// The lamp's height over the water (m).
     pub lamp_height: f32,
+    /// The moving dipper's speed (m/s).
+    pub source_speed: f32,
     /// Beaches along the walls that swallow the waves, or reflecting walls.
     pub beaches: bool,
 }
@@ -107,6 +110,7 @@ impl Default for TankSettings {
             slit_width: TANK_SLIT_WIDTH.default * 1e-3,
             slit_spacing: TANK_SLIT_SPACING.default * 1e-3,
             lamp_height: TANK_LAMP_HEIGHT.default,
+            source_speed: TANK_SOURCE_SPEED.default,
             beaches: TANK_BEACHES.default >= 0.5,
         }
     }
@@ -147,6 +151,7 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_SLIT_WIDTH,
     TANK_SLIT_SPACING,
     TANK_LAMP_HEIGHT,
+    TANK_SOURCE_SPEED,
     TANK_BEACHES,
 ];
 
@@ -157,7 +162,7 @@ pub const TANK_SETUP: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Setup::VALUES, names: Setup::NAMES },
     default: 0.0,
-    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), or a lens-shaped plate that brings them to a focus.",
+    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, or a dipper moving across the tank (Doppler).",
 };
 
 pub const TANK_VIEW: ParamSpec = ParamSpec {
@@ -239,6 +244,16 @@ pub const TANK_LAMP_HEIGHT: ParamSpec = ParamSpec {
     default: 1.0,
     help:
         "The lamp's height over the water. The screen lies 0.5 m under the tray; a lower lamp spreads the image wider.",
+};
+
+pub const TANK_SOURCE_SPEED: ParamSpec = ParamSpec {
+    name: "tank_source_speed",
+    label: "Dipper speed",
+    group: "Tank",
+    unit: "m/s",
+    control: slider(0.0, 0.6, 0.01),
+    default: 0.12,
+    help: "How fast the dipper of the Doppler set-up moves across the tank. Ahead of it the waves crowd together, behind it they spread out; faster than the waves (about 0.31 m/s in 10 mm of water), it leaves a bow wave, a V as behind a boat.",
 };
 
 pub const TANK_BEACHES: ParamSpec = ParamSpec {

@@ -20,7 +20,7 @@ pub struct Update {
     pub bar: [f32; 4],
     /// Largest |h| (m) and |v| (m/s) the update leaves, the bar's half length (m).
     pub bounds: [f32; 4],
-    /// Each dipper's centre x, z (m), radius (m), phase (rad).
+    /// Each dipper's centre x, z (m) at the update's end, radius (m), phase (rad).
     pub dippers: [[f32; 4]; MAX_DIPPERS],
     /// Each drop's centre x, z (m), radius (m), height (m), added before the update.
     pub drops: [[f32; 4]; MAX_TANK_DROPS],
@@ -51,17 +51,13 @@ pub fn plan(
     let per_step = updates_per_step(medium, step_dt);
     let dt = step_dt / per_step as f32;
     let omega = std::f64::consts::TAU * settings.frequency as f64;
-    let mut dippers = [[0.0; 4]; MAX_DIPPERS];
-    for (slot, d) in dippers.iter_mut().zip(&medium.sources.dippers) {
-        *slot = [d.x, d.z, d.radius, d.phase];
-    }
     let bar = medium.sources.bar.unwrap_or(Bar { z: 0.0, half_thickness: 0.0, half_length: 0.0 });
     let base = Update {
         grid: [medium.cells as f32, medium.dx(), dt, 0.5 * medium.size],
         wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len() as f32],
         bar: [bar.z, bar.half_thickness, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
         bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, bar.half_length, 0.0],
-        dippers,
+        dippers: [[0.0; 4]; MAX_DIPPERS],
         drops: [[0.0; 4]; MAX_TANK_DROPS],
     };
     let count = steps * per_step;
@@ -70,6 +66,10 @@ pub fn plan(
             let mut update = base;
             let t = t0 + (k + 1) as f64 * (step_dt as f64 / per_step as f64);
             update.wave[0] = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
+            for (slot, d) in update.dippers.iter_mut().zip(&medium.sources.dippers) {
+                let (x, z) = d.centre_at(t);
+                *slot = [x, z, d.radius, d.phase];
+            }
             if k == 0 {
                 let n = drops.len().min(MAX_TANK_DROPS);
                 for (slot, d) in update.drops.iter_mut().zip(drops.drain(..n)) {

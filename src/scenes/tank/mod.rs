@@ -54,6 +54,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         slit_width: params.get(ParamId::TankSlitWidth) * 1e-3,
         slit_spacing: params.get(ParamId::TankSlitSpacing) * 1e-3,
         lamp_height: params.get(ParamId::TankLampHeight),
+        source_speed: params.get(ParamId::TankSourceSpeed),
         beaches: params.flag(ParamId::TankBeaches),
     }
 }
