@@ -66,6 +66,7 @@ param_ids! {
     TankSlitSpacing = "tank_slit_spacing",
     TankLampHeight = "tank_lamp_height",
     TankSourceSpeed = "tank_source_speed",
+    TankStrobe = "tank_strobe",
     TankBeaches = "tank_beaches",
     Setting = "setting",
     Caustics = "caustics",

@@ -127,7 +127,7 @@ fn the_gpu_and_the_cpu_run_the_same_tank() {
     for frame in 0..60u32 {
         let t0 = (2 * frame) as f64 * STEP_DT as f64;
         let mut encoder = g.device.create_command_encoder(&Default::default());
-        water.encode(&g.device, &g.queue, &mut encoder, &plan(&medium, &settings, t0, 2, STEP_DT, &mut drops));
+        water.encode(&g.device, &g.queue, &mut encoder, &plan(&medium, &settings, t0, 2, STEP_DT, &mut drops), None);
         g.queue.submit([encoder.finish()]);
         cpu.run(&plan(&medium, &settings, t0, 2, STEP_DT, &mut cpu_drops));
     }
@@ -353,4 +353,27 @@ fn the_tanks_water_is_the_same_at_30_60_and_144_frames_a_second_and_bounded_with
     }
     println!("100,000 steps with four dippers at 1 mm: largest |h| {:.2} mm", largest * 1e3);
     assert!(largest <= wavepool::tank::MAX_TANK_HEIGHT);
+}
+
+#[test]
+fn at_the_dippers_frequency_the_strobe_holds_the_pattern_still() {
+    let mut worst = Vec::new();
+    for strobe in [0.0, 10.0] {
+        let mut d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 2.0);
+        d.params.set(ParamId::TankStrobe, strobe);
+        d.sync_scene();
+        // 2.5 s for the rings to fill the tray, then successive frames.
+        let mut last = render(&mut d, 160, 120, 150, 1.0 / 60.0);
+        let mut largest = 0.0f64;
+        for _ in 0..8 {
+            let next = render(&mut d, 160, 120, 1, 1.0 / 60.0);
+            largest = largest.max(last.mean_abs_diff(&next, common::Area::ALL));
+            last = next;
+        }
+        println!("strobe {strobe} Hz: successive frames differ by at most {largest:.3} (0-255, mean per channel)");
+        worst.push(largest);
+    }
+    assert!(worst[0] > 1.0, "without the strobe the rings should move");
+    assert!(worst[1] < 0.1 * worst[0], "with the strobe at the dipper's frequency the rings should stand still");
 }

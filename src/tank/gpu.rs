@@ -40,6 +40,8 @@ pub struct TankWater {
     medium_view: wgpu::TextureView,
     engine: Engine,
     cells: u32,
+    /// The state the strobe last lit, once it has flashed.
+    flash: Option<(wgpu::Texture, wgpu::TextureView)>,
 }
 
 impl TankWater {
@@ -85,7 +87,7 @@ impl TankWater {
         } else {
             Engine::Cpu(Box::new(CpuTank::new(medium.clone())))
         };
-        let mut water = Self { state, medium: medium_texture, medium_view, engine, cells };
+        let mut water = Self { state, medium: medium_texture, medium_view, engine, cells, flash: None };
         water.clear(queue);
         water
     }
@@ -98,6 +100,15 @@ impl TankWater {
     /// The texture holding the latest state.
     pub fn state_view(&self) -> &wgpu::TextureView {
         self.state.current_view()
+    }
+
+    /// The state the picture shows: the one the strobe last lit if `strobe` (and it has
+    /// flashed), else the latest.
+    pub fn shown_view(&self, strobe: bool) -> &wgpu::TextureView {
+        match &self.flash {
+            Some((_, view)) if strobe => view,
+            _ => self.state.current_view(),
+        }
     }
 
     pub fn state_texture(&self) -> &wgpu::Texture {
@@ -134,14 +145,24 @@ impl TankWater {
         }
     }
 
-    /// Records `updates` (or runs them on the CPU and uploads the result).
+    /// Records `updates` (or runs them on the CPU and uploads the result), keeping the state
+    /// after update `flash` for the strobe's picture.
     pub fn encode(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
         updates: &[Update],
+        flash: Option<usize>,
     ) {
+        if flash.is_some() && self.flash.is_none() {
+            let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+            let texture =
+                gpu::texture_2d(device, "tank flash", (self.cells, self.cells, 1), 1, TANK_STATE_FORMAT, usage);
+            let view = texture.create_view(&Default::default());
+            self.flash = Some((texture, view));
+        }
+        let size = wgpu::Extent3d { width: self.cells, height: self.cells, depth_or_array_layers: 1 };
         match &mut self.engine {
             Engine::Gpu { update, drops, layout, uniforms, groups } => {
                 if groups.len() < updates.len() {
@@ -156,17 +177,32 @@ impl TankWater {
                 for (slot, update) in updates.iter().enumerate() {
                     queue.write_buffer(uniforms, slot as u64 * UPDATE_SLOT, bytemuck::bytes_of(update));
                 }
-                for (u, group) in updates.iter().zip(groups.iter()) {
+                for (k, (u, group)) in updates.iter().zip(groups.iter()).enumerate() {
                     if u.bar[3] > 0.0 {
                         self.state.run(encoder, drops, group);
                     }
                     self.state.run(encoder, update, group);
+                    if let (Some((texture, _)), true) = (&self.flash, flash == Some(k)) {
+                        encoder.copy_texture_to_texture(
+                            self.state.current_texture().as_image_copy(),
+                            texture.as_image_copy(),
+                            size,
+                        );
+                    }
                 }
             }
             Engine::Cpu(tank) => {
-                tank.run(updates);
-                let texels: Vec<[f32; 4]> = tank.state.iter().map(|&[h, v, i]| [h, v, i, 0.0]).collect();
-                gpu::write_texture_2d(queue, self.state.current_texture(), 0, bytemuck::cast_slice(&texels));
+                let texels =
+                    |tank: &CpuTank| -> Vec<[f32; 4]> { tank.state.iter().map(|&[h, v, i]| [h, v, i, 0.0]).collect() };
+                let split = flash.map_or(0, |k| k + 1);
+                tank.run(&updates[..split]);
+                if let Some((texture, _)) = &self.flash {
+                    if flash.is_some() {
+                        gpu::write_texture_2d(queue, texture, 0, bytemuck::cast_slice(&texels(tank)));
+                    }
+                }
+                tank.run(&updates[split..]);
+                gpu::write_texture_2d(queue, self.state.current_texture(), 0, bytemuck::cast_slice(&texels(tank)));
             }
         }
     }

@@ -94,6 +94,8 @@ pub struct TankSettings {
     pub lamp_height: f32,
     /// The moving dipper's speed (m/s).
     pub source_speed: f32,
+    /// The strobe's flashes per second (Hz; 0: no strobe, the picture follows the water).
+    pub strobe: f32,
     /// Beaches along the walls that swallow the waves, or reflecting walls.
     pub beaches: bool,
 }
@@ -111,6 +113,7 @@ impl Default for TankSettings {
             slit_spacing: TANK_SLIT_SPACING.default * 1e-3,
             lamp_height: TANK_LAMP_HEIGHT.default,
             source_speed: TANK_SOURCE_SPEED.default,
+            strobe: TANK_STROBE.default,
             beaches: TANK_BEACHES.default >= 0.5,
         }
     }
@@ -152,6 +155,7 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_SLIT_SPACING,
     TANK_LAMP_HEIGHT,
     TANK_SOURCE_SPEED,
+    TANK_STROBE,
     TANK_BEACHES,
 ];
 
@@ -254,6 +258,16 @@ pub const TANK_SOURCE_SPEED: ParamSpec = ParamSpec {
     control: slider(0.0, 0.6, 0.01),
     default: 0.12,
     help: "How fast the dipper of the Doppler set-up moves across the tank. Ahead of it the waves crowd together, behind it they spread out; faster than the waves (about 0.31 m/s in 10 mm of water), it leaves a bow wave, a V as behind a boat.",
+};
+
+pub const TANK_STROBE: ParamSpec = ParamSpec {
+    name: "tank_strobe",
+    label: "Strobe",
+    group: "Tank",
+    unit: "Hz",
+    control: slider(0.0, 30.0, 0.1),
+    default: 0.0,
+    help: "Light the tank with flashes this many times a second (0: a steady lamp). At the dippers' frequency every flash finds the waves in the same place, so the pattern stands still and can be measured; a little off it, the waves creep slowly forward or back.",
 };
 
 pub const TANK_BEACHES: ParamSpec = ParamSpec {

@@ -81,3 +81,22 @@ pub fn plan(
         })
         .collect()
 }
+
+/// Which of a frame's `count` updates, each `dt` (s) long from time `t0` (s), the strobe of
+/// `flashes` per second (Hz) lights: the one ending nearest its last flash in the frame, if
+/// one falls in it.
+pub fn strobe_flash(flashes: f32, t0: f64, count: usize, dt: f64) -> Option<usize> {
+    if flashes <= 0.0 {
+        return None;
+    }
+    let flash_count = |t: f64| (t * flashes as f64).floor();
+    let mut lit = None;
+    for k in 0..count {
+        let (before, after) = (t0 + k as f64 * dt, t0 + (k + 1) as f64 * dt);
+        if flash_count(after) > flash_count(before) {
+            let flash = flash_count(after) / flashes as f64;
+            lit = Some(if k > 0 && flash - before < after - flash { k - 1 } else { k });
+        }
+    }
+    lit
+}

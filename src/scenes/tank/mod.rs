@@ -55,6 +55,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         slit_spacing: params.get(ParamId::TankSlitSpacing) * 1e-3,
         lamp_height: params.get(ParamId::TankLampHeight),
         source_speed: params.get(ParamId::TankSourceSpeed),
+        strobe: params.get(ParamId::TankStrobe),
         beaches: params.flag(ParamId::TankBeaches),
     }
 }
@@ -151,8 +152,10 @@ impl super::Scene for TankScene {
         });
         let t0 = sh.steps_taken.saturating_sub(steps as u64) as f64 / STEPS_PER_SECOND as f64;
         let updates = plan::plan(&self.medium, &self.settings, t0, steps, STEP_DT, &mut self.drops);
+        let dt = updates.first().map_or(0.0, |u| u.grid[2] as f64);
+        let flash = plan::strobe_flash(self.settings.strobe, t0, updates.len(), dt);
         mark(cx.encoder, Stage::Start);
-        water.encode(device, queue, cx.encoder, &updates);
+        water.encode(device, queue, cx.encoder, &updates, flash);
         mark(cx.encoder, Stage::AfterSimulation);
         // No waves move here on their own (the stage of the pool's and the sea's FFT).
         mark(cx.encoder, Stage::AfterWaves);

@@ -212,7 +212,10 @@ impl TankPicture {
             layout: &self.layout,
             entries: &[
                 wgpu::BindGroupEntry { binding: 0, resource: self.uniforms.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::TextureView(water.state_view()) },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(water.shown_view(settings.strobe > 0.0)),
+                },
                 wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(water.medium_view()) },
             ],
         });
