@@ -377,3 +377,71 @@ fn at_the_dippers_frequency_the_strobe_holds_the_pattern_still() {
     assert!(worst[0] > 1.0, "without the strobe the rings should move");
     assert!(worst[1] < 0.1 * worst[0], "with the strobe at the dipper's frequency the rings should stand still");
 }
+
+/// A ray parallel to the axis at height `a` (m) through a lens of two arcs of radius `r` (m)
+/// meeting `t` (m) apart on the axis around `zc`, index `n` against the water outside (z along
+/// the axis, m), by Snell's law at each arc: where it leaves the lens and its direction, or
+/// nothing if it is turned back inside.
+fn lens_ray(a: f32, r: f32, t: f32, zc: f32, n: f32) -> Option<(glam::Vec2, glam::Vec2)> {
+    use glam::Vec2;
+    let refract = |d: Vec2, normal: Vec2, eta: f32| -> Option<Vec2> {
+        let cos_i = -d.dot(normal);
+        let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+        (k >= 0.0).then(|| (eta * d + (eta * cos_i - k.sqrt()) * normal).normalize())
+    };
+    // The front arc's centre lies behind the lens, the back arc's in front of it.
+    let (front, back) = (Vec2::new(0.0, zc + r - 0.5 * t), Vec2::new(0.0, zc - r + 0.5 * t));
+    let hit = |p: Vec2, d: Vec2, centre: Vec2, far: bool| -> Vec2 {
+        let o = p - centre;
+        let (b, c) = (o.dot(d), o.dot(o) - r * r);
+        let s = (b * b - c).sqrt();
+        p + d * if far { -b + s } else { -b - s }
+    };
+    let p1 = hit(Vec2::new(a, zc - r), Vec2::Y, front, false);
+    let d1 = refract(Vec2::Y, (p1 - front).normalize(), 1.0 / n)?;
+    let p2 = hit(p1, d1, back, true);
+    Some((p2, refract(d1, -(p2 - back).normalize(), n)?))
+}
+
+#[test]
+fn a_lens_shaped_plate_brings_plane_waves_to_the_focus_rays_give() {
+    // 20 Hz waves in cells half the default size (13 to a wavelength in the open, 8 over the
+    // plate): the lens is then wide against the wavelength (a Fresnel number of about 5), so
+    // diffraction moves the focus little.
+    let settings = TankSettings { setup: Setup::Lens, frequency: 20.0, ..Default::default() };
+    let mut tank = CpuTank::new(Medium::of(&settings, 512));
+    run(&mut tank, &settings, 3.0, |_| {});
+    let lens = wavepool::tank::medium::Lens::of(settings.size);
+    let n = 1.0 / wavepool::tank::PLATE_DEPTH_SHARE.sqrt();
+    let back = lens.centre + 0.5 * lens.thickness;
+    let aperture = (lens.radius.powi(2) - (lens.radius - 0.5 * lens.thickness).powi(2)).sqrt();
+    // The rays across the aperture: where the nearest to the axis cross it (the paraxial
+    // focus), and where their bundle is narrowest (the circle of least confusion: a lens this
+    // strong bends its rim's rays to a nearer focus).
+    let rays: Vec<_> = (1..40)
+        .filter_map(|k| lens_ray(k as f32 / 40.0 * aperture, lens.radius, lens.thickness, lens.centre, n))
+        .collect();
+    let crossing = |(p, d): (glam::Vec2, glam::Vec2)| p.y - p.x * d.y / d.x;
+    let paraxial = crossing(rays[0]);
+    let width = |z: f32| rays.iter().map(|(p, d)| (p.x + d.x * (z - p.y) / d.y).abs()).fold(0.0, f32::max);
+    let narrowest = (0..400).map(|k| back + k as f32 * 1e-3).min_by(|a, b| width(*a).total_cmp(&width(*b))).unwrap();
+    let m = &tank.medium;
+    let (mut best, mut brightest) = (0.0, 0.0);
+    for j in 0..m.cells {
+        let z = m.centre(0, j).1;
+        if z > back + 0.01 && z < 0.5 * settings.size * (1.0 - 2.0 * wavepool::tank::BEACH_SHARE) {
+            let (i, j) = m.cell_at(0.0, z).unwrap();
+            if tank.intensity(i, j) > brightest {
+                (best, brightest) = (z, tank.intensity(i, j));
+            }
+        }
+    }
+    println!(
+        "focus {:.1} mm behind the lens (the waves' brightest point on its axis); rays: narrowest bundle {:.1} mm ({} rays), paraxial focus {:.1} mm",
+        (best - back) * 1e3,
+        (narrowest - back) * 1e3,
+        rays.len(),
+        (paraxial - back) * 1e3
+    );
+    assert!((best - narrowest).abs() <= 0.1 * (narrowest - back));
+}

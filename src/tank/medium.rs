@@ -74,6 +74,23 @@ pub struct Sources {
     pub bar: Option<Bar>,
 }
 
+/// The lens set-up's plate: two circular arcs of `radius` (m) meeting `thickness` (m) apart
+/// on the tray's axis (x = 0), around z = `centre` (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lens {
+    pub radius: f32,
+    pub thickness: f32,
+    pub centre: f32,
+}
+
+impl Lens {
+    /// The lens of a tray of side `size` (m): half a metre across in the default tray, thin
+    /// enough that rays near its rim still leave it (a focus about 0.2 m behind it).
+    pub fn of(size: f32) -> Self {
+        Self { radius: 0.5 * size, thickness: 0.06 * size, centre: -0.15 * size }
+    }
+}
+
 /// The tray's cells: `cells` x `cells` over a square of side `size` (m); cell (i, j) has its
 /// centre at x = -size/2 + (i + 0.5) dx, z = -size/2 + (j + 0.5) dx.
 #[derive(Clone, Debug, PartialEq)]
@@ -135,8 +152,7 @@ impl Medium {
                 m.paint(|x, z| (z > -0.05 * l + slope * x).then_some(CellKind::Plate));
             }
             Setup::Lens => {
-                // Two circular arcs of radius 0.25 l meeting 0.1 l apart on the axis.
-                let (r, t, zc) = (0.25 * l, 0.1 * l, -0.1 * l);
+                let Lens { radius: r, thickness: t, centre: zc } = Lens::of(l);
                 let inside = |x: f32, z: f32, cz: f32| x * x + (z - cz) * (z - cz) < r * r;
                 m.paint(|x, z| {
                     (inside(x, z, zc + r - 0.5 * t) && inside(x, z, zc - r + 0.5 * t)).then_some(CellKind::Plate)
