@@ -58,6 +58,7 @@ param_ids! {
     SeaGrid = "sea_grid",
     TankSetup = "tank_setup",
     TankView = "tank_view",
+    TankTool = "tank_tool",
     TankFrequency = "tank_frequency",
     TankAmplitude = "tank_amplitude",
     TankDepth = "tank_depth",

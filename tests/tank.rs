@@ -445,3 +445,52 @@ fn a_lens_shaped_plate_brings_plane_waves_to_the_focus_rays_give() {
     );
     assert!((best - narrowest).abs() <= 0.1 * (narrowest - back));
 }
+
+#[test]
+fn a_wall_drawn_with_the_pointer_keeps_the_waves_from_the_water_behind_it() {
+    let (width, height) = (320u32, 240u32);
+    let mut behind = Vec::new();
+    for draw in [false, true] {
+        let mut d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 2.0);
+        d.params.set(ParamId::TankTool, wavepool::tank::Tool::Walls.value());
+        d.sync_scene();
+        d.set_viewport(width, height);
+        if draw {
+            // A stroke across the tray 5 cm past the dipper, in eight moves.
+            let size = glam::Vec2::new(width as f32, height as f32);
+            let at = |x: f32| d.camera().project(glam::Vec3::new(x, 0.0, 0.05), size).expect("on screen");
+            let (a, b) = (at(-0.22), at(0.22));
+            d.pointer_down(a.x, a.y);
+            for k in 1..=8 {
+                let p = a + (b - a) * (k as f32 / 8.0);
+                d.pointer_move(p.x, p.y);
+            }
+            d.pointer_up();
+        }
+        render(&mut d, width, height, 72, 1.0 / 60.0);
+        let tank = d.tank();
+        let g = gpu();
+        let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, tank.water().unwrap().state_texture());
+        let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+        let m = tank.medium();
+        let walls = (0..m.cells * m.cells).filter(|&k| m.kind(k % m.cells, k / m.cells) == CellKind::Wall).count();
+        let mut largest = 0.0f32;
+        for j in 0..m.cells {
+            for i in 0..m.cells {
+                let (x, z) = m.centre(i, j);
+                if x.abs() < 0.05 && (0.08..0.12).contains(&z) {
+                    largest = largest.max(state[(j * m.cells + i) as usize][0].abs());
+                }
+            }
+        }
+        println!(
+            "wall drawn: {draw} ({} strokes, {walls} wall cells): largest |h| behind it {:.2e} m",
+            tank.strokes().len(),
+            largest
+        );
+        behind.push(largest);
+    }
+    assert!(behind[0] > 1e-5, "the rings should reach the water past the stroke's line");
+    assert!(behind[1] < 0.05 * behind[0], "the drawn wall let the waves through");
+}

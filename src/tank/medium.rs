@@ -239,6 +239,18 @@ impl Medium {
         }
     }
 
+    /// Paints `kind` (a wall, or open water) on the cells within the pen's radius of the
+    /// segment from `a` to `b` (m): a stroke of the pointer's wall tool.
+    pub fn stroke(&mut self, a: (f32, f32), b: (f32, f32), kind: CellKind) {
+        let radius = super::PEN_RADIUS.max(super::PEN_MIN_CELLS * self.dx());
+        let (ab, length2) = ((b.0 - a.0, b.1 - a.1), (b.0 - a.0).powi(2) + (b.1 - a.1).powi(2));
+        self.paint(|x, z| {
+            let t = if length2 > 0.0 { (((x - a.0) * ab.0 + (z - a.1) * ab.1) / length2).clamp(0.0, 1.0) } else { 0.0 };
+            let (dx, dz) = (x - a.0 - t * ab.0, z - a.1 - t * ab.1);
+            (dx * dx + dz * dz <= radius * radius).then_some(kind)
+        });
+    }
+
     /// A barrier across the tray: the cells within `thickness` / 2 of line z = `z` (m), except
     /// where `open(x)` leaves a gap.
     pub fn barrier(&mut self, z: f32, thickness: f32, open: impl Fn(f32) -> bool) {

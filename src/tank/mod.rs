@@ -35,6 +35,18 @@ crate::choices! {
 }
 
 crate::choices! {
+    /// What a click or a drag in the tank does (the `tank_tool` parameter): drop pulses into
+    /// the water, draw walls, or erase (make open water again).
+    #[derive(Default)]
+    pub enum Tool {
+        #[default]
+        Drops = "drops",
+        Walls = "walls",
+        Erase = "erase",
+    }
+}
+
+crate::choices! {
     /// What the tank's picture shows (the `tank_view` parameter): the lamp's image on the
     /// screen below, the heights as colour, or the time-averaged intensity (h²).
     #[derive(Default)]
@@ -96,6 +108,8 @@ pub struct TankSettings {
     pub source_speed: f32,
     /// The strobe's flashes per second (Hz; 0: no strobe, the picture follows the water).
     pub strobe: f32,
+    /// What the pointer does in the tray.
+    pub tool: Tool,
     /// Beaches along the walls that swallow the waves, or reflecting walls.
     pub beaches: bool,
 }
@@ -114,6 +128,7 @@ impl Default for TankSettings {
             lamp_height: TANK_LAMP_HEIGHT.default,
             source_speed: TANK_SOURCE_SPEED.default,
             strobe: TANK_STROBE.default,
+            tool: Tool::from(TANK_TOOL.default),
             beaches: TANK_BEACHES.default >= 0.5,
         }
     }
@@ -147,6 +162,7 @@ impl TankSettings {
 pub const PARAMS: &[ParamSpec] = &[
     TANK_SETUP,
     TANK_VIEW,
+    TANK_TOOL,
     TANK_FREQUENCY,
     TANK_AMPLITUDE,
     TANK_DEPTH,
@@ -178,6 +194,20 @@ pub const TANK_VIEW: ParamSpec = ParamSpec {
     default: 0.0,
     help: "What the picture shows: the lamp's light on the screen under the tank (each crest focuses it like a lens into a bright line), the water's height as colour, or the intensity: the height squared, averaged over the last second.",
 };
+
+pub const TANK_TOOL: ParamSpec = ParamSpec {
+    name: "tank_tool",
+    label: "Pointer",
+    group: "Tank",
+    unit: "",
+    control: Control::Choice { values: Tool::VALUES, names: Tool::NAMES },
+    default: 0.0,
+    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), or erase back to open water.",
+};
+
+/// The pen that draws and erases walls: its radius (m), at least this many cells.
+pub const PEN_RADIUS: f32 = 0.002;
+pub const PEN_MIN_CELLS: f32 = 0.75;
 
 pub const TANK_FREQUENCY: ParamSpec = ParamSpec {
     name: "tank_frequency",

@@ -14,8 +14,8 @@ use crate::camera::OrbitCamera;
 use crate::params::{ParamId, Params};
 use crate::sim::Drop;
 use crate::tank::gpu::TankWater;
-use crate::tank::medium::Medium;
-use crate::tank::{plan, Setup, TankSettings, START_VIEW, TANK_CELLS, TANK_LIMITS};
+use crate::tank::medium::{CellKind, Medium};
+use crate::tank::{plan, Setup, TankSettings, Tool, START_VIEW, TANK_CELLS, TANK_LIMITS};
 pub use render::{TankPicture, SCREEN_TEXELS};
 
 /// A click's drop against the pool's: its radius shrinks with the tray against the pool, its
@@ -56,6 +56,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         lamp_height: params.get(ParamId::TankLampHeight),
         source_speed: params.get(ParamId::TankSourceSpeed),
         strobe: params.get(ParamId::TankStrobe),
+        tool: params.choice(ParamId::TankTool),
         beaches: params.flag(ParamId::TankBeaches),
     }
 }
@@ -79,8 +80,23 @@ pub struct TankScene {
     /// Whether the medium changed since the water last saw it.
     medium_changed: bool,
     drops: Vec<Drop>,
+    /// The walls drawn and erased with the pointer, in order: from, to (m) and what was
+    /// painted; kept over changes of the set-up.
+    strokes: Vec<Stroke>,
     float_targets: bool,
 }
+
+/// A stroke of the pointer's wall tool: a segment (m) painted a wall or open water.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stroke {
+    pub from: (f32, f32),
+    pub to: (f32, f32),
+    pub kind: CellKind,
+}
+
+/// How far (a share of a drop's radius) a point of the pointer's stroke may lie from the last
+/// for the two to be joined by a wall: the demo puts points about one drop radius apart.
+const STROKE_JOIN: f32 = 2.5;
 
 impl TankScene {
     /// The tank at its defaults; its water on the GPU where the device renders into
@@ -95,6 +111,7 @@ impl TankScene {
             picture: None,
             medium_changed: false,
             drops: Vec::new(),
+            strokes: Vec::new(),
             float_targets,
         }
     }
@@ -105,6 +122,20 @@ impl TankScene {
 
     pub fn medium(&self) -> &Medium {
         &self.medium
+    }
+
+    /// The walls drawn with the pointer.
+    pub fn strokes(&self) -> &[Stroke] {
+        &self.strokes
+    }
+
+    /// The set-up's cells with the pointer's strokes painted over them.
+    fn rebuild_medium(&mut self) {
+        self.medium = Medium::of(&self.settings, TANK_CELLS);
+        for s in &self.strokes {
+            self.medium.stroke(s.from, s.to, s.kind);
+        }
+        self.medium_changed = true;
     }
 
     /// The water, once a frame has been drawn.
@@ -133,9 +164,12 @@ impl super::Scene for TankScene {
             if settings.size != self.settings.size {
                 self.camera = start_camera(settings.size);
             }
-            self.medium = Medium::of(&settings, TANK_CELLS);
+            if settings.setup != self.settings.setup {
+                // A new set-up starts a fresh lab: the walls drawn for the last one go.
+                self.strokes.clear();
+            }
             self.settings = settings;
-            self.medium_changed = true;
+            self.rebuild_medium();
         }
     }
 
@@ -170,6 +204,7 @@ impl super::Scene for TankScene {
         mark(cx.encoder, Stage::AfterShading);
     }
 
+    /// Still water; the drawn walls stay (choosing a set-up puts them away).
     fn reset(&mut self, queue: &wgpu::Queue, _sh: Shared<'_>) {
         self.drops.clear();
         if let Some(water) = &mut self.water {
@@ -189,8 +224,27 @@ impl super::Scene for TankScene {
         (self.settings.half_width() / crate::world::PoolShape::CLASSIC.half_width, DROP_HEIGHT_SCALE)
     }
 
+    /// A drop, or with the wall or erase tool a stroke from the last point of the pointer's
+    /// stroke (if near enough to be the same stroke) to this one.
     fn add_drop(&mut self, drop: Drop) {
-        self.drops.push(drop);
+        let kind = match self.settings.tool {
+            Tool::Drops => return self.drops.push(drop),
+            Tool::Walls => CellKind::Wall,
+            Tool::Erase => CellKind::Water,
+        };
+        let to = (drop.x, drop.z);
+        let from = match self.strokes.last() {
+            Some(last)
+                if last.kind == kind && (last.to.0 - to.0).hypot(last.to.1 - to.1) <= STROKE_JOIN * drop.radius =>
+            {
+                last.to
+            }
+            _ => to,
+        };
+        let stroke = Stroke { from, to, kind };
+        self.medium.stroke(from, to, kind);
+        self.strokes.push(stroke);
+        self.medium_changed = true;
     }
 
     fn pick_body(&self, _sh: Shared<'_>, _pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {
