@@ -243,6 +243,20 @@ pub const PRESETS: &[Preset] = &[
         values: &[("scene", 2.0), ("tank_setup", 7.0)],
         camera: Some(crate::tank::START_VIEW),
     },
+    Preset {
+        name: "reflection",
+        label: "Ripple tank: a curved mirror",
+        help: "Straight waves run into a curved wall shaped like a parabola. Each part of the wall sends them back at its own angle, and all of them meet at one point in front of it, the focus, as light does in a torch's mirror or a satellite dish. Switch the view to the intensity to see the bright focus.",
+        values: &[("scene", 2.0), ("tank_setup", 8.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
+    Preset {
+        name: "standing",
+        label: "Ripple tank: standing waves",
+        help: "Straight waves run into a straight wall and come back through themselves. Where they meet they add up to standing waves: lines of still water (nodes) half a wavelength apart, and between them water that goes up and down without going anywhere. Switch the view to the heights and turn the strobe to the dippers' frequency.",
+        values: &[("scene", 2.0), ("tank_setup", 9.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
+        camera: Some(crate::tank::START_VIEW),
+    },
 ];
 
 impl Preset {

@@ -114,8 +114,15 @@ const changed = (a, b) => {
 };
 const w = (window.__watch = { clickAt: null, seenAt: null, changed: 0, idleChanged: 0, framesAfter: 0, before: null, log: [] });
 canvas.addEventListener('pointerdown', () => { w.clickAt = performance.now(); }, { capture: true });
+// A grab that lands outside the canvas's own frame (a WebGPU canvas whose frame this callback
+// ran ahead of) reads blank: such a grab says nothing and is skipped.
+const blank = (a) => { for (let i = 3; i < a.length; i += 4) if (a[i] !== 0) return false; return true; };
 const tick = () => {
   const now = grab();
+  if (blank(now)) {
+    requestAnimationFrame(tick);
+    return;
+  }
   if (w.clickAt === null) {
     if (w.before) w.idleChanged = Math.max(w.idleChanged, changed(w.before, now));
     w.before = now;

@@ -74,6 +74,11 @@ pub struct Sources {
     pub bar: Option<Bar>,
 }
 
+/// The reflection set-up's parabolic wall: its focal length as a share of the tray's side.
+pub const PARABOLA_FOCAL_SHARE: f32 = 0.2;
+/// The standing-wave set-up's wall across the tray: where it stands (z as a share of the side).
+pub const STANDING_WALL_SHARE: f32 = 0.15;
+
 /// The lens set-up's plate: two circular arcs of `radius` (m) meeting `thickness` (m) apart
 /// on the tray's axis (x = 0), around z = `centre` (m).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -151,6 +156,16 @@ impl Medium {
                 let slope = 30f32.to_radians().tan();
                 m.paint(|x, z| (z > -0.05 * l + slope * x).then_some(CellKind::Plate));
             }
+            Setup::Reflection => {
+                // A parabolic wall facing the bar, its focus in the open water before it.
+                let (vertex, focal) = (0.5 * l - BEACH_SHARE * l - 0.03 * l, PARABOLA_FOCAL_SHARE * l);
+                let thickness = 2.5 * dx;
+                m.paint(|x, z| {
+                    let on_curve = (z - (vertex - x * x / (4.0 * focal))).abs() < 0.5 * thickness;
+                    (on_curve && x.abs() < 0.35 * l).then_some(CellKind::Wall)
+                });
+            }
+            Setup::Standing => m.barrier(STANDING_WALL_SHARE * l, 2.0 * dx, |_| false),
             Setup::Lens => {
                 let Lens { radius: r, thickness: t, centre: zc } = Lens::of(l);
                 let inside = |x: f32, z: f32, cz: f32| x * x + (z - cz) * (z - cz) < r * r;

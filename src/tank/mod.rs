@@ -31,6 +31,8 @@ crate::choices! {
         Refraction = "refraction",
         Lens = "lens",
         Doppler = "doppler",
+        Reflection = "reflection",
+        Standing = "standing",
     }
 }
 
@@ -182,7 +184,7 @@ pub const TANK_SETUP: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Setup::VALUES, names: Setup::NAMES },
     default: 0.0,
-    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, or a dipper moving across the tank (Doppler).",
+    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, a dipper moving across the tank (Doppler), a curved wall that reflects the bar's waves to a focus (a parabolic mirror), or a straight wall facing the bar (standing waves).",
 };
 
 pub const TANK_VIEW: ParamSpec = ParamSpec {
