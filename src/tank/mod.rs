@@ -238,7 +238,7 @@ pub const TANK_DEPTH: ParamSpec = ParamSpec {
     unit: "mm",
     control: slider(5.0, 40.0, 1.0),
     default: 10.0,
-    help: "The water's depth: waves this long (much longer than the depth) run at sqrt(g d), faster in deeper water. Over a glass plate the water is shallower, so the waves slow there and bend.",
+    help: "The water's depth: waves this long (much longer than the depth) run at sqrt(g d), faster in deeper water. Over a glass plate the water is shallower, so the waves slow there and bend. (A real tank's centimetre ripples are also pulled by surface tension, which speeds up the shortest; these are not. Each lesson uses one frequency, and what it shows depends only on the wavelengths, so it holds.)",
 };
 
 pub const TANK_SIZE: ParamSpec = ParamSpec {
