@@ -68,6 +68,7 @@ param_ids! {
     TankLampHeight = "tank_lamp_height",
     TankSourceSpeed = "tank_source_speed",
     TankStrobe = "tank_strobe",
+    TankLines = "tank_lines",
     TankBeaches = "tank_beaches",
     Setting = "setting",
     Caustics = "caustics",

@@ -10,6 +10,8 @@ struct Picture {
                         // z cells per side, w the image's scale (what one unit of light is stored as)
     view: vec4<f32>,    // x view (0 screen, 1 heights, 2 intensity), y amplitude (m), z exposure,
                         // w the screen image's texels per side
+    lines: vec4<f32>,   // x how many slit lines, y the z (m) they start from
+    line_angles: array<vec4<f32>, LINE_VECS>, // their directions (rad from +z towards +x), 4 a vector
 };
 
 @group(0) @binding(0) var<uniform> pic: Picture;

@@ -60,6 +60,21 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
     return select(colour, mix(colour, vec3<f32>(0.2, 0.6, 0.35), 0.3), m.w == 2.0);
 }
 
+// Whether tray point xz lies on one of the slits' lines (drawn from between the slits on).
+fn on_slit_line(xz: vec2<f32>) -> bool {
+    let d = vec2<f32>(xz.x, xz.y - pic.lines.y);
+    if d.y <= 0.0 || any(abs(xz) > vec2<f32>(pic.tray.x)) {
+        return false;
+    }
+    for (var k = 0; k < i32(pic.lines.x); k++) {
+        let a = pic.line_angles[k / 4][k % 4];
+        if abs(d.x * cos(a) - d.y * sin(a)) < 0.5 * LINE_WIDTH {
+            return true;
+        }
+    }
+    return false;
+}
+
 @fragment
 fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
     let hit = on_plane(in.uv);
@@ -68,6 +83,9 @@ fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
         colour = screen_colour(hit.xy);
     } else if hit.z > 0.0 {
         colour = cell_colour(hit.xy);
+    }
+    if hit.z > 0.0 && pic.lines.x > 0.0 && on_slit_line(hit.xy) {
+        colour = vec3<f32>(0.9, 0.75, 0.1);
     }
     if ENCODE_SRGB {
         colour = linear_to_srgb(colour);

@@ -107,6 +107,32 @@ pub struct Medium {
     /// Per cell: c² (m²/s², 0 in a wall), the beach's damping rate (1/s), the kind's code, 0.
     pub texels: Vec<[f32; 4]>,
     pub sources: Sources,
+    /// The slits of a slit set-up: the barrier's z (m), their number, width and spacing (m).
+    pub slits: Option<Slits>,
+}
+
+/// A barrier's slits: the barrier's line z (m), how many (one or two), each one's width (m)
+/// and the distance between two slits' centres (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slits {
+    pub z: f32,
+    pub count: u32,
+    pub width: f32,
+    pub spacing: f32,
+}
+
+impl Slits {
+    /// The directions (rad from the barrier's normal, towards +x) of the lines a lesson draws
+    /// from between the slits: for two slits the bright ones, d sin θ = m λ; for one the dark
+    /// ones, w sin θ = m λ (m ≠ 0); those that exist for wavelength `lambda` (m).
+    pub fn directions(&self, lambda: f32) -> Vec<f32> {
+        let (first, step) = if self.count == 2 { (0, self.spacing) } else { (1, self.width) };
+        (first..)
+            .map(|m| m as f32 * lambda / step)
+            .take_while(|s| *s < 1.0)
+            .flat_map(|s| if s == 0.0 { vec![0.0] } else { vec![-s.asin(), s.asin()] })
+            .collect()
+    }
 }
 
 impl Medium {
@@ -115,7 +141,7 @@ impl Medium {
         let c2 = GRAVITY * depth;
         let beach = BEACH_SHARE * size;
         let rate = BEACH_STRENGTH * c2.sqrt() / beach;
-        let mut medium = Self { cells, size, depth, texels: Vec::new(), sources: Sources::default() };
+        let mut medium = Self { cells, size, depth, texels: Vec::new(), sources: Sources::default(), slits: None };
         medium.texels = (0..cells * cells)
             .map(|k| {
                 let (x, z) = medium.centre(k % cells, k / cells);
@@ -149,8 +175,14 @@ impl Medium {
             _ => m.sources.bar = Some(Bar { z: bar_z, half_thickness: dx, half_length: 0.5 * l }),
         }
         match settings.setup {
-            Setup::SingleSlit => m.barrier(barrier_z, 2.0 * dx, |x| x.abs() < 0.5 * w),
-            Setup::DoubleSlit => m.barrier(barrier_z, 2.0 * dx, |x| (x.abs() - 0.5 * s).abs() < 0.5 * w),
+            Setup::SingleSlit => {
+                m.barrier(barrier_z, 2.0 * dx, |x| x.abs() < 0.5 * w);
+                m.slits = Some(Slits { z: barrier_z, count: 1, width: w, spacing: 0.0 });
+            }
+            Setup::DoubleSlit => {
+                m.barrier(barrier_z, 2.0 * dx, |x| (x.abs() - 0.5 * s).abs() < 0.5 * w);
+                m.slits = Some(Slits { z: barrier_z, count: 2, width: w, spacing: s });
+            }
             Setup::Refraction => {
                 // The plate's straight edge crosses the middle at 30° to the bar.
                 let slope = 30f32.to_radians().tan();
@@ -288,5 +320,21 @@ mod tests {
         println!("gaps {gaps}, each {:.1} mm wide (asked {:.1})", width * 1e3, settings.slit_width * 1e3);
         assert_eq!(gaps, 2);
         assert!((width - settings.slit_width).abs() <= m.dx());
+    }
+
+    #[test]
+    fn the_slits_lines_are_the_bright_directions_of_two_slits_and_the_dark_ones_of_one() {
+        let two = Slits { z: 0.0, count: 2, width: 0.02, spacing: 0.09 };
+        let lambda = 0.0313;
+        let angles = two.directions(lambda);
+        println!("two slits: {:?}°", angles.iter().map(|a| a.to_degrees()).collect::<Vec<_>>());
+        assert_eq!(angles.len(), 5, "m = 0, ±1, ±2 (3 λ > d)");
+        assert!(angles
+            .iter()
+            .all(|a| ((two.spacing * a.sin() / lambda) - (two.spacing * a.sin() / lambda).round()).abs() < 1e-4));
+        let one = Slits { count: 1, width: 0.05, ..two };
+        let dark = one.directions(lambda);
+        assert_eq!(dark.len(), 2, "m = ±1 only: no line straight ahead");
+        assert!((dark[1].sin() * one.width - lambda).abs() < 1e-6);
     }
 }

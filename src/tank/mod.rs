@@ -112,6 +112,8 @@ pub struct TankSettings {
     pub strobe: f32,
     /// What the pointer does in the tray.
     pub tool: Tool,
+    /// Whether the slits' directions d sin θ = m λ are drawn over the picture.
+    pub lines: bool,
     /// Beaches along the walls that swallow the waves, or reflecting walls.
     pub beaches: bool,
 }
@@ -131,6 +133,7 @@ impl Default for TankSettings {
             source_speed: TANK_SOURCE_SPEED.default,
             strobe: TANK_STROBE.default,
             tool: Tool::from(TANK_TOOL.default),
+            lines: TANK_LINES.default >= 0.5,
             beaches: TANK_BEACHES.default >= 0.5,
         }
     }
@@ -174,6 +177,7 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_LAMP_HEIGHT,
     TANK_SOURCE_SPEED,
     TANK_STROBE,
+    TANK_LINES,
     TANK_BEACHES,
 ];
 
@@ -301,6 +305,21 @@ pub const TANK_STROBE: ParamSpec = ParamSpec {
     default: 0.0,
     help: "Light the tank with flashes this many times a second (0: a steady lamp). At the dippers' frequency every flash finds the waves in the same place, so the pattern stands still and can be measured; a little off it, the waves creep slowly forward or back.",
 };
+
+pub const TANK_LINES: ParamSpec = ParamSpec {
+    name: "tank_lines",
+    label: "Slit lines",
+    group: "Tank",
+    unit: "",
+    control: Control::Toggle,
+    default: 0.0,
+    help: "Draw, from between the slits, the directions where theory puts the pattern: for two slits the bright lines, d sin θ = m λ (d the slits' spacing); for one slit the dark ones, w sin θ = m λ (w its width).",
+};
+
+/// How wide the slits' lines are drawn (m in the tray).
+pub const LINE_WIDTH: f32 = 0.0015;
+/// The most lines the picture draws.
+pub const MAX_LINES: usize = 16;
 
 pub const TANK_BEACHES: ParamSpec = ParamSpec {
     name: "tank_beaches",

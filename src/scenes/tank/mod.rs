@@ -57,6 +57,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         source_speed: params.get(ParamId::TankSourceSpeed),
         strobe: params.get(ParamId::TankStrobe),
         tool: params.choice(ParamId::TankTool),
+        lines: params.flag(ParamId::TankLines),
         beaches: params.flag(ParamId::TankBeaches),
     }
 }
@@ -197,6 +198,10 @@ impl super::Scene for TankScene {
             view_proj: self.camera.view_projection(sh.viewport.x / sh.viewport.y),
             view: sh.params.choice(ParamId::TankView),
             exposure: 2f32.powf(sh.params.get(ParamId::Exposure)),
+            lines: match self.medium.slits {
+                Some(slits) if self.settings.lines => Some((slits.z, slits.directions(self.settings.wavelength()))),
+                _ => None,
+            },
         };
         let group = picture.encode_screen(device, queue, cx.encoder, water, &self.settings, &shot);
         mark(cx.encoder, Stage::AfterMaps);

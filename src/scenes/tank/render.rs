@@ -7,7 +7,7 @@ use glam::Mat4;
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::tank::gpu::TankWater;
-use crate::tank::{TankSettings, TankView, SCREEN_BELOW};
+use crate::tank::{TankSettings, TankView, LINE_WIDTH, MAX_LINES, SCREEN_BELOW};
 
 /// Texels along each side of the screen's image.
 pub const SCREEN_TEXELS: u32 = 512;
@@ -31,6 +31,8 @@ struct PictureUniforms {
     tray: [f32; 4],
     screen: [f32; 4],
     view: [f32; 4],
+    lines: [f32; 4],
+    line_angles: [[f32; 4]; MAX_LINES / 4],
 }
 
 /// What the picture shows beyond the settings: the camera's view-projection, the view and the
@@ -39,6 +41,9 @@ pub struct Shot {
     pub view_proj: Mat4,
     pub view: TankView,
     pub exposure: f32,
+    /// The slits' lines to draw: where they start (z, m) and their directions (rad from +z
+    /// towards +x), if asked.
+    pub lines: Option<(f32, Vec<f32>)>,
 }
 
 /// The tank's two passes, their uniforms and the screen's image.
@@ -106,9 +111,10 @@ impl TankPicture {
             ],
         });
         let numbers = format!(
-            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
+            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\nconst LINE_WIDTH: f32 = {LINE_WIDTH:?};\nconst LINE_VECS: u32 = {}u;\n",
             crate::world::IOR_WATER,
-            !target_format.is_srgb()
+            !target_format.is_srgb(),
+            MAX_LINES / 4
         );
         let picture = crate::wgsl!("tank/picture.wgsl");
         let module =
@@ -199,13 +205,22 @@ impl TankPicture {
         settings: &TankSettings,
         shot: &Shot,
     ) -> wgpu::BindGroup {
-        let uniforms = PictureUniforms {
+        let mut uniforms = PictureUniforms {
             inverse_view_proj: shot.view_proj.inverse().to_cols_array_2d(),
             mesh: [(water.cells() / SCREEN_MESH_STEP) as f32, SCREEN_MESH_STEP as f32, 0.0, 0.0],
             tray: [settings.half_width(), settings.depth, settings.lamp_height, SCREEN_BELOW],
             screen: [Self::screen_half_extent(settings), settings.magnification(), water.cells() as f32, self.scale],
             view: [shot.view.value(), settings.amplitude, shot.exposure * SCREEN_EXPOSURE, SCREEN_TEXELS as f32],
+            lines: [0.0; 4],
+            line_angles: [[0.0; 4]; MAX_LINES / 4],
         };
+        if let Some((z, angles)) = &shot.lines {
+            let count = angles.len().min(MAX_LINES);
+            uniforms.lines = [count as f32, *z, 0.0, 0.0];
+            for (k, a) in angles.iter().take(count).enumerate() {
+                uniforms.line_angles[k / 4][k % 4] = *a;
+            }
+        }
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("tank picture"),
