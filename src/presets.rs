@@ -232,7 +232,7 @@ pub const PRESETS: &[Preset] = &[
     Preset {
         name: "lens",
         label: "Ripple tank: a lens",
-        help: "A lens-shaped glass plate under the water: the waves slow down over it, most at its thick middle, so the straight fronts come out curved and meet at a focus behind it, as light does behind a glass lens.",
+        help: "A lens-shaped glass plate under the water: the waves slow down over it, and the middle of each front spends longest over the plate, so the straight fronts come out curved and meet at a focus behind it, as light does behind a glass lens.",
         values: &[("scene", 2.0), ("tank_setup", 6.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
         camera: Some(crate::tank::START_VIEW),
     },

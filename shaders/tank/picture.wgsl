@@ -25,7 +25,7 @@ fn cell_of(p: vec2<i32>) -> vec4<f32> {
 
 fn is_wall(p: vec2<i32>) -> bool {
     let n = i32(pic.screen.z);
-    return textureLoad(medium, clamp(p, vec2<i32>(0), vec2<i32>(n - 1)), 0).w == 1.0;
+    return textureLoad(medium, clamp(p, vec2<i32>(0), vec2<i32>(n - 1)), 0).w == WALL;
 }
 
 // Where the lamp's ray through surface point `surface` (m) with unit normal `normal` meets the

@@ -43,7 +43,7 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
     }
     let p = vec2<i32>((xz + w) / (2.0 * w) * pic.screen.z);
     let m = textureLoad(medium, p, 0);
-    if m.w == 1.0 {
+    if m.w == WALL {
         return vec3<f32>(0.35);
     }
     let c = cell_of(p);
@@ -57,7 +57,7 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
     }
     // Beaches a little darker; plates tinted green.
     colour *= 1.0 - 0.35 * clamp(m.z / 400.0, 0.0, 1.0);
-    return select(colour, mix(colour, vec3<f32>(0.2, 0.6, 0.35), 0.3), m.w == 2.0);
+    return select(colour, mix(colour, vec3<f32>(0.2, 0.6, 0.35), 0.3), m.w == PLATE);
 }
 
 // Whether tray point xz lies on one of the slits' lines (drawn from between the slits on).

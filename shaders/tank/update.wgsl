@@ -49,7 +49,7 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     let p = vec2<i32>(in.position.xy);
     let last = vec2<i32>(i32(u.grid.x) - 1);
     let m = textureLoad(medium, p, 0);
-    if m.w == 1.0 {
+    if m.w == WALL {
         return vec4<f32>(0.0);
     }
     let west = select(0.0, textureLoad(medium, max(p - vec2<i32>(1, 0), vec2<i32>(0)), 0).x, p.x > 0);
@@ -72,18 +72,25 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     return vec4<f32>(h, bounded(v, u.bounds.y), averaged, 0.0);
 }
 
-// The update's drops added to the water (not to walls), before it: raised cosines.
+// A raised cosine of `radius` at distance `r`.
+fn cosine_bump(r: f32, radius: f32) -> f32 {
+    return 0.5 + 0.5 * cos(PI * min(r / radius, 1.0));
+}
+
+// The update's drops added to the water (not to walls), before it: raised cosines less a
+// quarter of ones twice as wide, which add no water (tank/cpu.rs drop_bump).
 @fragment
 fn fs_drops(in: FullscreenOut) -> @location(0) vec4<f32> {
     let p = vec2<i32>(in.position.xy);
     var c = textureLoad(state, p, 0);
-    if textureLoad(medium, p, 0).w == 1.0 {
+    if textureLoad(medium, p, 0).w == WALL {
         return c;
     }
     let x = centre(p);
     for (var k = 0; k < i32(u.bar.w); k++) {
         let d = u.drops[k];
-        c.x += d.w * (0.5 + 0.5 * cos(PI * min(length(x - d.xy) / d.z, 1.0)));
+        let r = length(x - d.xy);
+        c.x += d.w * (cosine_bump(r, d.z) - 0.25 * cosine_bump(r, 2.0 * d.z));
     }
     c.x = bounded(c.x, u.bounds.x);
     return c;

@@ -15,7 +15,8 @@ pub const TANK_STATE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Fl
 /// The constants `update.wgsl` is written against.
 fn wgsl_constants() -> String {
     format!(
-        "const MAX_DIPPERS: u32 = {MAX_DIPPERS};\nconst MAX_TANK_DROPS: u32 = {MAX_TANK_DROPS};\nconst INTENSITY_TIME: f32 = {INTENSITY_TIME:?};\n"
+        "const MAX_DIPPERS: u32 = {MAX_DIPPERS};\nconst MAX_TANK_DROPS: u32 = {MAX_TANK_DROPS};\nconst INTENSITY_TIME: f32 = {INTENSITY_TIME:?};\n{}",
+        super::medium::kind_constants()
     )
 }
 
@@ -143,6 +144,8 @@ impl TankWater {
         if let Engine::Cpu(tank) = &mut self.engine {
             tank.state.iter_mut().for_each(|s| *s = [0.0; 3]);
         }
+        // Until the strobe flashes again it shows still water, not the old.
+        self.flash = None;
     }
 
     /// Records `updates` (or runs them on the CPU and uploads the result), keeping the state
@@ -191,6 +194,7 @@ impl TankWater {
                     }
                 }
             }
+            Engine::Cpu(_) if updates.is_empty() => {}
             Engine::Cpu(tank) => {
                 let texels =
                     |tank: &CpuTank| -> Vec<[f32; 4]> { tank.state.iter().map(|&[h, v, i]| [h, v, i, 0.0]).collect() };

@@ -4,6 +4,7 @@
 
 use super::{
     Setup, TankSettings, BEACH_SHARE, BEACH_STRENGTH, DIPPER_MIN_CELLS, DIPPER_RADIUS, MAX_DIPPERS, PLATE_DEPTH_SHARE,
+    TANK_DAMPING,
 };
 use crate::physics::GRAVITY;
 
@@ -18,7 +19,7 @@ pub enum CellKind {
 }
 
 impl CellKind {
-    /// The code the shaders read (`medium.z`).
+    /// The code the shaders read (the medium texture's `w`).
     pub fn code(self) -> f32 {
         match self {
             CellKind::Water => 0.0,
@@ -26,6 +27,11 @@ impl CellKind {
             CellKind::Plate => 2.0,
         }
     }
+}
+
+/// The cells' kind codes as WGSL constants (`WALL`, `PLATE`) for the shaders that read them.
+pub fn kind_constants() -> String {
+    format!("const WALL: f32 = {:?};\nconst PLATE: f32 = {:?};\n", CellKind::Wall.code(), CellKind::Plate.code())
 }
 
 /// A point dipper: centre (m) at time 0, radius (m), phase (rad) against the others, and the
@@ -89,8 +95,8 @@ pub struct Lens {
 }
 
 impl Lens {
-    /// The lens of a tray of side `size` (m): half a metre across in the default tray, thin
-    /// enough that rays near its rim still leave it (a focus about 0.2 m behind it).
+    /// The lens of a tray of side `size` (m): about 0.2 m across in the default tray, thin
+    /// enough that rays near its rim still leave it (a focus 0.16 to 0.21 m behind it).
     pub fn of(size: f32) -> Self {
         Self { radius: 0.5 * size, thickness: 0.06 * size, centre: -0.15 * size }
     }
@@ -147,7 +153,7 @@ impl Medium {
                 let (x, z) = medium.centre(k % cells, k / cells);
                 let from_wall = 0.5 * size - x.abs().max(z.abs());
                 let t = if beaches { (1.0 - from_wall / beach).max(0.0) } else { 0.0 };
-                [c2, rate * t * t, CellKind::Water.code(), 0.0]
+                [c2, TANK_DAMPING + rate * t * t, CellKind::Water.code(), 0.0]
             })
             .collect();
         medium
@@ -159,7 +165,9 @@ impl Medium {
         let (l, dx) = (settings.size, m.dx());
         let bar_z = -0.5 * l + BEACH_SHARE * l + 2.0 * dx;
         let barrier_z = bar_z + 0.12 * l;
+        // Two slits stay apart: each at most 80 % of their spacing wide.
         let (w, s) = (settings.slit_width, settings.slit_spacing);
+        let w = if settings.setup == Setup::DoubleSlit { w.min(0.8 * s) } else { w };
         let radius = DIPPER_RADIUS.max(DIPPER_MIN_CELLS * dx);
         let dipper = |x: f32, z: f32| Dipper::at(x, z, radius);
         match settings.setup {
@@ -169,7 +177,9 @@ impl Medium {
                 // Across the middle of the open water, then again from the start.
                 let start = -0.5 * l + BEACH_SHARE * l;
                 let travel = l - 2.0 * BEACH_SHARE * l;
-                m.sources.dippers.push(Dipper { velocity: [settings.source_speed, 0.0], travel, ..dipper(start, 0.0) });
+                let moving = Dipper { velocity: [settings.source_speed, 0.0], travel, ..dipper(start, 0.0) };
+                // At rest it stands in the middle.
+                m.sources.dippers.push(if settings.source_speed > 0.0 { moving } else { dipper(0.0, 0.0) });
             }
             // The bar spans the tray: its ends, in the side beaches, send no slanting waves across.
             _ => m.sources.bar = Some(Bar { z: bar_z, half_thickness: dx, half_length: 0.5 * l }),
@@ -270,9 +280,14 @@ impl Medium {
     /// Makes each cell whose centre `kind_at` gives a kind that kind (a plate leaves
     /// [`PLATE_DEPTH_SHARE`] of the depth over it; a wall none).
     pub fn paint(&mut self, kind_at: impl Fn(f32, f32) -> Option<CellKind>) {
+        self.paint_within((0, 0), (self.cells, self.cells), kind_at);
+    }
+
+    /// [`Medium::paint`] over the cells from `first` to before `last` (i, j) only.
+    fn paint_within(&mut self, first: (u32, u32), last: (u32, u32), kind_at: impl Fn(f32, f32) -> Option<CellKind>) {
         let plate_c2 = GRAVITY * self.depth * PLATE_DEPTH_SHARE;
-        for j in 0..self.cells {
-            for i in 0..self.cells {
+        for j in first.1..last.1.min(self.cells) {
+            for i in first.0..last.0.min(self.cells) {
                 let (x, z) = self.centre(i, j);
                 let Some(kind) = kind_at(x, z) else { continue };
                 let texel = &mut self.texels[(j * self.cells + i) as usize];
@@ -291,7 +306,11 @@ impl Medium {
     pub fn stroke(&mut self, a: (f32, f32), b: (f32, f32), kind: CellKind) {
         let radius = super::PEN_RADIUS.max(super::PEN_MIN_CELLS * self.dx());
         let (ab, length2) = ((b.0 - a.0, b.1 - a.1), (b.0 - a.0).powi(2) + (b.1 - a.1).powi(2));
-        self.paint(|x, z| {
+        // Only the cells round the segment: a drag paints many short strokes.
+        let index = |v: f32| ((v + 0.5 * self.size) / self.dx()).clamp(0.0, self.cells as f32) as u32;
+        let first = (index(a.0.min(b.0) - radius).saturating_sub(1), index(a.1.min(b.1) - radius).saturating_sub(1));
+        let last = (index(a.0.max(b.0) + radius) + 2, index(a.1.max(b.1) + radius) + 2);
+        self.paint_within(first, last, |x, z| {
             let t = if length2 > 0.0 { (((x - a.0) * ab.0 + (z - a.1) * ab.1) / length2).clamp(0.0, 1.0) } else { 0.0 };
             let (dx, dz) = (x - a.0 - t * ab.0, z - a.1 - t * ab.1);
             (dx * dx + dz * dz <= radius * radius).then_some(kind)

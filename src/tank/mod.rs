@@ -86,6 +86,10 @@ pub const MAX_TANK_DROPS: usize = 4;
 /// Bounds on the state: |h| (m) and |v| (m/s); beyond them a cell is clamped, NaN is rest.
 pub const MAX_TANK_HEIGHT: f32 = 0.01;
 pub const MAX_TANK_VELOCITY: f32 = 2.0;
+/// A light damping of every wave (1/s, of the velocity and the height alike): the water's
+/// viscosity and the tray's friction, which in a lab keep the waves trapped between the bar
+/// and a wall (or a barrier) from building up at a resonance.
+pub const TANK_DAMPING: f32 = 0.3;
 /// The time (s) over which the intensity h² is averaged: a few periods of the slowest dipper.
 pub const INTENSITY_TIME: f32 = 1.0;
 /// Depth left over a glass plate, as a share of the tray's water depth.
@@ -198,7 +202,7 @@ pub const TANK_VIEW: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: TankView::VALUES, names: TankView::NAMES },
     default: 0.0,
-    help: "What the picture shows: the lamp's light on the screen under the tank (each crest focuses it like a lens into a bright line), the water's height as colour, or the intensity: the height squared, averaged over the last second.",
+    help: "What the picture shows: the lamp's light on the screen under the tank (each crest focuses it like a lens into a bright line), the water's height as colour, or the intensity: the height squared, averaged over about the last second.",
 };
 
 pub const TANK_TOOL: ParamSpec = ParamSpec {
@@ -242,7 +246,7 @@ pub const TANK_DEPTH: ParamSpec = ParamSpec {
     unit: "mm",
     control: slider(5.0, 40.0, 1.0),
     default: 10.0,
-    help: "The water's depth: waves this long (much longer than the depth) run at sqrt(g d), faster in deeper water. Over a glass plate the water is shallower, so the waves slow there and bend. (A real tank's centimetre ripples are also pulled by surface tension, which speeds up the shortest; these are not. Each lesson uses one frequency, and what it shows depends only on the wavelengths, so it holds.)",
+    help: "The water's depth. Here the waves run at shallow water's speed sqrt(g d), faster in deeper water; over a glass plate the water is shallower, so the waves slow there and bend. (A real tank's centimetre ripples are not long against the depth and are pulled by surface tension too, so they run slower and their speed depends on the wavelength; these do not. Each lesson uses one frequency, and what it shows depends only on the wavelengths, so it holds.)",
 };
 
 pub const TANK_SIZE: ParamSpec = ParamSpec {

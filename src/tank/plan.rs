@@ -54,7 +54,7 @@ pub fn plan(
     let bar = medium.sources.bar.unwrap_or(Bar { z: 0.0, half_thickness: 0.0, half_length: 0.0 });
     let base = Update {
         grid: [medium.cells as f32, medium.dx(), dt, 0.5 * medium.size],
-        wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len() as f32],
+        wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len().min(MAX_DIPPERS) as f32],
         bar: [bar.z, bar.half_thickness, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
         bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, bar.half_length, 0.0],
         dippers: [[0.0; 4]; MAX_DIPPERS],
@@ -68,7 +68,8 @@ pub fn plan(
             update.wave[0] = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
             for (slot, d) in update.dippers.iter_mut().zip(&medium.sources.dippers) {
                 let (x, z) = d.centre_at(t);
-                *slot = [x, z, d.radius, d.phase];
+                // A phase in [0, 2π): the shader reads a negative one as "no source here".
+                *slot = [x, z, d.radius, d.phase.rem_euclid(std::f32::consts::TAU)];
             }
             if k == 0 {
                 let n = drops.len().min(MAX_TANK_DROPS);

@@ -80,6 +80,8 @@ pub struct TankScene {
     picture: Option<TankPicture>,
     /// Whether the medium changed since the water last saw it.
     medium_changed: bool,
+    /// Whether the water is to be stilled before the next frame (a new set-up).
+    clear_water: bool,
     drops: Vec<Drop>,
     /// The walls drawn and erased with the pointer, in order: from, to (m) and what was
     /// painted; kept over changes of the set-up.
@@ -111,6 +113,7 @@ impl TankScene {
             water: None,
             picture: None,
             medium_changed: false,
+            clear_water: false,
             drops: Vec::new(),
             strokes: Vec::new(),
             float_targets,
@@ -160,16 +163,21 @@ impl super::Scene for TankScene {
     }
 
     fn follow_params(&mut self, params: &Params) {
-        let settings = tank_settings(params);
-        if settings != self.settings {
-            if settings.size != self.settings.size {
-                self.camera = start_camera(settings.size);
-            }
-            if settings.setup != self.settings.setup {
-                // A new set-up starts a fresh lab: the walls drawn for the last one go.
-                self.strokes.clear();
-            }
-            self.settings = settings;
+        let (settings, old) = (tank_settings(params), self.settings);
+        if settings.size != old.size {
+            self.camera = start_camera(settings.size);
+        }
+        let fresh_lab = settings.setup != old.setup || settings.size != old.size;
+        if fresh_lab {
+            // A new set-up starts a fresh lab: the walls drawn for the last one and its waves go.
+            self.strokes.clear();
+            self.clear_water = true;
+        }
+        self.settings = settings;
+        // The cells depend on these only (not on the frequency, the lamp, the strobe, …).
+        let cells_of =
+            |s: &TankSettings| (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed);
+        if cells_of(&settings) != cells_of(&old) {
             self.rebuild_medium();
         }
     }
@@ -181,6 +189,9 @@ impl super::Scene for TankScene {
         let water = self.water.get_or_insert_with(|| TankWater::new(device, queue, &self.medium, float_targets));
         if std::mem::take(&mut self.medium_changed) {
             water.set_medium(queue, &self.medium);
+        }
+        if std::mem::take(&mut self.clear_water) {
+            water.clear(queue);
         }
         let picture = self.picture.get_or_insert_with(|| {
             TankPicture::new(device, renderer.settings().target_format, TANK_CELLS, float_targets)
@@ -209,9 +220,13 @@ impl super::Scene for TankScene {
         mark(cx.encoder, Stage::AfterShading);
     }
 
-    /// Still water; the drawn walls stay (choosing a set-up puts them away).
+    /// Still water, and the walls drawn with the pointer put away.
     fn reset(&mut self, queue: &wgpu::Queue, _sh: Shared<'_>) {
         self.drops.clear();
+        if !self.strokes.is_empty() {
+            self.strokes.clear();
+            self.rebuild_medium();
+        }
         if let Some(water) = &mut self.water {
             water.clear(queue);
         }

@@ -115,44 +115,9 @@ impl TankPicture {
             crate::world::IOR_WATER,
             !target_format.is_srgb(),
             MAX_LINES / 4
-        );
+        ) + &crate::tank::medium::kind_constants();
         let picture = crate::wgsl!("tank/picture.wgsl");
-        let module =
-            gpu::shader(device, "tank screen", &[gpu::wgsl::MATH, &numbers, picture, crate::wgsl!("tank/screen.wgsl")]);
-        let additive = wgpu::BlendComponent {
-            src_factor: wgpu::BlendFactor::One,
-            dst_factor: wgpu::BlendFactor::One,
-            operation: wgpu::BlendOperation::Add,
-        };
-        let screen_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("tank screen"),
-            layout: Some(&gpu::pipeline_layout(device, "tank screen", &[&layout])),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_screen"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: 8,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x2],
-                })],
-            },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: None,
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_screen"),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format,
-                    blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let screen_pipeline = screen_pipeline(device, &layout, &numbers, format);
         let show = FullscreenPass::new(
             device,
             "tank picture",
@@ -251,4 +216,50 @@ impl TankPicture {
     pub fn encode_show(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView, group: &wgpu::BindGroup) {
         self.show.run(encoder, target, &[group, &self.image_group]);
     }
+}
+
+/// The screen pass's pipeline: the surface's mesh (a point: its place, two floats) drawn into
+/// the screen's image of `format`, adding up (`numbers`: the picture's WGSL constants).
+fn screen_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    numbers: &str,
+    format: wgpu::TextureFormat,
+) -> wgpu::RenderPipeline {
+    let parts = [gpu::wgsl::MATH, numbers, crate::wgsl!("tank/picture.wgsl"), crate::wgsl!("tank/screen.wgsl")];
+    let module = gpu::shader(device, "tank screen", &parts);
+    let additive = wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::One,
+        operation: wgpu::BlendOperation::Add,
+    };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("tank screen"),
+        layout: Some(&gpu::pipeline_layout(device, "tank screen", &[layout])),
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs_screen"),
+            compilation_options: Default::default(),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: 8,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x2],
+            })],
+        },
+        primitive: wgpu::PrimitiveState::default(),
+        depth_stencil: None,
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs_screen"),
+            compilation_options: Default::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format,
+                blend: Some(wgpu::BlendState { color: additive, alpha: additive }),
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
 }
