@@ -9,8 +9,8 @@ use super::plan::{Update, UPDATE_SLOT};
 use super::{INTENSITY_TIME, MAX_DIPPERS, MAX_TANK_DROPS};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
-/// Format of the state and medium textures (read with `textureLoad` only).
-pub const TANK_STATE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba32Float;
+/// Format of the state and medium textures: the pool's water's (read with `textureLoad` only).
+pub const TANK_STATE_FORMAT: wgpu::TextureFormat = crate::sim::STATE_FORMAT;
 
 /// The constants `update.wgsl` is written against.
 fn wgsl_constants() -> String {
