@@ -88,6 +88,11 @@ struct StartArgs {
     /// --set caustics=off --set render_mode=split.
     #[arg(long = "set", value_name = "NAME=VALUE", value_parser = parameter_value)]
     sets: Vec<(String, f32)>,
+    /// What was drawn in the ripple tank with the pointer, as a share link's `sketch` writes it
+    /// (walls W, erasures E, the ruler R, in whole mm from the tray's middle), e.g.
+    /// W-120,40,-120,200_R-200,0,200,0.
+    #[arg(long, value_name = "TEXT")]
+    sketch: Option<String>,
 }
 
 /// The picture `render` and `bench` draw.
@@ -253,6 +258,9 @@ impl StartArgs {
         }
         for (name, v) in &self.sets {
             demo.params.set_by_name(name, *v).expect("names checked while parsing");
+        }
+        if let Some(Err(why)) = self.sketch.as_deref().map(|text| demo.set_sketch(text)) {
+            eprintln!("wavepool: --sketch ignored: {why}");
         }
         demo
     }
@@ -435,6 +443,7 @@ fn viewer_options(args: ViewerArgs) -> Result<crate::viewer::ViewerOptions, clap
         demo: args.start.demo_options(),
         preset: args.start.preset,
         sets: args.start.sets,
+        sketch: args.start.sketch,
     })
 }
 

@@ -34,6 +34,8 @@ pub struct ViewerOptions {
     pub preset: Option<&'static Preset>,
     /// Starting parameter values by name (already checked against the table).
     pub sets: Vec<(String, f32)>,
+    /// What was drawn in the tank (a share link's `sketch`), if given.
+    pub sketch: Option<String>,
 }
 
 /// Opens the window and runs until it is closed (or the frame count is reached).
@@ -112,6 +114,9 @@ impl Viewer {
         }
         for (name, value) in &options.sets {
             let _ = demo.params.set_by_name(name, *value);
+        }
+        if let Some(Err(why)) = options.sketch.as_deref().map(|text| demo.set_sketch(text)) {
+            eprintln!("wavepool: --sketch ignored: {why}");
         }
         Self {
             demo,
@@ -242,6 +247,9 @@ impl Viewer {
                 self.demo.sim_time()
             ));
             ui.label(format!("adapter: {}", self.render_state.adapter.get_info().name));
+            for (name, value, unit) in self.demo.readings() {
+                ui.label(format!("{name}: {value:.2} {unit}"));
+            }
             ui.small("Drag the water for ripples, the sphere to move it, elsewhere to turn; wheel zooms. Keys: space pause, G gravity, L light from the camera.");
         });
     }

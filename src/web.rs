@@ -463,6 +463,21 @@ impl WebDemo {
         self.demo.add_drop(x as f32, z as f32, radius as f32, strength as f32);
     }
 
+    /// What was drawn in the shown scene with the pointer (the tank's walls and ruler), as
+    /// text for a share link ("" if nothing).
+    pub fn sketch(&self) -> String {
+        self.demo.sketch()
+    }
+
+    /// Puts back what `text` (from `sketch()`) says was drawn; a text that cannot be read
+    /// changes nothing and warns in the console.
+    #[wasm_bindgen(js_name = setSketch)]
+    pub fn set_sketch(&mut self, text: &str) {
+        if let Err(why) = self.demo.set_sketch(text) {
+            warn(&format!("wavepool: sketch \"{text}\" ignored: {why}"));
+        }
+    }
+
     /// Flattens the water and puts the sphere back.
     pub fn reset(&mut self) {
         self.demo.reset(&self.queue);

@@ -494,3 +494,102 @@ fn a_wall_drawn_with_the_pointer_keeps_the_waves_from_the_water_behind_it() {
     assert!(behind[0] > 1e-5, "the rings should reach the water past the stroke's line");
     assert!(behind[1] < 0.05 * behind[0], "the drawn wall let the waves through");
 }
+
+#[test]
+fn the_probe_reads_the_dippers_frequency_within_one_percent_and_draws_its_graph() {
+    let (width, height) = (160u32, 120u32);
+    for frequency in [10.0f32, 6.5] {
+        let mut d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 2.0);
+        d.params.set(ParamId::TankFrequency, frequency);
+        d.params.set(ParamId::TankProbe, 1.0);
+        // 120 mm from the dipper: its waves arrive within half a second.
+        d.params.set(ParamId::TankProbeZ, 120.0);
+        d.sync_scene();
+        render(&mut d, width, height, 300, 1.0 / 60.0);
+        let frame = render(&mut d, width, height, 2, 1.0 / 60.0);
+        let reading = d.tank().probe_reading();
+        let read = reading.frequency.expect("the probe should read a frequency after five seconds");
+        println!("dipper {frequency} Hz: the probe reads {read:.3} Hz, swing {:.3} mm", reading.swing * 1e3);
+        assert!((read / frequency - 1.0).abs() < 0.01, "{read} Hz against {frequency} Hz");
+        assert!(reading.swing > 1e-5, "the probe should see the waves swing");
+        let readings = d.readings();
+        assert!(readings.iter().any(|&(name, v, _)| name == "probe frequency" && v == read));
+        // The graph in the picture's lower right corner: the trace's yellow ink.
+        let panel = Rect { x: width * 62 / 100, y: height * 76 / 100, w: width * 34 / 100, h: height * 20 / 100 };
+        let pixels = frame.region(panel);
+        let ink =
+            pixels.iter().filter(|&&[r, g, b]| r > 180 && g > 140 && b < 120).count() as f32 / pixels.len() as f32;
+        println!("  the graph's ink covers {:.1} % of its panel", ink * 100.0);
+        assert!(ink > 0.05, "the probe's graph should be drawn");
+    }
+}
+
+#[test]
+fn a_sketch_in_a_share_link_redraws_the_walls_and_the_ruler() {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 2.0);
+    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Walls.value());
+    d.sync_scene();
+    let (width, height) = (320u32, 240u32);
+    d.set_viewport(width, height);
+    let size = glam::Vec2::new(width as f32, height as f32);
+    let at =
+        |d: &wavepool::demo::WaterDemo, x: f32, z: f32| d.camera().project(glam::Vec3::new(x, 0.0, z), size).unwrap();
+    let (a, b) = (at(&d, -0.1, 0.05), at(&d, 0.1, 0.08));
+    d.pointer_down(a.x, a.y);
+    d.pointer_move(b.x, b.y);
+    d.pointer_up();
+    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Ruler.value());
+    d.sync_scene();
+    let (a, b) = (at(&d, -0.2, -0.1), at(&d, 0.1, -0.1));
+    d.pointer_down(a.x, a.y);
+    d.pointer_move(b.x, b.y);
+    d.pointer_up();
+    let text = d.sketch();
+    let ruler = d.readings().iter().find(|r| r.0 == "ruler").map(|r| r.1).expect("a ruler reading");
+    println!("sketch {text:?}, ruler {ruler:.1} mm");
+    assert!(text.starts_with('W') && text.contains("_R"), "{text}");
+    assert!((ruler - 300.0).abs() < 3.0, "the ruler laid over 300 mm reads {ruler} mm");
+    let mut copy = demo(DemoOptions::default());
+    copy.params.set(ParamId::Scene, 2.0);
+    copy.set_sketch(&text).expect("the sketch reads");
+    assert_eq!(copy.sketch(), text);
+    let walls = |d: &wavepool::demo::WaterDemo| {
+        let m = d.tank().medium();
+        (0..m.cells * m.cells).filter(|&k| m.kind(k % m.cells, k / m.cells) == CellKind::Wall).count()
+    };
+    println!("wall cells: drawn {}, from the sketch {}", walls(&d), walls(&copy));
+    assert!(walls(&d) > 50 && walls(&d) == walls(&copy));
+    assert!(copy.set_sketch("W1,2").is_err() && copy.sketch() == text, "a bad sketch changes nothing");
+}
+
+#[test]
+fn a_single_pulse_makes_one_crest_that_passes_and_leaves_the_water_still() {
+    let settings = TankSettings { size: 0.3, pulse: true, ..Default::default() };
+    let mut tank = CpuTank::new(Medium::of(&settings, 128));
+    let (i, j) = tank.medium.cell_at(0.0, 0.08).expect("in the tray");
+    let mut heights = Vec::new();
+    let mut drops = Vec::new();
+    let steps = (2.0 / STEP_DT).round() as u32;
+    for batch in 0..steps / 2 {
+        let t0 = (2 * batch) as f64 * STEP_DT as f64;
+        let mut updates = plan(&tank.medium, &settings, t0, 2, STEP_DT, &mut drops);
+        wavepool::tank::plan::shape_pulse(&mut updates, t0, 0.1);
+        tank.run(&updates);
+        heights.push(tank.height(i, j));
+    }
+    let peak = heights.iter().fold(0.0f32, |m, &h| m.max(h));
+    // Crests: runs of heights over half the peak.
+    let crests = heights.windows(2).filter(|w| w[0] < 0.5 * peak && w[1] >= 0.5 * peak).count();
+    let last = heights[heights.len() - 20..].iter().fold(0.0f32, |m, &h| m.max(h.abs()));
+    println!(
+        "80 mm from the dipper: peak {:.3} mm, {crests} crest(s), the last 1/6 s of 2 s within {:.4} mm",
+        peak * 1e3,
+        last * 1e3
+    );
+    assert!(peak > 0.05 * settings.amplitude, "the pulse should reach the point");
+    assert_eq!(crests, 1, "one pulse, one crest");
+    // (In two dimensions a pulse leaves a fading tail behind it: no sharp end as in 1-D or 3-D.)
+    assert!(last < 0.3 * peak, "the water should settle after the pulse has passed");
+}

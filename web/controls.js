@@ -66,6 +66,12 @@ export const controlMethods = {
       this._costs.className = "costs";
       groups.get("Flat water").querySelector("[name=render_mode]").closest(".row").after(this._costs);
     }
+    if (groups.has("Tank")) {
+      // What the tank's instruments read (the probe, the ruler), twice a second.
+      this._readings = document.createElement("p");
+      this._readings.className = "costs readings";
+      groups.get("Tank").append(this._readings);
+    }
     if (groups.has("Optics")) {
       // The Fresnel models' curves beside their select.
       this._plot = new FresnelPlot(fresnelCurve);
@@ -235,6 +241,18 @@ export const controlMethods = {
       })
       .join(" · ");
     this._costs.textContent = `${s.flatNote ? s.flatNote + " " : ""}${gpu}. Between frames: ${between}.`;
+  },
+
+  // Twice a second, what the shown scene's instruments read: "probe frequency 10.00 Hz · …".
+  _readingsNote(time) {
+    if (!this._readings || time - this._readingsAt < 500) return;
+    this._readingsAt = time;
+    const readings = Object.entries(this._core.stats().readings || {});
+    this._readings.hidden = readings.length === 0;
+    const digits = (unit) => (unit === "Hz" ? 2 : unit === "mm" ? 1 : 3);
+    this._readings.textContent = readings
+      .map(([name, r]) => `${name[0].toUpperCase()}${name.slice(1)}: ${r.value.toFixed(digits(r.unit))} ${r.unit}`)
+      .join(" · ");
   },
 
   // The plot's model and the angle at which the view's centre meets the water (the camera's

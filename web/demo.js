@@ -82,6 +82,8 @@ export class Demo {
     this._plotAt = -Infinity; // when its view mark last moved (ms)
     this._costs = null; // the render modes' costs, under the render_mode control
     this._costsAt = -Infinity; // when they were last written (ms)
+    this._readings = null; // the scene's instruments' readings, under its controls
+    this._readingsAt = -Infinity;
     this._modeIntervals = [[], [], []]; // recent intervals between drawn frames per render mode (ms)
     // Sizing (layout.js).
     this._fills = false; // the element has a height of its own, which the pool fills
@@ -281,6 +283,7 @@ export class Demo {
     for (const [name, value] of this._startState.params) core.set(name, value);
     core.setCamera(...this._startState.camera);
     core.reset();
+    if (this._startState.sketch) core.setSketch(this._startState.sketch);
     this._refreshControls();
   }
 
@@ -306,6 +309,8 @@ export class Demo {
       query.set(p.name, i >= 0 && p.choiceNames[i] ? p.choiceNames[i] : String(v));
     }
     query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
+    const sketch = this._suspended ? this._saved.sketch : this._alive().sketch();
+    if (sketch) query.set("sketch", sketch);
     return query.toString().replace(/%2C/g, ",");
   }
 

@@ -37,6 +37,8 @@ export interface DemoOptions extends CreationOptions {
   camera?: string | [number, number, number];
   /** A named starting state: its parameter values and view, then the page's own options. */
   preset?: PresetName;
+  /** What was drawn with the pointer in the ripple tank (walls, erasures, the ruler), as `shareLink()` writes it: e.g. "W-120,40,-120,200_R-200,0,200,0" (whole mm from the tray's middle). */
+  sketch?: string;
   /** Start when the element comes within 200 px of the viewport (true), or at once (false). Default true. */
   lazy?: boolean | 0 | 1 | "true" | "false";
   /** Parameter values, as an object of their own (the same as giving them beside the options). */
@@ -98,6 +100,8 @@ export interface Stats {
   duckPosition: Position;
   /** Every kind of floating body's position, by the kind's name. */
   bodies: Record<string, Position>;
+  /** What the shown scene's instruments read, by name: the tank's "probe frequency" (Hz, once it has seen two periods), "probe swing" (mm) and "ruler" (mm). */
+  readings: Record<string, { value: number; unit: string }>;
   /** Volume of the bodies under the water (m³). */
   submergedVolume: number;
   /** GPU time per render mode (ms), where the browser measures it; null otherwise. */
@@ -224,6 +228,7 @@ export interface WavePoolAttributes extends ParamAttributes, CreationAttributes 
   "max-fps"?: string | number;
   camera?: string;
   preset?: PresetName;
+  sketch?: string;
   lazy?: "true" | "false" | "0" | "1";
 }
 

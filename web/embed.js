@@ -97,9 +97,10 @@ export async function mount(element, options = {}) {
     }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.camera) handle._core.setCamera(...opts.camera);
+    if (opts.sketch) handle._core.setSketch(opts.sketch);
     handle._noticeReduced();
     // What "Reset" returns to: this page's own start, not the table's defaults.
-    handle._startState = { params: table.map((p) => [p.name, handle.get(p.name)]), camera: handle._core.camera() };
+    handle._startState = handle._saveState();
     handle._buildOverlay();
     if (opts.controls) handle._buildControls();
     handle._status(null);

@@ -104,6 +104,7 @@ export const frameLoopMethods = {
     else {
       const interval = time - this._frames[this._frames.length - 1];
       this._costsNote(time, interval);
+      this._readingsNote(time);
       this._rescue(interval);
     }
     this._frames.push(time);
@@ -185,7 +186,8 @@ export const frameLoopMethods = {
 
   /** The parameters and camera, to carry across a new context. */
   _saveState() {
-    return { params: this._table.map((p) => [p.name, this._core.get(p.name)]), camera: this._core.camera() };
+    const core = this._core;
+    return { params: this._table.map((p) => [p.name, core.get(p.name)]), camera: core.camera(), sketch: core.sketch() };
   },
 
   /** A new context with `saved` parameters and camera (the water starts calm), running. */
@@ -193,6 +195,7 @@ export const frameLoopMethods = {
     await this._start();
     for (const [name, v] of saved.params) this._core.set(name, v);
     this._core.setCamera(...saved.camera);
+    if (saved.sketch) this._core.setSketch(saved.sketch);
     this._refreshControls();
     this._status(null);
     this._run();

@@ -15,6 +15,7 @@ export const DEFAULT_OPTIONS = Object.freeze({
   maxFps: 0, // cap on drawn frames per second (1-240; 0: as many as the browser and GPU give)
   camera: null, // "yaw,pitch,distance" (degrees, degrees, m) to start from; null: the default view
   preset: null, // a named starting state from presets(): its values, then the page's own options
+  sketch: null, // what was drawn with the pointer (the tank's walls and ruler), as shareLink() writes it
   lazy: true, // start when scrolled near the viewport (false: at once); see context-budget.js
 });
 
@@ -84,6 +85,8 @@ export function readOptions(options, table) {
       const v = (Array.isArray(value) ? value : String(value).split(",")).map(Number);
       if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
       else warn(`camera "${value}" is not "yaw,pitch,distance" (three numbers); using the default view`);
+    } else if (key === "sketch") {
+      out.sketch = String(value); // read by the core, which warns if it cannot
     } else if (key === "aspect") {
       out.aspect = clampNumber(key, value, ...ASPECT_RANGE, DEFAULT_OPTIONS.aspect);
     } else {

@@ -12,6 +12,10 @@ struct Picture {
                         // w the screen image's texels per side
     lines: vec4<f32>,   // x how many slit lines, y the z (m) they start from
     line_angles: array<vec4<f32>, LINE_VECS>, // their directions (rad from +z towards +x), 4 a vector
+    probe: vec4<f32>,   // x, z (m), z 1 if the probe is in, w its graph's half height (m)
+    trace: vec4<f32>,   // x the ring's newest texel, y samples held, z texels, w s between samples
+    graph: vec4<f32>,   // x the intensity line's z (m), y 1 if drawn, z its peak (m^2), w 1 if a ruler
+    ruler: vec4<f32>,   // its start x, z and end x, z (m)
 };
 
 @group(0) @binding(0) var<uniform> pic: Picture;

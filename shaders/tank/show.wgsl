@@ -78,6 +78,9 @@ fn on_slit_line(xz: vec2<f32>) -> bool {
 @fragment
 fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
     let hit = on_plane(in.uv);
+    // A pixel's size in the picture (uv) and on the tray (m), for the instruments' lines.
+    let pixel = abs(vec2<f32>(dpdx(in.uv.x), dpdy(in.uv.y)));
+    let foot = max(length(fwidth(hit.xy)), 1e-5);
     var colour = BENCH;
     if hit.z > 0.0 && pic.view.x < 0.5 {
         colour = screen_colour(hit.xy);
@@ -87,6 +90,8 @@ fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
     if hit.z > 0.0 && pic.lines.x > 0.0 && on_slit_line(hit.xy) {
         colour = vec3<f32>(0.9, 0.75, 0.1);
     }
+    let on_tray = hit.z > 0.0 && all(abs(hit.xy) <= vec2<f32>(pic.tray.x));
+    colour = with_instruments(colour, hit.xy, on_tray, in.uv, pixel, foot);
     if ENCODE_SRGB {
         colour = linear_to_srgb(colour);
     }

@@ -2,14 +2,15 @@
 // the flux across each face the mean of its two cells' c^2 (none into a wall or out of the
 // tray: such faces are 0), so waves slow and bend over a plate and stop at a barrier.
 // Semi-implicit Euler: v += dt / dx^2 * sum(face c^2 * (h_n - h)), h += dt v; both decay on
-// the beaches. Dippers and the bar set their cells to A sin(phase). The CPU reference is
+// the beaches. Dippers and the bar set their cells to A sin(phase) (a pulse: A (1 - cos) / 2). The CPU reference is
 // tank/cpu.rs.
 
 struct Update {
     grid: vec4<f32>,    // x cells per side, y dx (m), z dt (s), w half width (m)
     wave: vec4<f32>,    // x phase at the update's end (rad), y amplitude (m), z omega (rad/s), w dippers
     bar: vec4<f32>,     // x z (m), y half thickness (m), z 1 if a bar, w drops
-    bounds: vec4<f32>,  // x largest |h| (m), y largest |v| (m/s), z the bar's half length (m)
+    bounds: vec4<f32>,  // x largest |h| (m), y largest |v| (m/s), z the bar's half length (m),
+                        // w 1 if the sources make one pulse (a raised cosine), 0 a steady sine
     dippers: array<vec4<f32>, MAX_DIPPERS>, // centre x, z (m), radius (m), phase (rad)
     drops: array<vec4<f32>, MAX_TANK_DROPS>, // centre x, z (m), radius (m), height (m)
 };
@@ -63,7 +64,10 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     var v = (c.y + u.grid.z / (u.grid.y * u.grid.y) * flux) * absorb;
     var h = (c.x + u.grid.z * v) * absorb;
     let phase = source_phase(centre(p));
-    if phase >= 0.0 {
+    if phase >= 0.0 && u.bounds.w > 0.5 {
+        h = 0.5 * u.wave.y * (1.0 - cos(phase));
+        v = 0.5 * u.wave.y * u.wave.z * sin(phase);
+    } else if phase >= 0.0 {
         h = u.wave.y * sin(phase);
         v = u.wave.y * u.wave.z * cos(phase);
     }

@@ -68,6 +68,25 @@ impl WaterDemo {
         let scene = self.scenes.get_mut(self.shown);
         let ((w, _), (kr, ks)) = (scene.drop_area(), scene.drop_scale());
         scene.add_drop(Drop { x: x.clamp(-w, w), z: z.clamp(-w, w), radius: r * kr, strength: s * ks });
+        for (id, value) in scene.take_param_edits() {
+            self.params.set(id, value);
+        }
+    }
+
+    /// What was drawn in the shown scene with the pointer, as text for a share link.
+    pub fn sketch(&self) -> String {
+        self.scenes.get(self.shown).sketch()
+    }
+
+    /// Puts back what `text` says was drawn in the shown scene, or says why it cannot.
+    pub fn set_sketch(&mut self, text: &str) -> Result<(), String> {
+        self.sync_scene();
+        self.scenes.get_mut(self.shown).set_sketch(text)
+    }
+
+    /// What the shown scene's instruments read now: (name, value, unit).
+    pub fn readings(&self) -> Vec<(&'static str, f32, &'static str)> {
+        self.scenes.get(self.shown).readings()
     }
 
     /// A drop with the current radius and strength parameters.
@@ -102,6 +121,7 @@ impl WaterDemo {
         }
         self.drag = match scene.pick_water(self.viewport, p) {
             Pick::Water { x, z } => {
+                self.scenes.get_mut(self.shown).begin_stroke();
                 self.click_drop(x, z);
                 Drag::Water { last: p }
             }

@@ -143,6 +143,34 @@ pub trait Scene {
     /// Puts `drop` (inside [`Scene::drop_area`]) in the scene's water.
     fn add_drop(&mut self, drop: Drop);
 
+    /// A press of the pointer begins a new stroke: the next [`Scene::add_drop`] does not
+    /// continue the last press's.
+    fn begin_stroke(&mut self) {}
+
+    /// The parameters the pointer set in the scene since the last call (a placed probe), for
+    /// the demo to write into its table.
+    fn take_param_edits(&mut self) -> Vec<(crate::params::ParamId, f32)> {
+        Vec::new()
+    }
+
+    /// What was drawn in the scene with the pointer, as text for a share link ("" if nothing).
+    fn sketch(&self) -> String {
+        String::new()
+    }
+
+    /// Puts back what `text` (from [`Scene::sketch`]) says was drawn, or says why it cannot.
+    fn set_sketch(&mut self, text: &str) -> Result<(), String> {
+        match text.trim() {
+            "" => Ok(()),
+            _ => Err("nothing is drawn in this scene".into()),
+        }
+    }
+
+    /// What the scene's instruments read now: (name, value, unit).
+    fn readings(&self) -> Vec<(&'static str, f32, &'static str)> {
+        Vec::new()
+    }
+
     /// The nearest body under pixel `pixel`: its id, the point hit and the origin of its frame.
     fn pick_body(&self, sh: Shared<'_>, pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)>;
 

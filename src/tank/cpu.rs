@@ -108,8 +108,11 @@ impl CpuTank {
                 let mut hn = (h + dt * v) * absorb;
                 let (x, z) = self.medium.centre(i as u32, j as u32);
                 if let Some(phase) = source_phase(u, x, z) {
-                    hn = u.wave[1] * phase.sin();
-                    v = u.wave[1] * u.wave[2] * phase.cos();
+                    (hn, v) = if u.bounds[3] > 0.5 {
+                        (0.5 * u.wave[1] * (1.0 - phase.cos()), 0.5 * u.wave[1] * u.wave[2] * phase.sin())
+                    } else {
+                        (u.wave[1] * phase.sin(), u.wave[1] * u.wave[2] * phase.cos())
+                    };
                 }
                 let hn = bounded(hn, u.bounds[0]);
                 next[k] = [hn, bounded(v, u.bounds[1]), intensity + (hn * hn - intensity) * (dt / INTENSITY_TIME)];

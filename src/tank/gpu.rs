@@ -6,7 +6,7 @@
 use super::cpu::CpuTank;
 use super::medium::Medium;
 use super::plan::{Update, UPDATE_SLOT};
-use super::{INTENSITY_TIME, MAX_DIPPERS, MAX_TANK_DROPS};
+use super::{INTENSITY_TIME, MAX_DIPPERS, MAX_TANK_DROPS, PROBE_SAMPLES};
 use crate::gpu::{self, FullscreenPass, FullscreenTarget, PingPong};
 
 /// Format of the state and medium textures: the pool's water's (read with `textureLoad` only).
@@ -43,6 +43,62 @@ pub struct TankWater {
     cells: u32,
     /// The state the strobe last lit, once it has flashed.
     flash: Option<(wgpu::Texture, wgpu::TextureView)>,
+    probe: Probe,
+}
+
+/// The probe's record: its cell's state after each fixed step in a ring of
+/// [`PROBE_SAMPLES`] texels, and the reads of that ring (and of one row of the state) back
+/// to the CPU.
+struct Probe {
+    /// The cell (i, j) sampled, and every how many updates (one fixed step's).
+    cell: Option<(u32, u32)>,
+    every: usize,
+    ring: wgpu::Texture,
+    ring_view: wgpu::TextureView,
+    /// The ring's copy on the CPU, where the CPU reference runs the water.
+    cpu_ring: Vec<[f32; 4]>,
+    /// The next texel written, and how many samples were taken since the water was stilled.
+    next: u32,
+    taken: u64,
+    /// Updates since the last sample.
+    since: usize,
+    readback: Option<gpu::AsyncReadback>,
+    /// What the read in flight holds: the ring's newest texel and the samples then, the row.
+    in_flight: (u32, u64, Option<u32>),
+}
+
+/// A read of the probe's ring and of a row of the state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ProbeRead {
+    /// The probe's heights (m), one a fixed step, oldest first (at most [`PROBE_SAMPLES`]).
+    pub heights: Vec<f32>,
+    /// The row asked for, if any: its cells' intensity (m²), west to east.
+    pub row: Option<(u32, Vec<f32>)>,
+}
+
+const TEXEL_BYTES: u64 = 16;
+
+impl Probe {
+    /// Notes that the update just recorded or run ended; true when the probe samples now.
+    fn due(&mut self) -> bool {
+        let p = self;
+        if p.cell.is_none() {
+            return false;
+        }
+        p.since += 1;
+        if p.since < p.every {
+            return false;
+        }
+        p.since = 0;
+        true
+    }
+
+    /// Moves the ring on after a sample went into texel `next`.
+    fn advance(&mut self) {
+        let p = self;
+        p.next = (p.next + 1) % PROBE_SAMPLES;
+        p.taken += 1;
+    }
 }
 
 impl TankWater {
@@ -88,7 +144,22 @@ impl TankWater {
         } else {
             Engine::Cpu(Box::new(CpuTank::new(medium.clone())))
         };
-        let mut water = Self { state, medium: medium_texture, medium_view, engine, cells, flash: None };
+        let usage =
+            wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST | wgpu::TextureUsages::COPY_SRC;
+        let ring = gpu::texture_2d(device, "tank probe ring", (PROBE_SAMPLES, 1, 1), 1, TANK_STATE_FORMAT, usage);
+        let probe = Probe {
+            cell: None,
+            every: 1,
+            ring_view: ring.create_view(&Default::default()),
+            ring,
+            cpu_ring: vec![[0.0; 4]; PROBE_SAMPLES as usize],
+            next: 0,
+            taken: 0,
+            since: 0,
+            readback: None,
+            in_flight: (0, 0, None),
+        };
+        let mut water = Self { state, medium: medium_texture, medium_view, engine, cells, flash: None, probe };
         water.clear(queue);
         water
     }
@@ -146,6 +217,75 @@ impl TankWater {
         }
         // Until the strobe flashes again it shows still water, not the old.
         self.flash = None;
+        let p = &mut self.probe;
+        p.cpu_ring.iter_mut().for_each(|t| *t = [0.0; 4]);
+        gpu::write_texture_2d(queue, &p.ring, 0, bytemuck::cast_slice(&p.cpu_ring));
+        (p.next, p.taken, p.since) = (0, 0, 0);
+    }
+
+    /// Samples cell `cell` (i, j) after every `every` updates from now on (none: no probe).
+    pub fn probe_at(&mut self, cell: Option<(u32, u32)>, every: usize) {
+        let p = &mut self.probe;
+        if p.cell != cell {
+            // Another place: its history starts afresh.
+            (p.next, p.taken, p.since) = (0, 0, 0);
+        }
+        (p.cell, p.every) = (cell, every.max(1));
+    }
+
+    /// The probe's ring: a texel per sample (its cell's h, v, intensity), the newest at
+    /// [`TankWater::probe_newest`].
+    pub fn probe_view(&self) -> &wgpu::TextureView {
+        &self.probe.ring_view
+    }
+
+    /// The ring's newest texel and how many samples it holds (at most [`PROBE_SAMPLES`]).
+    pub fn probe_newest(&self) -> (u32, u32) {
+        let p = &self.probe;
+        ((p.next + PROBE_SAMPLES - 1) % PROBE_SAMPLES, p.taken.min(PROBE_SAMPLES as u64) as u32)
+    }
+
+    /// Records a copy of the probe's ring and of state row `row` (if any) for reading back,
+    /// unless a read is in flight; call [`TankWater::after_submit`] once submitted.
+    pub fn record_read(&mut self, device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder, row: Option<u32>) {
+        let ring_bytes = PROBE_SAMPLES as u64 * TEXEL_BYTES;
+        let size = ring_bytes + self.cells as u64 * TEXEL_BYTES;
+        let readback =
+            self.probe.readback.get_or_insert_with(|| gpu::AsyncReadback::new(device, "tank probe read", size));
+        let Some(buffer) = readback.record() else { return };
+        let copy = |encoder: &mut wgpu::CommandEncoder, from: wgpu::TexelCopyTextureInfo, offset: u64, width: u32| {
+            let layout = wgpu::TexelCopyBufferLayout { offset, bytes_per_row: Some(width * 16), rows_per_image: None };
+            let extent = wgpu::Extent3d { width, height: 1, depth_or_array_layers: 1 };
+            encoder.copy_texture_to_buffer(from, wgpu::TexelCopyBufferInfo { buffer, layout }, extent);
+        };
+        copy(encoder, self.probe.ring.as_image_copy(), 0, PROBE_SAMPLES);
+        if let Some(j) = row.filter(|&j| j < self.cells) {
+            let mut from = self.state.current_texture().as_image_copy();
+            from.origin.y = j;
+            copy(encoder, from, ring_bytes, self.cells);
+        }
+        let (newest, _) = self.probe_newest();
+        self.probe.in_flight = (newest, self.probe.taken, row);
+    }
+
+    /// Starts the read recorded into the frame just submitted.
+    pub fn after_submit(&self) {
+        if let Some(readback) = &self.probe.readback {
+            readback.after_submit();
+        }
+    }
+
+    /// The latest completed read, if one completed since the last call.
+    pub fn take_read(&self) -> Option<ProbeRead> {
+        let bytes = self.probe.readback.as_ref()?.take()?;
+        let texels: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+        let (newest, taken, row) = self.probe.in_flight;
+        let held = taken.min(PROBE_SAMPLES as u64) as u32;
+        let heights =
+            (0..held).map(|k| texels[((newest + PROBE_SAMPLES + 1 - held + k) % PROBE_SAMPLES) as usize][0]).collect();
+        let ring = PROBE_SAMPLES as usize;
+        let row = row.map(|j| (j, texels[ring..ring + self.cells as usize].iter().map(|t| t[2]).collect()));
+        Some(ProbeRead { heights, row })
     }
 
     /// Records `updates` (or runs them on the CPU and uploads the result), keeping the state
@@ -192,22 +332,49 @@ impl TankWater {
                             size,
                         );
                     }
+                    if self.probe.due() {
+                        let (mut from, mut to) =
+                            (self.state.current_texture().as_image_copy(), self.probe.ring.as_image_copy());
+                        let (i, j) = self.probe.cell.unwrap_or_default();
+                        from.origin = wgpu::Origin3d { x: i, y: j, z: 0 };
+                        to.origin.x = self.probe.next;
+                        let texel = wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 };
+                        encoder.copy_texture_to_texture(from, to, texel);
+                        self.probe.advance();
+                    }
                 }
             }
             Engine::Cpu(_) if updates.is_empty() => {}
-            Engine::Cpu(tank) => {
-                let texels =
-                    |tank: &CpuTank| -> Vec<[f32; 4]> { tank.state.iter().map(|&[h, v, i]| [h, v, i, 0.0]).collect() };
-                let split = flash.map_or(0, |k| k + 1);
-                tank.run(&updates[..split]);
-                if let Some((texture, _)) = &self.flash {
-                    if flash.is_some() {
-                        gpu::write_texture_2d(queue, texture, 0, bytemuck::cast_slice(&texels(tank)));
-                    }
-                }
-                tank.run(&updates[split..]);
-                gpu::write_texture_2d(queue, self.state.current_texture(), 0, bytemuck::cast_slice(&texels(tank)));
+            Engine::Cpu(_) => self.run_on_cpu(queue, updates, flash),
+        }
+    }
+}
+
+impl TankWater {
+    /// [`TankWater::encode`] where the CPU reference runs the water: each update, the strobe's
+    /// and the probe's samples, then the state uploaded.
+    fn run_on_cpu(&mut self, queue: &wgpu::Queue, updates: &[Update], flash: Option<usize>) {
+        let texels = |tank: &CpuTank| -> Vec<[f32; 4]> { tank.state.iter().map(|&[h, v, i]| [h, v, i, 0.0]).collect() };
+        let mut sampled = false;
+        for (k, u) in updates.iter().enumerate() {
+            let Engine::Cpu(tank) = &mut self.engine else { return };
+            tank.update(u);
+            if let (Some((texture, _)), true) = (&self.flash, flash == Some(k)) {
+                gpu::write_texture_2d(queue, texture, 0, bytemuck::cast_slice(&texels(tank)));
             }
+            let probed = self.probe.cell.map(|(i, j)| tank.state[(j * self.cells + i) as usize]);
+            if self.probe.due() {
+                let [h, v, i] = probed.unwrap_or_default();
+                self.probe.cpu_ring[self.probe.next as usize] = [h, v, i, 0.0];
+                self.probe.advance();
+                sampled = true;
+            }
+        }
+        if sampled {
+            gpu::write_texture_2d(queue, &self.probe.ring, 0, bytemuck::cast_slice(&self.probe.cpu_ring));
+        }
+        if let Engine::Cpu(tank) = &self.engine {
+            gpu::write_texture_2d(queue, self.state.current_texture(), 0, bytemuck::cast_slice(&texels(tank)));
         }
     }
 }

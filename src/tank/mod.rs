@@ -13,6 +13,7 @@ pub mod cpu;
 pub mod gpu;
 pub mod medium;
 pub mod plan;
+pub mod probe;
 
 use crate::camera::CameraLimits;
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -38,13 +39,15 @@ crate::choices! {
 
 crate::choices! {
     /// What a click or a drag in the tank does (the `tank_tool` parameter): drop pulses into
-    /// the water, draw walls, or erase (make open water again).
+    /// the water, draw walls, erase (make open water again), place the probe, or lay a ruler.
     #[derive(Default)]
     pub enum Tool {
         #[default]
         Drops = "drops",
         Walls = "walls",
         Erase = "erase",
+        Probe = "probe",
+        Ruler = "ruler",
     }
 }
 
@@ -94,6 +97,10 @@ pub const TANK_DAMPING: f32 = 0.3;
 pub const INTENSITY_TIME: f32 = 1.0;
 /// Depth left over a glass plate, as a share of the tray's water depth.
 pub const PLATE_DEPTH_SHARE: f32 = 0.35;
+/// The probe's samples kept: one a fixed step, about four seconds.
+pub const PROBE_SAMPLES: u32 = 512;
+/// The least swing (m) the probe reads a frequency from: still water's rounding is far less.
+pub const PROBE_LEAST_SWING: f32 = 1.0e-6;
 
 /// The tank's settings, from its parameters (lengths in m).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -120,6 +127,12 @@ pub struct TankSettings {
     pub lines: bool,
     /// Beaches along the walls that swallow the waves, or reflecting walls.
     pub beaches: bool,
+    /// Whether the sources make one pulse (when switched on or reset) instead of a steady wave.
+    pub pulse: bool,
+    /// The probe, if shown: where it stands (x, z in m).
+    pub probe: Option<(f32, f32)>,
+    /// The intensity graph's line, if shown: its z (m).
+    pub graph: Option<f32>,
 }
 
 impl Default for TankSettings {
@@ -139,6 +152,9 @@ impl Default for TankSettings {
             tool: Tool::from(TANK_TOOL.default),
             lines: TANK_LINES.default >= 0.5,
             beaches: TANK_BEACHES.default >= 0.5,
+            pulse: TANK_PULSE.default >= 0.5,
+            probe: (TANK_PROBE.default >= 0.5).then_some((TANK_PROBE_X.default * 1e-3, TANK_PROBE_Z.default * 1e-3)),
+            graph: (TANK_GRAPH.default >= 0.5).then_some(TANK_GRAPH_Z.default * 1e-3),
         }
     }
 }
@@ -183,6 +199,12 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_STROBE,
     TANK_LINES,
     TANK_BEACHES,
+    TANK_PULSE,
+    TANK_PROBE,
+    TANK_PROBE_X,
+    TANK_PROBE_Z,
+    TANK_GRAPH,
+    TANK_GRAPH_Z,
 ];
 
 pub const TANK_SETUP: ParamSpec = ParamSpec {
@@ -212,7 +234,7 @@ pub const TANK_TOOL: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Tool::VALUES, names: Tool::NAMES },
     default: 0.0,
-    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), or erase back to open water.",
+    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, or lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength).",
 };
 
 /// The pen that draws and erases walls: its radius (m), at least this many cells.
@@ -333,4 +355,64 @@ pub const TANK_BEACHES: ParamSpec = ParamSpec {
     control: Control::Toggle,
     default: 1.0,
     help: "Sloping beaches along the walls that swallow the waves (as the foam or mesh strips of a real tank do), or bare walls that reflect them.",
+};
+
+pub const TANK_PULSE: ParamSpec = ParamSpec {
+    name: "tank_pulse",
+    label: "Single pulse",
+    group: "Tank",
+    unit: "",
+    control: Control::Toggle,
+    default: 0.0,
+    help: "The dippers (or the bar) make one crest and stop, each time this is switched on or the tank is reset, instead of a steady train of waves: watch a single wave spread, reflect and pass through the slits.",
+};
+
+pub const TANK_PROBE: ParamSpec = ParamSpec {
+    name: "tank_probe",
+    label: "Probe",
+    group: "Tank",
+    unit: "",
+    control: Control::Toggle,
+    default: 0.0,
+    help: "A probe in the water (the ring) and the graph of its height over the last four seconds in the picture's corner; under the tank, the frequency and the swing it reads. Place it with the Pointer's probe tool or the two sliders below.",
+};
+
+pub const TANK_PROBE_X: ParamSpec = ParamSpec {
+    name: "tank_probe_x",
+    label: "Probe across",
+    group: "Tank",
+    unit: "mm",
+    control: slider(-600.0, 600.0, 1.0),
+    default: 0.0,
+    help: "The probe's place across the tray, from its middle (kept inside the tray).",
+};
+
+pub const TANK_PROBE_Z: ParamSpec = ParamSpec {
+    name: "tank_probe_z",
+    label: "Probe along",
+    group: "Tank",
+    unit: "mm",
+    control: slider(-600.0, 600.0, 1.0),
+    default: 150.0,
+    help: "The probe's place along the tray, from its middle towards the far side (kept inside the tray).",
+};
+
+pub const TANK_GRAPH: ParamSpec = ParamSpec {
+    name: "tank_graph",
+    label: "Intensity graph",
+    group: "Tank",
+    unit: "",
+    control: Control::Toggle,
+    default: 0.0,
+    help: "A line across the tray and over it the graph of the intensity along it (the height squared, averaged over about the last second): where the waves add up and where they cancel, as a screen far from the slits would show.",
+};
+
+pub const TANK_GRAPH_Z: ParamSpec = ParamSpec {
+    name: "tank_graph_z",
+    label: "Graph line",
+    group: "Tank",
+    unit: "mm",
+    control: slider(-600.0, 600.0, 1.0),
+    default: 200.0,
+    help: "Where the intensity graph's line crosses the tray, from its middle towards the far side (kept inside the tray).",
 };

@@ -18,7 +18,8 @@ pub struct Update {
     pub wave: [f32; 4],
     /// The bar's z (m) and half thickness (m), 1 if there is a bar, number of drops.
     pub bar: [f32; 4],
-    /// Largest |h| (m) and |v| (m/s) the update leaves, the bar's half length (m).
+    /// Largest |h| (m) and |v| (m/s) the update leaves, the bar's half length (m), 1 if the
+    /// sources make a single pulse (one raised cosine: h = A (1 - cos phase) / 2), else 0.
     pub bounds: [f32; 4],
     /// Each dipper's centre x, z (m) at the update's end, radius (m), phase (rad).
     pub dippers: [[f32; 4]; MAX_DIPPERS],
@@ -100,4 +101,22 @@ pub fn strobe_flash(flashes: f32, t0: f64, count: usize, dt: f64) -> Option<usiz
         }
     }
     lit
+}
+
+/// Makes `updates` (from [`plan`], starting at time `t0`, s) one pulse of the sources begun at
+/// time `start` (s): during its period 1/f they lift the water in one raised cosine from their
+/// own phase 0, and outside it they do not act (their cells are water like any other).
+pub fn shape_pulse(updates: &mut [Update], t0: f64, start: f64) {
+    for (k, u) in updates.iter_mut().enumerate() {
+        let (dt, omega) = (u.grid[2] as f64, u.wave[2] as f64);
+        let phase = omega * (t0 + (k + 1) as f64 * dt - start);
+        if (0.0..=std::f64::consts::TAU).contains(&phase) {
+            u.wave[0] = phase as f32;
+            u.bounds[3] = 1.0;
+            u.dippers.iter_mut().for_each(|d| d[3] = 0.0);
+        } else {
+            u.wave[3] = 0.0;
+            u.bar[2] = 0.0;
+        }
+    }
 }

@@ -26,6 +26,15 @@ impl WebDemo {
         set(&o, "simEngine", if self.demo.water().engine() == SimEngine::Gpu { "gpu" } else { "cpu" });
         set(&o, "simTime", self.demo.sim_time());
         set(&o, "scene", self.demo.drawn_scene().name());
+        // The shown scene's instruments: { name: { value, unit } } (the tank's probe, ruler).
+        let readings = js_sys::Object::new();
+        for (name, value, unit) in self.demo.readings() {
+            let reading = js_sys::Object::new();
+            set(&reading, "value", value as f64);
+            set(&reading, "unit", unit);
+            set(&readings, name, reading);
+        }
+        set(&o, "readings", readings);
         set(&o, "meanLevel", level.mean as f64);
         set(&o, "maxAbsHeight", level.max_abs as f64);
         set(&o, "width", self.config.width);

@@ -5,6 +5,7 @@
 //! colour. A click drops a small pulse into the water.
 
 mod render;
+pub mod sketch;
 
 use glam::{Vec2, Vec3};
 
@@ -15,8 +16,10 @@ use crate::params::{ParamId, Params};
 use crate::sim::Drop;
 use crate::tank::gpu::TankWater;
 use crate::tank::medium::{CellKind, Medium};
+use crate::tank::probe::{self, ProbeReading};
 use crate::tank::{plan, Setup, TankSettings, Tool, START_VIEW, TANK_CELLS, TANK_LIMITS};
 pub use render::{TankPicture, SCREEN_TEXELS};
+pub use sketch::{Ruler, Stroke};
 
 /// A click's drop against the pool's: its radius shrinks with the tray against the pool, its
 /// height to the dippers' scale (millimetres, not centimetres).
@@ -45,6 +48,8 @@ pub fn reads(name: &str) -> bool {
 
 /// The tank's settings in `params`.
 pub fn tank_settings(params: &Params) -> TankSettings {
+    // The probe and the graph's line stay a little inside the tray.
+    let inner = 0.49 * params.get(ParamId::TankSize);
     TankSettings {
         setup: params.choice::<Setup>(ParamId::TankSetup),
         size: params.get(ParamId::TankSize),
@@ -59,6 +64,12 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         tool: params.choice(ParamId::TankTool),
         lines: params.flag(ParamId::TankLines),
         beaches: params.flag(ParamId::TankBeaches),
+        pulse: params.flag(ParamId::TankPulse),
+        probe: params.flag(ParamId::TankProbe).then(|| {
+            let inside = |id| (params.get(id) * 1e-3).clamp(-inner, inner);
+            (inside(ParamId::TankProbeX), inside(ParamId::TankProbeZ))
+        }),
+        graph: params.flag(ParamId::TankGraph).then(|| (params.get(ParamId::TankGraphZ) * 1e-3).clamp(-inner, inner)),
     }
 }
 
@@ -86,15 +97,21 @@ pub struct TankScene {
     /// The walls drawn and erased with the pointer, in order: from, to (m) and what was
     /// painted; kept over changes of the set-up.
     strokes: Vec<Stroke>,
+    /// The ruler laid with the pointer, if any.
+    ruler: Option<Ruler>,
+    /// Whether the pointer's press is still the one that began the last stroke or ruler.
+    stroke_open: bool,
+    /// Parameters the pointer set (the probe's place), for the demo's table.
+    param_edits: Vec<(ParamId, f32)>,
+    /// When the sources' single pulse began (s of simulated time), or is to begin (`None`
+    /// with `pulse_due`) at the next frame.
+    pulse_start: Option<f64>,
+    pulse_due: bool,
+    /// What the probe reads, and the intensity graph's largest value along its line (m²),
+    /// from the latest read back from the GPU.
+    reading: ProbeReading,
+    graph_peak: Option<f32>,
     float_targets: bool,
-}
-
-/// A stroke of the pointer's wall tool: a segment (m) painted a wall or open water.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stroke {
-    pub from: (f32, f32),
-    pub to: (f32, f32),
-    pub kind: CellKind,
 }
 
 /// How far (a share of a drop's radius) a point of the pointer's stroke may lie from the last
@@ -116,8 +133,25 @@ impl TankScene {
             clear_water: false,
             drops: Vec::new(),
             strokes: Vec::new(),
+            ruler: None,
+            stroke_open: false,
+            param_edits: Vec::new(),
+            pulse_start: None,
+            pulse_due: true,
+            reading: ProbeReading::default(),
+            graph_peak: None,
             float_targets,
         }
+    }
+
+    /// What the probe reads (from a read of its record a frame or two old).
+    pub fn probe_reading(&self) -> ProbeReading {
+        self.reading
+    }
+
+    /// The ruler laid with the pointer, if any.
+    pub fn ruler(&self) -> Option<Ruler> {
+        self.ruler
     }
 
     pub fn settings(&self) -> &TankSettings {
@@ -171,8 +205,11 @@ impl super::Scene for TankScene {
         if fresh_lab {
             // A new set-up starts a fresh lab: the walls drawn for the last one and its waves go.
             self.strokes.clear();
+            self.ruler = None;
             self.clear_water = true;
         }
+        // A pulse begins when the single pulse is switched on and with each fresh lab.
+        self.pulse_due |= settings.pulse && (!old.pulse || fresh_lab);
         self.settings = settings;
         // The cells depend on these only (not on the frequency, the lamp, the strobe, …).
         let cells_of =
@@ -197,11 +234,30 @@ impl super::Scene for TankScene {
             TankPicture::new(device, renderer.settings().target_format, TANK_CELLS, float_targets)
         });
         let t0 = sh.steps_taken.saturating_sub(steps as u64) as f64 / STEPS_PER_SECOND as f64;
-        let updates = plan::plan(&self.medium, &self.settings, t0, steps, STEP_DT, &mut self.drops);
+        let mut updates = plan::plan(&self.medium, &self.settings, t0, steps, STEP_DT, &mut self.drops);
+        if std::mem::take(&mut self.pulse_due) {
+            self.pulse_start = Some(t0);
+        }
+        if self.settings.pulse {
+            plan::shape_pulse(&mut updates, t0, self.pulse_start.unwrap_or(t0));
+        }
+        if let Some(read) = water.take_read() {
+            self.reading = probe::read(&read.heights, STEP_DT);
+            self.graph_peak = read.row.map(|(_, row)| row.iter().fold(0.0, |m: f32, &i| m.max(i)));
+        }
+        let cell = |x: f32, z: f32| self.medium.cell_at(x, z);
+        water.probe_at(
+            self.settings.probe.and_then(|(x, z)| cell(x, z)),
+            plan::updates_per_step(&self.medium, STEP_DT) as usize,
+        );
         let dt = updates.first().map_or(0.0, |u| u.grid[2] as f64);
         let flash = plan::strobe_flash(self.settings.strobe, t0, updates.len(), dt);
         mark(cx.encoder, Stage::Start);
         water.encode(device, queue, cx.encoder, &updates, flash);
+        let graph_row = self.settings.graph.and_then(|z| cell(0.0, z)).map(|(_, j)| j);
+        if self.settings.probe.is_some() || graph_row.is_some() {
+            water.record_read(device, cx.encoder, graph_row);
+        }
         mark(cx.encoder, Stage::AfterSimulation);
         // No waves move here on their own (the stage of the pool's and the sea's FFT).
         mark(cx.encoder, Stage::AfterWaves);
@@ -213,6 +269,9 @@ impl super::Scene for TankScene {
                 Some(slits) if self.settings.lines => Some((slits.z, slits.directions(self.settings.wavelength()))),
                 _ => None,
             },
+            probe: self.settings.probe.map(|at| (at, self.reading.swing)),
+            graph: self.settings.graph.map(|z| (z, self.graph_peak.unwrap_or(0.0))),
+            ruler: self.ruler,
         };
         let group = picture.encode_screen(device, queue, cx.encoder, water, &self.settings, &shot);
         mark(cx.encoder, Stage::AfterMaps);
@@ -220,9 +279,17 @@ impl super::Scene for TankScene {
         mark(cx.encoder, Stage::AfterShading);
     }
 
-    /// Still water, and the walls drawn with the pointer put away.
+    fn after_submit(&mut self, _steps_taken: u64) {
+        if let Some(water) = &self.water {
+            water.after_submit();
+        }
+    }
+
+    /// Still water, the walls drawn with the pointer and the ruler put away, a new pulse.
     fn reset(&mut self, queue: &wgpu::Queue, _sh: Shared<'_>) {
         self.drops.clear();
+        self.ruler = None;
+        self.pulse_due = true;
         if !self.strokes.is_empty() {
             self.strokes.clear();
             self.rebuild_medium();
@@ -247,15 +314,33 @@ impl super::Scene for TankScene {
     /// A drop, or with the wall or erase tool a stroke from the last point of the pointer's
     /// stroke (if near enough to be the same stroke) to this one.
     fn add_drop(&mut self, drop: Drop) {
+        let to = (drop.x, drop.z);
+        let continues = std::mem::replace(&mut self.stroke_open, true);
         let kind = match self.settings.tool {
             Tool::Drops => return self.drops.push(drop),
             Tool::Walls => CellKind::Wall,
             Tool::Erase => CellKind::Water,
+            Tool::Probe => {
+                self.param_edits.extend([
+                    (ParamId::TankProbe, 1.0),
+                    (ParamId::TankProbeX, (to.0 * 1e3).round()),
+                    (ParamId::TankProbeZ, (to.1 * 1e3).round()),
+                ]);
+                return;
+            }
+            Tool::Ruler => {
+                self.ruler = Some(match self.ruler {
+                    Some((from, _)) if continues => (from, to),
+                    _ => (to, to),
+                });
+                return;
+            }
         };
-        let to = (drop.x, drop.z);
         let from = match self.strokes.last() {
             Some(last)
-                if last.kind == kind && (last.to.0 - to.0).hypot(last.to.1 - to.1) <= STROKE_JOIN * drop.radius =>
+                if continues
+                    && last.kind == kind
+                    && (last.to.0 - to.0).hypot(last.to.1 - to.1) <= STROKE_JOIN * drop.radius =>
             {
                 last.to
             }
@@ -265,6 +350,42 @@ impl super::Scene for TankScene {
         self.medium.stroke(from, to, kind);
         self.strokes.push(stroke);
         self.medium_changed = true;
+    }
+
+    fn begin_stroke(&mut self) {
+        self.stroke_open = false;
+    }
+
+    fn take_param_edits(&mut self) -> Vec<(ParamId, f32)> {
+        std::mem::take(&mut self.param_edits)
+    }
+
+    fn sketch(&self) -> String {
+        sketch::format(&self.strokes, self.ruler)
+    }
+
+    /// Replaces what was drawn with what `text` says; on an error nothing changes.
+    fn set_sketch(&mut self, text: &str) -> Result<(), String> {
+        let (strokes, ruler) = sketch::parse(text, self.settings.half_width())?;
+        (self.strokes, self.ruler) = (strokes, ruler);
+        self.rebuild_medium();
+        Ok(())
+    }
+
+    /// The probe's frequency (Hz) and swing (mm), when it is in; the ruler's length (mm),
+    /// when one is laid.
+    fn readings(&self) -> Vec<(&'static str, f32, &'static str)> {
+        let mut out = Vec::new();
+        if self.settings.probe.is_some() {
+            if let Some(f) = self.reading.frequency {
+                out.push(("probe frequency", f, "Hz"));
+            }
+            out.push(("probe swing", self.reading.swing * 1e3, "mm"));
+        }
+        if let Some((a, b)) = self.ruler {
+            out.push(("ruler", (a.0 - b.0).hypot(a.1 - b.1) * 1e3, "mm"));
+        }
+        out
     }
 
     fn pick_body(&self, _sh: Shared<'_>, _pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {

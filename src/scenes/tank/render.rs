@@ -6,8 +6,9 @@ use bytemuck::Zeroable;
 use glam::Mat4;
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
+use crate::scenes::STEP_DT;
 use crate::tank::gpu::TankWater;
-use crate::tank::{TankSettings, TankView, LINE_WIDTH, MAX_LINES, SCREEN_BELOW};
+use crate::tank::{TankSettings, TankView, LINE_WIDTH, MAX_LINES, PROBE_SAMPLES, SCREEN_BELOW};
 
 /// Texels along each side of the screen's image.
 pub const SCREEN_TEXELS: u32 = 512;
@@ -33,6 +34,10 @@ struct PictureUniforms {
     view: [f32; 4],
     lines: [f32; 4],
     line_angles: [[f32; 4]; MAX_LINES / 4],
+    probe: [f32; 4],
+    trace: [f32; 4],
+    graph: [f32; 4],
+    ruler: [f32; 4],
 }
 
 /// What the picture shows beyond the settings: the camera's view-projection, the view and the
@@ -44,6 +49,12 @@ pub struct Shot {
     /// The slits' lines to draw: where they start (z, m) and their directions (rad from +z
     /// towards +x), if asked.
     pub lines: Option<(f32, Vec<f32>)>,
+    /// The probe, if in: its place (x, z in m) and the swing it reads (m).
+    pub probe: Option<((f32, f32), f32)>,
+    /// The intensity graph, if drawn: its line's z (m) and the intensity's peak along it (m²).
+    pub graph: Option<(f32, f32)>,
+    /// The ruler, if laid.
+    pub ruler: Option<super::Ruler>,
 }
 
 /// The tank's two passes, their uniforms and the screen's image.
@@ -72,6 +83,7 @@ impl TankPicture {
                 gpu::uniform_entry(0, stage),
                 gpu::float_texture_entry(1, stage),
                 gpu::float_texture_entry(2, stage),
+                gpu::float_texture_entry(3, stage),
             ],
         });
         let image_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
@@ -121,7 +133,13 @@ impl TankPicture {
         let show = FullscreenPass::new(
             device,
             "tank picture",
-            &[gpu::wgsl::MATH, &numbers, picture, crate::wgsl!("tank/show.wgsl")],
+            &[
+                gpu::wgsl::MATH,
+                &numbers,
+                picture,
+                crate::wgsl!("tank/instruments.wgsl"),
+                crate::wgsl!("tank/show.wgsl"),
+            ],
             "fs_show",
             &[&layout, &image_layout],
             FullscreenTarget { format: target_format, blend: None, depth: None },
@@ -178,7 +196,25 @@ impl TankPicture {
             view: [shot.view.value(), settings.amplitude, shot.exposure * SCREEN_EXPOSURE, SCREEN_TEXELS as f32],
             lines: [0.0; 4],
             line_angles: [[0.0; 4]; MAX_LINES / 4],
+            probe: [0.0; 4],
+            trace: [0.0, 0.0, PROBE_SAMPLES as f32, STEP_DT],
+            graph: [0.0; 4],
+            ruler: [0.0; 4],
         };
+        if let Some(((x, z), swing)) = shot.probe {
+            // The graph's half height: the swing read, at least half the dippers' amplitude.
+            uniforms.probe = [x, z, 1.0, swing.max(0.5 * settings.amplitude) * 1.1];
+            let (newest, held) = water.probe_newest();
+            uniforms.trace[..2].copy_from_slice(&[newest as f32, held as f32]);
+        }
+        if let Some((z, peak)) = shot.graph {
+            // At least a hundredth of the dippers' intensity, so still water draws a flat graph.
+            uniforms.graph = [z, 1.0, peak.max(0.01 * settings.amplitude.powi(2)), 0.0];
+        }
+        if let Some((a, b)) = shot.ruler {
+            uniforms.graph[3] = 1.0;
+            uniforms.ruler = [a.0, a.1, b.0, b.1];
+        }
         if let Some((z, angles)) = &shot.lines {
             let count = angles.len().min(MAX_LINES);
             uniforms.lines = [count as f32, *z, 0.0, 0.0];
@@ -197,6 +233,7 @@ impl TankPicture {
                     resource: wgpu::BindingResource::TextureView(water.shown_view(settings.strobe > 0.0)),
                 },
                 wgpu::BindGroupEntry { binding: 2, resource: wgpu::BindingResource::TextureView(water.medium_view()) },
+                wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(water.probe_view()) },
             ],
         });
         if shot.view == TankView::Screen {
