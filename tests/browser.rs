@@ -1047,6 +1047,33 @@ async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_t
         assert!(tank["error"].is_null() && tank["setup"] == true, "{backend}: the tank's controls: {tank}");
         assert!(tank["sun"] == false && tank["waveSpeed"] == false, "{backend}: other scenes' controls show: {tank}");
         assert!(spread > 10.0 && recoloured > 0.3, "{backend}: the tank's pictures are flat or alike");
+        // Its instruments: the probe reads the dipper's frequency, the ruler its length, and
+        // what is drawn goes into the share link.
+        let sketch = "W-100,-150,100,-120_R-200,-100,100,-100";
+        browser
+            .js(&format!(
+                "window.demo.set('tank_setup', 'dipper'); window.demo.set('tank_probe', 1);
+                 window.demo.set('tank_probe_z', 60); window.demo.setSketch('{sketch}'); return true;"
+            ))
+            .await;
+        let probe = "(r => !!r && Math.abs(r.value / 10 - 1) < 0.01)(window.demo.stats().readings['probe frequency'])";
+        let read = browser.wait_for(probe, Duration::from_secs(30)).await;
+        // The readings under the controls, written twice a second.
+        let text = "document.querySelector('#pool').shadowRoot.querySelector('.readings').textContent";
+        browser.wait_for(&format!("{text}.includes('Probe frequency')"), Duration::from_secs(5)).await;
+        let instruments = browser
+            .js("const root = document.querySelector('#pool').shadowRoot;
+                 return { readings: window.demo.stats().readings, link: window.demo.shareLink(),
+                          shown: root.querySelector('.readings').textContent };")
+            .await;
+        println!("{backend}: the tank's instruments: {instruments}");
+        assert!(read, "{backend}: the probe does not read 10 Hz within 1 %: {instruments}");
+        let ruler = instruments["readings"]["ruler"]["value"].as_f64().unwrap_or(0.0);
+        assert!((ruler - 300.0).abs() < 1.0, "{backend}: the ruler reads {ruler} mm, not 300");
+        let link = instruments["link"].as_str().unwrap_or("");
+        assert!(link.contains(&format!("sketch={sketch}")), "{backend}: the drawing is not in the link {link}");
+        let shown = instruments["shown"].as_str().unwrap_or("");
+        assert!(shown.contains("Probe frequency: ") && shown.contains("Ruler: 300 mm"), "{backend}: shown {shown}");
         browser.close().await;
     }
 }

@@ -272,6 +272,18 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
             at_sea && sea_spread > 12.0,
             "the sea did not draw from the single file on {backend} ({sea_spread:.1})"
         );
+        // And the ripple tank, its double slit's pattern on the screen under the tray.
+        browser
+            .js("window.demo.set('scene', 'tank'); window.demo.set('tank_setup', 'double_slit'); return true;")
+            .await;
+        let in_tank = browser.wait_for("window.demo.stats().scene === 'tank'", Duration::from_secs(30)).await;
+        browser.wait_frames(10).await;
+        let tank_spread = browser.screenshot().await.luma_spread(rect);
+        println!("file:// on {backend}: the tank's luma spread {tank_spread:.1}");
+        assert!(
+            in_tank && tank_spread > 10.0,
+            "the tank did not draw from the single file on {backend} ({tank_spread:.1})"
+        );
         browser.goto(&server.url(&format!("/?backend={backend}&quality=1"))).await;
         let took_http = browser.wait_ready("#pool", READY).await;
         let http_first = browser.js("return window.demo.stats().firstFrameMs;").await;

@@ -249,9 +249,10 @@ export const controlMethods = {
     this._readingsAt = time;
     const readings = Object.entries(this._core.stats().readings || {});
     this._readings.hidden = readings.length === 0;
-    const digits = (unit) => (unit === "Hz" ? 2 : unit === "mm" ? 1 : 3);
+    // Hertz to a hundredth; lengths to three figures or whole millimetres.
+    const digits = (r) => (r.unit === "Hz" ? 2 : Math.abs(r.value) >= 100 ? 0 : Math.abs(r.value) >= 1 ? 1 : 3);
     this._readings.textContent = readings
-      .map(([name, r]) => `${name[0].toUpperCase()}${name.slice(1)}: ${r.value.toFixed(digits(r.unit))} ${r.unit}`)
+      .map(([name, r]) => `${name[0].toUpperCase()}${name.slice(1)}: ${r.value.toFixed(digits(r))} ${r.unit}`)
       .join(" · ");
   },
 

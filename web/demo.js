@@ -309,7 +309,7 @@ export class Demo {
       query.set(p.name, i >= 0 && p.choiceNames[i] ? p.choiceNames[i] : String(v));
     }
     query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
-    const sketch = this._suspended ? this._saved.sketch : this._alive().sketch();
+    const sketch = this.sketch();
     if (sketch) query.set("sketch", sketch);
     return query.toString().replace(/%2C/g, ",");
   }
@@ -326,6 +326,17 @@ export class Demo {
       `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
       `title="Interactive water pool (wavepool)"></iframe>`
     );
+  }
+
+  /** What was drawn with the pointer (the tank's walls, erasures and ruler), as the share link's `sketch`. */
+  sketch() {
+    return this._suspended ? this._saved.sketch : this._alive().sketch();
+  }
+
+  /** Replaces what was drawn with `text` (as sketch() gives it); a text that cannot be read changes nothing (console warning). */
+  setSketch(text) {
+    if (this._suspended) this._saved.sketch = String(text);
+    else this._alive().setSketch(String(text));
   }
 
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */

@@ -153,6 +153,10 @@ export interface WavePool {
    * setAssetLocation() at a hosted copy of the demo for links that open.
    */
   shareLink(): string;
+  /** What was drawn with the pointer in the ripple tank (walls W, erasures E, the ruler R; whole mm from the tray's middle), as the share link's `sketch`: e.g. "W-120,40,-120,200_R-200,0,200,0"; "" if nothing. */
+  sketch(): string;
+  /** Replaces what was drawn with `text` (as sketch() gives it); a text that cannot be read changes nothing and warns in the console. */
+  setSketch(text: string): void;
   /** An <iframe> of the demo's frame page (embed.html, found as shareLink()'s page) with this demo's parameters and view. */
   embedCode(): string;
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */

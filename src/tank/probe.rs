@@ -13,8 +13,12 @@ pub struct ProbeReading {
     pub swing: f32,
 }
 
-/// Reads `heights` (m, oldest first, one each `dt` s).
+/// Reads `heights` (m, oldest first, one each `dt` s), from where the waves have arrived:
+/// the first sample a quarter as high as the highest (still water before it has no period).
 pub fn read(heights: &[f32], dt: f32) -> ProbeReading {
+    let highest = heights.iter().fold(0.0f32, |m, &h| m.max(h.abs()));
+    let arrived = heights.iter().position(|&h| h.abs() >= 0.25 * highest).unwrap_or(0);
+    let heights = &heights[arrived..];
     let (low, high) = heights.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &h| (lo.min(h), hi.max(h)));
     if heights.len() < 3 || high - low < 2.0 * PROBE_LEAST_SWING {
         return ProbeReading { frequency: None, swing: if heights.is_empty() { 0.0 } else { 0.5 * (high - low) } };
