@@ -21,6 +21,7 @@ use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
 use wavepool::sea::SEA_LIMITS;
 use wavepool::sim::random_drops;
+use wavepool::tank::TANK_LIMITS;
 use wavepool::timing::StageTimer;
 
 /// wavepool: interactive water, a desktop viewer and headless tools.
@@ -130,8 +131,8 @@ struct RenderArgs {
     #[arg(long, value_name = "DEG", allow_negative_numbers = true, value_parser = |s: &str| number(s, POOL_LIMITS.pitch.0, POOL_LIMITS.pitch.1))]
     pitch: Option<f32>,
     /// Camera distance from its target (m; the scene's own range applies: the pool's
-    /// 1.5..12, the sea's 3..600).
-    #[arg(long, value_name = "M", value_parser = |s: &str| number(s, POOL_LIMITS.distance.0, SEA_LIMITS.distance.1))]
+    /// 1.5..12, the sea's 3..600, the tank's 0.2..5).
+    #[arg(long, value_name = "M", value_parser = |s: &str| number(s, TANK_LIMITS.distance.0, SEA_LIMITS.distance.1))]
     distance: Option<f32>,
     /// The point the camera orbits (m, "x,y,z"; in the sea y is the water's mean level at 0).
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = point)]

@@ -57,6 +57,7 @@ param_ids! {
     SeaObjects = "sea_objects",
     SeaGrid = "sea_grid",
     TankSetup = "tank_setup",
+    TankLook = "tank_look",
     TankView = "tank_view",
     TankTool = "tank_tool",
     TankFrequency = "tank_frequency",

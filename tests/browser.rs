@@ -1074,6 +1074,16 @@ async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_t
         assert!(link.contains(&format!("sketch={sketch}")), "{backend}: the drawing is not in the link {link}");
         let shown = instruments["shown"].as_str().unwrap_or("");
         assert!(shown.contains("Probe frequency: ") && shown.contains("Ruler: 300 mm"), "{backend}: shown {shown}");
+        // The apparatus beside the screen view: the lab's dim room on the left, the paper on the right.
+        browser.js("window.demo.set('tank_look', 'split'); window.demo.set('tank_view', 'screen'); return true;").await;
+        browser.wait_frames(3).await;
+        let split = browser.screenshot().await;
+        split.dump(&format!("tank-split-{backend}"));
+        let half = |k: u32| Rect { x: rect.x + k * rect.w / 2, w: rect.w / 2, ..rect };
+        let (apparatus, paper) = (split.mean(half(0)), split.mean(half(1)));
+        let error = browser.js("return document.querySelector('#pool').dataset.error || null;").await;
+        println!("{backend}: split, the apparatus's mean {apparatus:.0?}, the screen view's {paper:.0?}");
+        assert!(error.is_null() && apparatus[1] + 20.0 < paper[1], "{backend}: the split: {error}");
         browser.close().await;
     }
 }

@@ -593,3 +593,46 @@ fn a_single_pulse_makes_one_crest_that_passes_and_leaves_the_water_still() {
     // (In two dimensions a pulse leaves a fading tail behind it: no sharp end as in 1-D or 3-D.)
     assert!(last < 0.3 * peak, "the water should settle after the pulse has passed");
 }
+
+#[test]
+fn the_apparatus_shows_the_lamp_over_the_tray_and_its_image_on_the_paper_and_the_split_shows_both_views() {
+    let (width, height) = (240u32, 180u32);
+    let start = |look: wavepool::tank::Look| {
+        let mut d = demo(DemoOptions::default());
+        d.params.set(ParamId::Scene, 2.0);
+        d.params.set(ParamId::TankLook, look.value());
+        d.sync_scene();
+        d
+    };
+    let mut d = start(wavepool::tank::Look::Apparatus);
+    let frame = render(&mut d, width, height, 90, 1.0 / 60.0);
+    let settings = d.tank().settings();
+    let size = glam::Vec2::new(width as f32, height as f32);
+    let lamp = d.camera().project(glam::Vec3::new(0.0, settings.lamp_height, 0.0), size).expect("the lamp in view");
+    let paper_y = -settings.depth - wavepool::tank::SCREEN_BELOW;
+    // The rings' image on the paper, a little way in front of the dipper's (seen past the tray).
+    let paper = d.camera().project(glam::Vec3::new(0.0, paper_y, 0.25), size).expect("the paper in view");
+    let around = |p: glam::Vec2, r: u32| Rect { x: p.x as u32 - r, y: p.y as u32 - r, w: 2 * r, h: 2 * r };
+    let bulb = frame.luma(lamp.x as u32, lamp.y as u32);
+    let rings = frame.luma_spread(around(paper, 12));
+    let room = frame.luma(width / 10, height / 10);
+    println!("apparatus: the bulb's luma {bulb:.0}, the room's {room:.0}; the paper's luma spread round the rings' image {rings:.1}");
+    assert!(bulb > 240.0 && room < 60.0, "the lamp should shine in a dim room");
+    assert!(rings > 8.0, "the lamp's image of the rings should show on the paper");
+    // The split: the apparatus on the left (as drawn alone in that half), the screen view on the right.
+    let mut split = start(wavepool::tank::Look::Split);
+    let both = render(&mut split, width, height, 90, 1.0 / 60.0);
+    let mut alone = start(wavepool::tank::Look::Apparatus);
+    let left = render(&mut alone, width / 2, height, 90, 1.0 / 60.0);
+    let left_half = Rect { x: 0, y: 0, w: width / 2, h: height };
+    let mut diff = 0.0;
+    for (x, y) in left_half.points() {
+        diff += (both.luma(x, y) - left.luma(x, y)).abs();
+    }
+    diff /= left_half.pixels() as f64;
+    let right_half = Rect { x: width / 2, ..left_half };
+    let (right_spread, right_mean) = (both.luma_spread(right_half), both.mean(right_half));
+    println!("split: left half against the apparatus alone {diff:.2} luma; right half spread {right_spread:.1}, mean {right_mean:.0?}");
+    assert!(diff < 2.0, "the split's left half should be the apparatus");
+    assert!(right_spread > 20.0 && right_mean[0] > 60.0, "the split's right half should show the paper from above");
+}

@@ -16,6 +16,8 @@ struct Picture {
     trace: vec4<f32>,   // x the ring's newest texel, y samples held, z texels, w s between samples
     graph: vec4<f32>,   // x the intensity line's z (m), y 1 if drawn, z its peak (m^2), w 1 if a ruler
     ruler: vec4<f32>,   // its start x, z and end x, z (m)
+    apparatus_inverse_view_proj: mat4x4<f32>,
+    halves: vec4<f32>,  // the apparatus's part of the target (uv: x from, y width), the screen view's (z, w)
 };
 
 @group(0) @binding(0) var<uniform> pic: Picture;

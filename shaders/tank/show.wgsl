@@ -3,12 +3,6 @@
 // the lamp's magnification so it lies under the tray it comes from), the heights as colour
 // (troughs dark blue, crests pale; barriers grey, glass plates green) or the intensity h^2.
 
-@group(1) @binding(0) var screen_image: texture_2d<f32>;
-@group(1) @binding(1) var screen_sampler: sampler;
-
-const BENCH: vec3<f32> = vec3<f32>(0.05, 0.045, 0.04);
-const PAPER: vec3<f32> = vec3<f32>(0.95, 0.92, 0.85);
-const ROOM_LIGHT: f32 = 0.12;
 
 // The tray plane's point under a pixel (x, z in m), or w 0 where the ray misses it.
 fn on_plane(uv: vec2<f32>) -> vec3<f32> {
@@ -30,9 +24,7 @@ fn screen_colour(xz: vec2<f32>) -> vec3<f32> {
     if any(uv < vec2<f32>(0.0)) || any(uv > vec2<f32>(1.0)) {
         return BENCH;
     }
-    // The paper in the tray frame's shadow is lit a little by the room.
-    let light = textureSampleLevel(screen_image, screen_sampler, uv, 0.0).x / pic.screen.w;
-    return PAPER * (1.0 - exp(-pic.view.z * light) + ROOM_LIGHT);
+    return paper_at(uv);
 }
 
 fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
@@ -77,9 +69,11 @@ fn on_slit_line(xz: vec2<f32>) -> bool {
 
 @fragment
 fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
-    let hit = on_plane(in.uv);
+    // The view's own part of the target (its right half beside the apparatus).
+    let uv = vec2<f32>((in.uv.x - pic.halves.z) / pic.halves.w, in.uv.y);
+    let hit = on_plane(uv);
     // A pixel's size in the picture (uv) and on the tray (m), for the instruments' lines.
-    let pixel = abs(vec2<f32>(dpdx(in.uv.x), dpdy(in.uv.y)));
+    let pixel = abs(vec2<f32>(dpdx(uv.x), dpdy(uv.y)));
     let foot = max(length(fwidth(hit.xy)), 1e-5);
     var colour = BENCH;
     if hit.z > 0.0 && pic.view.x < 0.5 {
@@ -91,7 +85,7 @@ fn fs_show(in: FullscreenOut) -> @location(0) vec4<f32> {
         colour = vec3<f32>(0.9, 0.75, 0.1);
     }
     let on_tray = hit.z > 0.0 && all(abs(hit.xy) <= vec2<f32>(pic.tray.x));
-    colour = with_instruments(colour, hit.xy, on_tray, in.uv, pixel, foot);
+    colour = with_instruments(colour, hit.xy, on_tray, uv, pixel, foot);
     if ENCODE_SRGB {
         colour = linear_to_srgb(colour);
     }

@@ -63,6 +63,22 @@ crate::choices! {
     }
 }
 
+crate::choices! {
+    /// How the tank is seen (the `tank_look` parameter): the screen view (the paper under the
+    /// tank, from above, as the class looks at it), the apparatus in 3D, or the two side by side.
+    #[derive(Default)]
+    pub enum Look {
+        #[default]
+        Screen = "screen",
+        Apparatus = "apparatus",
+        Split = "split",
+    }
+}
+
+/// The apparatus view's start for the default tray and lamp (yaw °, pitch °, distance m): from
+/// in front and a little to the side, 24° up, the lamp and the paper in the picture.
+pub const APPARATUS_VIEW: [f32; 3] = [205.0, 24.0, 2.6];
+
 /// The tank's camera: from straight above to 20° over the bench, 0.2 to 5 m from the tray.
 pub const TANK_LIMITS: CameraLimits = CameraLimits { pitch: (20.0, 89.0), distance: (0.2, 5.0), near: 0.01, far: 20.0 };
 
@@ -106,6 +122,8 @@ pub const PROBE_LEAST_SWING: f32 = 1.0e-6;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TankSettings {
     pub setup: Setup,
+    /// How the tank is seen.
+    pub look: Look,
     /// The tray's side (m) and its water's depth (m).
     pub size: f32,
     pub depth: f32,
@@ -140,6 +158,7 @@ impl Default for TankSettings {
     fn default() -> Self {
         Self {
             setup: Setup::from(TANK_SETUP.default),
+            look: Look::from(TANK_LOOK.default),
             size: TANK_SIZE.default,
             depth: TANK_DEPTH.default * 1e-3,
             frequency: TANK_FREQUENCY.default,
@@ -186,6 +205,7 @@ impl TankSettings {
 /// The tank's own parameters (shown only with `scene` tank).
 pub const PARAMS: &[ParamSpec] = &[
     TANK_SETUP,
+    TANK_LOOK,
     TANK_VIEW,
     TANK_TOOL,
     TANK_FREQUENCY,
@@ -215,6 +235,16 @@ pub const TANK_SETUP: ParamSpec = ParamSpec {
     control: Control::Choice { values: Setup::VALUES, names: Setup::NAMES },
     default: 0.0,
     help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, a dipper moving across the tank (Doppler), a curved wall that reflects the bar's waves to a focus (a parabolic mirror), or a straight wall facing the bar (standing waves).",
+};
+
+pub const TANK_LOOK: ParamSpec = ParamSpec {
+    name: "tank_look",
+    label: "Look",
+    group: "Tank",
+    unit: "",
+    control: Control::Choice { values: Look::VALUES, names: Look::NAMES },
+    default: 0.0,
+    help: "The screen view shows the paper under the tank from above, as the class looks at it; the apparatus shows the lab's tank in 3D: the lamp over the tray, the water, its frame on its legs and the paper on the bench below with the lamp's image on it (drag to walk round it); split shows the two side by side.",
 };
 
 pub const TANK_VIEW: ParamSpec = ParamSpec {

@@ -12,12 +12,15 @@ use glam::{Vec2, Vec3};
 use super::{SceneFrame, Shared, Stage, STEPS_PER_SECOND, STEP_DT};
 use crate::bodies::BodyId;
 use crate::camera::OrbitCamera;
+use crate::camera::Pick;
 use crate::params::{ParamId, Params};
 use crate::sim::Drop;
 use crate::tank::gpu::TankWater;
 use crate::tank::medium::{CellKind, Medium};
 use crate::tank::probe::{self, ProbeReading};
-use crate::tank::{plan, Setup, TankSettings, Tool, START_VIEW, TANK_CELLS, TANK_LIMITS};
+use crate::tank::{
+    plan, Look, Setup, TankSettings, Tool, APPARATUS_VIEW, SCREEN_BELOW, START_VIEW, TANK_CELLS, TANK_LIMITS,
+};
 pub use render::{TankPicture, SCREEN_TEXELS};
 pub use sketch::{Ruler, Stroke};
 
@@ -52,6 +55,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
     let inner = 0.49 * params.get(ParamId::TankSize);
     TankSettings {
         setup: params.choice::<Setup>(ParamId::TankSetup),
+        look: params.choice(ParamId::TankLook),
         size: params.get(ParamId::TankSize),
         depth: params.get(ParamId::TankDepth) * 1e-3,
         frequency: params.get(ParamId::TankFrequency),
@@ -79,6 +83,29 @@ pub fn start_camera(size: f32) -> OrbitCamera {
     let [yaw, pitch, distance] = START_VIEW;
     let distance = distance * size / crate::tank::TANK_SIZE.default;
     OrbitCamera { yaw, pitch, distance, target: Vec3::ZERO, fov_y: 45.0, limits: TANK_LIMITS }
+}
+
+/// The camera the screen view of `settings` starts from: above the tray, or for the
+/// apparatus, from the side with the lamp and the paper in the picture.
+pub fn camera_for(settings: &TankSettings) -> OrbitCamera {
+    if settings.look == Look::Screen {
+        return start_camera(settings.size);
+    }
+    let [yaw, pitch, distance] = APPARATUS_VIEW;
+    let (top, bottom) = (settings.lamp_height, -settings.depth - SCREEN_BELOW);
+    let default_span = crate::tank::TANK_LAMP_HEIGHT.default + SCREEN_BELOW;
+    let scale = (settings.size / crate::tank::TANK_SIZE.default).max((top - bottom) / default_span);
+    let target = Vec3::new(0.0, 0.5 * (top + bottom), 0.0);
+    OrbitCamera { yaw, pitch, distance: distance * scale, target, fov_y: 45.0, limits: TANK_LIMITS }
+}
+
+/// The split's screen view of a tray of `size` (m) in a part of the picture `aspect` wide
+/// over high: from straight above, far enough back that the tray and its frame fit across.
+pub fn top_camera(size: f32, aspect: f32) -> OrbitCamera {
+    let mut camera = start_camera(size);
+    let fit = 0.55 * size / (aspect * (0.5 * camera.fov_y.to_radians()).tan());
+    camera.distance = camera.distance.max(fit);
+    camera
 }
 
 /// The tank's state: its camera, its settings and cells, its water and its picture (made on
@@ -124,7 +151,7 @@ impl TankScene {
     pub fn new(float_targets: bool) -> Self {
         let settings = TankSettings::default();
         Self {
-            camera: start_camera(settings.size),
+            camera: camera_for(&settings),
             medium: Medium::of(&settings, TANK_CELLS),
             settings,
             water: None,
@@ -198,8 +225,8 @@ impl super::Scene for TankScene {
 
     fn follow_params(&mut self, params: &Params) {
         let (settings, old) = (tank_settings(params), self.settings);
-        if settings.size != old.size {
-            self.camera = start_camera(settings.size);
+        if settings.size != old.size || settings.look != old.look {
+            self.camera = camera_for(&settings);
         }
         let fresh_lab = settings.setup != old.setup || settings.size != old.size;
         if fresh_lab {
@@ -261,8 +288,15 @@ impl super::Scene for TankScene {
         mark(cx.encoder, Stage::AfterSimulation);
         // No waves move here on their own (the stage of the pool's and the sea's FFT).
         mark(cx.encoder, Stage::AfterWaves);
+        let look = self.settings.look;
+        let aspect = sh.viewport.x / sh.viewport.y * if look == Look::Split { 0.5 } else { 1.0 };
         let shot = render::Shot {
-            view_proj: self.camera.view_projection(sh.viewport.x / sh.viewport.y),
+            view_proj: match look {
+                Look::Split => top_camera(self.settings.size, aspect).view_projection(aspect),
+                _ => self.camera.view_projection(aspect),
+            },
+            apparatus_view_proj: self.camera.view_projection(aspect),
+            look,
             view: sh.params.choice(ParamId::TankView),
             exposure: 2f32.powf(sh.params.get(ParamId::Exposure)),
             lines: match self.medium.slits {
@@ -275,7 +309,7 @@ impl super::Scene for TankScene {
         };
         let group = picture.encode_screen(device, queue, cx.encoder, water, &self.settings, &shot);
         mark(cx.encoder, Stage::AfterMaps);
-        picture.encode_show(cx.encoder, cx.target, &group);
+        picture.encode_show(cx.encoder, cx.target, &group, look, cx.size);
         mark(cx.encoder, Stage::AfterShading);
     }
 
@@ -386,6 +420,19 @@ impl super::Scene for TankScene {
             out.push(("ruler", (a.0 - b.0).hypot(a.1 - b.1) * 1e3, "mm"));
         }
         out
+    }
+
+    /// In the split, the left half is the apparatus's camera and the right the top view's.
+    fn pick_water(&self, viewport: Vec2, pixel: Vec2) -> Pick {
+        let w = self.settings.half_width();
+        if self.settings.look != Look::Split {
+            return self.camera.pick_within(pixel, viewport, w);
+        }
+        let half = Vec2::new(0.5 * viewport.x, viewport.y);
+        if pixel.x < half.x {
+            return self.camera.pick_within(pixel, half, w);
+        }
+        top_camera(self.settings.size, half.x / half.y).pick_within(pixel - Vec2::new(half.x, 0.0), half, w)
     }
 
     fn pick_body(&self, _sh: Shared<'_>, _pixel: Vec2) -> Option<(BodyId, Vec3, Vec3)> {

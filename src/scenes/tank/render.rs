@@ -8,7 +8,7 @@ use glam::Mat4;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::scenes::STEP_DT;
 use crate::tank::gpu::TankWater;
-use crate::tank::{TankSettings, TankView, LINE_WIDTH, MAX_LINES, PROBE_SAMPLES, SCREEN_BELOW};
+use crate::tank::{Look, TankSettings, TankView, LINE_WIDTH, MAX_LINES, PROBE_SAMPLES, SCREEN_BELOW};
 
 /// Texels along each side of the screen's image.
 pub const SCREEN_TEXELS: u32 = 512;
@@ -38,12 +38,17 @@ struct PictureUniforms {
     trace: [f32; 4],
     graph: [f32; 4],
     ruler: [f32; 4],
+    apparatus_inverse_view_proj: [[f32; 4]; 4],
+    halves: [f32; 4],
 }
 
 /// What the picture shows beyond the settings: the camera's view-projection, the view and the
 /// exposure of the screen's light.
 pub struct Shot {
+    /// The screen view's camera, and the apparatus's.
     pub view_proj: Mat4,
+    pub apparatus_view_proj: Mat4,
+    pub look: Look,
     pub view: TankView,
     pub exposure: f32,
     /// The slits' lines to draw: where they start (z, m) and their directions (rad from +z
@@ -68,6 +73,11 @@ pub struct TankPicture {
     screen_view: wgpu::TextureView,
     image_group: wgpu::BindGroup,
     show: FullscreenPass,
+    /// The apparatus in 3D, made when first shown.
+    apparatus: Option<FullscreenPass>,
+    layouts: [wgpu::BindGroupLayout; 2],
+    numbers: String,
+    target_format: wgpu::TextureFormat,
     /// What one unit of light is stored as in the screen's image.
     scale: f32,
 }
@@ -137,6 +147,7 @@ impl TankPicture {
                 gpu::wgsl::MATH,
                 &numbers,
                 picture,
+                crate::wgsl!("tank/paper.wgsl"),
                 crate::wgsl!("tank/instruments.wgsl"),
                 crate::wgsl!("tank/show.wgsl"),
             ],
@@ -157,7 +168,21 @@ impl TankPicture {
             buffer("tank surface triangles", bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
             indices.len() as u32,
         );
-        Self { uniforms, layout, screen_pipeline, mesh, screen_image: image, screen_view, image_group, show, scale }
+        Self {
+            uniforms,
+            layout: layout.clone(),
+            screen_pipeline,
+            mesh,
+            screen_image: image,
+            screen_view,
+            image_group,
+            show,
+            apparatus: None,
+            layouts: [layout, image_layout],
+            numbers,
+            target_format,
+            scale,
+        }
     }
 
     /// The screen's image: light per texel (1 for flat water under the lamp) times
@@ -180,7 +205,7 @@ impl TankPicture {
     /// Records the screen's image (in the screen view) into `encoder`; call before
     /// [`TankPicture::encode_show`].
     pub fn encode_screen(
-        &self,
+        &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         encoder: &mut wgpu::CommandEncoder,
@@ -200,6 +225,8 @@ impl TankPicture {
             trace: [0.0, 0.0, PROBE_SAMPLES as f32, STEP_DT],
             graph: [0.0; 4],
             ruler: [0.0; 4],
+            apparatus_inverse_view_proj: shot.apparatus_view_proj.inverse().to_cols_array_2d(),
+            halves: if shot.look == Look::Split { [0.0, 0.5, 0.5, 0.5] } else { [0.0, 1.0, 0.0, 1.0] },
         };
         if let Some(((x, z), swing)) = shot.probe {
             // The graph's half height: the swing read, at least half the dippers' amplitude.
@@ -236,7 +263,10 @@ impl TankPicture {
                 wgpu::BindGroupEntry { binding: 3, resource: wgpu::BindingResource::TextureView(water.probe_view()) },
             ],
         });
-        if shot.view == TankView::Screen {
+        if shot.look != Look::Screen && self.apparatus.is_none() {
+            self.apparatus = Some(self.apparatus_pass(device));
+        }
+        if shot.view == TankView::Screen || shot.look != Look::Screen {
             let mut pass =
                 gpu::colour_pass(encoder, "tank screen", &self.screen_view, wgpu::LoadOp::Clear(wgpu::Color::BLACK));
             pass.set_pipeline(&self.screen_pipeline);
@@ -249,9 +279,42 @@ impl TankPicture {
         group
     }
 
-    /// Draws the picture over the whole of `target` with the group [`TankPicture::encode_screen`] made.
-    pub fn encode_show(&self, encoder: &mut wgpu::CommandEncoder, target: &wgpu::TextureView, group: &wgpu::BindGroup) {
-        self.show.run(encoder, target, &[group, &self.image_group]);
+    /// Draws the picture over the whole of `target` (`size` pixels) with the group
+    /// [`TankPicture::encode_screen`] made: the screen view, the apparatus, or the apparatus on
+    /// the left and the screen view on the right.
+    pub fn encode_show(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        group: &wgpu::BindGroup,
+        look: Look,
+        (width, height): (u32, u32),
+    ) {
+        let groups = [group, &self.image_group];
+        let apparatus = self.apparatus.as_ref().filter(|_| look != Look::Screen);
+        match (look, apparatus) {
+            (Look::Apparatus, Some(pass)) => pass.run(encoder, target, &groups),
+            (Look::Split, Some(pass)) => {
+                let half = width / 2;
+                pass.run_in_rect(encoder, target, &groups, [0, 0, half, height]);
+                self.show.run_in_rect(encoder, target, &groups, [half, 0, width - half, height]);
+            }
+            _ => self.show.run(encoder, target, &groups),
+        }
+    }
+
+    /// The apparatus's pass (`shaders/tank/apparatus.wgsl`).
+    fn apparatus_pass(&self, device: &wgpu::Device) -> FullscreenPass {
+        let parts = [
+            gpu::wgsl::MATH,
+            &self.numbers,
+            crate::wgsl!("tank/picture.wgsl"),
+            crate::wgsl!("tank/paper.wgsl"),
+            crate::wgsl!("tank/apparatus.wgsl"),
+        ];
+        let [layout, image_layout] = &self.layouts;
+        let target = FullscreenTarget { format: self.target_format, blend: None, depth: None };
+        FullscreenPass::new(device, "tank apparatus", &parts, "fs_apparatus", &[layout, image_layout], target)
     }
 }
 

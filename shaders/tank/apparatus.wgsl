@@ -1,0 +1,221 @@
+// The ripple tank as it stands in the lab, ray-traced: the lamp's bulb hanging over the
+// tray, the tray's frame on four legs, the water in its glass-bottomed tray and the white
+// paper on the bench below with the lamp's image on it (the screen pass's light). Looking into
+// the water, a ray reflects by Fresnel's law to the room and the lamp, and refracts through
+// the water and the glass (Snell's law at each face; the thin flat glass shifts a ray but does
+// not turn it) down to the paper.
+
+const BULB_RADIUS: f32 = 0.025;
+const CORD_RADIUS: f32 = 0.003;
+const LEG_RADIUS: f32 = 0.008;
+const RIM_HEIGHT: f32 = 0.012;
+const GLASS_THICKNESS: f32 = 0.006;
+const FRAME: vec3<f32> = vec3<f32>(0.32, 0.25, 0.18);
+const METAL: vec3<f32> = vec3<f32>(0.45, 0.46, 0.48);
+const BULB: vec3<f32> = vec3<f32>(6.0, 5.4, 4.2);
+const FAR: f32 = 1.0e9;
+
+struct Hit {
+    t: f32,
+    normal: vec3<f32>,
+    kind: i32, // 0 nothing, 1 water, 2 frame, 3 leg or cord, 4 bulb, 5 bench and paper
+};
+
+fn no_hit() -> Hit {
+    return Hit(FAR, vec3<f32>(0.0, 1.0, 0.0), 0);
+}
+
+fn nearer(a: Hit, b: Hit) -> Hit {
+    if b.t < a.t {
+        return b;
+    }
+    return a;
+}
+
+// The ray's nearest entry into the box from `lo` to `hi` beyond 1e-4.
+fn box_hit(o: vec3<f32>, d: vec3<f32>, lo: vec3<f32>, hi: vec3<f32>, kind: i32) -> Hit {
+    let inv = 1.0 / d;
+    let a = (lo - o) * inv;
+    let b = (hi - o) * inv;
+    let near = min(a, b);
+    let far = max(a, b);
+    let t0 = max(max(near.x, near.y), near.z);
+    let t1 = min(min(far.x, far.y), far.z);
+    if t0 > t1 || t0 < 1e-4 {
+        return no_hit();
+    }
+    let n = select(select(vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 1.0, 0.0), t0 == near.y), vec3<f32>(1.0, 0.0, 0.0), t0 == near.x);
+    return Hit(t0, -n * sign(d), kind);
+}
+
+// A vertical rod of radius `r` round (c.x, c.y) from height y0 to y1.
+fn rod_hit(o: vec3<f32>, d: vec3<f32>, c: vec2<f32>, r: f32, y0: f32, y1: f32) -> Hit {
+    let p = o.xz - c;
+    let a = dot(d.xz, d.xz);
+    let b = dot(p, d.xz);
+    let disc = b * b - a * (dot(p, p) - r * r);
+    if a < 1e-12 || disc < 0.0 {
+        return no_hit();
+    }
+    let t = (-b - sqrt(disc)) / a;
+    let y = o.y + t * d.y;
+    if t < 1e-4 || y < y0 || y > y1 {
+        return no_hit();
+    }
+    return Hit(t, vec3<f32>((p + t * d.xz) / r, 0.0).xzy, 3);
+}
+
+fn bulb_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
+    let p = o - vec3<f32>(0.0, pic.tray.z, 0.0);
+    let b = dot(p, d);
+    let disc = b * b - dot(p, p) + BULB_RADIUS * BULB_RADIUS;
+    let t = -b - sqrt(max(disc, 0.0));
+    if disc < 0.0 || t < 1e-4 {
+        return no_hit();
+    }
+    return Hit(t, normalize(p + t * d), 4);
+}
+
+fn plane_hit(o: vec3<f32>, d: vec3<f32>, y: f32, kind: i32) -> Hit {
+    let t = (y - o.y) / d.y;
+    if t > 1e-4 && abs(d.y) > 1e-9 {
+        return Hit(t, vec3<f32>(0.0, sign(-d.y), 0.0), kind);
+    }
+    return no_hit();
+}
+
+fn paper_level() -> f32 {
+    return -pic.tray.y - pic.tray.w;
+}
+
+// Everything but the water the ray meets first.
+fn solid_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
+    let w = pic.tray.x;
+    let rim = w * 1.03 + 0.01;
+    let bottom = -pic.tray.y - GLASS_THICKNESS;
+    var hit = plane_hit(o, d, paper_level(), 5);
+    // The frame: four bars round the water.
+    hit = nearer(hit, box_hit(o, d, vec3<f32>(-rim, bottom, w), vec3<f32>(rim, RIM_HEIGHT, rim), 2));
+    hit = nearer(hit, box_hit(o, d, vec3<f32>(-rim, bottom, -rim), vec3<f32>(rim, RIM_HEIGHT, -w), 2));
+    hit = nearer(hit, box_hit(o, d, vec3<f32>(w, bottom, -w), vec3<f32>(rim, RIM_HEIGHT, w), 2));
+    hit = nearer(hit, box_hit(o, d, vec3<f32>(-rim, bottom, -w), vec3<f32>(-w, RIM_HEIGHT, w), 2));
+    let corner = 0.5 * (w + rim);
+    for (var k = 0; k < 4; k++) {
+        let c = vec2<f32>(select(-corner, corner, (k & 1) == 1), select(-corner, corner, (k & 2) == 2));
+        hit = nearer(hit, rod_hit(o, d, c, LEG_RADIUS, paper_level(), bottom));
+    }
+    hit = nearer(hit, rod_hit(o, d, vec2<f32>(0.0), CORD_RADIUS, pic.tray.z, pic.tray.z + 3.0));
+    return nearer(hit, bulb_hit(o, d));
+}
+
+// The paper's light at a point of the bench (the lamp's image where it has one).
+fn paper_colour(p: vec3<f32>) -> vec3<f32> {
+    let e = pic.screen.x;
+    let uv = vec2<f32>(0.5 + p.x / (2.0 * e), 0.5 - p.z / (2.0 * e));
+    if any(uv < vec2<f32>(0.0)) || any(uv > vec2<f32>(1.0)) {
+        return BENCH * (0.4 + 0.6 * lamp_light(p, vec3<f32>(0.0, 1.0, 0.0)));
+    }
+    return paper_at(uv);
+}
+
+// Diffuse light from the lamp on a surface at `p` facing `n` (1 straight under it at 1 m).
+fn lamp_light(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    let to_lamp = vec3<f32>(0.0, pic.tray.z, 0.0) - p;
+    return max(dot(n, normalize(to_lamp)), 0.0) / max(dot(to_lamp, to_lamp), 0.05);
+}
+
+// The room, dim, its ceiling lit (the water's ripples show in its reflection); the bulb where
+// the ray meets it.
+fn room(o: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
+    if bulb_hit(o, d).kind == 4 {
+        return BULB;
+    }
+    return mix(vec3<f32>(0.03, 0.03, 0.035), vec3<f32>(0.3, 0.3, 0.32), smoothstep(0.2, 0.9, d.y));
+}
+
+fn shade_solid(hit: Hit, o: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
+    let p = o + hit.t * d;
+    switch hit.kind {
+        case 2: {
+            return FRAME * (0.15 + lamp_light(p, hit.normal));
+        }
+        case 3: {
+            return METAL * (0.15 + lamp_light(p, hit.normal));
+        }
+        case 4: {
+            return BULB;
+        }
+        case 5: {
+            return paper_colour(p);
+        }
+        default: {
+            return room(o, d);
+        }
+    }
+}
+
+// The water's surface at tray point xz: its normal from the heights round it, and whether a
+// barrier stands there.
+fn water_normal(xz: vec2<f32>) -> vec4<f32> {
+    let w = pic.tray.x;
+    let p = vec2<i32>((xz + w) / (2.0 * w) * pic.screen.z);
+    let dx = 2.0 * w / pic.screen.z;
+    let slope = vec2<f32>(cell_of(p + vec2<i32>(1, 0)).x - cell_of(p - vec2<i32>(1, 0)).x,
+        cell_of(p + vec2<i32>(0, 1)).x - cell_of(p - vec2<i32>(0, 1)).x) / (2.0 * dx);
+    return vec4<f32>(normalize(vec3<f32>(-slope.x, 1.0, -slope.y)), select(0.0, 1.0, is_wall(p)));
+}
+
+fn apparatus(uv: vec2<f32>) -> vec3<f32> {
+    let ndc = vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0);
+    let near = pic.apparatus_inverse_view_proj * vec4<f32>(ndc, 0.0, 1.0);
+    let far = pic.apparatus_inverse_view_proj * vec4<f32>(ndc, 1.0, 1.0);
+    let o = near.xyz / near.w;
+    let d = normalize(far.xyz / far.w - o);
+    let solid = solid_hit(o, d);
+    let water = plane_hit(o, d, 0.0, 1);
+    let p = o + water.t * d;
+    if water.t >= solid.t || any(abs(p.xz) > vec2<f32>(pic.tray.x)) {
+        return shade_solid(solid, o, d);
+    }
+    let surface = water_normal(p.xz);
+    if surface.w > 0.5 {
+        return vec3<f32>(0.35) * (0.2 + lamp_light(p, vec3<f32>(0.0, 1.0, 0.0)));
+    }
+    // From above (or, under the tray, from below through the glass): Fresnel's share
+    // reflected, the rest through the water and the glass.
+    let n = select(-surface.xyz, surface.xyz, d.y < 0.0);
+    let cos_i = abs(dot(d, n));
+    let f0 = pow((IOR_WATER - 1.0) / (IOR_WATER + 1.0), 2.0);
+    let fresnel = f0 + (1.0 - f0) * pow(1.0 - cos_i, 5.0);
+    let reflected = reflect(d, n);
+    let r_hit = solid_hit(p, reflected);
+    // The room and the bulb in the water, and the bulb's glints on the ripples (a glossy lobe:
+    // the surface is not a perfect mirror at a pixel's scale).
+    let to_lamp = normalize(vec3<f32>(0.0, pic.tray.z, 0.0) - p);
+    let glint = BULB * 0.02 * pow(max(dot(reflected, to_lamp), 0.0), 2000.0);
+    let mirror = select(room(p, reflected), shade_solid(r_hit, p, reflected), r_hit.kind != 0) + glint;
+    var through = vec3<f32>(0.0);
+    if d.y < 0.0 {
+        let t = refract(d, n, 1.0 / IOR_WATER);
+        let bottom = p + t * ((-pic.tray.y - p.y) / t.y);
+        let across = t.xz * IOR_WATER;
+        let s2 = dot(across, across);
+        if s2 < 1.0 {
+            let out = vec3<f32>(across.x, -sqrt(1.0 - s2), across.y);
+            through = shade_solid(solid_hit(bottom, out), bottom, out) * vec3<f32>(0.9, 0.95, 0.95);
+        }
+    } else {
+        through = room(p, d);
+    }
+    return mix(through, mirror, fresnel);
+}
+
+@fragment
+fn fs_apparatus(in: FullscreenOut) -> @location(0) vec4<f32> {
+    let uv = vec2<f32>((in.uv.x - pic.halves.x) / pic.halves.y, in.uv.y);
+    var colour = apparatus(uv);
+    if ENCODE_SRGB {
+        colour = linear_to_srgb(colour);
+    }
+    return vec4<f32>(colour, 1.0);
+}
