@@ -5,11 +5,12 @@
 import { WebDemo, presetTable } from "./wavepool.js";
 import { contextsHeld, releaseContext } from "./context-budget.js";
 import { controlMethods } from "./controls.js";
+import { linkMethods } from "./links.js";
 import { frameLoopMethods, frameStats } from "./frame-loop.js";
 import { inputMethods } from "./input.js";
 import { keepKeys } from "./keys.js";
 import { layoutMethods } from "./layout.js";
-import { assetUrl, demoPage, inline, live, memoryBytes } from "./loader.js";
+import { assetUrl, inline, live, memoryBytes } from "./loader.js";
 import { toNumber } from "./options.js";
 import { suspendMethods } from "./suspend.js";
 
@@ -299,46 +300,6 @@ export class Demo {
     this._refreshControls();
   }
 
-  /** The query string of this demo as it is now: parameters that differ from the defaults, and the camera. */
-  _query() {
-    const query = new URLSearchParams();
-    for (const p of this._table) {
-      const v = this.get(p.name);
-      if (v === p.default) continue;
-      const i = p.kind === "choice" ? p.choices.indexOf(v) : -1;
-      query.set(p.name, i >= 0 && p.choiceNames[i] ? p.choiceNames[i] : String(v));
-    }
-    query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
-    const sketch = this.sketch();
-    if (sketch) query.set("sketch", sketch);
-    return query.toString().replace(/%2C/g, ",");
-  }
-
-  /** A link that opens the demo's page with this demo's parameters and view. */
-  shareLink() {
-    return `${demoPage("index.html")}?${this._query()}`;
-  }
-
-  /** An <iframe> showing this demo as it is now (the pool alone, `embed.html`; the single file when this is it). */
-  embedCode() {
-    const page = demoPage("embed.html");
-    return (
-      `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
-      `title="Interactive water pool (wavepool)"></iframe>`
-    );
-  }
-
-  /** What was drawn with the pointer (the tank's walls, erasures and ruler), as the share link's `sketch`. */
-  sketch() {
-    return this._suspended ? this._saved.sketch : this._alive().sketch();
-  }
-
-  /** Replaces what was drawn with `text` (as sketch() gives it); a text that cannot be read changes nothing (console warning). */
-  setSketch(text) {
-    if (this._suspended) this._saved.sketch = String(text);
-    else this._alive().setSketch(String(text));
-  }
-
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */
   camera() {
     if (this._suspended) return Array.from(this._saved.camera);
@@ -411,4 +372,4 @@ export class Demo {
   }
 }
 
-Object.assign(Demo.prototype, inputMethods, layoutMethods, controlMethods, frameLoopMethods, suspendMethods);
+Object.assign(Demo.prototype, inputMethods, layoutMethods, controlMethods, linkMethods, frameLoopMethods, suspendMethods);
