@@ -62,6 +62,8 @@ param_ids! {
     TankTool = "tank_tool",
     TankFrequency = "tank_frequency",
     TankAmplitude = "tank_amplitude",
+    TankDippers = "tank_dippers",
+    TankPhase = "tank_phase",
     TankDepth = "tank_depth",
     TankSize = "tank_size",
     TankSlitWidth = "tank_slit_width",

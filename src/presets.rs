@@ -257,6 +257,20 @@ pub const PRESETS: &[Preset] = &[
         values: &[("scene", 2.0), ("tank_setup", 9.0), ("tank_amplitude", PLANE_WAVE_AMPLITUDE)],
         camera: Some(crate::tank::START_VIEW),
     },
+    Preset {
+        name: "phased_array",
+        label: "Ripple tank: a phased array",
+        help: "Four dippers in a row, 30 mm apart (a little over half a wavelength at 6 Hz), each a quarter of a cycle behind the one before. Their waves add up in one direction only, a beam turned about 25° towards the lagging end: change the phase step and the beam swings round without anything moving, as a phased-array radar or an ultrasound probe steers its beam. Switch the view to the intensity to see the beam.",
+        values: &[
+            ("scene", 2.0),
+            ("tank_setup", 1.0),
+            ("tank_dippers", 4.0),
+            ("tank_slit_spacing", 30.0),
+            ("tank_frequency", 6.0),
+            ("tank_phase", 90.0),
+        ],
+        camera: Some(crate::tank::START_VIEW),
+    },
 ];
 
 impl Preset {

@@ -318,6 +318,7 @@ fn a_moving_dipper_crowds_its_waves_ahead_and_spreads_them_behind() {
 fn the_tanks_water_is_the_same_at_30_60_and_144_frames_a_second_and_bounded_with_four_dippers() {
     // The same 1.2 s in frames of three rates: the steps are fixed, so the water is too.
     let settings = TankSettings { setup: Setup::TwoDippers, size: 0.3, ..Default::default() };
+    assert_eq!(Medium::of(&TankSettings { dippers: 4, ..settings }, 96).sources.dippers.len(), 4);
     let mut states = Vec::new();
     for fps in [30.0f64, 60.0, 144.0] {
         let medium = Medium::of(&settings, 96);
@@ -337,7 +338,15 @@ fn the_tanks_water_is_the_same_at_30_60_and_144_frames_a_second_and_bounded_with
     assert!(states.iter().all(|s| s.0 == shortest), "the rates took different numbers of steps");
     assert!(states.windows(2).all(|w| w[0].1 == w[1].1), "the water differs between frame rates");
     // Four dippers at full amplitude for 100,000 steps (a small tray, reflecting walls).
-    let loud = TankSettings { amplitude: 1e-3, beaches: false, size: 0.1, frequency: 25.0, ..settings };
+    let loud = TankSettings {
+        amplitude: 1e-3,
+        beaches: false,
+        size: 0.1,
+        frequency: 25.0,
+        dippers: 4,
+        slit_spacing: 0.02,
+        ..settings
+    };
     let mut medium = Medium::open(24, loud.size, loud.depth, false);
     for (x, z) in [(-0.02, -0.02), (0.02, -0.02), (-0.02, 0.02), (0.02, 0.02)] {
         medium.sources.dippers.push(Dipper::at(x, z, 0.004));
@@ -635,4 +644,88 @@ fn the_apparatus_shows_the_lamp_over_the_tray_and_its_image_on_the_paper_and_the
     println!("split: left half against the apparatus alone {diff:.2} luma; right half spread {right_spread:.1}, mean {right_mean:.0?}");
     assert!(diff < 2.0, "the split's left half should be the apparatus");
     assert!(right_spread > 20.0 && right_mean[0] > 60.0, "the split's right half should show the paper from above");
+}
+
+#[test]
+fn a_phased_array_of_four_dippers_steers_its_beam_to_the_angle_theory_gives() {
+    // Four dippers 30 mm apart at 6 Hz (0.58 of a wavelength), each a quarter cycle behind its
+    // −x neighbour.
+    let settings = TankSettings {
+        setup: Setup::TwoDippers,
+        dippers: 4,
+        slit_spacing: 0.03,
+        frequency: 6.0,
+        phase_step: 90f32.to_radians(),
+        size: 1.0,
+        ..Default::default()
+    };
+    let mut tank = CpuTank::new(Medium::of(&settings, 320));
+    run(&mut tank, &settings, 4.0, |_| {});
+    // The intensity round an arc 0.35 m from the row's middle (its far field), every half degree.
+    let m = tank.medium.clone();
+    let (radius, mut best, mut brightest) = (0.35f32, 0.0f32, 0.0f32);
+    for k in -140..=140 {
+        let angle = (k as f32 * 0.5).to_radians();
+        let Some((i, j)) = m.cell_at(radius * angle.sin(), radius * angle.cos()) else { continue };
+        if tank.intensity(i, j) > brightest {
+            (best, brightest) = (angle.to_degrees(), tank.intensity(i, j));
+        }
+    }
+    let lambda = settings.wavelength();
+    let theory = (settings.phase_step * lambda / (std::f32::consts::TAU * settings.slit_spacing)).asin().to_degrees();
+    println!(
+        "the beam at {best:.1}° (towards +x), theory arcsin(Δφ λ / (2π d)) = {theory:.1}° (λ {:.1} mm)",
+        lambda * 1e3
+    );
+    // Within 2°: the dippers are disks that also scatter each other's waves, which the theory's
+    // points do not (the beam sits about 1.3° short); a lost or reversed phase step is 25° off.
+    assert!((best - theory).abs() <= 2.0, "the beam at {best}°, not {theory}°");
+}
+
+#[test]
+fn a_dipper_dragged_with_the_move_tool_makes_its_waves_where_it_was_left_and_the_link_keeps_it() {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 2.0);
+    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Move.value());
+    d.sync_scene();
+    let (width, height) = (320u32, 240u32);
+    d.set_viewport(width, height);
+    let size = glam::Vec2::new(width as f32, height as f32);
+    let at =
+        |d: &wavepool::demo::WaterDemo, x: f32, z: f32| d.camera().project(glam::Vec3::new(x, 0.0, z), size).unwrap();
+    // From the dipper in the middle to (80, 60) mm, in four moves.
+    let (a, b) = (at(&d, 0.0, 0.0), at(&d, 0.08, 0.06));
+    d.pointer_down(a.x, a.y);
+    for k in 1..=4 {
+        let p = a + (b - a) * (k as f32 / 4.0);
+        d.pointer_move(p.x, p.y);
+    }
+    d.pointer_up();
+    let dipper = d.tank().medium().sources.dippers[0];
+    let text = d.sketch();
+    println!("the dipper is at ({:.1}, {:.1}) mm; sketch {text:?}", dipper.x * 1e3, dipper.z * 1e3);
+    assert!((dipper.x - 0.08).abs() < 0.004 && (dipper.z - 0.06).abs() < 0.004, "the dipper did not follow");
+    assert!(text.starts_with("D0,"), "{text}");
+    // Its rings after half a second (0.16 m of travel): round where it was left the water
+    // moves; 200 mm from there (but 100 mm from where it stood) it is still.
+    render(&mut d, 64, 48, 30, 1.0 / 60.0);
+    let m = d.tank().medium();
+    let g = gpu();
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
+    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+    let swing_at = |x: f32, z: f32| {
+        let (i, j) = m.cell_at(x, z).unwrap();
+        state[(j * m.cells + i) as usize][2].sqrt()
+    };
+    let (near, far) = (swing_at(0.08, 0.09), swing_at(-0.08, -0.06));
+    println!("after 0.5 s: rms height 30 mm from where it was left {:.2e} m, 200 mm from it {:.2e} m", near, far);
+    assert!(near > 10.0 * far.max(1e-9), "the waves should start where the dipper was left");
+    let mut copy = demo(DemoOptions::default());
+    copy.params.set(ParamId::Scene, 2.0);
+    copy.set_sketch(&text).expect("the sketch reads");
+    let copied = copy.tank().medium().sources.dippers[0];
+    assert!(
+        (copied.x - dipper.x).abs() < 1e-3 && (copied.z - dipper.z).abs() < 1e-3,
+        "the link lost the dipper's place"
+    );
 }

@@ -69,7 +69,7 @@ export const controlMethods = {
     if (groups.has("Tank")) {
       // What the tank's instruments read (the probe, the ruler), twice a second.
       this._readings = document.createElement("p");
-      this._readings.className = "costs readings";
+      this._readings.className = "readings";
       groups.get("Tank").append(this._readings);
     }
     if (groups.has("Optics")) {

@@ -82,6 +82,8 @@ pub struct Sources {
 
 /// The reflection set-up's parabolic wall: its focal length as a share of the tray's side.
 pub const PARABOLA_FOCAL_SHARE: f32 = 0.2;
+/// The prism set-up's angle between its faces (°).
+pub const PRISM_ANGLE: f32 = 30.0;
 /// The standing-wave set-up's wall across the tray: where it stands (z as a share of the side).
 pub const STANDING_WALL_SHARE: f32 = 0.15;
 
@@ -172,7 +174,14 @@ impl Medium {
         let dipper = |x: f32, z: f32| Dipper::at(x, z, radius);
         match settings.setup {
             Setup::Dipper => m.sources.dippers.push(dipper(0.0, 0.0)),
-            Setup::TwoDippers => m.sources.dippers.extend([dipper(-0.5 * s, 0.0), dipper(0.5 * s, 0.0)]),
+            Setup::TwoDippers => {
+                // A row along x, the spacing apart, each lagging its −x neighbour by the step.
+                let n = settings.dippers.clamp(1, MAX_DIPPERS as u32);
+                m.sources.dippers.extend((0..n).map(|k| {
+                    let x = (k as f32 - 0.5 * (n - 1) as f32) * s;
+                    Dipper { phase: -(k as f32) * settings.phase_step, ..dipper(x, 0.0) }
+                }));
+            }
             Setup::Doppler => {
                 // Across the middle of the open water, then again from the start.
                 let start = -0.5 * l + BEACH_SHARE * l;
@@ -208,6 +217,16 @@ impl Medium {
                 });
             }
             Setup::Standing => m.barrier(STANDING_WALL_SHARE * l, 2.0 * dx, |_| false),
+            Setup::Prism => {
+                // A right-angled prism: the waves enter its face parallel to the bar and leave
+                // by its slanting face (at PRISM_ANGLE to the first), turned aside.
+                let (base, side) = (-0.1 * l, 0.5 * l);
+                let slope = PRISM_ANGLE.to_radians().tan();
+                m.paint(|x, z| {
+                    let inside = z > base && x.abs() < 0.5 * side && z < base + slope * (x + 0.5 * side);
+                    inside.then_some(CellKind::Plate)
+                });
+            }
             Setup::Lens => {
                 let Lens { radius: r, thickness: t, centre: zc } = Lens::of(l);
                 let inside = |x: f32, z: f32, cz: f32| x * x + (z - cz) * (z - cz) < r * r;

@@ -34,6 +34,7 @@ crate::choices! {
         Doppler = "doppler",
         Reflection = "reflection",
         Standing = "standing",
+        Prism = "prism",
     }
 }
 
@@ -48,6 +49,7 @@ crate::choices! {
         Erase = "erase",
         Probe = "probe",
         Ruler = "ruler",
+        Move = "move",
     }
 }
 
@@ -127,6 +129,10 @@ pub struct TankSettings {
     /// The tray's side (m) and its water's depth (m).
     pub size: f32,
     pub depth: f32,
+    /// How many dippers stand in a row (the `two_dippers` set-up), and how far each one's
+    /// phase lags its neighbour's on the −x side (rad): a phased array.
+    pub dippers: u32,
+    pub phase_step: f32,
     /// The dippers' frequency (Hz) and amplitude (m).
     pub frequency: f32,
     pub amplitude: f32,
@@ -161,6 +167,8 @@ impl Default for TankSettings {
             look: Look::from(TANK_LOOK.default),
             size: TANK_SIZE.default,
             depth: TANK_DEPTH.default * 1e-3,
+            dippers: TANK_DIPPERS.default as u32,
+            phase_step: TANK_PHASE.default.to_radians(),
             frequency: TANK_FREQUENCY.default,
             amplitude: TANK_AMPLITUDE.default * 1e-3,
             slit_width: TANK_SLIT_WIDTH.default * 1e-3,
@@ -210,6 +218,8 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_TOOL,
     TANK_FREQUENCY,
     TANK_AMPLITUDE,
+    TANK_DIPPERS,
+    TANK_PHASE,
     TANK_DEPTH,
     TANK_SIZE,
     TANK_SLIT_WIDTH,
@@ -234,7 +244,7 @@ pub const TANK_SETUP: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Setup::VALUES, names: Setup::NAMES },
     default: 0.0,
-    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, a dipper moving across the tank (Doppler), a curved wall that reflects the bar's waves to a focus (a parabolic mirror), or a straight wall facing the bar (standing waves).",
+    help: "What is in the tank: one dipper, two dippers, a straight bar making plane waves, the bar behind a barrier with one or two slits, the bar and a glass plate whose straight edge bends the waves (refraction), a lens-shaped plate that brings them to a focus, a dipper moving across the tank (Doppler), a curved wall that reflects the bar's waves to a focus (a parabolic mirror), a straight wall facing the bar (standing waves), or a glass prism that turns the bar's waves aside.",
 };
 
 pub const TANK_LOOK: ParamSpec = ParamSpec {
@@ -264,7 +274,7 @@ pub const TANK_TOOL: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Tool::VALUES, names: Tool::NAMES },
     default: 0.0,
-    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, or lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength).",
+    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength), or move a dipper: press on it and drag.",
 };
 
 /// The pen that draws and erases walls: its radius (m), at least this many cells.
@@ -279,6 +289,26 @@ pub const TANK_FREQUENCY: ParamSpec = ParamSpec {
     control: slider(2.0, 25.0, 0.5),
     default: 10.0,
     help: "How often the dippers (or the bar) go up and down. The wavelength is the speed over the frequency.",
+};
+
+pub const TANK_DIPPERS: ParamSpec = ParamSpec {
+    name: "tank_dippers",
+    label: "Dippers",
+    group: "Tank",
+    unit: "",
+    control: slider(1.0, 4.0, 1.0),
+    default: 2.0,
+    help: "How many dippers stand in a row in the two-dipper set-up, the slit spacing apart.",
+};
+
+pub const TANK_PHASE: ParamSpec = ParamSpec {
+    name: "tank_phase",
+    label: "Phase step",
+    group: "Tank",
+    unit: "°",
+    control: slider(-180.0, 180.0, 5.0),
+    default: 0.0,
+    help: "How far each dipper in the row lags its neighbour (a whole cycle is 360°). The waves add up where the lag is made up by the path: the beam turns towards the lagging end, by sin θ = (step/360°) λ / spacing. This is how a phased-array radar or an ultrasound probe steers its beam without moving.",
 };
 
 pub const TANK_AMPLITUDE: ParamSpec = ParamSpec {
@@ -414,7 +444,7 @@ pub const TANK_PROBE_X: ParamSpec = ParamSpec {
     unit: "mm",
     control: slider(-600.0, 600.0, 1.0),
     default: 0.0,
-    help: "The probe's place across the tray, from its middle (kept inside the tray).",
+    help: "The probe's place across the tray, from its middle, to the right as seen from above with the bar at the bottom (kept inside the tray).",
 };
 
 pub const TANK_PROBE_Z: ParamSpec = ParamSpec {

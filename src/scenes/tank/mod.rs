@@ -22,7 +22,7 @@ use crate::tank::{
     plan, Look, Setup, TankSettings, Tool, APPARATUS_VIEW, SCREEN_BELOW, START_VIEW, TANK_CELLS, TANK_LIMITS,
 };
 pub use render::{TankPicture, SCREEN_TEXELS};
-pub use sketch::{Ruler, Stroke};
+pub use sketch::{Ruler, Sketch, Stroke};
 
 /// A click's drop against the pool's: its radius shrinks with the tray against the pool, its
 /// height to the dippers' scale (millimetres, not centimetres).
@@ -58,6 +58,8 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         look: params.choice(ParamId::TankLook),
         size: params.get(ParamId::TankSize),
         depth: params.get(ParamId::TankDepth) * 1e-3,
+        dippers: params.get(ParamId::TankDippers).round() as u32,
+        phase_step: params.get(ParamId::TankPhase).to_radians(),
         frequency: params.get(ParamId::TankFrequency),
         amplitude: params.get(ParamId::TankAmplitude) * 1e-3,
         slit_width: params.get(ParamId::TankSlitWidth) * 1e-3,
@@ -71,7 +73,9 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         pulse: params.flag(ParamId::TankPulse),
         probe: params.flag(ParamId::TankProbe).then(|| {
             let inside = |id| (params.get(id) * 1e-3).clamp(-inner, inner);
-            (inside(ParamId::TankProbeX), inside(ParamId::TankProbeZ))
+            // "Across" counts to the right as the class sees the tray (from above, the bar at
+            // the bottom), which is −x.
+            (-inside(ParamId::TankProbeX), inside(ParamId::TankProbeZ))
         }),
         graph: params.flag(ParamId::TankGraph).then(|| (params.get(ParamId::TankGraphZ) * 1e-3).clamp(-inner, inner)),
     }
@@ -126,6 +130,9 @@ pub struct TankScene {
     strokes: Vec<Stroke>,
     /// The ruler laid with the pointer, if any.
     ruler: Option<Ruler>,
+    /// The dippers moved with the pointer (index, place in m), and the one being moved.
+    moved: Vec<(usize, (f32, f32))>,
+    moving: Option<usize>,
     /// Whether the pointer's press is still the one that began the last stroke or ruler.
     stroke_open: bool,
     /// Parameters the pointer set (the probe's place), for the demo's table.
@@ -161,6 +168,8 @@ impl TankScene {
             drops: Vec::new(),
             strokes: Vec::new(),
             ruler: None,
+            moved: Vec::new(),
+            moving: None,
             stroke_open: false,
             param_edits: Vec::new(),
             pulse_start: None,
@@ -194,13 +203,29 @@ impl TankScene {
         &self.strokes
     }
 
-    /// The set-up's cells with the pointer's strokes painted over them.
+    /// The set-up's cells with the pointer's strokes painted over them, and its dippers where
+    /// the pointer moved them.
     fn rebuild_medium(&mut self) {
         self.medium = Medium::of(&self.settings, TANK_CELLS);
         for s in &self.strokes {
             self.medium.stroke(s.from, s.to, s.kind);
         }
+        self.place_moved();
         self.medium_changed = true;
+    }
+
+    /// Puts the dippers the pointer moved where it left them (a moving dipper starts there).
+    fn place_moved(&mut self) {
+        for &(k, (x, z)) in &self.moved {
+            if let Some(d) = self.medium.sources.dippers.get_mut(k) {
+                (d.x, d.z) = (x, z);
+            }
+        }
+    }
+
+    /// What was drawn with the pointer.
+    fn drawn(&self) -> Sketch {
+        Sketch { strokes: self.strokes.clone(), ruler: self.ruler, moved: self.moved.clone() }
     }
 
     /// The water, once a frame has been drawn.
@@ -211,6 +236,28 @@ impl TankScene {
     /// The picture's passes and the screen's image, once a frame has been drawn.
     pub fn picture(&self) -> Option<&TankPicture> {
         self.picture.as_ref()
+    }
+}
+
+/// How near a dipper (m) a press must be to pick it up with the move tool.
+const PICK_DIPPER: f32 = 0.02;
+
+impl TankScene {
+    /// The move tool at `to` (m): a press picks up the nearest dipper within reach, the drag
+    /// carries it.
+    fn move_dipper(&mut self, to: (f32, f32), continues: bool) {
+        if !continues {
+            let distance = |d: &crate::tank::medium::Dipper| (d.x - to.0).hypot(d.z - to.1);
+            self.moving = (self.medium.sources.dippers.iter().enumerate())
+                .map(|(k, d)| (k, distance(d)))
+                .filter(|&(_, r)| r <= PICK_DIPPER)
+                .min_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(k, _)| k);
+        }
+        let Some(k) = self.moving else { return };
+        self.moved.retain(|&(j, _)| j != k);
+        self.moved.push((k, to));
+        self.place_moved();
     }
 }
 
@@ -233,14 +280,16 @@ impl super::Scene for TankScene {
             // A new set-up starts a fresh lab: the walls drawn for the last one and its waves go.
             self.strokes.clear();
             self.ruler = None;
+            self.moved.clear();
             self.clear_water = true;
         }
         // A pulse begins when the single pulse is switched on and with each fresh lab.
         self.pulse_due |= settings.pulse && (!old.pulse || fresh_lab);
         self.settings = settings;
         // The cells depend on these only (not on the frequency, the lamp, the strobe, …).
-        let cells_of =
-            |s: &TankSettings| (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed);
+        let cells_of = |s: &TankSettings| {
+            (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed, s.dippers, s.phase_step)
+        };
         if cells_of(&settings) != cells_of(&old) {
             self.rebuild_medium();
         }
@@ -324,8 +373,9 @@ impl super::Scene for TankScene {
         self.drops.clear();
         self.ruler = None;
         self.pulse_due = true;
-        if !self.strokes.is_empty() {
+        if !self.strokes.is_empty() || !self.moved.is_empty() {
             self.strokes.clear();
+            self.moved.clear();
             self.rebuild_medium();
         }
         if let Some(water) = &mut self.water {
@@ -357,7 +407,7 @@ impl super::Scene for TankScene {
             Tool::Probe => {
                 self.param_edits.extend([
                     (ParamId::TankProbe, 1.0),
-                    (ParamId::TankProbeX, (to.0 * 1e3).round()),
+                    (ParamId::TankProbeX, (-to.0 * 1e3).round()),
                     (ParamId::TankProbeZ, (to.1 * 1e3).round()),
                 ]);
                 return;
@@ -369,6 +419,7 @@ impl super::Scene for TankScene {
                 });
                 return;
             }
+            Tool::Move => return self.move_dipper(to, continues),
         };
         let from = match self.strokes.last() {
             Some(last)
@@ -395,13 +446,13 @@ impl super::Scene for TankScene {
     }
 
     fn sketch(&self) -> String {
-        sketch::format(&self.strokes, self.ruler)
+        sketch::format(&self.drawn())
     }
 
     /// Replaces what was drawn with what `text` says; on an error nothing changes.
     fn set_sketch(&mut self, text: &str) -> Result<(), String> {
-        let (strokes, ruler) = sketch::parse(text, self.settings.half_width())?;
-        (self.strokes, self.ruler) = (strokes, ruler);
+        let Sketch { strokes, ruler, moved } = sketch::parse(text, self.settings.half_width())?;
+        (self.strokes, self.ruler, self.moved) = (strokes, ruler, moved);
         self.rebuild_medium();
         Ok(())
     }
