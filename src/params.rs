@@ -64,6 +64,7 @@ param_ids! {
     TankAmplitude = "tank_amplitude",
     TankDippers = "tank_dippers",
     TankPhase = "tank_phase",
+    TankDetune = "tank_detune",
     TankDepth = "tank_depth",
     TankSize = "tank_size",
     TankSlitWidth = "tank_slit_width",

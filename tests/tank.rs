@@ -729,3 +729,31 @@ fn a_dipper_dragged_with_the_move_tool_makes_its_waves_where_it_was_left_and_the
         "the link lost the dipper's place"
     );
 }
+
+#[test]
+fn two_dippers_a_hertz_apart_beat_once_a_second_where_their_waves_meet() {
+    let settings = TankSettings { setup: Setup::TwoDippers, detune: 1.0, size: 0.4, ..Default::default() };
+    let mut tank = CpuTank::new(Medium::of(&settings, 160));
+    // On the line between them, 100 mm out: both waves arrive together, so the swing there
+    // grows and dies as their phases slide past each other.
+    let (i, j) = tank.medium.cell_at(0.0, 0.1).unwrap();
+    let mut heights = Vec::new();
+    run(&mut tank, &settings, 6.0, |tank| heights.push(tank.height(i, j)));
+    // The swing over each half period of the dippers (1/20 s), after the waves have arrived.
+    let per_chunk = heights.len() / 120;
+    let swings: Vec<f32> =
+        heights.chunks(per_chunk).skip(10).map(|c| c.iter().fold(0.0f32, |m, &h| m.max(h.abs()))).collect();
+    let loudest = swings.iter().fold(0.0f32, |m, &s| m.max(s));
+    // The quiet moments: swings under a third of the loudest, each run of them one beat.
+    let quiet: Vec<usize> =
+        (1..swings.len()).filter(|&k| swings[k] < loudest / 3.0 && swings[k - 1] >= loudest / 3.0).collect();
+    let beat = (quiet.last().unwrap() - quiet[0]) as f32 / (quiet.len() - 1) as f32 / 20.0;
+    println!(
+        "swing between {:.3} and {:.3} mm; {} quiet moments, {beat:.3} s apart (1 / 1 Hz = 1 s)",
+        swings.iter().fold(f32::MAX, |m, &s| m.min(s)) * 1e3,
+        loudest * 1e3,
+        quiet.len()
+    );
+    assert!(quiet.len() >= 4, "the waves should beat");
+    assert!((beat - 1.0).abs() < 0.05, "the beats are {beat} s apart");
+}

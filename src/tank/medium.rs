@@ -34,15 +34,16 @@ pub fn kind_constants() -> String {
     format!("const WALL: f32 = {:?};\nconst PLATE: f32 = {:?};\n", CellKind::Wall.code(), CellKind::Plate.code())
 }
 
-/// A point dipper: centre (m) at time 0, radius (m), phase (rad) against the others, and the
-/// velocity it moves with (m/s, x and z) for `travel` (m), after which it starts again (a
-/// dipper at rest has no velocity).
+/// A point dipper: centre (m) at time 0, radius (m), phase (rad) against the others, how much
+/// faster it runs than the set frequency (Hz), and the velocity it moves with (m/s, x and z)
+/// for `travel` (m), after which it starts again (a dipper at rest has no velocity).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dipper {
     pub x: f32,
     pub z: f32,
     pub radius: f32,
     pub phase: f32,
+    pub detune: f32,
     pub velocity: [f32; 2],
     pub travel: f32,
 }
@@ -50,7 +51,7 @@ pub struct Dipper {
 impl Dipper {
     /// A dipper standing at (x, z) (m).
     pub fn at(x: f32, z: f32, radius: f32) -> Self {
-        Self { x, z, radius, phase: 0.0, velocity: [0.0; 2], travel: 0.0 }
+        Self { x, z, radius, phase: 0.0, detune: 0.0, velocity: [0.0; 2], travel: 0.0 }
     }
 
     /// Its centre (m) at time `t` (s).
@@ -179,7 +180,8 @@ impl Medium {
                 let n = settings.dippers.clamp(1, MAX_DIPPERS as u32);
                 m.sources.dippers.extend((0..n).map(|k| {
                     let x = (k as f32 - 0.5 * (n - 1) as f32) * s;
-                    Dipper { phase: -(k as f32) * settings.phase_step, ..dipper(x, 0.0) }
+                    let (phase, detune) = (-(k as f32) * settings.phase_step, k as f32 * settings.detune);
+                    Dipper { phase, detune, ..dipper(x, 0.0) }
                 }));
             }
             Setup::Doppler => {

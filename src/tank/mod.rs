@@ -133,6 +133,8 @@ pub struct TankSettings {
     /// phase lags its neighbour's on the −x side (rad): a phased array.
     pub dippers: u32,
     pub phase_step: f32,
+    /// How much faster (Hz) each dipper in the row runs than its −x neighbour.
+    pub detune: f32,
     /// The dippers' frequency (Hz) and amplitude (m).
     pub frequency: f32,
     pub amplitude: f32,
@@ -169,6 +171,7 @@ impl Default for TankSettings {
             depth: TANK_DEPTH.default * 1e-3,
             dippers: TANK_DIPPERS.default as u32,
             phase_step: TANK_PHASE.default.to_radians(),
+            detune: TANK_DETUNE.default,
             frequency: TANK_FREQUENCY.default,
             amplitude: TANK_AMPLITUDE.default * 1e-3,
             slit_width: TANK_SLIT_WIDTH.default * 1e-3,
@@ -220,6 +223,7 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_AMPLITUDE,
     TANK_DIPPERS,
     TANK_PHASE,
+    TANK_DETUNE,
     TANK_DEPTH,
     TANK_SIZE,
     TANK_SLIT_WIDTH,
@@ -274,7 +278,7 @@ pub const TANK_TOOL: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Tool::VALUES, names: Tool::NAMES },
     default: 0.0,
-    help: "What a click or a drag on the tray does: drop small pulses into the water, draw walls the waves cannot cross (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength), or move a dipper: press on it and drag.",
+    help: "What a click or a drag on the tray does: drop small pulses into the water, draw straight walls the waves cannot cross, from where you press to where you let go (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength), or move a dipper: press on it and drag.",
 };
 
 /// The pen that draws and erases walls: its radius (m), at least this many cells.
@@ -309,6 +313,16 @@ pub const TANK_PHASE: ParamSpec = ParamSpec {
     control: slider(-180.0, 180.0, 5.0),
     default: 0.0,
     help: "How far each dipper in the row lags its neighbour (a whole cycle is 360°). The waves add up where the lag is made up by the path: the beam turns towards the lagging end, by sin θ = (step/360°) λ / spacing. This is how a phased-array radar or an ultrasound probe steers its beam without moving.",
+};
+
+pub const TANK_DETUNE: ParamSpec = ParamSpec {
+    name: "tank_detune",
+    label: "Detune",
+    group: "Tank",
+    unit: "Hz",
+    control: slider(-2.0, 2.0, 0.05),
+    default: 0.0,
+    help: "How much faster each dipper in the row runs than the one before it. Two dippers then beat: where their waves met crest to crest they soon meet crest to trough, and the still lines sweep across the tray as many times a second; a row of four sweeps its beam.",
 };
 
 pub const TANK_AMPLITUDE: ParamSpec = ParamSpec {

@@ -69,8 +69,11 @@ pub fn plan(
             update.wave[0] = (omega * t).rem_euclid(std::f64::consts::TAU) as f32;
             for (slot, d) in update.dippers.iter_mut().zip(&medium.sources.dippers) {
                 let (x, z) = d.centre_at(t);
-                // A phase in [0, 2π): the shader reads a negative one as "no source here".
-                *slot = [x, z, d.radius, d.phase.rem_euclid(std::f32::consts::TAU)];
+                // Its phase against the set frequency's, in [0, 2π) (worked out in f64, so a
+                // detuned dipper never drifts).
+                let phase =
+                    (d.phase as f64 + std::f64::consts::TAU * d.detune as f64 * t).rem_euclid(std::f64::consts::TAU);
+                *slot = [x, z, d.radius, phase as f32];
             }
             if k == 0 {
                 let n = drops.len().min(MAX_TANK_DROPS);

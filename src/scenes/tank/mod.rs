@@ -60,6 +60,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         depth: params.get(ParamId::TankDepth) * 1e-3,
         dippers: params.get(ParamId::TankDippers).round() as u32,
         phase_step: params.get(ParamId::TankPhase).to_radians(),
+        detune: params.get(ParamId::TankDetune),
         frequency: params.get(ParamId::TankFrequency),
         amplitude: params.get(ParamId::TankAmplitude) * 1e-3,
         slit_width: params.get(ParamId::TankSlitWidth) * 1e-3,
@@ -243,6 +244,22 @@ impl TankScene {
 const PICK_DIPPER: f32 = 0.02;
 
 impl TankScene {
+    /// The walls tool at `to` (m): a press starts a straight wall, the drag moves its far end
+    /// (the cells are painted again, without the wall's last place).
+    fn draw_wall(&mut self, to: (f32, f32), continues: bool) {
+        match self.strokes.last_mut() {
+            Some(wall) if continues && wall.kind == CellKind::Wall => {
+                wall.to = to;
+                self.rebuild_medium();
+            }
+            _ => {
+                self.strokes.push(Stroke { from: to, to, kind: CellKind::Wall });
+                self.medium.stroke(to, to, CellKind::Wall);
+                self.medium_changed = true;
+            }
+        }
+    }
+
     /// The move tool at `to` (m): a press picks up the nearest dipper within reach, the drag
     /// carries it.
     fn move_dipper(&mut self, to: (f32, f32), continues: bool) {
@@ -288,7 +305,8 @@ impl super::Scene for TankScene {
         self.settings = settings;
         // The cells depend on these only (not on the frequency, the lamp, the strobe, …).
         let cells_of = |s: &TankSettings| {
-            (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed, s.dippers, s.phase_step)
+            let row = (s.dippers, s.phase_step, s.detune);
+            (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed, row)
         };
         if cells_of(&settings) != cells_of(&old) {
             self.rebuild_medium();
@@ -402,7 +420,7 @@ impl super::Scene for TankScene {
         let continues = std::mem::replace(&mut self.stroke_open, true);
         let kind = match self.settings.tool {
             Tool::Drops => return self.drops.push(drop),
-            Tool::Walls => CellKind::Wall,
+            Tool::Walls => return self.draw_wall(to, continues),
             Tool::Erase => CellKind::Water,
             Tool::Probe => {
                 self.param_edits.extend([
