@@ -65,6 +65,7 @@ param_ids! {
     TankDippers = "tank_dippers",
     TankPhase = "tank_phase",
     TankDetune = "tank_detune",
+    TankAmplitudeRatio = "tank_amplitude_ratio",
     TankDepth = "tank_depth",
     TankSize = "tank_size",
     TankSlitWidth = "tank_slit_width",

@@ -732,7 +732,15 @@ fn a_dipper_dragged_with_the_move_tool_makes_its_waves_where_it_was_left_and_the
 
 #[test]
 fn two_dippers_a_hertz_apart_beat_once_a_second_where_their_waves_meet() {
-    let settings = TankSettings { setup: Setup::TwoDippers, detune: 1.0, size: 0.4, ..Default::default() };
+    for ratio in [1.0f32, 0.5] {
+        beats(ratio);
+    }
+}
+
+/// Two dippers 1 Hz apart, the second `ratio` as strong: their beats where the waves meet.
+fn beats(ratio: f32) {
+    let settings =
+        TankSettings { setup: Setup::TwoDippers, detune: 1.0, amplitude_ratio: ratio, size: 0.4, ..Default::default() };
     let mut tank = CpuTank::new(Medium::of(&settings, 160));
     // On the line between them, 100 mm out: both waves arrive together, so the swing there
     // grows and dies as their phases slide past each other.
@@ -744,6 +752,15 @@ fn two_dippers_a_hertz_apart_beat_once_a_second_where_their_waves_meet() {
     let swings: Vec<f32> =
         heights.chunks(per_chunk).skip(10).map(|c| c.iter().fold(0.0f32, |m, &h| m.max(h.abs()))).collect();
     let loudest = swings.iter().fold(0.0f32, |m, &s| m.max(s));
+    let quietest = swings.iter().fold(f32::MAX, |m, &s| m.min(s));
+    // Unequal waves cancel only in part: at best (1 - r) / (1 + r) of their sum is left.
+    let left = (1.0 - ratio) / (1.0 + ratio);
+    println!("amplitude ratio {ratio}: the quietest swing {:.2} of the loudest (theory {left:.2})", quietest / loudest);
+    // (Each swing is over a twentieth of a second, so even equal waves show 0.08 at their quietest.)
+    assert!((quietest / loudest - left).abs() < 0.1, "the quietest swing is {} of the loudest", quietest / loudest);
+    if ratio < 1.0 {
+        return;
+    }
     // The quiet moments: swings under a third of the loudest, each run of them one beat.
     let quiet: Vec<usize> =
         (1..swings.len()).filter(|&k| swings[k] < loudest / 3.0 && swings[k - 1] >= loudest / 3.0).collect();

@@ -12,6 +12,7 @@ struct Update {
     bounds: vec4<f32>,  // x largest |h| (m), y largest |v| (m/s), z the bar's half length (m),
                         // w 1 if the sources make one pulse (a raised cosine), 0 a steady sine
     dippers: array<vec4<f32>, MAX_DIPPERS>, // centre x, z (m), radius (m), phase (rad)
+    dipper_amplitudes: vec4<f32>, // each dipper's amplitude as a share of wave.y
     drops: array<vec4<f32>, MAX_TANK_DROPS>, // centre x, z (m), radius (m), height (m)
 };
 
@@ -30,19 +31,20 @@ fn bounded(x: f32, limit: f32) -> f32 {
     return clamp(select(0.0, x, abs(x) <= 3.0e38), -limit, limit);
 }
 
-// The phase of the source covering point x, or a negative number where none does.
-fn source_phase(x: vec2<f32>) -> f32 {
+// The phase of the source covering point x and its amplitude (m), or a negative phase where
+// none does.
+fn source_phase(x: vec2<f32>) -> vec2<f32> {
     for (var k = 0; k < i32(u.wave.w); k++) {
         let d = u.dippers[k];
         let r = x - d.xy;
         if dot(r, r) <= d.z * d.z {
-            return u.wave.x + d.w;
+            return vec2<f32>(u.wave.x + d.w, u.wave.y * u.dipper_amplitudes[k]);
         }
     }
     if u.bar.z > 0.0 && abs(x.y - u.bar.x) <= u.bar.y && abs(x.x) <= u.bounds.z {
-        return u.wave.x;
+        return vec2<f32>(u.wave.x, u.wave.y);
     }
-    return -1.0;
+    return vec2<f32>(-1.0, 0.0);
 }
 
 @fragment
@@ -63,13 +65,14 @@ fn fs_update(in: FullscreenOut) -> @location(0) vec4<f32> {
     let absorb = exp(-m.z * u.grid.z);
     var v = (c.y + u.grid.z / (u.grid.y * u.grid.y) * flux) * absorb;
     var h = (c.x + u.grid.z * v) * absorb;
-    let phase = source_phase(centre(p));
+    let source = source_phase(centre(p));
+    let phase = source.x;
     if phase >= 0.0 && u.bounds.w > 0.5 {
-        h = 0.5 * u.wave.y * (1.0 - cos(phase));
-        v = 0.5 * u.wave.y * u.wave.z * sin(phase);
+        h = 0.5 * source.y * (1.0 - cos(phase));
+        v = 0.5 * source.y * u.wave.z * sin(phase);
     } else if phase >= 0.0 {
-        h = u.wave.y * sin(phase);
-        v = u.wave.y * u.wave.z * cos(phase);
+        h = source.y * sin(phase);
+        v = source.y * u.wave.z * cos(phase);
     }
     h = bounded(h, u.bounds.x);
     let averaged = c.z + (h * h - c.z) * (u.grid.z / INTENSITY_TIME);

@@ -107,11 +107,11 @@ impl CpuTank {
                 let mut v = (v0 + dt / (dx * dx) * flux) * absorb;
                 let mut hn = (h + dt * v) * absorb;
                 let (x, z) = self.medium.centre(i as u32, j as u32);
-                if let Some(phase) = source_phase(u, x, z) {
+                if let Some((phase, a)) = source_phase(u, x, z) {
                     (hn, v) = if u.bounds[3] > 0.5 {
-                        (0.5 * u.wave[1] * (1.0 - phase.cos()), 0.5 * u.wave[1] * u.wave[2] * phase.sin())
+                        (0.5 * a * (1.0 - phase.cos()), 0.5 * a * u.wave[2] * phase.sin())
                     } else {
-                        (u.wave[1] * phase.sin(), u.wave[1] * u.wave[2] * phase.cos())
+                        (a * phase.sin(), a * u.wave[2] * phase.cos())
                     };
                 }
                 let hn = bounded(hn, u.bounds[0]);
@@ -122,12 +122,13 @@ impl CpuTank {
     }
 }
 
-/// The phase (rad) of the source covering point (x, z) (m), if one does.
-pub fn source_phase(u: &Update, x: f32, z: f32) -> Option<f32> {
-    for d in &u.dippers[..u.wave[3] as usize] {
+/// The phase (rad) and amplitude (m) of the source covering point (x, z) (m), if one does.
+pub fn source_phase(u: &Update, x: f32, z: f32) -> Option<(f32, f32)> {
+    for (d, share) in u.dippers[..u.wave[3] as usize].iter().zip(u.dipper_amplitudes) {
         if (x - d[0]).powi(2) + (z - d[1]).powi(2) <= d[2] * d[2] {
-            return Some(u.wave[0] + d[3]);
+            return Some((u.wave[0] + d[3], u.wave[1] * share));
         }
     }
-    (u.bar[2] > 0.0 && (z - u.bar[0]).abs() <= u.bar[1] && x.abs() <= u.bounds[2]).then_some(u.wave[0])
+    let on_bar = u.bar[2] > 0.0 && (z - u.bar[0]).abs() <= u.bar[1] && x.abs() <= u.bounds[2];
+    on_bar.then_some((u.wave[0], u.wave[1]))
 }

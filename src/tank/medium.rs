@@ -44,6 +44,8 @@ pub struct Dipper {
     pub radius: f32,
     pub phase: f32,
     pub detune: f32,
+    /// Its amplitude as a share of the set amplitude.
+    pub amplitude: f32,
     pub velocity: [f32; 2],
     pub travel: f32,
 }
@@ -51,7 +53,7 @@ pub struct Dipper {
 impl Dipper {
     /// A dipper standing at (x, z) (m).
     pub fn at(x: f32, z: f32, radius: f32) -> Self {
-        Self { x, z, radius, phase: 0.0, detune: 0.0, velocity: [0.0; 2], travel: 0.0 }
+        Self { x, z, radius, phase: 0.0, detune: 0.0, amplitude: 1.0, velocity: [0.0; 2], travel: 0.0 }
     }
 
     /// Its centre (m) at time `t` (s).
@@ -181,7 +183,7 @@ impl Medium {
                 m.sources.dippers.extend((0..n).map(|k| {
                     let x = (k as f32 - 0.5 * (n - 1) as f32) * s;
                     let (phase, detune) = (-(k as f32) * settings.phase_step, k as f32 * settings.detune);
-                    Dipper { phase, detune, ..dipper(x, 0.0) }
+                    Dipper { phase, detune, amplitude: settings.amplitude_ratio.powi(k as i32), ..dipper(x, 0.0) }
                 }));
             }
             Setup::Doppler => {

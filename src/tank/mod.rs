@@ -133,8 +133,10 @@ pub struct TankSettings {
     /// phase lags its neighbour's on the −x side (rad): a phased array.
     pub dippers: u32,
     pub phase_step: f32,
-    /// How much faster (Hz) each dipper in the row runs than its −x neighbour.
+    /// How much faster (Hz) each dipper in the row runs than its −x neighbour, and its
+    /// amplitude as a share of that neighbour's.
     pub detune: f32,
+    pub amplitude_ratio: f32,
     /// The dippers' frequency (Hz) and amplitude (m).
     pub frequency: f32,
     pub amplitude: f32,
@@ -172,6 +174,7 @@ impl Default for TankSettings {
             dippers: TANK_DIPPERS.default as u32,
             phase_step: TANK_PHASE.default.to_radians(),
             detune: TANK_DETUNE.default,
+            amplitude_ratio: TANK_AMPLITUDE_RATIO.default,
             frequency: TANK_FREQUENCY.default,
             amplitude: TANK_AMPLITUDE.default * 1e-3,
             slit_width: TANK_SLIT_WIDTH.default * 1e-3,
@@ -224,6 +227,7 @@ pub const PARAMS: &[ParamSpec] = &[
     TANK_DIPPERS,
     TANK_PHASE,
     TANK_DETUNE,
+    TANK_AMPLITUDE_RATIO,
     TANK_DEPTH,
     TANK_SIZE,
     TANK_SLIT_WIDTH,
@@ -323,6 +327,16 @@ pub const TANK_DETUNE: ParamSpec = ParamSpec {
     control: slider(-2.0, 2.0, 0.05),
     default: 0.0,
     help: "How much faster each dipper in the row runs than the one before it. Two dippers then beat: where their waves met crest to crest they soon meet crest to trough, and the still lines sweep across the tray as many times a second; a row of four sweeps its beam.",
+};
+
+pub const TANK_AMPLITUDE_RATIO: ParamSpec = ParamSpec {
+    name: "tank_amplitude_ratio",
+    label: "Amplitude ratio",
+    group: "Tank",
+    unit: "",
+    control: slider(0.0, 1.0, 0.05),
+    default: 1.0,
+    help: "How far each dipper in the row moves the water, as a share of the one before it. With two dippers of unequal strength the still lines are no longer still: where crest meets trough the waves cancel only in part.",
 };
 
 pub const TANK_AMPLITUDE: ParamSpec = ParamSpec {

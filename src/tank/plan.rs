@@ -23,6 +23,8 @@ pub struct Update {
     pub bounds: [f32; 4],
     /// Each dipper's centre x, z (m) at the update's end, radius (m), phase (rad).
     pub dippers: [[f32; 4]; MAX_DIPPERS],
+    /// Each dipper's amplitude as a share of `wave[1]`.
+    pub dipper_amplitudes: [f32; MAX_DIPPERS],
     /// Each drop's centre x, z (m), radius (m), height (m), added before the update.
     pub drops: [[f32; 4]; MAX_TANK_DROPS],
 }
@@ -53,14 +55,18 @@ pub fn plan(
     let dt = step_dt / per_step as f32;
     let omega = std::f64::consts::TAU * settings.frequency as f64;
     let bar = medium.sources.bar.unwrap_or(Bar { z: 0.0, half_thickness: 0.0, half_length: 0.0 });
-    let base = Update {
+    let mut base = Update {
         grid: [medium.cells as f32, medium.dx(), dt, 0.5 * medium.size],
         wave: [0.0, settings.amplitude, omega as f32, medium.sources.dippers.len().min(MAX_DIPPERS) as f32],
         bar: [bar.z, bar.half_thickness, if medium.sources.bar.is_some() { 1.0 } else { 0.0 }, 0.0],
         bounds: [MAX_TANK_HEIGHT, MAX_TANK_VELOCITY, bar.half_length, 0.0],
         dippers: [[0.0; 4]; MAX_DIPPERS],
+        dipper_amplitudes: [1.0; MAX_DIPPERS],
         drops: [[0.0; 4]; MAX_TANK_DROPS],
     };
+    for (share, d) in base.dipper_amplitudes.iter_mut().zip(&medium.sources.dippers) {
+        *share = d.amplitude;
+    }
     let count = steps * per_step;
     (0..count)
         .map(|k| {

@@ -61,6 +61,7 @@ pub fn tank_settings(params: &Params) -> TankSettings {
         dippers: params.get(ParamId::TankDippers).round() as u32,
         phase_step: params.get(ParamId::TankPhase).to_radians(),
         detune: params.get(ParamId::TankDetune),
+        amplitude_ratio: params.get(ParamId::TankAmplitudeRatio),
         frequency: params.get(ParamId::TankFrequency),
         amplitude: params.get(ParamId::TankAmplitude) * 1e-3,
         slit_width: params.get(ParamId::TankSlitWidth) * 1e-3,
@@ -305,7 +306,7 @@ impl super::Scene for TankScene {
         self.settings = settings;
         // The cells depend on these only (not on the frequency, the lamp, the strobe, …).
         let cells_of = |s: &TankSettings| {
-            let row = (s.dippers, s.phase_step, s.detune);
+            let row = (s.dippers, s.phase_step, s.detune, s.amplitude_ratio);
             (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed, row)
         };
         if cells_of(&settings) != cells_of(&old) {
