@@ -460,6 +460,8 @@ impl WebDemo {
         if x.abs() > w as f64 || z.abs() > w as f64 {
             warn(&format!("wavepool: addDrop at ({x}, {z}) is outside {water} [-{w}, {w}]; clamped"));
         }
+        // A script's drop is a press of its own (a tool's stroke does not continue).
+        self.demo.begin_stroke();
         self.demo.add_drop(x as f32, z as f32, radius as f32, strength as f32);
     }
 

@@ -73,6 +73,12 @@ impl WaterDemo {
         }
     }
 
+    /// Tells the shown scene that what comes next is not the last stroke's continuation (a
+    /// press of the pointer, a drop from a script).
+    pub fn begin_stroke(&mut self) {
+        self.scenes.get_mut(self.shown).begin_stroke();
+    }
+
     /// What was drawn in the shown scene with the pointer, as text for a share link.
     pub fn sketch(&self) -> String {
         self.scenes.get(self.shown).sketch()

@@ -65,6 +65,10 @@ struct Probe {
     readback: Option<gpu::AsyncReadback>,
     /// What the read in flight holds: the ring's newest texel and the samples then, the row.
     in_flight: (u32, u64, Option<u32>),
+    /// Counts the times the record started afresh (still water, a new place); a read recorded
+    /// before the latest is dropped when it lands.
+    generation: u32,
+    in_flight_generation: u32,
 }
 
 /// A read of the probe's ring and of a row of the state.
@@ -158,6 +162,8 @@ impl TankWater {
             since: 0,
             readback: None,
             in_flight: (0, 0, None),
+            generation: 0,
+            in_flight_generation: 0,
         };
         let mut water = Self { state, medium: medium_texture, medium_view, engine, cells, flash: None, probe };
         water.clear(queue);
@@ -221,6 +227,7 @@ impl TankWater {
         p.cpu_ring.iter_mut().for_each(|t| *t = [0.0; 4]);
         gpu::write_texture_2d(queue, &p.ring, 0, bytemuck::cast_slice(&p.cpu_ring));
         (p.next, p.taken, p.since) = (0, 0, 0);
+        p.generation += 1;
     }
 
     /// Samples cell `cell` (i, j) after every `every` updates from now on (none: no probe).
@@ -229,6 +236,7 @@ impl TankWater {
         if p.cell != cell {
             // Another place: its history starts afresh.
             (p.next, p.taken, p.since) = (0, 0, 0);
+            p.generation += 1;
         }
         (p.cell, p.every) = (cell, every.max(1));
     }
@@ -266,6 +274,7 @@ impl TankWater {
         }
         let (newest, _) = self.probe_newest();
         self.probe.in_flight = (newest, self.probe.taken, row);
+        self.probe.in_flight_generation = self.probe.generation;
     }
 
     /// Starts the read recorded into the frame just submitted.
@@ -278,6 +287,9 @@ impl TankWater {
     /// The latest completed read, if one completed since the last call.
     pub fn take_read(&self) -> Option<ProbeRead> {
         let bytes = self.probe.readback.as_ref()?.take()?;
+        if self.probe.in_flight_generation != self.probe.generation {
+            return None;
+        }
         let texels: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
         let (newest, taken, row) = self.probe.in_flight;
         let held = taken.min(PROBE_SAMPLES as u64) as u32;

@@ -301,6 +301,10 @@ impl super::Scene for TankScene {
             self.moved.clear();
             self.clear_water = true;
         }
+        if fresh_lab || settings.probe != old.probe || settings.graph != old.graph {
+            // The probe's record starts afresh (reads in flight are dropped): nothing read yet.
+            (self.reading, self.graph_peak) = (ProbeReading::default(), None);
+        }
         // A pulse begins when the single pulse is switched on and with each fresh lab.
         self.pulse_due |= settings.pulse && (!old.pulse || fresh_lab);
         self.settings = settings;
@@ -390,6 +394,8 @@ impl super::Scene for TankScene {
     /// Still water, the walls drawn with the pointer and the ruler put away, a new pulse.
     fn reset(&mut self, queue: &wgpu::Queue, _sh: Shared<'_>) {
         self.drops.clear();
+        (self.reading, self.graph_peak) = (ProbeReading::default(), None);
+        (self.stroke_open, self.moving) = (false, None);
         self.ruler = None;
         self.pulse_due = true;
         if !self.strokes.is_empty() || !self.moved.is_empty() {
@@ -472,6 +478,7 @@ impl super::Scene for TankScene {
     fn set_sketch(&mut self, text: &str) -> Result<(), String> {
         let Sketch { strokes, ruler, moved } = sketch::parse(text, self.settings.half_width())?;
         (self.strokes, self.ruler, self.moved) = (strokes, ruler, moved);
+        (self.stroke_open, self.moving) = (false, None);
         self.rebuild_medium();
         Ok(())
     }
