@@ -199,6 +199,17 @@ pub const SHOWN_WHEN: &[(ParamId, ParamId, &[&str])] = &[
     (ParamId::FlatResolution, ParamId::RenderMode, &["flat", "split"]),
     (ParamId::FlatCaustics, ParamId::RenderMode, &["flat", "split"]),
     (ParamId::FlatSoftEdge, ParamId::RenderMode, &["flat", "split"]),
+    (ParamId::TankDippers, ParamId::TankSetup, &["two_dippers"]),
+    (ParamId::TankPhase, ParamId::TankSetup, &["two_dippers"]),
+    (ParamId::TankDetune, ParamId::TankSetup, &["two_dippers"]),
+    (ParamId::TankAmplitudeRatio, ParamId::TankSetup, &["two_dippers"]),
+    (ParamId::TankSlitWidth, ParamId::TankSetup, &["single_slit", "double_slit"]),
+    (ParamId::TankSlitSpacing, ParamId::TankSetup, &["double_slit", "two_dippers"]),
+    (ParamId::TankLines, ParamId::TankSetup, &["single_slit", "double_slit"]),
+    (ParamId::TankSourceSpeed, ParamId::TankSetup, &["doppler"]),
+    (ParamId::TankProbeX, ParamId::TankProbe, &["on"]),
+    (ParamId::TankProbeZ, ParamId::TankProbe, &["on"]),
+    (ParamId::TankGraphZ, ParamId::TankGraph, &["on"]),
 ];
 
 impl ParamId {

@@ -211,6 +211,15 @@ impl Viewer {
                     }
                 });
             }
+            if let Some(picked) = self.demo.picked() {
+                egui::CollapsingHeader::new(picked.title).default_open(true).show(ui, |ui| {
+                    for (spec, value) in picked.settings {
+                        if let Some(value) = picked_slider(ui, spec, value) {
+                            let _ = self.demo.set_picked(spec.name, value);
+                        }
+                    }
+                });
+            }
             ui.separator();
             ui.horizontal(|ui| {
                 if ui.button("Reset water").on_hover_text("Flatten the water and put the sphere back").clicked() {
@@ -492,4 +501,15 @@ fn fresnel_plot(ui: &mut egui::Ui, model: FresnelModel, view_deg: f32) {
         egui::RichText::new("Reflectance 0-1 against incidence 0-90°: model (blue) over exact (grey); from air solid, under water dashed; red: your view")
             .small(),
     );
+}
+
+/// A slider for a setting of what the pointer picked (`spec` is a slider's): its new value
+/// when moved.
+fn picked_slider(ui: &mut egui::Ui, spec: &wavepool::param_spec::ParamSpec, value: f32) -> Option<f32> {
+    let Control::Slider { min, max, step } = spec.control else { return None };
+    let mut wide = decimal(value);
+    let slider = egui::Slider::new(&mut wide, decimal(min)..=decimal(max)).step_by(decimal(step));
+    let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+    let response = ui.add(slider.suffix(suffix).text(spec.label)).on_hover_text(spec.help);
+    response.changed().then_some(wide as f32)
 }

@@ -14,6 +14,7 @@ use crate::render::RenderMode;
 use crate::timing::StageTimer;
 use tables::to_js_number;
 
+mod picked;
 mod stats;
 mod tables;
 

@@ -1074,6 +1074,22 @@ async fn the_sea_and_the_ripple_tank_run_in_the_page_on_both_backends_and_give_t
         assert!(link.contains(&format!("sketch={sketch}")), "{backend}: the drawing is not in the link {link}");
         let shown = instruments["shown"].as_str().unwrap_or("");
         assert!(shown.contains("Probe frequency: ") && shown.contains("Ruler: 300 mm"), "{backend}: shown {shown}");
+        // The move tool shows the picked dipper's own settings; its frequency slider goes into the link.
+        browser.js("window.demo.set('tank_tool', 'move'); return true;").await;
+        let group = "document.querySelector('#pool').shadowRoot.querySelector('fieldset.picked')";
+        let shown = browser.wait_for(&format!("!{group}.hidden"), Duration::from_secs(5)).await;
+        let own = browser
+            .js(&format!(
+                "const group = {group}; const input = group.querySelector('[name=frequency]');
+                 input.value = '12'; input.dispatchEvent(new Event('input'));
+                 return {{ title: group.querySelector('legend').textContent, sketch: window.demo.sketch(),
+                          picked: window.demo.picked().settings.map(s => s.value) }};"
+            ))
+            .await;
+        println!("{backend}: the move tool's dipper: {own}");
+        assert!(shown && own["title"] == "Dipper 1", "{backend}: the picked dipper's settings: {own}");
+        let sketch = own["sketch"].as_str().unwrap_or("");
+        assert!(sketch.contains("T0,12,"), "{backend}: the dipper's own frequency is not in the sketch {sketch}");
         // The apparatus beside the screen view: the lab's dim room on the left, the paper on the right.
         browser.js("window.demo.set('tank_look', 'split'); window.demo.set('tank_view', 'screen'); return true;").await;
         browser.wait_frames(3).await;

@@ -71,6 +71,8 @@ export const controlMethods = {
       this._readings = document.createElement("p");
       this._readings.className = "readings";
       groups.get("Tank").append(this._readings);
+      // The picked dipper's own settings (picked.js), after the tank's.
+      groups.get("Tank").after(this._pickedFieldset());
     }
     if (groups.has("Optics")) {
       // The Fresnel models' curves beside their select.

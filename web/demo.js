@@ -6,6 +6,7 @@ import { WebDemo, presetTable } from "./wavepool.js";
 import { contextsHeld, releaseContext } from "./context-budget.js";
 import { controlMethods } from "./controls.js";
 import { linkMethods } from "./links.js";
+import { pickedMethods } from "./picked.js";
 import { frameLoopMethods, frameStats } from "./frame-loop.js";
 import { inputMethods } from "./input.js";
 import { keepKeys } from "./keys.js";
@@ -372,4 +373,13 @@ export class Demo {
   }
 }
 
-Object.assign(Demo.prototype, inputMethods, layoutMethods, controlMethods, linkMethods, frameLoopMethods, suspendMethods);
+Object.assign(
+  Demo.prototype,
+  inputMethods,
+  layoutMethods,
+  controlMethods,
+  linkMethods,
+  pickedMethods,
+  frameLoopMethods,
+  suspendMethods,
+);

@@ -125,6 +125,13 @@ export interface SuspendedStats {
 }
 
 /** The pool's frame stages (ms). */
+/** The settings of what the pointer picked (a tank's dipper): sliders, each with its value. */
+export interface PickedSettings {
+  /** "Dipper 2". */
+  title: string;
+  settings: { name: string; label: string; group: string; unit: string; kind: "slider"; min: number; max: number; step: number; default: number; help: string; value: number }[];
+}
+
 export interface PoolStageMs { simulation: number; waves: number; caustics: number; shading: number }
 /** The sea's frame stages (ms): its maps are the island's mirror and the kept whitecaps. */
 export interface SeaStageMs { simulation: number; waves: number; maps: number; shading: number }
@@ -153,10 +160,14 @@ export interface WavePool {
    * setAssetLocation() at a hosted copy of the demo for links that open.
    */
   shareLink(): string;
-  /** What was drawn with the pointer in the ripple tank (walls W, erasures E, the ruler R; whole mm from the tray's middle), as the share link's `sketch`: e.g. "W-120,40,-120,200_R-200,0,200,0"; "" if nothing. */
+  /** What was drawn with the pointer in the ripple tank (walls W, erasures E, the ruler R, moved dippers D; whole mm from the tray's middle; dippers' own settings T: number from 0, Hz, mm, degrees), as the share link's `sketch`: e.g. "W-120,40,-120,200_R-200,0,200,0_T1,12.5,0.3,-90"; "" if nothing. */
   sketch(): string;
   /** Replaces what was drawn with `text` (as sketch() gives it); a text that cannot be read changes nothing and warns in the console. */
   setSketch(text: string): void;
+  /** With the tank's move tool, the dipper last picked (the first until one is) and its own settings; null otherwise. */
+  picked(): PickedSettings | null;
+  /** Sets a setting of what picked() returns ("frequency" Hz, "amplitude" mm, "phase" degrees), clamped to its range; it goes into sketch(). */
+  setPicked(name: string, value: number): void;
   /** An <iframe> of the demo's frame page (embed.html, found as shareLink()'s page) with this demo's parameters and view. */
   embedCode(): string;
   /** The camera as [yaw, pitch, distance] (degrees, degrees, m). */

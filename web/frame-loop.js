@@ -105,6 +105,7 @@ export const frameLoopMethods = {
       const interval = time - this._frames[this._frames.length - 1];
       this._costsNote(time, interval);
       this._readingsNote(time);
+      this._pickedNote(time);
       this._rescue(interval);
     }
     this._frames.push(time);

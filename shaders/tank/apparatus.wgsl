@@ -91,7 +91,7 @@ fn paper_level() -> f32 {
 // Everything but the water the ray meets first.
 fn solid_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
     let w = pic.tray.x;
-    let rim = w * 1.03 + 0.01;
+    let rim = w * FRAME_SHARE;
     let bottom = -pic.tray.y - GLASS_THICKNESS;
     var hit = plane_hit(o, d, paper_level(), 5);
     // The frame: four bars round the water.

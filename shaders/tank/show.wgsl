@@ -31,7 +31,7 @@ fn cell_colour(xz: vec2<f32>) -> vec3<f32> {
     let w = pic.tray.x;
     if any(abs(xz) > vec2<f32>(w)) {
         // The tray's frame, then the bench.
-        return select(BENCH, vec3<f32>(0.25, 0.22, 0.2), all(abs(xz) < vec2<f32>(w * 1.03)));
+        return select(BENCH, vec3<f32>(0.25, 0.22, 0.2), all(abs(xz) < vec2<f32>(w * FRAME_SHARE)));
     }
     let p = vec2<i32>((xz + w) / (2.0 * w) * pic.screen.z);
     let m = textureLoad(medium, p, 0);

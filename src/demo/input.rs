@@ -95,6 +95,17 @@ impl WaterDemo {
         self.scenes.get(self.shown).readings()
     }
 
+    /// What the pointer picked in the shown scene that has settings of its own (a dipper).
+    pub fn picked(&self) -> Option<crate::scenes::Picked> {
+        self.scenes.get(self.shown).picked()
+    }
+
+    /// Sets the picked thing's setting `name` to `value`, or says why it cannot.
+    pub fn set_picked(&mut self, name: &str, value: f32) -> Result<(), String> {
+        self.sync_scene();
+        self.scenes.get_mut(self.shown).set_picked(name, value)
+    }
+
     /// A drop with the current radius and strength parameters.
     fn click_drop(&mut self, x: f32, z: f32) {
         self.add_drop(x, z, self.params.get(ParamId::DropRadius), self.params.get(ParamId::DropStrength));

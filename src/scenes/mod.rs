@@ -79,6 +79,14 @@ pub struct SceneFrame<'a, 'b> {
     pub mark: &'b mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
 }
 
+/// What the pointer picked that has settings of its own: a title ("Dipper 2") and each
+/// setting's spec (its name, label, range and help; not in the parameter table) and value.
+#[derive(Clone, Debug)]
+pub struct Picked {
+    pub title: String,
+    pub settings: Vec<(&'static crate::param_spec::ParamSpec, f32)>,
+}
+
 /// What one scene does; the demo calls the shown scene's hooks. Lengths in m in the scene's own
 /// coordinates, pixels from the viewport's top left corner.
 pub trait Scene {
@@ -169,6 +177,17 @@ pub trait Scene {
     /// What the scene's instruments read now: (name, value, unit).
     fn readings(&self) -> Vec<(&'static str, f32, &'static str)> {
         Vec::new()
+    }
+
+    /// The thing the pointer picked that has settings of its own (the tank's dipper), if any.
+    fn picked(&self) -> Option<Picked> {
+        None
+    }
+
+    /// Sets the picked thing's setting `name` to `value` (in its unit, clamped to its range),
+    /// or says why it cannot.
+    fn set_picked(&mut self, _name: &str, _value: f32) -> Result<(), String> {
+        Err("nothing is picked here".into())
     }
 
     /// The nearest body under pixel `pixel`: its id, the point hit and the origin of its frame.

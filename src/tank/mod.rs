@@ -14,6 +14,7 @@ pub mod gpu;
 pub mod medium;
 pub mod plan;
 pub mod probe;
+pub mod tuning;
 
 use crate::camera::CameraLimits;
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -452,7 +453,7 @@ pub const TANK_PULSE: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Toggle,
     default: 0.0,
-    help: "The dippers (or the bar) make one crest and stop, each time this is switched on or the tank is reset, instead of a steady train of waves: watch a single wave spread, reflect and pass through the slits.",
+    help: "The dippers (or the bar) make one crest and stop, each time this is switched on or the tank is reset, instead of a steady train of waves: watch a single wave spread, reflect and pass through the slits. All the dippers lift the water at the same moment (a phase step, a detune or a dipper's own phase or frequency does not shape a pulse).",
 };
 
 pub const TANK_PROBE: ParamSpec = ParamSpec {

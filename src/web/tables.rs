@@ -89,24 +89,7 @@ pub fn param_table() -> js_sys::Array {
     table()
         .iter()
         .map(|p| {
-            let o = js_sys::Object::new();
-            set(&o, "name", p.name);
-            set(&o, "label", p.label);
-            set(&o, "group", p.group);
-            set(&o, "unit", p.unit);
-            let (kind, step, choices, names) = match p.control {
-                Control::Slider { step, .. } => ("slider", step, &[][..], &[][..]),
-                Control::Toggle => ("toggle", 1.0, &[][..], &[][..]),
-                Control::Choice { values, names } => ("choice", 0.0, values, names),
-            };
-            set(&o, "choices", choices.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
-            set(&o, "choiceNames", names.iter().map(|&n| JsValue::from_str(n)).collect::<js_sys::Array>());
-            set(&o, "kind", kind);
-            set(&o, "min", to_js_number(p.min()));
-            set(&o, "max", to_js_number(p.max()));
-            set(&o, "step", to_js_number(step));
-            set(&o, "default", to_js_number(p.default));
-            set(&o, "help", p.help);
+            let o = spec_object(p);
             let shown_when = crate::scenes::shown_when(p.name)
                 .into_iter()
                 .map(|(on, values)| {
@@ -124,6 +107,29 @@ pub fn param_table() -> js_sys::Array {
             JsValue::from(o)
         })
         .collect()
+}
+
+/// One spec as the table's plain object, without `shownWhen`.
+pub(super) fn spec_object(p: &crate::param_spec::ParamSpec) -> js_sys::Object {
+    let o = js_sys::Object::new();
+    set(&o, "name", p.name);
+    set(&o, "label", p.label);
+    set(&o, "group", p.group);
+    set(&o, "unit", p.unit);
+    let (kind, step, choices, names) = match p.control {
+        Control::Slider { step, .. } => ("slider", step, &[][..], &[][..]),
+        Control::Toggle => ("toggle", 1.0, &[][..], &[][..]),
+        Control::Choice { values, names } => ("choice", 0.0, values, names),
+    };
+    set(&o, "choices", choices.iter().map(|&v| JsValue::from(to_js_number(v))).collect::<js_sys::Array>());
+    set(&o, "choiceNames", names.iter().map(|&n| JsValue::from_str(n)).collect::<js_sys::Array>());
+    set(&o, "kind", kind);
+    set(&o, "min", to_js_number(p.min()));
+    set(&o, "max", to_js_number(p.max()));
+    set(&o, "step", to_js_number(step));
+    set(&o, "default", to_js_number(p.default));
+    set(&o, "help", p.help);
+    o
 }
 
 /// An `f32` as the `f64` with the same shortest decimal form (0.6f32 -> 0.6, not 0.6000000238).

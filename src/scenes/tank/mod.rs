@@ -9,7 +9,7 @@ pub mod sketch;
 
 use glam::{Vec2, Vec3};
 
-use super::{SceneFrame, Shared, Stage, STEPS_PER_SECOND, STEP_DT};
+use super::{Picked, SceneFrame, Shared, Stage, STEPS_PER_SECOND, STEP_DT};
 use crate::bodies::BodyId;
 use crate::camera::OrbitCamera;
 use crate::camera::Pick;
@@ -18,6 +18,7 @@ use crate::sim::Drop;
 use crate::tank::gpu::TankWater;
 use crate::tank::medium::{CellKind, Medium};
 use crate::tank::probe::{self, ProbeReading};
+use crate::tank::tuning::Tuning;
 use crate::tank::{
     plan, Look, Setup, TankSettings, Tool, APPARATUS_VIEW, SCREEN_BELOW, START_VIEW, TANK_CELLS, TANK_LIMITS,
 };
@@ -122,8 +123,10 @@ pub struct TankScene {
     medium: Medium,
     water: Option<TankWater>,
     picture: Option<TankPicture>,
-    /// Whether the medium changed since the water last saw it.
+    /// Whether the medium changed since the water last saw it, and whether it is to be built
+    /// again before the next frame (a wall's far end dragged: once a frame, not each move).
     medium_changed: bool,
+    rebuild_due: bool,
     /// Whether the water is to be stilled before the next frame (a new set-up).
     clear_water: bool,
     drops: Vec<Drop>,
@@ -135,6 +138,10 @@ pub struct TankScene {
     /// The dippers moved with the pointer (index, place in m), and the one being moved.
     moved: Vec<(usize, (f32, f32))>,
     moving: Option<usize>,
+    /// The dippers given settings of their own (index, settings), and the one the move tool
+    /// last picked (its settings are the ones shown).
+    tuned: Vec<(usize, Tuning)>,
+    picked: usize,
     /// Whether the pointer's press is still the one that began the last stroke or ruler.
     stroke_open: bool,
     /// Parameters the pointer set (the probe's place), for the demo's table.
@@ -166,12 +173,15 @@ impl TankScene {
             water: None,
             picture: None,
             medium_changed: false,
+            rebuild_due: false,
             clear_water: false,
             drops: Vec::new(),
             strokes: Vec::new(),
             ruler: None,
             moved: Vec::new(),
             moving: None,
+            tuned: Vec::new(),
+            picked: 0,
             stroke_open: false,
             param_edits: Vec::new(),
             pulse_start: None,
@@ -196,6 +206,7 @@ impl TankScene {
         &self.settings
     }
 
+    /// The tray's cells and sources (as of the last frame while a wall is being dragged).
     pub fn medium(&self) -> &Medium {
         &self.medium
     }
@@ -212,22 +223,37 @@ impl TankScene {
         for s in &self.strokes {
             self.medium.stroke(s.from, s.to, s.kind);
         }
-        self.place_moved();
+        self.place_dippers();
         self.medium_changed = true;
     }
 
-    /// Puts the dippers the pointer moved where it left them (a moving dipper starts there).
-    fn place_moved(&mut self) {
+    /// Puts the dippers the pointer moved where it left them (a moving dipper starts there),
+    /// and gives those tuned their own settings.
+    fn place_dippers(&mut self) {
+        let dippers = &mut self.medium.sources.dippers;
         for &(k, (x, z)) in &self.moved {
-            if let Some(d) = self.medium.sources.dippers.get_mut(k) {
+            if let Some(d) = dippers.get_mut(k) {
                 (d.x, d.z) = (x, z);
+            }
+        }
+        for (k, own) in &self.tuned {
+            if let Some(d) = dippers.get_mut(*k) {
+                own.apply(d, &self.settings);
             }
         }
     }
 
+    /// Forgets the dippers moved and tuned past the first `count`, and the pick among them.
+    fn keep_dippers(&mut self, count: usize) {
+        self.moved.retain(|&(k, _)| k < count);
+        self.tuned.retain(|&(k, _)| k < count);
+        self.picked = self.picked.min(count.saturating_sub(1));
+    }
+
     /// What was drawn with the pointer.
     fn drawn(&self) -> Sketch {
-        Sketch { strokes: self.strokes.clone(), ruler: self.ruler, moved: self.moved.clone() }
+        let (strokes, moved, tuned) = (self.strokes.clone(), self.moved.clone(), self.tuned.clone());
+        Sketch { strokes, ruler: self.ruler, moved, tuned }
     }
 
     /// The water, once a frame has been drawn.
@@ -251,7 +277,7 @@ impl TankScene {
         match self.strokes.last_mut() {
             Some(wall) if continues && wall.kind == CellKind::Wall => {
                 wall.to = to;
-                self.rebuild_medium();
+                self.rebuild_due = true;
             }
             _ => {
                 self.strokes.push(Stroke { from: to, to, kind: CellKind::Wall });
@@ -273,9 +299,10 @@ impl TankScene {
                 .map(|(k, _)| k);
         }
         let Some(k) = self.moving else { return };
+        self.picked = k;
         self.moved.retain(|&(j, _)| j != k);
         self.moved.push((k, to));
-        self.place_moved();
+        self.place_dippers();
     }
 }
 
@@ -298,7 +325,7 @@ impl super::Scene for TankScene {
             // A new set-up starts a fresh lab: the walls drawn for the last one and its waves go.
             self.strokes.clear();
             self.ruler = None;
-            self.moved.clear();
+            (self.moved, self.tuned, self.picked) = (Vec::new(), Vec::new(), 0);
             self.clear_water = true;
         }
         if fresh_lab || settings.probe != old.probe || settings.graph != old.graph {
@@ -313,8 +340,14 @@ impl super::Scene for TankScene {
             let row = (s.dippers, s.phase_step, s.detune, s.amplitude_ratio);
             (s.setup, s.size, s.depth, s.slit_width, s.slit_spacing, s.beaches, s.source_speed, row)
         };
+        if settings.dippers < old.dippers {
+            self.keep_dippers(settings.dippers as usize);
+        }
         if cells_of(&settings) != cells_of(&old) {
             self.rebuild_medium();
+        } else {
+            // A tuned dipper keeps its own frequency and amplitude when the set ones change.
+            self.place_dippers();
         }
     }
 
@@ -322,6 +355,9 @@ impl super::Scene for TankScene {
         let SceneFrame { cx, renderer, steps, mark } = frame;
         let (device, queue) = (cx.device, cx.queue);
         let float_targets = self.float_targets;
+        if std::mem::take(&mut self.rebuild_due) {
+            self.rebuild_medium();
+        }
         let water = self.water.get_or_insert_with(|| TankWater::new(device, queue, &self.medium, float_targets));
         if std::mem::take(&mut self.medium_changed) {
             water.set_medium(queue, &self.medium);
@@ -398,9 +434,9 @@ impl super::Scene for TankScene {
         (self.stroke_open, self.moving) = (false, None);
         self.ruler = None;
         self.pulse_due = true;
-        if !self.strokes.is_empty() || !self.moved.is_empty() {
+        if !self.strokes.is_empty() || !self.moved.is_empty() || !self.tuned.is_empty() {
             self.strokes.clear();
-            self.moved.clear();
+            (self.moved, self.tuned) = (Vec::new(), Vec::new());
             self.rebuild_medium();
         }
         if let Some(water) = &mut self.water {
@@ -476,10 +512,33 @@ impl super::Scene for TankScene {
 
     /// Replaces what was drawn with what `text` says; on an error nothing changes.
     fn set_sketch(&mut self, text: &str) -> Result<(), String> {
-        let Sketch { strokes, ruler, moved } = sketch::parse(text, self.settings.half_width())?;
-        (self.strokes, self.ruler, self.moved) = (strokes, ruler, moved);
+        let Sketch { strokes, ruler, moved, tuned } = sketch::parse(text, self.settings.half_width())?;
+        (self.strokes, self.ruler, self.moved, self.tuned) = (strokes, ruler, moved, tuned);
         (self.stroke_open, self.moving) = (false, None);
         self.rebuild_medium();
+        Ok(())
+    }
+
+    /// With the move tool, the dipper it last picked (the first until one is picked) and its
+    /// own frequency, amplitude and phase.
+    fn picked(&self) -> Option<Picked> {
+        if self.settings.tool != Tool::Move {
+            return None;
+        }
+        let dippers = &self.medium.sources.dippers;
+        let k = self.picked.min(dippers.len().checked_sub(1)?);
+        let own = Tuning::of(&dippers[k], &self.settings);
+        Some(Picked { title: format!("Dipper {}", k + 1), settings: own.values().to_vec() })
+    }
+
+    fn set_picked(&mut self, name: &str, value: f32) -> Result<(), String> {
+        let dippers = &self.medium.sources.dippers;
+        let k = self.picked.min(dippers.len().checked_sub(1).ok_or("this set-up has no dipper")?);
+        let own = Tuning::of(&dippers[k], &self.settings);
+        let own = own.with(name, value).ok_or_else(|| format!("a dipper has no setting \"{name}\""))?;
+        self.tuned.retain(|&(j, _)| j != k);
+        self.tuned.push((k, own));
+        self.place_dippers();
         Ok(())
     }
 

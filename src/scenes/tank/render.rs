@@ -18,6 +18,9 @@ pub const SCREEN_TEXELS: u32 = 512;
 pub const SCREEN_MESH_STEP: u32 = 2;
 /// How far past the tray's shadow the screen's image reaches (a share of it).
 const SCREEN_MARGIN: f32 = 1.1;
+/// The tray's frame: its outer edge as a share of the tray's half width (seen from above and
+/// in the apparatus alike).
+const FRAME_SHARE: f32 = 1.03;
 /// The screen's light for flat water at the middle is 1; shown as paper * (1 - exp(-k light))
 /// with k this times the exposure, so flat water is a dim grey and the crests' lines bright.
 const SCREEN_EXPOSURE: f32 = 0.45;
@@ -133,7 +136,7 @@ impl TankPicture {
             ],
         });
         let numbers = format!(
-            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\nconst LINE_WIDTH: f32 = {LINE_WIDTH:?};\nconst LINE_VECS: u32 = {}u;\n",
+            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\nconst LINE_WIDTH: f32 = {LINE_WIDTH:?};\nconst LINE_VECS: u32 = {}u;\nconst FRAME_SHARE: f32 = {FRAME_SHARE:?};\n",
             crate::world::IOR_WATER,
             !target_format.is_srgb(),
             MAX_LINES / 4

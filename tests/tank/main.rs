@@ -1,9 +1,12 @@
-//! The ripple tank (`scene` = tank): its waves on the CPU reference (walls, the double slit),
-//! the GPU engine against the CPU's, and the lamp's image on the screen below in the demo.
+//! The ripple tank (`scene` = tank): its waves on the CPU reference (walls, the double slit,
+//! plates, a moving dipper), the GPU engine against the CPU's, and the lamp's image on the
+//! screen below in the demo; what the pointer and the instruments do is `lab.rs`.
 // The tests read the tank's state and screen back from the GPU, waiting for it.
 #![allow(clippy::disallowed_methods)]
 
+#[path = "../common/mod.rs"]
 mod common;
+mod lab;
 
 use common::picture::Rect;
 use common::{demo, gpu, render};
@@ -12,7 +15,7 @@ use wavepool::params::ParamId;
 use wavepool::tank::cpu::CpuTank;
 use wavepool::tank::gpu::TankWater;
 use wavepool::tank::medium::{CellKind, Dipper, Medium};
-use wavepool::tank::plan::plan;
+use wavepool::tank::plan::{plan, shape_pulse};
 use wavepool::tank::{Setup, TankSettings, TANK_CELLS};
 
 /// Runs `tank` for `seconds` of fixed steps (two a batch, as a frame at 60 frames/s takes),
@@ -116,8 +119,28 @@ fn the_double_slits_bright_lines_leave_at_arcsin_m_lambda_over_d() {
 
 #[test]
 fn the_gpu_and_the_cpu_run_the_same_tank() {
-    let settings = TankSettings { setup: Setup::DoubleSlit, ..Default::default() };
-    let medium = Medium::of(&settings, TANK_CELLS);
+    let double_slit = TankSettings { setup: Setup::DoubleSlit, ..Default::default() };
+    // A row of three, each with its own phase, frequency and amplitude (the uniforms' per-dipper
+    // parts), and a single pulse of it.
+    let (phase_step, detune) = (45f32.to_radians(), 0.7);
+    let row =
+        TankSettings { setup: Setup::TwoDippers, dippers: 3, phase_step, detune, amplitude_ratio: 0.6, ..double_slit };
+    let pulse = TankSettings { pulse: true, ..row };
+    for (name, settings) in
+        [("the double slit", double_slit), ("a row of three dippers", row), ("their single pulse", pulse)]
+    {
+        let (relative, worst) = gpu_against_cpu(&settings);
+        println!(
+            "1 s of {name}: GPU against CPU, RMS difference {relative:.2e} of the RMS height, largest {worst:.2e} m"
+        );
+        assert!(relative < 1e-3, "{name}: {relative}");
+    }
+}
+
+/// One second of `settings` (a drop in the first frame) on the GPU and on the CPU: their RMS
+/// difference as a share of the RMS height, and the largest difference (m).
+fn gpu_against_cpu(settings: &TankSettings) -> (f64, f32) {
+    let medium = Medium::of(settings, TANK_CELLS);
     let g = gpu();
     let mut water = TankWater::new(&g.device, &g.queue, &medium, true);
     assert!(!water.on_cpu());
@@ -126,10 +149,16 @@ fn the_gpu_and_the_cpu_run_the_same_tank() {
     let mut cpu_drops = drops.clone();
     for frame in 0..60u32 {
         let t0 = (2 * frame) as f64 * STEP_DT as f64;
+        let mut updates = plan(&medium, settings, t0, 2, STEP_DT, &mut drops);
+        let mut cpu_updates = plan(&medium, settings, t0, 2, STEP_DT, &mut cpu_drops);
+        if settings.pulse {
+            shape_pulse(&mut updates, t0, 0.0);
+            shape_pulse(&mut cpu_updates, t0, 0.0);
+        }
         let mut encoder = g.device.create_command_encoder(&Default::default());
-        water.encode(&g.device, &g.queue, &mut encoder, &plan(&medium, &settings, t0, 2, STEP_DT, &mut drops), None);
+        water.encode(&g.device, &g.queue, &mut encoder, &updates, None);
         g.queue.submit([encoder.finish()]);
-        cpu.run(&plan(&medium, &settings, t0, 2, STEP_DT, &mut cpu_drops));
+        cpu.run(&cpu_updates);
     }
     let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, water.state_texture());
     let on_gpu: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
@@ -139,9 +168,8 @@ fn the_gpu_and_the_cpu_run_the_same_tank() {
         sum += (b[0] as f64).powi(2);
         worst = worst.max((a[0] - b[0]).abs());
     }
-    let relative = (diff / sum).sqrt();
-    println!("1 s of the double slit: GPU against CPU, RMS difference {relative:.2e} of the RMS height, largest {worst:.2e} m");
-    assert!(sum > 0.0 && relative < 1e-3);
+    assert!(sum > 0.0, "the water should move");
+    ((diff / sum).sqrt(), worst)
 }
 
 /// The value of an IEEE half float.
@@ -453,324 +481,4 @@ fn a_lens_shaped_plate_brings_plane_waves_to_the_focus_rays_give() {
         (paraxial - back) * 1e3
     );
     assert!((best - narrowest).abs() <= 0.1 * (narrowest - back));
-}
-
-#[test]
-fn a_wall_drawn_with_the_pointer_keeps_the_waves_from_the_water_behind_it() {
-    let (width, height) = (320u32, 240u32);
-    let mut behind = Vec::new();
-    for draw in [false, true] {
-        let mut d = demo(DemoOptions::default());
-        d.params.set(ParamId::Scene, 2.0);
-        d.params.set(ParamId::TankTool, wavepool::tank::Tool::Walls.value());
-        d.sync_scene();
-        d.set_viewport(width, height);
-        if draw {
-            // A stroke across the tray 5 cm past the dipper, in eight moves.
-            let size = glam::Vec2::new(width as f32, height as f32);
-            let at = |x: f32| d.camera().project(glam::Vec3::new(x, 0.0, 0.05), size).expect("on screen");
-            let (a, b) = (at(-0.22), at(0.22));
-            d.pointer_down(a.x, a.y);
-            for k in 1..=8 {
-                let p = a + (b - a) * (k as f32 / 8.0);
-                d.pointer_move(p.x, p.y);
-            }
-            d.pointer_up();
-        }
-        render(&mut d, width, height, 72, 1.0 / 60.0);
-        let tank = d.tank();
-        let g = gpu();
-        let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, tank.water().unwrap().state_texture());
-        let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-        let m = tank.medium();
-        let walls = (0..m.cells * m.cells).filter(|&k| m.kind(k % m.cells, k / m.cells) == CellKind::Wall).count();
-        let mut largest = 0.0f32;
-        for j in 0..m.cells {
-            for i in 0..m.cells {
-                let (x, z) = m.centre(i, j);
-                if x.abs() < 0.05 && (0.08..0.12).contains(&z) {
-                    largest = largest.max(state[(j * m.cells + i) as usize][0].abs());
-                }
-            }
-        }
-        println!(
-            "wall drawn: {draw} ({} strokes, {walls} wall cells): largest |h| behind it {:.2e} m",
-            tank.strokes().len(),
-            largest
-        );
-        behind.push(largest);
-    }
-    assert!(behind[0] > 1e-5, "the rings should reach the water past the stroke's line");
-    assert!(behind[1] < 0.05 * behind[0], "the drawn wall let the waves through");
-}
-
-#[test]
-fn the_probe_reads_the_dippers_frequency_within_one_percent_and_draws_its_graph() {
-    let (width, height) = (160u32, 120u32);
-    for frequency in [10.0f32, 6.5] {
-        let mut d = demo(DemoOptions::default());
-        d.params.set(ParamId::Scene, 2.0);
-        d.params.set(ParamId::TankFrequency, frequency);
-        d.params.set(ParamId::TankProbe, 1.0);
-        // 120 mm from the dipper: its waves arrive within half a second.
-        d.params.set(ParamId::TankProbeZ, 120.0);
-        d.sync_scene();
-        render(&mut d, width, height, 300, 1.0 / 60.0);
-        let frame = render(&mut d, width, height, 2, 1.0 / 60.0);
-        let reading = d.tank().probe_reading();
-        let read = reading.frequency.expect("the probe should read a frequency after five seconds");
-        println!("dipper {frequency} Hz: the probe reads {read:.3} Hz, swing {:.3} mm", reading.swing * 1e3);
-        assert!((read / frequency - 1.0).abs() < 0.01, "{read} Hz against {frequency} Hz");
-        assert!(reading.swing > 1e-5, "the probe should see the waves swing");
-        let readings = d.readings();
-        assert!(readings.iter().any(|&(name, v, _)| name == "probe frequency" && v == read));
-        // The graph in the picture's lower right corner: the trace's yellow ink.
-        let panel = Rect { x: width * 62 / 100, y: height * 76 / 100, w: width * 34 / 100, h: height * 20 / 100 };
-        let pixels = frame.region(panel);
-        let ink =
-            pixels.iter().filter(|&&[r, g, b]| r > 180 && g > 140 && b < 120).count() as f32 / pixels.len() as f32;
-        println!("  the graph's ink covers {:.1} % of its panel", ink * 100.0);
-        assert!(ink > 0.05, "the probe's graph should be drawn");
-    }
-}
-
-#[test]
-fn a_sketch_in_a_share_link_redraws_the_walls_and_the_ruler() {
-    let mut d = demo(DemoOptions::default());
-    d.params.set(ParamId::Scene, 2.0);
-    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Walls.value());
-    d.sync_scene();
-    let (width, height) = (320u32, 240u32);
-    d.set_viewport(width, height);
-    let size = glam::Vec2::new(width as f32, height as f32);
-    let at =
-        |d: &wavepool::demo::WaterDemo, x: f32, z: f32| d.camera().project(glam::Vec3::new(x, 0.0, z), size).unwrap();
-    let (a, b) = (at(&d, -0.1, 0.05), at(&d, 0.1, 0.08));
-    d.pointer_down(a.x, a.y);
-    d.pointer_move(b.x, b.y);
-    d.pointer_up();
-    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Ruler.value());
-    d.sync_scene();
-    let (a, b) = (at(&d, -0.2, -0.1), at(&d, 0.1, -0.1));
-    d.pointer_down(a.x, a.y);
-    d.pointer_move(b.x, b.y);
-    d.pointer_up();
-    let text = d.sketch();
-    let ruler = d.readings().iter().find(|r| r.0 == "ruler").map(|r| r.1).expect("a ruler reading");
-    println!("sketch {text:?}, ruler {ruler:.1} mm");
-    assert!(text.starts_with('W') && text.contains("_R"), "{text}");
-    assert!((ruler - 300.0).abs() < 3.0, "the ruler laid over 300 mm reads {ruler} mm");
-    let mut copy = demo(DemoOptions::default());
-    copy.params.set(ParamId::Scene, 2.0);
-    copy.set_sketch(&text).expect("the sketch reads");
-    assert_eq!(copy.sketch(), text);
-    let walls = |d: &wavepool::demo::WaterDemo| {
-        let m = d.tank().medium();
-        (0..m.cells * m.cells).filter(|&k| m.kind(k % m.cells, k / m.cells) == CellKind::Wall).count()
-    };
-    println!("wall cells: drawn {}, from the sketch {}", walls(&d), walls(&copy));
-    assert!(walls(&d) > 50 && walls(&d) == walls(&copy));
-    assert!(copy.set_sketch("W1,2").is_err() && copy.sketch() == text, "a bad sketch changes nothing");
-}
-
-#[test]
-fn a_single_pulse_makes_one_crest_that_passes_and_leaves_the_water_still() {
-    let settings = TankSettings { size: 0.3, pulse: true, ..Default::default() };
-    let mut tank = CpuTank::new(Medium::of(&settings, 128));
-    let (i, j) = tank.medium.cell_at(0.0, 0.08).expect("in the tray");
-    let mut heights = Vec::new();
-    let mut drops = Vec::new();
-    let steps = (2.0 / STEP_DT).round() as u32;
-    for batch in 0..steps / 2 {
-        let t0 = (2 * batch) as f64 * STEP_DT as f64;
-        let mut updates = plan(&tank.medium, &settings, t0, 2, STEP_DT, &mut drops);
-        wavepool::tank::plan::shape_pulse(&mut updates, t0, 0.1);
-        tank.run(&updates);
-        heights.push(tank.height(i, j));
-    }
-    let peak = heights.iter().fold(0.0f32, |m, &h| m.max(h));
-    // Crests: runs of heights over half the peak.
-    let crests = heights.windows(2).filter(|w| w[0] < 0.5 * peak && w[1] >= 0.5 * peak).count();
-    let last = heights[heights.len() - 20..].iter().fold(0.0f32, |m, &h| m.max(h.abs()));
-    println!(
-        "80 mm from the dipper: peak {:.3} mm, {crests} crest(s), the last 1/6 s of 2 s within {:.4} mm",
-        peak * 1e3,
-        last * 1e3
-    );
-    assert!(peak > 0.05 * settings.amplitude, "the pulse should reach the point");
-    assert_eq!(crests, 1, "one pulse, one crest");
-    // (In two dimensions a pulse leaves a fading tail behind it: no sharp end as in 1-D or 3-D.)
-    assert!(last < 0.3 * peak, "the water should settle after the pulse has passed");
-}
-
-#[test]
-fn the_apparatus_shows_the_lamp_over_the_tray_and_its_image_on_the_paper_and_the_split_shows_both_views() {
-    let (width, height) = (240u32, 180u32);
-    let start = |look: wavepool::tank::Look| {
-        let mut d = demo(DemoOptions::default());
-        d.params.set(ParamId::Scene, 2.0);
-        d.params.set(ParamId::TankLook, look.value());
-        d.sync_scene();
-        d
-    };
-    let mut d = start(wavepool::tank::Look::Apparatus);
-    let frame = render(&mut d, width, height, 90, 1.0 / 60.0);
-    let settings = d.tank().settings();
-    let size = glam::Vec2::new(width as f32, height as f32);
-    let lamp = d.camera().project(glam::Vec3::new(0.0, settings.lamp_height, 0.0), size).expect("the lamp in view");
-    let paper_y = -settings.depth - wavepool::tank::SCREEN_BELOW;
-    // The rings' image on the paper, a little way in front of the dipper's (seen past the tray).
-    let paper = d.camera().project(glam::Vec3::new(0.0, paper_y, 0.25), size).expect("the paper in view");
-    let around = |p: glam::Vec2, r: u32| Rect { x: p.x as u32 - r, y: p.y as u32 - r, w: 2 * r, h: 2 * r };
-    let bulb = frame.luma(lamp.x as u32, lamp.y as u32);
-    let rings = frame.luma_spread(around(paper, 12));
-    let room = frame.luma(width / 10, height / 10);
-    println!("apparatus: the bulb's luma {bulb:.0}, the room's {room:.0}; the paper's luma spread round the rings' image {rings:.1}");
-    assert!(bulb > 240.0 && room < 60.0, "the lamp should shine in a dim room");
-    assert!(rings > 8.0, "the lamp's image of the rings should show on the paper");
-    // The split: the apparatus on the left (as drawn alone in that half), the screen view on the right.
-    let mut split = start(wavepool::tank::Look::Split);
-    let both = render(&mut split, width, height, 90, 1.0 / 60.0);
-    let mut alone = start(wavepool::tank::Look::Apparatus);
-    let left = render(&mut alone, width / 2, height, 90, 1.0 / 60.0);
-    let left_half = Rect { x: 0, y: 0, w: width / 2, h: height };
-    let mut diff = 0.0;
-    for (x, y) in left_half.points() {
-        diff += (both.luma(x, y) - left.luma(x, y)).abs();
-    }
-    diff /= left_half.pixels() as f64;
-    let right_half = Rect { x: width / 2, ..left_half };
-    let (right_spread, right_mean) = (both.luma_spread(right_half), both.mean(right_half));
-    println!("split: left half against the apparatus alone {diff:.2} luma; right half spread {right_spread:.1}, mean {right_mean:.0?}");
-    assert!(diff < 2.0, "the split's left half should be the apparatus");
-    assert!(right_spread > 20.0 && right_mean[0] > 60.0, "the split's right half should show the paper from above");
-}
-
-#[test]
-fn a_phased_array_of_four_dippers_steers_its_beam_to_the_angle_theory_gives() {
-    // Four dippers 30 mm apart at 6 Hz (0.58 of a wavelength), each a quarter cycle behind its
-    // −x neighbour.
-    let settings = TankSettings {
-        setup: Setup::TwoDippers,
-        dippers: 4,
-        slit_spacing: 0.03,
-        frequency: 6.0,
-        phase_step: 90f32.to_radians(),
-        size: 1.0,
-        ..Default::default()
-    };
-    let mut tank = CpuTank::new(Medium::of(&settings, 320));
-    run(&mut tank, &settings, 4.0, |_| {});
-    // The intensity round an arc 0.35 m from the row's middle (its far field), every half degree.
-    let m = tank.medium.clone();
-    let (radius, mut best, mut brightest) = (0.35f32, 0.0f32, 0.0f32);
-    for k in -140..=140 {
-        let angle = (k as f32 * 0.5).to_radians();
-        let Some((i, j)) = m.cell_at(radius * angle.sin(), radius * angle.cos()) else { continue };
-        if tank.intensity(i, j) > brightest {
-            (best, brightest) = (angle.to_degrees(), tank.intensity(i, j));
-        }
-    }
-    let lambda = settings.wavelength();
-    let theory = (settings.phase_step * lambda / (std::f32::consts::TAU * settings.slit_spacing)).asin().to_degrees();
-    println!(
-        "the beam at {best:.1}° (towards +x), theory arcsin(Δφ λ / (2π d)) = {theory:.1}° (λ {:.1} mm)",
-        lambda * 1e3
-    );
-    // Within 2°: the dippers are disks that also scatter each other's waves, which the theory's
-    // points do not (the beam sits about 1.3° short); a lost or reversed phase step is 25° off.
-    assert!((best - theory).abs() <= 2.0, "the beam at {best}°, not {theory}°");
-}
-
-#[test]
-fn a_dipper_dragged_with_the_move_tool_makes_its_waves_where_it_was_left_and_the_link_keeps_it() {
-    let mut d = demo(DemoOptions::default());
-    d.params.set(ParamId::Scene, 2.0);
-    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Move.value());
-    d.sync_scene();
-    let (width, height) = (320u32, 240u32);
-    d.set_viewport(width, height);
-    let size = glam::Vec2::new(width as f32, height as f32);
-    let at =
-        |d: &wavepool::demo::WaterDemo, x: f32, z: f32| d.camera().project(glam::Vec3::new(x, 0.0, z), size).unwrap();
-    // From the dipper in the middle to (80, 60) mm, in four moves.
-    let (a, b) = (at(&d, 0.0, 0.0), at(&d, 0.08, 0.06));
-    d.pointer_down(a.x, a.y);
-    for k in 1..=4 {
-        let p = a + (b - a) * (k as f32 / 4.0);
-        d.pointer_move(p.x, p.y);
-    }
-    d.pointer_up();
-    let dipper = d.tank().medium().sources.dippers[0];
-    let text = d.sketch();
-    println!("the dipper is at ({:.1}, {:.1}) mm; sketch {text:?}", dipper.x * 1e3, dipper.z * 1e3);
-    assert!((dipper.x - 0.08).abs() < 0.004 && (dipper.z - 0.06).abs() < 0.004, "the dipper did not follow");
-    assert!(text.starts_with("D0,"), "{text}");
-    // Its rings after half a second (0.16 m of travel): round where it was left the water
-    // moves; 200 mm from there (but 100 mm from where it stood) it is still.
-    render(&mut d, 64, 48, 30, 1.0 / 60.0);
-    let m = d.tank().medium();
-    let g = gpu();
-    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
-    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-    let swing_at = |x: f32, z: f32| {
-        let (i, j) = m.cell_at(x, z).unwrap();
-        state[(j * m.cells + i) as usize][2].sqrt()
-    };
-    let (near, far) = (swing_at(0.08, 0.09), swing_at(-0.08, -0.06));
-    println!("after 0.5 s: rms height 30 mm from where it was left {:.2e} m, 200 mm from it {:.2e} m", near, far);
-    assert!(near > 10.0 * far.max(1e-9), "the waves should start where the dipper was left");
-    let mut copy = demo(DemoOptions::default());
-    copy.params.set(ParamId::Scene, 2.0);
-    copy.set_sketch(&text).expect("the sketch reads");
-    let copied = copy.tank().medium().sources.dippers[0];
-    assert!(
-        (copied.x - dipper.x).abs() < 1e-3 && (copied.z - dipper.z).abs() < 1e-3,
-        "the link lost the dipper's place"
-    );
-}
-
-#[test]
-fn two_dippers_a_hertz_apart_beat_once_a_second_where_their_waves_meet() {
-    for ratio in [1.0f32, 0.5] {
-        beats(ratio);
-    }
-}
-
-/// Two dippers 1 Hz apart, the second `ratio` as strong: their beats where the waves meet.
-fn beats(ratio: f32) {
-    let settings =
-        TankSettings { setup: Setup::TwoDippers, detune: 1.0, amplitude_ratio: ratio, size: 0.4, ..Default::default() };
-    let mut tank = CpuTank::new(Medium::of(&settings, 160));
-    // On the line between them, 100 mm out: both waves arrive together, so the swing there
-    // grows and dies as their phases slide past each other.
-    let (i, j) = tank.medium.cell_at(0.0, 0.1).unwrap();
-    let mut heights = Vec::new();
-    run(&mut tank, &settings, 6.0, |tank| heights.push(tank.height(i, j)));
-    // The swing over each half period of the dippers (1/20 s), after the waves have arrived.
-    let per_chunk = heights.len() / 120;
-    let swings: Vec<f32> =
-        heights.chunks(per_chunk).skip(10).map(|c| c.iter().fold(0.0f32, |m, &h| m.max(h.abs()))).collect();
-    let loudest = swings.iter().fold(0.0f32, |m, &s| m.max(s));
-    let quietest = swings.iter().fold(f32::MAX, |m, &s| m.min(s));
-    // Unequal waves cancel only in part: at best (1 - r) / (1 + r) of their sum is left.
-    let left = (1.0 - ratio) / (1.0 + ratio);
-    println!("amplitude ratio {ratio}: the quietest swing {:.2} of the loudest (theory {left:.2})", quietest / loudest);
-    // (Each swing is over a twentieth of a second, so even equal waves show 0.08 at their quietest.)
-    assert!((quietest / loudest - left).abs() < 0.1, "the quietest swing is {} of the loudest", quietest / loudest);
-    if ratio < 1.0 {
-        return;
-    }
-    // The quiet moments: swings under a third of the loudest, each run of them one beat.
-    let quiet: Vec<usize> =
-        (1..swings.len()).filter(|&k| swings[k] < loudest / 3.0 && swings[k - 1] >= loudest / 3.0).collect();
-    let beat = (quiet.last().unwrap() - quiet[0]) as f32 / (quiet.len() - 1) as f32 / 20.0;
-    println!(
-        "swing between {:.3} and {:.3} mm; {} quiet moments, {beat:.3} s apart (1 / 1 Hz = 1 s)",
-        swings.iter().fold(f32::MAX, |m, &s| m.min(s)) * 1e3,
-        loudest * 1e3,
-        quiet.len()
-    );
-    assert!(quiet.len() >= 4, "the waves should beat");
-    assert!((beat - 1.0).abs() < 0.05, "the beats are {beat} s apart");
 }
