@@ -132,7 +132,10 @@ async fn fullscreen_is_offered_only_where_the_page_allows_it_and_fills_the_scree
     let full = browser
         .wait_for("document.fullscreenElement === document.querySelector('#pool')", Duration::from_secs(10))
         .await;
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    // The canvas follows the screen's size at its next frame.
+    browser
+        .wait_for("(c => c.getBoundingClientRect().width >= innerWidth - 1)(document.querySelector('#pool').shadowRoot.querySelector('canvas'))", Duration::from_secs(5))
+        .await;
     let sizes =
         browser.js(&canvas_rect_js("#pool").replace("return {", "return { vw: innerWidth, vh: innerHeight,")).await;
     println!("fullscreen: {full}, canvas {sizes}");
@@ -225,7 +228,12 @@ async fn the_wave_pool_element_runs_each_time_it_is_inserted_and_frees_its_conte
             let speed = browser.js("return document.querySelector('wave-pool').demo.get('wave_speed');").await;
             assert_eq!(speed, 0.8, "the wave-speed attribute");
             browser.js("document.querySelector('wave-pool').remove(); return true;").await;
-            tokio::time::sleep(Duration::from_millis(100)).await;
+            // Its context goes when the element leaves the page (checked below).
+            let gone = match backend {
+                "webgl2" => "window.__gpu.webgl2 === window.__gpu.lostWebgl2",
+                _ => "window.__gpu.webgpu === window.__gpu.destroyedDevices",
+            };
+            browser.wait_for(gone, Duration::from_secs(2)).await;
             let gpu = browser.js("return window.__gpu;").await;
             let n = |k: &str| gpu[k].as_i64().unwrap_or(0);
             let live = match backend {
@@ -505,7 +513,8 @@ async fn twelve_demos_on_a_long_page_start_when_scrolled_to_and_hold_at_most_eig
             most_live = most_live.max(live);
             assert!(live <= 8, "{backend}: {live} GPU contexts live with pool {i} on screen");
         }
-        tokio::time::sleep(Duration::from_millis(500)).await;
+        let runs = "document.getElementById('pool12').demo.stats().simTime > 0";
+        browser.wait_for(runs, Duration::from_secs(5)).await;
         let sim_time = browser.js("return document.getElementById('pool12').demo.stats().simTime;").await;
         let suspended: Vec<u32> = {
             let v = browser.js("return [...document.querySelectorAll('wave-pool')].filter((e) => e.dataset.suspended).map((e) => Number(e.id.slice(4)));").await;

@@ -13,12 +13,15 @@ const GLASS_THICKNESS: f32 = 0.006;
 const FRAME: vec3<f32> = vec3<f32>(0.32, 0.25, 0.18);
 const METAL: vec3<f32> = vec3<f32>(0.45, 0.46, 0.48);
 const BULB: vec3<f32> = vec3<f32>(6.0, 5.4, 4.2);
+const DIPPER: vec3<f32> = vec3<f32>(0.8, 0.78, 0.72);
+// How high over the water the dippers' rods reach (m): to the vibrator above the tray.
+const ROD_TOP: f32 = 0.12;
 const FAR: f32 = 1.0e9;
 
 struct Hit {
     t: f32,
     normal: vec3<f32>,
-    kind: i32, // 0 nothing, 1 water, 2 frame, 3 leg or cord, 4 bulb, 5 bench and paper
+    kind: i32, // 0 nothing, 1 water, 2 frame, 3 leg, cord or rod, 4 bulb, 5 bench and paper, 6 a source
 };
 
 fn no_hit() -> Hit {
@@ -65,15 +68,42 @@ fn rod_hit(o: vec3<f32>, d: vec3<f32>, c: vec2<f32>, r: f32, y0: f32, y1: f32) -
     return Hit(t, vec3<f32>((p + t * d.xz) / r, 0.0).xzy, 3);
 }
 
-fn bulb_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
-    let p = o - vec3<f32>(0.0, pic.tray.z, 0.0);
+fn sphere_hit(o: vec3<f32>, d: vec3<f32>, c: vec3<f32>, r: f32, kind: i32) -> Hit {
+    let p = o - c;
     let b = dot(p, d);
-    let disc = b * b - dot(p, p) + BULB_RADIUS * BULB_RADIUS;
+    let disc = b * b - dot(p, p) + r * r;
     let t = -b - sqrt(max(disc, 0.0));
     if disc < 0.0 || t < 1e-4 {
         return no_hit();
     }
-    return Hit(t, normalize(p + t * d), 4);
+    return Hit(t, normalize(p + t * d), kind);
+}
+
+fn bulb_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
+    return sphere_hit(o, d, vec3<f32>(0.0, pic.tray.z, 0.0), BULB_RADIUS, 4);
+}
+
+// The sources in the water: each dipper a ball half under the surface on its rod, the bar a
+// beam lying in it on two rods.
+fn sources_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
+    var hit = no_hit();
+    for (var k = 0u; k < MAX_DIPPERS; k++) {
+        let s = pic.dippers[k];
+        if s.w > 0.5 {
+            hit = nearer(hit, sphere_hit(o, d, vec3<f32>(s.x, 0.0, s.y), s.z, 6));
+            hit = nearer(hit, rod_hit(o, d, s.xy, CORD_RADIUS, 0.0, ROD_TOP));
+        }
+    }
+    let b = pic.bar;
+    if b.w > 0.5 {
+        let lo = vec3<f32>(-b.z, -b.y, b.x - b.y);
+        hit = nearer(hit, box_hit(o, d, lo, vec3<f32>(b.z, b.y, b.x + b.y), 6));
+        for (var k = 0; k < 2; k++) {
+            let x = select(-0.5, 0.5, k == 1) * b.z;
+            hit = nearer(hit, rod_hit(o, d, vec2<f32>(x, b.x), CORD_RADIUS, 0.0, ROD_TOP));
+        }
+    }
+    return hit;
 }
 
 fn plane_hit(o: vec3<f32>, d: vec3<f32>, y: f32, kind: i32) -> Hit {
@@ -105,6 +135,7 @@ fn solid_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
         hit = nearer(hit, rod_hit(o, d, c, LEG_RADIUS, paper_level(), bottom));
     }
     hit = nearer(hit, rod_hit(o, d, vec2<f32>(0.0), CORD_RADIUS, pic.tray.z, pic.tray.z + 3.0));
+    hit = nearer(hit, sources_hit(o, d));
     return nearer(hit, bulb_hit(o, d));
 }
 
@@ -147,6 +178,9 @@ fn shade_solid(hit: Hit, o: vec3<f32>, d: vec3<f32>) -> vec3<f32> {
         }
         case 5: {
             return paper_colour(p);
+        }
+        case 6: {
+            return DIPPER * (0.2 + lamp_light(p, hit.normal));
         }
         default: {
             return room(o, d);

@@ -18,6 +18,8 @@ struct Picture {
     ruler: vec4<f32>,   // its start x, z and end x, z (m)
     apparatus_inverse_view_proj: mat4x4<f32>,
     halves: vec4<f32>,  // the apparatus's part of the target (uv: x from, y width), the screen view's (z, w)
+    dippers: array<vec4<f32>, MAX_DIPPERS>, // each dipper's x, z, radius (m), w 1 if there
+    bar: vec4<f32>,     // the bar's z, half thickness, half length (m), w 1 if there
 };
 
 @group(0) @binding(0) var<uniform> pic: Picture;

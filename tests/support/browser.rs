@@ -6,7 +6,7 @@
 //! that says how to get it.
 #![allow(dead_code)]
 
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{Read, Write};
 use std::net::{TcpListener, TcpStream};
 use std::os::unix::process::CommandExt;
 use std::path::{Path, PathBuf};
@@ -18,6 +18,15 @@ use serde_json::{json, Value};
 
 #[path = "picture.rs"]
 pub mod picture;
+#[path = "server.rs"]
+mod server;
+#[allow(unused_imports)]
+pub use server::*;
+#[path = "host.rs"]
+mod host;
+// Not every test binary uses each part.
+#[allow(unused_imports)]
+pub use host::*;
 // For the test files (a binary that takes only some of them leaves the others unused).
 #[allow(unused_imports)]
 pub use picture::{Image, Rect};
@@ -55,197 +64,6 @@ pub fn serial() -> std::sync::MutexGuard<'static, ()> {
 /// JS: the message shown by the demo in `#pool` ('' when hidden).
 pub const MESSAGE_JS: &str = "const m = document.querySelector('#pool').shadowRoot.querySelector('.message');
                               return m && !m.hidden ? m.textContent : '';";
-
-/// The built page: `$WAVEPOOL_DIST` or `dist/` in the crate.
-pub fn dist_dir() -> PathBuf {
-    let dir = std::env::var_os("WAVEPOOL_DIST")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("dist"));
-    for file in ["index.html", "embed.js", "wavepool.js", "wavepool_bg.wasm"] {
-        assert!(
-            dir.join(file).is_file(),
-            "{} is missing: the browser tests need the built page; run ./scripts/test (it runs \
-             `trunk build --release` first)",
-            dir.join(file).display()
-        );
-    }
-    dir
-}
-
-/// Evan Wallace's WebGL Water, the measuring stick of the browser benchmark: the team's
-/// read-only copy next to the crate (`../shared/anchors/webgl-water`). Served as it is, never
-/// copied into the project.
-pub fn classic_dir() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/anchors/webgl-water");
-    assert!(
-        dir.join("index.html").is_file(),
-        "{} is missing: the benchmark measures our page against the classic WebGL Water, \
-         which it expects (unchanged, read-only) in ../shared/anchors/webgl-water beside the crate",
-        dir.display()
-    );
-    dir
-}
-
-/// The frame counter (`tests/pages/frame_counter.js`): add it with `Browser::add_init_script`
-/// before loading a page, then `window.__frameCounter.reset()` / `.read()` in the page.
-pub const FRAME_COUNTER_JS: &str = include_str!("../pages/frame_counter.js");
-
-fn content_type(path: &Path) -> &'static str {
-    match path.extension().and_then(|e| e.to_str()) {
-        Some("html") => "text/html; charset=utf-8",
-        Some("js") => "text/javascript",
-        Some("css") => "text/css",
-        Some("wasm") => "application/wasm",
-        Some("svg") => "image/svg+xml",
-        Some("json") => "application/json",
-        Some("woff2") => "font/woff2",
-        Some("png") => "image/png",
-        Some("jpg" | "jpeg") => "image/jpeg",
-        _ => "application/octet-stream",
-    }
-}
-
-/// A static file server for `dist/` at `/` and `tests/pages/` at `/test/` (and, when started
-/// with `start_with_classic`, the classic WebGL Water at `/classic/`).
-pub struct StaticServer {
-    pub port: u16,
-    /// Paths requested so far, in order.
-    requests: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
-}
-
-impl StaticServer {
-    pub fn start() -> Self {
-        Self::start_serving(None, false, Vec::new())
-    }
-
-    /// Also serves each folder under its URL prefix (`("/hosts/", dir)`: `/hosts/a.js` is
-    /// `dir/a.js`), ahead of `dist/`.
-    pub fn start_with_mounts(mounts: Vec<(&str, PathBuf)>) -> Self {
-        let mounts = mounts.into_iter().map(|(prefix, dir)| (prefix.to_owned(), dir)).collect();
-        Self::start_serving(None, false, mounts)
-    }
-
-    /// Also serves the classic WebGL Water (`classic_dir()`, read-only) at `/classic/`;
-    /// panics with a clear message when it is missing. With `count_frames`, every HTML page
-    /// served starts with the frame counter ([`FRAME_COUNTER_JS`]) as its first script, so it
-    /// runs before the page's own in any engine (the way to inject it where DevTools is not
-    /// there: Firefox, WebKit).
-    pub fn start_with_classic(count_frames: bool) -> Self {
-        Self::start_with_classic_and_mounts(count_frames, Vec::new())
-    }
-
-    /// `start_with_classic` and `start_with_mounts` together.
-    pub fn start_with_classic_and_mounts(count_frames: bool, mounts: Vec<(&str, PathBuf)>) -> Self {
-        let mounts = mounts.into_iter().map(|(prefix, dir)| (prefix.to_owned(), dir)).collect();
-        Self::start_serving(Some(classic_dir()), count_frames, mounts)
-    }
-
-    fn start_serving(classic: Option<PathBuf>, count_frames: bool, mounts: Vec<(String, PathBuf)>) -> Self {
-        let dist = dist_dir();
-        let pages = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/pages");
-        let listener = TcpListener::bind("127.0.0.1:0").expect("bind the test server");
-        let port = listener.local_addr().expect("address").port();
-        let requests = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
-        let log = requests.clone();
-        let served = mounts;
-        std::thread::spawn(move || {
-            for stream in listener.incoming().flatten() {
-                let (dist, pages, classic, log) = (dist.clone(), pages.clone(), classic.clone(), log.clone());
-                let mounts = served.clone();
-                std::thread::spawn(move || {
-                    let folders = Folders { dist: &dist, pages: &pages, classic: classic.as_deref(), mounts: &mounts };
-                    if let Some(path) = serve(stream, &folders, count_frames) {
-                        log.lock().unwrap_or_else(|e| e.into_inner()).push(path);
-                    }
-                });
-            }
-        });
-        Self { port, requests }
-    }
-
-    /// The paths requested so far (query strings included), in order.
-    pub fn requests(&self) -> Vec<String> {
-        self.requests.lock().unwrap_or_else(|e| e.into_inner()).clone()
-    }
-
-    pub fn url(&self, path: &str) -> String {
-        format!("http://127.0.0.1:{}{path}", self.port)
-    }
-}
-
-/// `html` with `script` inlined as the first thing of its head (or of the document).
-fn with_first_script(html: &[u8], script: &str) -> Vec<u8> {
-    let text = String::from_utf8_lossy(html);
-    let tag = format!("<script>{script}</script>");
-    let at = text.to_ascii_lowercase().find("<head>").map_or(0, |i| i + "<head>".len());
-    format!("{}{tag}{}", &text[..at], &text[at..]).into_bytes()
-}
-
-/// What the test server serves: `dist/` at `/`, `tests/pages/` at `/test/`, the classic at
-/// `/classic/` (when given) and further folders under their prefixes.
-struct Folders<'a> {
-    dist: &'a Path,
-    pages: &'a Path,
-    classic: Option<&'a Path>,
-    mounts: &'a [(String, PathBuf)],
-}
-
-impl Folders<'_> {
-    /// The file a request's path names.
-    fn file(&self, path: &str) -> PathBuf {
-        for (prefix, dir) in self.mounts {
-            if let Some(rest) = path.strip_prefix(prefix.as_str()) {
-                let file = dir.join(rest);
-                return if file.is_dir() { file.join("index.html") } else { file };
-            }
-        }
-        if let (Some(dir), Some(rest)) = (self.classic, path.strip_prefix("/classic/")) {
-            return dir.join(if rest.is_empty() { "index.html" } else { rest });
-        }
-        match path.strip_prefix("/test/") {
-            Some(rest) => self.pages.join(rest),
-            None if path == "/" => self.dist.join("index.html"),
-            None => self.dist.join(path.trim_start_matches('/')),
-        }
-    }
-}
-
-/// Answers one request; returns the path (with its query) it asked for.
-fn serve(mut stream: TcpStream, folders: &Folders, count_frames: bool) -> Option<String> {
-    let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
-    let mut request = String::new();
-    if reader.read_line(&mut request).is_err() {
-        return None;
-    }
-    loop {
-        let mut header = String::new();
-        if reader.read_line(&mut header).map_or(true, |n| n == 0) || header == "\r\n" {
-            break;
-        }
-    }
-    let target = request.split_whitespace().nth(1).unwrap_or("/");
-    let path = target.split('?').next().unwrap_or("/");
-    let file = folders.file(path);
-    let safe = !path.contains("..");
-    let response = match std::fs::read(&file) {
-        Ok(body) if safe => {
-            let html = file.extension().is_some_and(|e| e == "html");
-            let body = if count_frames && html { with_first_script(&body, FRAME_COUNTER_JS) } else { body };
-            let head = format!(
-                "HTTP/1.1 200 OK\r\nContent-Type: {}\r\nContent-Length: {}\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n",
-                content_type(&file),
-                body.len()
-            );
-            [head.into_bytes(), body].concat()
-        }
-        _ => b"HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n".to_vec(),
-    };
-    let _ = stream.write_all(&response);
-    let _ = stream.flush();
-    let mut rest = Vec::new();
-    let _ = reader.read_to_end(&mut rest);
-    Some(target.to_owned())
-}
 
 /// What graphics the browser is started with.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -740,122 +558,6 @@ fn dechunk(mut data: &[u8]) -> Vec<u8> {
     out
 }
 
-/// A process from /proc: its id, its parent's and its command line.
-#[derive(Clone, Debug)]
-pub struct ProcessInfo {
-    pub pid: u32,
-    pub ppid: u32,
-    pub args: Vec<String>,
-}
-
-impl ProcessInfo {
-    /// The executable's file name (`chromium`, `chromedriver`, ...).
-    pub fn program(&self) -> &str {
-        self.args.first().map_or("", |a| a.rsplit('/').next().unwrap_or(a))
-    }
-
-    /// Chromium's browser process (not one of its helpers, which have a `--type=`).
-    pub fn is_chromium_browser(&self) -> bool {
-        self.program() == "chromium" && !self.args.iter().any(|a| a.starts_with("--type="))
-    }
-
-    /// For a Chromium started by this support code (profile
-    /// `wavepool-chromium-<pid>-<port>/chromium`), the id of the test or benchmark process that
-    /// started it.
-    fn wavepool_owner(&self) -> Option<u32> {
-        let profile = self.args.iter().find_map(|a| a.strip_prefix("--user-data-dir="))?;
-        let name = Path::new(profile).parent()?.file_name()?.to_str()?;
-        name.strip_prefix("wavepool-chromium-")?.split('-').next()?.parse().ok()
-    }
-
-    /// `pid command args...`, shortened, for messages.
-    pub fn describe(&self) -> String {
-        let line = self.args.join(" ");
-        let short: String = line.chars().take(160).collect();
-        format!("{} {short}{}", self.pid, if short.len() < line.len() { " ..." } else { "" })
-    }
-}
-
-/// Every process visible in /proc.
-pub fn processes() -> Vec<ProcessInfo> {
-    let mut list = Vec::new();
-    for entry in std::fs::read_dir("/proc").into_iter().flatten().flatten() {
-        let Some(pid) = entry.file_name().to_str().and_then(|n| n.parse::<u32>().ok()) else { continue };
-        let (Ok(cmdline), Ok(stat)) =
-            (std::fs::read(entry.path().join("cmdline")), std::fs::read_to_string(entry.path().join("stat")))
-        else {
-            continue;
-        };
-        // stat: "pid (comm) state ppid ..."; comm may hold spaces and parentheses.
-        let ppid = stat.rsplit_once(')').and_then(|(_, rest)| rest.split_whitespace().nth(1)?.parse().ok());
-        let args =
-            cmdline.split(|&b| b == 0).filter(|a| !a.is_empty()).map(|a| String::from_utf8_lossy(a).into_owned());
-        list.push(ProcessInfo { pid, ppid: ppid.unwrap_or(0), args: args.collect() });
-    }
-    list
-}
-
-/// `root` and all its descendants, from a process list.
-pub fn process_tree(list: &[ProcessInfo], root: u32) -> Vec<u32> {
-    let mut tree = vec![root];
-    let mut i = 0;
-    while i < tree.len() {
-        let parent = tree[i];
-        tree.extend(list.iter().filter(|p| p.ppid == parent && p.pid != parent).map(|p| p.pid));
-        i += 1;
-    }
-    tree
-}
-
-/// What `end_stray_browsers` found.
-pub struct StrayBrowsers {
-    /// Leftovers it ended (described).
-    pub ended: Vec<String>,
-    /// Chromium or chromedriver processes it left running because they are not leftovers:
-    /// someone's test or browser that is still running (described).
-    pub others: Vec<String>,
-}
-
-/// Ends the Chromium processes left over by earlier tests or benchmarks, by process id: a
-/// Chromium whose profile (`wavepool-chromium-<pid>-<port>/chromium`) names a process that has ended,
-/// with all its helpers, and its chromedriver when that was orphaned too. One such leftover
-/// (its GPU process still working through queued frames) makes every figure of a benchmark
-/// several times worse. Other Chromium or chromedriver processes are not touched, only listed
-/// in `others`: they belong to something still running (a test, another session).
-pub fn end_stray_browsers() -> StrayBrowsers {
-    let list = processes();
-    let alive = |pid: u32| Path::new(&format!("/proc/{pid}")).exists();
-    let mut doomed: Vec<u32> = Vec::new();
-    let mut ended = Vec::new();
-    for p in list.iter().filter(|p| p.is_chromium_browser()) {
-        let Some(owner) = p.wavepool_owner() else { continue };
-        if alive(owner) {
-            continue;
-        }
-        ended.push(p.describe());
-        doomed.extend(process_tree(&list, p.pid));
-        if let Some(driver) = list.iter().find(|d| d.pid == p.ppid && d.program() == "chromedriver" && d.ppid == 1) {
-            ended.push(driver.describe());
-            doomed.extend(process_tree(&list, driver.pid));
-        }
-    }
-    doomed.sort_unstable();
-    doomed.dedup();
-    for pid in &doomed {
-        let _ = Command::new("kill").args(["-KILL", &pid.to_string()]).stderr(Stdio::null()).status();
-    }
-    let start = Instant::now();
-    while doomed.iter().any(|&pid| alive(pid)) && start.elapsed() < Duration::from_secs(5) {
-        std::thread::sleep(Duration::from_millis(50));
-    }
-    let others = processes()
-        .iter()
-        .filter(|p| !doomed.contains(&p.pid) && (p.is_chromium_browser() || p.program() == "chromedriver"))
-        .map(ProcessInfo::describe)
-        .collect();
-    StrayBrowsers { ended, others }
-}
-
 impl Drop for Browser {
     fn drop(&mut self) {
         let _ = Command::new("kill").args(["-KILL", "--", &format!("-{}", self.driver.id())]).status();
@@ -873,39 +575,4 @@ pub fn canvas_rect_js(selector: &str) -> String {
          const r = c.getBoundingClientRect();
          return {{ left: r.left, top: r.top, width: r.width, height: r.height }};"
     )
-}
-
-/// Where `./scripts/test` installs the course hosts the tests put the pool in
-/// (`ensure_host_tools` in scripts/lib.sh): `$XDG_CACHE_HOME/wavepool` or `~/.cache/wavepool`.
-fn host_tools_dir() -> PathBuf {
-    std::env::var_os("XDG_CACHE_HOME")
-        .map(PathBuf::from)
-        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".cache")))
-        .expect("HOME or XDG_CACHE_HOME")
-        .join("wavepool")
-}
-
-/// The npm packages of the host tests (reveal.js and axe-core, pinned in scripts/lib.sh).
-pub fn host_packages() -> PathBuf {
-    let dir = host_tools_dir().join("hosts/node_modules");
-    for package in ["reveal.js/dist/reveal.js", "axe-core/axe.min.js"] {
-        assert!(
-            dir.join(package).is_file(),
-            "{} is missing: the course-host tests need reveal.js and axe-core from npm \
-             (./scripts/test installs them)",
-            dir.join(package).display()
-        );
-    }
-    dir
-}
-
-/// The `mkdocs` command of the MkDocs Material install the host tests build a site with.
-pub fn mkdocs() -> PathBuf {
-    let bin = host_tools_dir().join("mkdocs/bin/mkdocs");
-    assert!(
-        bin.is_file(),
-        "{} is missing: the course-host tests build a MkDocs Material site (./scripts/test installs it)",
-        bin.display()
-    );
-    bin
 }

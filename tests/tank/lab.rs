@@ -200,6 +200,19 @@ fn the_apparatus_shows_the_lamp_over_the_tray_and_its_image_on_the_paper_and_the
     println!("split: left half against the apparatus alone {diff:.2} luma; right half spread {right_spread:.1}, mean {right_mean:.0?}");
     assert!(diff < 2.0, "the split's left half should be the apparatus");
     assert!(right_spread > 20.0 && right_mean[0] > 60.0, "the split's right half should show the paper from above");
+    // A click in the right half lands where the top view shows it: the probe goes there.
+    split.params.set(ParamId::TankTool, wavepool::tank::Tool::Probe.value());
+    split.sync_scene();
+    let half = glam::Vec2::new((width / 2) as f32, height as f32);
+    let top = wavepool::scenes::tank::top_camera(split.tank().settings().size, half.x / half.y);
+    let p = top.project(glam::Vec3::new(0.1, 0.0, -0.05), half).unwrap() + glam::Vec2::new(half.x, 0.0);
+    split.pointer_down(p.x, p.y);
+    split.pointer_up();
+    split.sync_scene();
+    let probe = split.tank().settings().probe;
+    println!("a click at the top view's (100, -50) mm puts the probe at {probe:?}");
+    let (x, z) = probe.expect("the probe tool's click puts the probe in");
+    assert!((x - 0.1).abs() < 0.004 && (z + 0.05).abs() < 0.004, "the split's click missed: {probe:?}");
 }
 
 #[test]

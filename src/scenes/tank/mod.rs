@@ -414,6 +414,13 @@ impl super::Scene for TankScene {
             probe: self.settings.probe.map(|at| (at, self.reading.swing)),
             graph: self.settings.graph.map(|z| (z, self.graph_peak.unwrap_or(0.0))),
             ruler: self.ruler,
+            dippers: (self.medium.sources.dippers.iter())
+                .map(|d| {
+                    let (x, z) = d.centre_at(sh.steps_taken as f64 / STEPS_PER_SECOND as f64);
+                    [x, z, d.radius]
+                })
+                .collect(),
+            bar: self.medium.sources.bar.map(|b| [b.z, b.half_thickness, b.half_length]),
         };
         let group = picture.encode_screen(device, queue, cx.encoder, water, &self.settings, &shot);
         mark(cx.encoder, Stage::AfterMaps);

@@ -8,7 +8,7 @@ use glam::Mat4;
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 use crate::scenes::STEP_DT;
 use crate::tank::gpu::TankWater;
-use crate::tank::{Look, TankSettings, TankView, LINE_WIDTH, MAX_LINES, PROBE_SAMPLES, SCREEN_BELOW};
+use crate::tank::{Look, TankSettings, TankView, LINE_WIDTH, MAX_DIPPERS, MAX_LINES, PROBE_SAMPLES, SCREEN_BELOW};
 
 /// Texels along each side of the screen's image.
 pub const SCREEN_TEXELS: u32 = 512;
@@ -43,6 +43,8 @@ struct PictureUniforms {
     ruler: [f32; 4],
     apparatus_inverse_view_proj: [[f32; 4]; 4],
     halves: [f32; 4],
+    dippers: [[f32; 4]; MAX_DIPPERS],
+    bar: [f32; 4],
 }
 
 /// What the picture shows beyond the settings: the camera's view-projection, the view and the
@@ -63,6 +65,10 @@ pub struct Shot {
     pub graph: Option<(f32, f32)>,
     /// The ruler, if laid.
     pub ruler: Option<super::Ruler>,
+    /// Where the sources stand, for the apparatus: each dipper's x, z and radius (m), and the
+    /// bar's z, half thickness and half length (m), if there is one.
+    pub dippers: Vec<[f32; 3]>,
+    pub bar: Option<[f32; 3]>,
 }
 
 /// The tank's two passes, their uniforms and the screen's image.
@@ -106,42 +112,10 @@ impl TankPicture {
                 gpu::sampler_entry(1, wgpu::ShaderStages::FRAGMENT),
             ],
         });
-        let (format, scale) = if float_targets {
-            (wgpu::TextureFormat::Rgba16Float, 1.0)
-        } else {
-            (wgpu::TextureFormat::Rgba8Unorm, LOW_PRECISION_SCALE)
-        };
-        let image = gpu::texture_2d(
-            device,
-            "tank screen image",
-            (SCREEN_TEXELS, SCREEN_TEXELS, 1),
-            1,
-            format,
-            wgpu::TextureUsages::RENDER_ATTACHMENT
-                | wgpu::TextureUsages::TEXTURE_BINDING
-                | wgpu::TextureUsages::COPY_SRC,
-        );
-        let screen_view = image.create_view(&Default::default());
-        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
-            mag_filter: wgpu::FilterMode::Linear,
-            min_filter: wgpu::FilterMode::Linear,
-            ..Default::default()
-        });
-        let image_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("tank screen image"),
-            layout: &image_layout,
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&screen_view) },
-                wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&sampler) },
-            ],
-        });
-        let numbers = format!(
-            "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\nconst LINE_WIDTH: f32 = {LINE_WIDTH:?};\nconst LINE_VECS: u32 = {}u;\nconst FRAME_SHARE: f32 = {FRAME_SHARE:?};\n",
-            crate::world::IOR_WATER,
-            !target_format.is_srgb(),
-            MAX_LINES / 4
-        ) + &crate::tank::medium::kind_constants();
+        let (image, screen_view, image_group, scale) = screen_image(device, &image_layout, float_targets);
+        let numbers = shader_numbers(target_format);
         let picture = crate::wgsl!("tank/picture.wgsl");
+        let format = image.format();
         let screen_pipeline = screen_pipeline(device, &layout, &numbers, format);
         let show = FullscreenPass::new(
             device,
@@ -159,23 +133,11 @@ impl TankPicture {
             FullscreenTarget { format: target_format, blend: None, depth: None },
         );
         let uniforms = gpu::uniform_buffer(device, "tank picture", &PictureUniforms::zeroed());
-        let (points, indices) = crate::render::scene_parts::banded_grid(cells / SCREEN_MESH_STEP - 1);
-        let buffer = |label: &str, contents: &[u8], usage| {
-            wgpu::util::DeviceExt::create_buffer_init(
-                device,
-                &wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage },
-            )
-        };
-        let mesh = (
-            buffer("tank surface points", bytemuck::cast_slice(&points), wgpu::BufferUsages::VERTEX),
-            buffer("tank surface triangles", bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
-            indices.len() as u32,
-        );
         Self {
             uniforms,
             layout: layout.clone(),
             screen_pipeline,
-            mesh,
+            mesh: surface_mesh(device, cells),
             screen_image: image,
             screen_view,
             image_group,
@@ -187,7 +149,6 @@ impl TankPicture {
             scale,
         }
     }
-
     /// The screen's image: light per texel (1 for flat water under the lamp) times
     /// [`TankPicture::scale`], the screen's +z side in its first rows; its half extent on the
     /// screen is [`TankPicture::screen_half_extent`].
@@ -230,7 +191,15 @@ impl TankPicture {
             ruler: [0.0; 4],
             apparatus_inverse_view_proj: shot.apparatus_view_proj.inverse().to_cols_array_2d(),
             halves: if shot.look == Look::Split { [0.0, 0.5, 0.5, 0.5] } else { [0.0, 1.0, 0.0, 1.0] },
+            dippers: [[0.0; 4]; MAX_DIPPERS],
+            bar: [0.0; 4],
         };
+        for (slot, [x, z, r]) in uniforms.dippers.iter_mut().zip(&shot.dippers) {
+            *slot = [*x, *z, *r, 1.0];
+        }
+        if let Some([z, half_thickness, half_length]) = shot.bar {
+            uniforms.bar = [z, half_thickness, half_length, 1.0];
+        }
         if let Some(((x, z), swing)) = shot.probe {
             // The graph's half height: the swing read, at least half the dippers' amplitude.
             uniforms.probe = [x, z, 1.0, swing.max(0.5 * settings.amplitude) * 1.1];
@@ -365,4 +334,69 @@ fn screen_pipeline(
         multiview_mask: None,
         cache: None,
     })
+}
+
+/// The screen's image (light per texel, in half floats where the device renders into float
+/// textures, else 8 bits with the light scaled), its view, the bind group the pictures sample
+/// it through (`layout`), and what one unit of light is stored as.
+fn screen_image(
+    device: &wgpu::Device,
+    layout: &wgpu::BindGroupLayout,
+    float_targets: bool,
+) -> (wgpu::Texture, wgpu::TextureView, wgpu::BindGroup, f32) {
+    let (format, scale) = if float_targets {
+        (wgpu::TextureFormat::Rgba16Float, 1.0)
+    } else {
+        (wgpu::TextureFormat::Rgba8Unorm, LOW_PRECISION_SCALE)
+    };
+    let image = gpu::texture_2d(
+        device,
+        "tank screen image",
+        (SCREEN_TEXELS, SCREEN_TEXELS, 1),
+        1,
+        format,
+        wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC,
+    );
+    let view = image.create_view(&Default::default());
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+        mag_filter: wgpu::FilterMode::Linear,
+        min_filter: wgpu::FilterMode::Linear,
+        ..Default::default()
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some("tank screen image"),
+        layout,
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: wgpu::BindingResource::TextureView(&view) },
+            wgpu::BindGroupEntry { binding: 1, resource: wgpu::BindingResource::Sampler(&sampler) },
+        ],
+    });
+    (image, view, group, scale)
+}
+
+/// The constants the tank's shaders share, for a target of `target_format`.
+fn shader_numbers(target_format: wgpu::TextureFormat) -> String {
+    format!(
+        "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\nconst LINE_WIDTH: f32 = {LINE_WIDTH:?};\nconst LINE_VECS: u32 = {}u;\nconst FRAME_SHARE: f32 = {FRAME_SHARE:?};\nconst MAX_DIPPERS: u32 = {MAX_DIPPERS}u;\n",
+        crate::world::IOR_WATER,
+        !target_format.is_srgb(),
+        MAX_LINES / 4
+    ) + &crate::tank::medium::kind_constants()
+}
+
+/// The surface's mesh for water of `cells` per side: a point every [`SCREEN_MESH_STEP`] cells
+/// (its place, -1 to 1), and its triangles' indices.
+fn surface_mesh(device: &wgpu::Device, cells: u32) -> (wgpu::Buffer, wgpu::Buffer, u32) {
+    let (points, indices) = crate::render::scene_parts::banded_grid(cells / SCREEN_MESH_STEP - 1);
+    let buffer = |label: &str, contents: &[u8], usage| {
+        wgpu::util::DeviceExt::create_buffer_init(
+            device,
+            &wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage },
+        )
+    };
+    (
+        buffer("tank surface points", bytemuck::cast_slice(&points), wgpu::BufferUsages::VERTEX),
+        buffer("tank surface triangles", bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
+        indices.len() as u32,
+    )
 }
