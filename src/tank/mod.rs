@@ -283,7 +283,7 @@ pub const TANK_TOOL: ParamSpec = ParamSpec {
     unit: "",
     control: Control::Choice { values: Tool::VALUES, names: Tool::NAMES },
     default: 0.0,
-    help: "What a click or a drag on the tray does: drop small pulses into the water, draw straight walls the waves cannot cross, from where you press to where you let go (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength), or move a dipper: press on it and drag.",
+    help: "What a click or a drag on the tray does: drop small pulses into the water, draw straight walls the waves cannot cross, from where you press to where you let go (a barrier of your own, a reflector, a box), erase back to open water, put the probe where you click, lay a ruler from where you press to where you let go (its length is shown under the tank: lay it across ten crests to measure a wavelength), or move a dipper or the bar: press on it and drag (the dipper you press on then shows its own frequency, amplitude and phase).",
 };
 
 /// The pen that draws and erases walls: its radius (m), at least this many cells.

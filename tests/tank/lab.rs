@@ -96,6 +96,11 @@ fn the_probe_reads_the_dippers_frequency_within_one_percent_and_draws_its_graph(
             pixels.iter().filter(|&&[r, g, b]| r > 180 && g > 140 && b < 120).count() as f32 / pixels.len() as f32;
         println!("  the graph's ink covers {:.1} % of its panel", ink * 100.0);
         assert!(ink > 0.05, "the probe's graph should be drawn");
+        // Reset stills the water and forgets what the probe read.
+        d.reset(&gpu().queue);
+        let cleared =
+            d.tank().probe_reading().frequency.is_none() && d.readings().iter().all(|r| r.0 != "probe frequency");
+        assert!(cleared, "the reading outlived the reset: {:?}", d.readings());
     }
 }
 
@@ -397,4 +402,40 @@ fn swing_and_frequency(d: &WaterDemo, at: (f32, f32)) -> (f32, f32) {
     let last = &heights[heights.len() * 2 / 3..];
     let reading = wavepool::tank::probe::read(last, 1.0 / (heights.len() as f32 / 3.0));
     (reading.swing, reading.frequency.unwrap_or(0.0))
+}
+
+#[test]
+fn the_bar_dragged_with_the_move_tool_sends_its_waves_from_where_it_was_left_and_the_link_keeps_it() {
+    let mut d = demo(DemoOptions::default());
+    d.params.set(ParamId::Scene, 2.0);
+    d.params.set(ParamId::TankSetup, Setup::PlaneWave.value());
+    d.params.set(ParamId::TankTool, wavepool::tank::Tool::Move.value());
+    d.sync_scene();
+    let bar = d.tank().medium().sources.bar.expect("the plane wave's bar");
+    drag(&mut d, (320, 240), (0.05, bar.z), (0.05, 0.0), 4);
+    let moved = d.tank().medium().sources.bar.unwrap();
+    let text = d.sketch();
+    println!("the bar from z = {:.1} mm to {:.1} mm; sketch {text:?}", bar.z * 1e3, moved.z * 1e3);
+    assert!(moved.z.abs() < 0.004, "the bar did not follow");
+    assert!(text.contains(&format!("B{}", (moved.z * 1e3).round() as i32)), "{text}");
+    // A quarter of a second (80 mm of travel): the water moves beside its new place and is
+    // still 170 mm from it (60 mm from its old place).
+    render(&mut d, 64, 48, 15, 1.0 / 60.0);
+    let m = d.tank().medium();
+    let g = gpu();
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
+    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+    let swing_at = |x: f32, z: f32| {
+        let (i, j) = m.cell_at(x, z).unwrap();
+        state[(j * m.cells + i) as usize][2].sqrt()
+    };
+    let (near, old) = (swing_at(0.0, 0.04), swing_at(0.0, -0.17));
+    println!("after 0.25 s: rms height 40 mm from it {near:.2e} m, by its old place {old:.2e} m");
+    assert!(near > 10.0 * old.max(1e-9), "the waves should start where the bar was left");
+    let mut copy = demo(DemoOptions::default());
+    copy.params.set(ParamId::Scene, 2.0);
+    copy.params.set(ParamId::TankSetup, Setup::PlaneWave.value());
+    copy.sync_scene();
+    copy.set_sketch(&text).expect("the sketch reads");
+    assert!((copy.tank().medium().sources.bar.unwrap().z - moved.z).abs() < 1e-3, "the link lost the bar's place");
 }

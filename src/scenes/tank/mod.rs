@@ -135,9 +135,11 @@ pub struct TankScene {
     strokes: Vec<Stroke>,
     /// The ruler laid with the pointer, if any.
     ruler: Option<Ruler>,
-    /// The dippers moved with the pointer (index, place in m), and the one being moved.
+    /// The dippers moved with the pointer (index, place in m), the bar's z (m) if it was moved,
+    /// and what is being moved.
     moved: Vec<(usize, (f32, f32))>,
-    moving: Option<usize>,
+    bar_at: Option<f32>,
+    moving: Option<Grab>,
     /// The dippers given settings of their own (index, settings), and the one the move tool
     /// last picked (its settings are the ones shown).
     tuned: Vec<(usize, Tuning)>,
@@ -179,6 +181,7 @@ impl TankScene {
             strokes: Vec::new(),
             ruler: None,
             moved: Vec::new(),
+            bar_at: None,
             moving: None,
             tuned: Vec::new(),
             picked: 0,
@@ -241,6 +244,14 @@ impl TankScene {
                 own.apply(d, &self.settings);
             }
         }
+        if let (Some(z), Some(bar)) = (self.bar_at, self.medium.sources.bar.as_mut()) {
+            bar.z = z;
+        }
+    }
+
+    /// Forgets the sources moved and tuned with the pointer.
+    fn forget_sources(&mut self) {
+        (self.moved, self.tuned, self.bar_at) = (Vec::new(), Vec::new(), None);
     }
 
     /// Forgets the dippers moved and tuned past the first `count`, and the pick among them.
@@ -253,7 +264,7 @@ impl TankScene {
     /// What was drawn with the pointer.
     fn drawn(&self) -> Sketch {
         let (strokes, moved, tuned) = (self.strokes.clone(), self.moved.clone(), self.tuned.clone());
-        Sketch { strokes, ruler: self.ruler, moved, tuned }
+        Sketch { strokes, ruler: self.ruler, moved, bar: self.bar_at, tuned }
     }
 
     /// The water, once a frame has been drawn.
@@ -267,8 +278,15 @@ impl TankScene {
     }
 }
 
-/// How near a dipper (m) a press must be to pick it up with the move tool.
+/// How near a dipper or the bar (m) a press must be to pick it up with the move tool.
 const PICK_DIPPER: f32 = 0.02;
+
+/// What the move tool holds: a dipper (its index) or the bar.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Grab {
+    Dipper(usize),
+    Bar,
+}
 
 impl TankScene {
     /// The walls tool at `to` (m): a press starts a straight wall, the drag moves its far end
@@ -287,21 +305,32 @@ impl TankScene {
         }
     }
 
-    /// The move tool at `to` (m): a press picks up the nearest dipper within reach, the drag
-    /// carries it.
-    fn move_dipper(&mut self, to: (f32, f32), continues: bool) {
+    /// The move tool at `to` (m): a press picks up the nearest dipper, or the bar, within
+    /// reach; the drag carries it (the bar along z, in the open water between the beaches).
+    fn move_source(&mut self, to: (f32, f32), continues: bool) {
         if !continues {
             let distance = |d: &crate::tank::medium::Dipper| (d.x - to.0).hypot(d.z - to.1);
-            self.moving = (self.medium.sources.dippers.iter().enumerate())
-                .map(|(k, d)| (k, distance(d)))
+            let dippers = (self.medium.sources.dippers.iter().enumerate()).map(|(k, d)| (Grab::Dipper(k), distance(d)));
+            let bar = (self.medium.sources.bar.iter())
+                .filter(|b| to.0.abs() <= b.half_length)
+                .map(|b| (Grab::Bar, (b.z - to.1).abs()));
+            self.moving = (dippers.chain(bar))
                 .filter(|&(_, r)| r <= PICK_DIPPER)
                 .min_by(|a, b| a.1.total_cmp(&b.1))
-                .map(|(k, _)| k);
+                .map(|(grab, _)| grab);
         }
-        let Some(k) = self.moving else { return };
-        self.picked = k;
-        self.moved.retain(|&(j, _)| j != k);
-        self.moved.push((k, to));
+        match self.moving {
+            Some(Grab::Dipper(k)) => {
+                self.picked = k;
+                self.moved.retain(|&(j, _)| j != k);
+                self.moved.push((k, to));
+            }
+            Some(Grab::Bar) => {
+                let open = self.settings.half_width() - crate::tank::BEACH_SHARE * self.settings.size;
+                self.bar_at = Some(to.1.clamp(-open, open));
+            }
+            None => return,
+        }
         self.place_dippers();
     }
 }
@@ -325,7 +354,8 @@ impl super::Scene for TankScene {
             // A new set-up starts a fresh lab: the walls drawn for the last one and its waves go.
             self.strokes.clear();
             self.ruler = None;
-            (self.moved, self.tuned, self.picked) = (Vec::new(), Vec::new(), 0);
+            self.forget_sources();
+            self.picked = 0;
             self.clear_water = true;
         }
         if fresh_lab || settings.probe != old.probe || settings.graph != old.graph {
@@ -441,9 +471,9 @@ impl super::Scene for TankScene {
         (self.stroke_open, self.moving) = (false, None);
         self.ruler = None;
         self.pulse_due = true;
-        if !self.strokes.is_empty() || !self.moved.is_empty() || !self.tuned.is_empty() {
+        if !self.strokes.is_empty() || self.drawn() != Sketch::default() {
             self.strokes.clear();
-            (self.moved, self.tuned) = (Vec::new(), Vec::new());
+            self.forget_sources();
             self.rebuild_medium();
         }
         if let Some(water) = &mut self.water {
@@ -487,7 +517,7 @@ impl super::Scene for TankScene {
                 });
                 return;
             }
-            Tool::Move => return self.move_dipper(to, continues),
+            Tool::Move => return self.move_source(to, continues),
         };
         let from = match self.strokes.last() {
             Some(last)
@@ -519,8 +549,8 @@ impl super::Scene for TankScene {
 
     /// Replaces what was drawn with what `text` says; on an error nothing changes.
     fn set_sketch(&mut self, text: &str) -> Result<(), String> {
-        let Sketch { strokes, ruler, moved, tuned } = sketch::parse(text, self.settings.half_width())?;
-        (self.strokes, self.ruler, self.moved, self.tuned) = (strokes, ruler, moved, tuned);
+        let Sketch { strokes, ruler, moved, bar, tuned } = sketch::parse(text, self.settings.half_width())?;
+        (self.strokes, self.ruler, self.moved, self.bar_at, self.tuned) = (strokes, ruler, moved, bar, tuned);
         (self.stroke_open, self.moving) = (false, None);
         self.rebuild_medium();
         Ok(())

@@ -1,11 +1,12 @@
 //! What was drawn in the tank with the pointer, as text for a share link: walls and erasures
 //! as polylines, the ruler, and the dippers moved (their number from 0, then where), in
-//! whole millimetres from the tray's middle; and the dippers given settings of their own
-//! (their number, then frequency in Hz, amplitude in mm and phase in degrees). A wall drawn
-//! through (−120, 40), (−120, 200), a ruler from (−200, 0) to (200, 0), the first dipper moved
-//! to (50, −30) and the second set to 12.5 Hz, 0.3 mm and −90° read
-//! `W-120,40,-120,200_R-200,0,200,0_D0,50,-30_T1,12.5,0.3,-90` (only characters a URL keeps
-//! as they are, and commas).
+//! whole millimetres from the tray's middle, and the bar moved (its z); and the dippers given
+//! settings of their own (their number, then frequency in Hz, amplitude in mm and phase in
+//! degrees). A wall drawn through (−120, 40), (−120, 200), a ruler from (−200, 0) to (200, 0),
+//! the first dipper moved to (50, −30), the bar to z = −150 and the second dipper set to
+//! 12.5 Hz, 0.3 mm and −90° read
+//! `W-120,40,-120,200_R-200,0,200,0_D0,50,-30_B-150_T1,12.5,0.3,-90` (only characters a URL
+//! keeps as they are, and commas).
 
 use crate::tank::medium::CellKind;
 use crate::tank::tuning::Tuning;
@@ -21,13 +22,14 @@ pub struct Stroke {
 /// The ruler: from one end to the other (m).
 pub type Ruler = ((f32, f32), (f32, f32));
 
-/// What was drawn: strokes in order, the ruler, the dippers moved (index, place in m) and
-/// those with settings of their own (index, settings).
+/// What was drawn: strokes in order, the ruler, the dippers moved (index, place in m), the
+/// bar moved (its z, m) and the dippers with settings of their own (index, settings).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Sketch {
     pub strokes: Vec<Stroke>,
     pub ruler: Option<Ruler>,
     pub moved: Vec<(usize, (f32, f32))>,
+    pub bar: Option<f32>,
     pub tuned: Vec<(usize, Tuning)>,
 }
 
@@ -68,7 +70,8 @@ pub fn format(sketch: &Sketch) -> String {
         let (f, a, p) = (short(t.frequency, 100.0), short(t.amplitude * 1e3, 100.0), short(t.phase.to_degrees(), 1.0));
         format!("T{k},{f},{a},{p}")
     });
-    items.iter().map(item).chain(moved).chain(tuned).collect::<Vec<_>>().join("_")
+    let bar = sketch.bar.map(|z| format!("B{}", mm(z)));
+    items.iter().map(item).chain(moved).chain(bar).chain(tuned).collect::<Vec<_>>().join("_")
 }
 
 /// What `text` says was drawn (positions clamped to ±`half_width`, m), or why it cannot be
@@ -91,6 +94,10 @@ pub fn parse(text: &str, half_width: f32) -> Result<Sketch, String> {
         let dipper = (0.0..crate::tank::MAX_DIPPERS as f32).contains(&numbers[0]) && numbers[0].fract() == 0.0;
         if letter == 'D' && numbers.len() == 3 && dipper {
             sketch.moved.push((numbers[0] as usize, (c(numbers[1]), c(numbers[2]))));
+            continue;
+        }
+        if letter == 'B' && numbers.len() == 1 {
+            sketch.bar = Some(c(numbers[0]));
             continue;
         }
         if letter == 'T' && numbers.len() == 4 && dipper {
@@ -116,7 +123,7 @@ pub fn parse(text: &str, half_width: f32) -> Result<Sketch, String> {
             }
             _ => {
                 return Err(format!(
-                    "\"{item}\" is not a wall (W), an erasure (E), a ruler (R, two points), a moved dipper (D, its number and place) or a dipper's own settings (T, its number, frequency, amplitude and phase)"
+                    "\"{item}\" is not a wall (W), an erasure (E), a ruler (R, two points), a moved dipper (D, its number and place), the moved bar (B, its z) or a dipper's own settings (T, its number, frequency, amplitude and phase)"
                 ))
             }
         };
@@ -144,10 +151,10 @@ mod tests {
         ];
         let own = Tuning { frequency: 12.5, amplitude: 0.3e-3, phase: -std::f32::consts::FRAC_PI_2 };
         let (ruler, moved, tuned) = (Some(((-0.2, 0.0), (0.2, 0.0))), vec![(1, (0.05, -0.03))], vec![(1, own)]);
-        let sketch = Sketch { strokes, ruler, moved, tuned };
+        let sketch = Sketch { strokes, ruler, moved, bar: Some(-0.15), tuned };
         let text = format(&sketch);
         println!("{text}");
-        assert_eq!(text, "W-120,40,-120,100,-120,200_E30,30,30,60_R-200,0,200,0_D1,50,-30_T1,12.5,0.3,-90");
+        assert_eq!(text, "W-120,40,-120,100,-120,200_E30,30,30,60_R-200,0,200,0_D1,50,-30_B-150_T1,12.5,0.3,-90");
         let read = parse(&text, 0.3).expect("a sketch");
         assert_eq!((read.strokes.len(), format(&read)), (sketch.strokes.len(), text));
         assert!(parse("W1,2,3", 0.3).is_err());
