@@ -3,7 +3,8 @@
 // paper on the bench below with the lamp's image on it (the screen pass's light). Looking into
 // the water, a ray reflects by Fresnel's law to the room and the lamp, and refracts through
 // the water and the glass (Snell's law at each face; the thin flat glass shifts a ray but does
-// not turn it) down to the paper.
+// not turn it) down to the paper. The rays' box and sphere tests and Fresnel's equations are
+// the pool's (common.wgsl).
 
 const BULB_RADIUS: f32 = 0.025;
 const CORD_RADIUS: f32 = 0.003;
@@ -16,7 +17,6 @@ const BULB: vec3<f32> = vec3<f32>(6.0, 5.4, 4.2);
 const DIPPER: vec3<f32> = vec3<f32>(0.8, 0.78, 0.72);
 // How high over the water the dippers' rods reach (m): to the vibrator above the tray.
 const ROD_TOP: f32 = 0.12;
-const FAR: f32 = 1.0e9;
 
 struct Hit {
     t: f32,
@@ -25,7 +25,7 @@ struct Hit {
 };
 
 fn no_hit() -> Hit {
-    return Hit(FAR, vec3<f32>(0.0, 1.0, 0.0), 0);
+    return Hit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), 0);
 }
 
 fn nearer(a: Hit, b: Hit) -> Hit {
@@ -35,20 +35,18 @@ fn nearer(a: Hit, b: Hit) -> Hit {
     return a;
 }
 
-// The ray's nearest entry into the box from `lo` to `hi` beyond 1e-4.
+// The ray's nearest entry into the box from `lo` to `hi` beyond 1e-4; its normal is the face's
+// it enters by (the axis along which the entry lies farthest out, as a share of the box).
 fn box_hit(o: vec3<f32>, d: vec3<f32>, lo: vec3<f32>, hi: vec3<f32>, kind: i32) -> Hit {
-    let inv = 1.0 / d;
-    let a = (lo - o) * inv;
-    let b = (hi - o) * inv;
-    let near = min(a, b);
-    let far = max(a, b);
-    let t0 = max(max(near.x, near.y), near.z);
-    let t1 = min(min(far.x, far.y), far.z);
-    if t0 > t1 || t0 < 1e-4 {
+    let t = intersect_box(o, d, lo, hi);
+    if t.x > t.y || t.x < 1e-4 {
         return no_hit();
     }
-    let n = select(select(vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 1.0, 0.0), t0 == near.y), vec3<f32>(1.0, 0.0, 0.0), t0 == near.x);
-    return Hit(t0, -n * sign(d), kind);
+    let q = (o + t.x * d - 0.5 * (lo + hi)) / (0.5 * (hi - lo));
+    let a = abs(q);
+    let z_or_y = select(vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 1.0, 0.0), a.y >= a.z);
+    let axis = select(z_or_y, vec3<f32>(1.0, 0.0, 0.0), a.x >= a.y && a.x >= a.z);
+    return Hit(t.x, axis * sign(q), kind);
 }
 
 // A vertical rod of radius `r` round (c.x, c.y) from height y0 to y1.
@@ -69,14 +67,11 @@ fn rod_hit(o: vec3<f32>, d: vec3<f32>, c: vec2<f32>, r: f32, y0: f32, y1: f32) -
 }
 
 fn sphere_hit(o: vec3<f32>, d: vec3<f32>, c: vec3<f32>, r: f32, kind: i32) -> Hit {
-    let p = o - c;
-    let b = dot(p, d);
-    let disc = b * b - dot(p, p) + r * r;
-    let t = -b - sqrt(max(disc, 0.0));
-    if disc < 0.0 || t < 1e-4 {
+    let t = intersect_sphere(o, d, c, r);
+    if t >= NO_HIT {
         return no_hit();
     }
-    return Hit(t, normalize(p + t * d), kind);
+    return Hit(t, normalize(o + t * d - c), kind);
 }
 
 fn bulb_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
@@ -218,9 +213,7 @@ fn apparatus(uv: vec2<f32>) -> vec3<f32> {
     // From above (or, under the tray, from below through the glass): Fresnel's share
     // reflected, the rest through the water and the glass.
     let n = select(-surface.xyz, surface.xyz, d.y < 0.0);
-    let cos_i = abs(dot(d, n));
-    let f0 = pow((IOR_WATER - 1.0) / (IOR_WATER + 1.0), 2.0);
-    let fresnel = f0 + (1.0 - f0) * pow(1.0 - cos_i, 5.0);
+    let reflectance = fresnel(abs(dot(d, n)), select(IOR_WATER, 1.0 / IOR_WATER, d.y < 0.0));
     let reflected = reflect(d, n);
     let r_hit = solid_hit(p, reflected);
     // The room and the bulb in the water, and the bulb's glints on the ripples (a glossy lobe:
@@ -241,7 +234,7 @@ fn apparatus(uv: vec2<f32>) -> vec3<f32> {
     } else {
         through = room(p, d);
     }
-    return mix(through, mirror, fresnel);
+    return mix(through, mirror, reflectance);
 }
 
 @fragment

@@ -16,6 +16,8 @@ mod render_mode;
 mod resources;
 pub mod scene_parts;
 mod shaders;
+/// The ray helpers without bindings (`shaders/common.wgsl`), for other scenes' shaders.
+pub use shaders::COMMON;
 mod uniforms;
 mod upscale;
 mod variants;

@@ -280,6 +280,7 @@ impl TankPicture {
         let parts = [
             gpu::wgsl::MATH,
             &self.numbers,
+            crate::render::COMMON,
             crate::wgsl!("tank/picture.wgsl"),
             crate::wgsl!("tank/paper.wgsl"),
             crate::wgsl!("tank/apparatus.wgsl"),
