@@ -18,70 +18,20 @@ const DIPPER: vec3<f32> = vec3<f32>(0.8, 0.78, 0.72);
 // How high over the water the dippers' rods reach (m): to the vibrator above the tray.
 const ROD_TOP: f32 = 0.12;
 
-struct Hit {
-    t: f32,
-    normal: vec3<f32>,
-    kind: i32, // 0 nothing, 1 water, 2 frame, 3 leg, cord or rod, 4 bulb, 5 bench and paper, 6 a source
-};
-
-fn no_hit() -> Hit {
-    return Hit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), 0);
-}
-
-fn nearer(a: Hit, b: Hit) -> Hit {
-    if b.t < a.t {
-        return b;
-    }
-    return a;
-}
-
-// The ray's nearest entry into the box from `lo` to `hi` beyond 1e-4; its normal is the face's
-// it enters by (the axis along which the entry lies farthest out, as a share of the box).
-fn box_hit(o: vec3<f32>, d: vec3<f32>, lo: vec3<f32>, hi: vec3<f32>, kind: i32) -> Hit {
-    let t = intersect_box(o, d, lo, hi);
-    if t.x > t.y || t.x < 1e-4 {
-        return no_hit();
-    }
-    let q = (o + t.x * d - 0.5 * (lo + hi)) / (0.5 * (hi - lo));
-    let a = abs(q);
-    let z_or_y = select(vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 1.0, 0.0), a.y >= a.z);
-    let axis = select(z_or_y, vec3<f32>(1.0, 0.0, 0.0), a.x >= a.y && a.x >= a.z);
-    return Hit(t.x, axis * sign(q), kind);
-}
-
-// A vertical rod of radius `r` round (c.x, c.y) from height y0 to y1.
-fn rod_hit(o: vec3<f32>, d: vec3<f32>, c: vec2<f32>, r: f32, y0: f32, y1: f32) -> Hit {
-    let p = o.xz - c;
-    let a = dot(d.xz, d.xz);
-    let b = dot(p, d.xz);
-    let disc = b * b - a * (dot(p, p) - r * r);
-    if a < 1e-12 || disc < 0.0 {
-        return no_hit();
-    }
-    let t = (-b - sqrt(disc)) / a;
-    let y = o.y + t * d.y;
-    if t < 1e-4 || y < y0 || y > y1 {
-        return no_hit();
-    }
-    return Hit(t, vec3<f32>((p + t * d.xz) / r, 0.0).xzy, 3);
-}
-
-fn sphere_hit(o: vec3<f32>, d: vec3<f32>, c: vec3<f32>, r: f32, kind: i32) -> Hit {
-    let t = intersect_sphere(o, d, c, r);
-    if t >= NO_HIT {
-        return no_hit();
-    }
-    return Hit(t, normalize(o + t * d - c), kind);
-}
-
 fn bulb_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
     return sphere_hit(o, d, vec3<f32>(0.0, pic.tray.z, 0.0), BULB_RADIUS, 4);
 }
 
 // The sources in the water: each dipper a ball half under the surface on its rod, the bar a
-// beam lying in it on two rods.
+// beam lying in it on two rods. Only the eye's rays look for them (not the reflections), and
+// only those that pass through the space over the tray they stand in.
 fn sources_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
     var hit = no_hit();
+    let w = pic.tray.x;
+    let span = intersect_box(o, d, vec3<f32>(-w, -0.05, -w), vec3<f32>(w, ROD_TOP, w));
+    if span.x > span.y || span.y < 0.0 {
+        return hit;
+    }
     for (var k = 0u; k < MAX_DIPPERS; k++) {
         let s = pic.dippers[k];
         if s.w > 0.5 {
@@ -101,14 +51,6 @@ fn sources_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
     return hit;
 }
 
-fn plane_hit(o: vec3<f32>, d: vec3<f32>, y: f32, kind: i32) -> Hit {
-    let t = (y - o.y) / d.y;
-    if t > 1e-4 && abs(d.y) > 1e-9 {
-        return Hit(t, vec3<f32>(0.0, sign(-d.y), 0.0), kind);
-    }
-    return no_hit();
-}
-
 fn paper_level() -> f32 {
     return -pic.tray.y - pic.tray.w;
 }
@@ -119,6 +61,14 @@ fn solid_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
     let rim = w * FRAME_SHARE;
     let bottom = -pic.tray.y - GLASS_THICKNESS;
     var hit = plane_hit(o, d, paper_level(), 5);
+    hit = nearer(hit, rod_hit(o, d, vec2<f32>(0.0), CORD_RADIUS, pic.tray.z, pic.tray.z + 3.0));
+    hit = nearer(hit, bulb_hit(o, d));
+    // The frame and its legs, for the rays that pass where they stand.
+    let reach = rim + LEG_RADIUS;
+    let stand = intersect_box(o, d, vec3<f32>(-reach, paper_level(), -reach), vec3<f32>(reach, RIM_HEIGHT, reach));
+    if stand.x > stand.y || stand.y < 0.0 {
+        return hit;
+    }
     // The frame: four bars round the water.
     hit = nearer(hit, box_hit(o, d, vec3<f32>(-rim, bottom, w), vec3<f32>(rim, RIM_HEIGHT, rim), 2));
     hit = nearer(hit, box_hit(o, d, vec3<f32>(-rim, bottom, -rim), vec3<f32>(rim, RIM_HEIGHT, -w), 2));
@@ -129,9 +79,7 @@ fn solid_hit(o: vec3<f32>, d: vec3<f32>) -> Hit {
         let c = vec2<f32>(select(-corner, corner, (k & 1) == 1), select(-corner, corner, (k & 2) == 2));
         hit = nearer(hit, rod_hit(o, d, c, LEG_RADIUS, paper_level(), bottom));
     }
-    hit = nearer(hit, rod_hit(o, d, vec2<f32>(0.0), CORD_RADIUS, pic.tray.z, pic.tray.z + 3.0));
-    hit = nearer(hit, sources_hit(o, d));
-    return nearer(hit, bulb_hit(o, d));
+    return hit;
 }
 
 // The paper's light at a point of the bench (the lamp's image where it has one).
@@ -200,7 +148,7 @@ fn apparatus(uv: vec2<f32>) -> vec3<f32> {
     let far = pic.apparatus_inverse_view_proj * vec4<f32>(ndc, 1.0, 1.0);
     let o = near.xyz / near.w;
     let d = normalize(far.xyz / far.w - o);
-    let solid = solid_hit(o, d);
+    let solid = nearer(solid_hit(o, d), sources_hit(o, d));
     let water = plane_hit(o, d, 0.0, 1);
     let p = o + water.t * d;
     if water.t >= solid.t || any(abs(p.xz) > vec2<f32>(pic.tray.x)) {

@@ -283,6 +283,7 @@ impl TankPicture {
             crate::render::COMMON,
             crate::wgsl!("tank/picture.wgsl"),
             crate::wgsl!("tank/paper.wgsl"),
+            crate::wgsl!("tank/rays.wgsl"),
             crate::wgsl!("tank/apparatus.wgsl"),
         ];
         let [layout, image_layout] = &self.layouts;
