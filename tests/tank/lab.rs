@@ -12,6 +12,17 @@ use wavepool::tank::medium::{CellKind, Medium};
 use wavepool::tank::plan::plan;
 use wavepool::tank::{Setup, TankSettings};
 
+/// The RMS height (m) at a tray point (x, z in m) of `d`'s water, read back from the GPU now.
+fn rms_heights(d: &WaterDemo) -> impl Fn(f32, f32) -> f32 {
+    let (m, g) = (d.tank().medium().clone(), gpu());
+    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
+    let state: Vec<[f32; 4]> = bytemuck::cast_slice(&bytes).to_vec();
+    move |x, z| {
+        let (i, j) = m.cell_at(x, z).unwrap();
+        state[(j * m.cells + i) as usize][2].sqrt()
+    }
+}
+
 /// Drags the pointer over `d`'s picture (`width` x `height` pixels) from the tray's point
 /// `from` to `to` (x, z in m) in `moves` moves (0: a press and a release).
 fn drag(d: &mut WaterDemo, (width, height): (u32, u32), from: (f32, f32), to: (f32, f32), moves: u32) {
@@ -272,14 +283,7 @@ fn a_dipper_dragged_with_the_move_tool_makes_its_waves_where_it_was_left_and_the
     // Its rings after half a second (0.16 m of travel): round where it was left the water
     // moves; 200 mm from there (but 100 mm from where it stood) it is still.
     render(&mut d, 64, 48, 30, 1.0 / 60.0);
-    let m = d.tank().medium();
-    let g = gpu();
-    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
-    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-    let swing_at = |x: f32, z: f32| {
-        let (i, j) = m.cell_at(x, z).unwrap();
-        state[(j * m.cells + i) as usize][2].sqrt()
-    };
+    let swing_at = rms_heights(&d);
     let (near, far) = (swing_at(0.08, 0.09), swing_at(-0.08, -0.06));
     println!("after 0.5 s: rms height 30 mm from where it was left {:.2e} m, 200 mm from it {:.2e} m", near, far);
     assert!(near > 10.0 * far.max(1e-9), "the waves should start where the dipper was left");
@@ -421,14 +425,7 @@ fn the_bar_dragged_with_the_move_tool_sends_its_waves_from_where_it_was_left_and
     // A quarter of a second (80 mm of travel): the water moves beside its new place and is
     // still 170 mm from it (60 mm from its old place).
     render(&mut d, 64, 48, 15, 1.0 / 60.0);
-    let m = d.tank().medium();
-    let g = gpu();
-    let bytes = wavepool::gpu::read_texture(&g.device, &g.queue, d.tank().water().unwrap().state_texture());
-    let state: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
-    let swing_at = |x: f32, z: f32| {
-        let (i, j) = m.cell_at(x, z).unwrap();
-        state[(j * m.cells + i) as usize][2].sqrt()
-    };
+    let swing_at = rms_heights(&d);
     let (near, old) = (swing_at(0.0, 0.04), swing_at(0.0, -0.17));
     println!("after 0.25 s: rms height 40 mm from it {near:.2e} m, by its old place {old:.2e} m");
     assert!(near > 10.0 * old.max(1e-9), "the waves should start where the bar was left");

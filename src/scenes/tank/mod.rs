@@ -417,7 +417,7 @@ impl super::Scene for TankScene {
         (self.stroke_open, self.moving) = (false, None);
         self.ruler = None;
         self.pulse_due = true;
-        if !self.strokes.is_empty() || self.drawn() != Sketch::default() {
+        if self.drawn() != Sketch::default() {
             self.strokes.clear();
             self.forget_sources();
             self.rebuild_medium();
