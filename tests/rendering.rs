@@ -76,6 +76,33 @@ fn sky_region_has_the_sky_colour() {
     assert!(var.sqrt() < 0.08, "sky region is not smooth (std {})", var.sqrt());
 }
 
+/// In the cut-away setting with the eye under the water's level, what lies round the box is
+/// the water, not the sky: the frame's corners past the box have lost their red to the water
+/// (the sky's keep half of theirs) and are brighter looking up than looking down. The same
+/// view from above the water shows the sky there.
+#[test]
+fn under_the_water_the_cut_away_box_is_surrounded_by_water_not_sky() {
+    let (top, bottom) = (Area(0.0, 0.0, 0.08, 0.08), Area(0.0, 0.92, 0.08, 1.0));
+    let mut corners = Vec::new();
+    for pitch in [-20.0, 20.0] {
+        let mut demo = with_drops(4, 6);
+        demo.params.set(ParamId::Setting, 1.0);
+        demo.camera_mut().pitch = pitch;
+        let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
+        let (up, down) = (frame.mean_colour(top), frame.mean_colour(bottom));
+        println!("pitch {pitch}°: top-left corner rgb {up:.3?}, bottom-left {down:.3?}");
+        corners.push((up, down));
+    }
+    let (up, down) = corners[0];
+    for [r, g, b] in [up, down] {
+        assert!(r < 0.25 * b.max(g), "under the water the corner keeps its red: {r} {g} {b}");
+    }
+    let luma = |[r, g, b]: [f32; 3]| 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    assert!(luma(up) > 1.3 * luma(down), "looking up is not brighter than looking down: {up:?} {down:?}");
+    let [r, g, b] = corners[1].0;
+    assert!(r > 0.3 * b && b > r, "above the water the top corner is not the sky: {r} {g} {b}");
+}
+
 #[test]
 fn caustics_add_contrast_on_the_floor() {
     let mut demo = with_drops(5, 30);

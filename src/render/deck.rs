@@ -21,6 +21,12 @@ pub const HAZE_DISTANCE: f32 = 60.0;
 /// Clearance of the camera's eye above the deck (m): it never goes under the paving.
 pub const EYE_CLEARANCE: f32 = 0.15;
 
+/// In the cut-away setting with the eye under the water's level the background is open water
+/// (`water_backdrop`, sky.wgsl): the light from the surface seen through this much water (m)
+/// looking straight up, and through this much looking down, blended between.
+const BACKDROP_PATH_UP: f32 = 3.0;
+const BACKDROP_PATH_DOWN: f32 = 12.0;
+
 /// Height of the direction the haze's colour is taken in, per unit across (a hair above the
 /// horizon, where the cube's texels look).
 const HORIZON_LIFT: f32 = 0.01;
@@ -35,7 +41,8 @@ pub fn wgsl_constants() -> String {
     format!(
         "const COPING_WIDTH: f32 = {COPING_WIDTH:?};\nconst SLAB_SIZE: f32 = {SLAB_SIZE:?};\n\
          const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\nconst HORIZON_TERMS: u32 = {HORIZON_TERMS};\n\
-         const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\n"
+         const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\nconst BACKDROP_PATH_UP: f32 = {BACKDROP_PATH_UP:?};\n\
+         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\n"
     )
 }
 
