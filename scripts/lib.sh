@@ -86,6 +86,18 @@ ensure_wasm_opt() {
     export PATH="$dir/node_modules/.bin:$PATH"
 }
 
+# The Fluent runtime the page loads for a language other than English (@fluent/bundle 0.19.1
+# from npm, its one-file build); build_web copies it next to the catalogues.
+fluent_bundle_js() {
+    local dir="${XDG_CACHE_HOME:-$HOME/.cache}/wavepool/fluent-0.19"
+    if [ ! -f "$dir/node_modules/@fluent/bundle/index.js" ]; then
+        echo "==> installing @fluent/bundle 0.19.1 (npm)" >&2
+        mkdir -p "$dir"
+        npm install --prefix "$dir" --no-audit --no-fund --silent @fluent/bundle@0.19.1 >/dev/null || return 1
+    fi
+    echo "$dir/node_modules/@fluent/bundle/index.js"
+}
+
 # Everything the browser build needs: wasm target, Trunk, wasm-bindgen-cli matching the
 # lockfile, wasm-opt. Then fetches crates so Trunk can build offline.
 ensure_web_toolchain() {
@@ -160,6 +172,11 @@ make_release() {
 build_web() {
     echo "==> building the browser demo (trunk build --release)"
     TRUNK_SKIP_VERSION_CHECK=true trunk build --release --offline || return 1
+    # The message catalogues (Trunk copies locales/) and the Fluent runtime beside them: fetched
+    # only for a language other than English, so not part of the page's download.
+    local fluent
+    fluent=$(fluent_bundle_js) || return 1
+    cp "$fluent" dist/locales/fluent-bundle.js || return 1
     command -v python3 >/dev/null 2>&1 || ensure_apt_packages python3
     # The JavaScript without its comments, line for line (the download is budgeted).
     python3 scripts/strip_js_comments.py dist || return 1

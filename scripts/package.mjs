@@ -7,7 +7,7 @@
 //
 // Usage: node scripts/package.mjs DIST OUT   (after `trunk build`; OUT is emptied first)
 
-import { copyFileSync, mkdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { copyFileSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { fileURLToPath, pathToFileURL } from "node:url";
 
@@ -161,13 +161,15 @@ const cargo = readFileSync(join(root, "Cargo.toml"), "utf8");
 const field = (name) => cargo.match(new RegExp(`^${name} = "(.*)"`, "m"))[1];
 
 const modules = moduleGraph("embed.js");
-const assets = ["wavepool_bg.wasm", "wavepool.css", "no-gpu.webp"];
+// The message catalogues and the Fluent runtime, fetched by i18n.js for a language other than English.
+const locales = readdirSync(join(dist, "locales")).map((name) => `locales/${name}`);
+const assets = ["wavepool_bg.wasm", "wavepool.css", "no-gpu.webp", ...locales];
 
 const core = await import(pathToFileURL(join(dist, "wavepool.js")).href);
 core.initSync({ module: readFileSync(join(dist, "wavepool_bg.wasm")) });
 
 rmSync(out, { recursive: true, force: true });
-mkdirSync(out, { recursive: true });
+mkdirSync(join(out, "locales"), { recursive: true });
 for (const name of [...modules, ...assets]) copyFileSync(join(dist, name), join(out, name));
 copyFileSync(join(root, "web/embed.d.ts"), join(out, "embed.d.ts"));
 writeFileSync(join(out, "tables.d.ts"), tablesDts(core.paramTable(), core.presetTable(), core.optionTable()));

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
+mod messages;
 mod reference;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
@@ -48,6 +49,18 @@ enum Command {
     Bench(BenchArgs),
     /// Prints the reference of every parameter and preset in Markdown (docs/parameters.md).
     Parameters,
+    /// Prints the English message catalogue (locales/en.ftl): the page's words and those of
+    /// every parameter and preset, as Project Fluent messages.
+    Messages(MessagesArgs),
+}
+
+/// `wavepool messages`'s flags.
+#[derive(Args, Debug)]
+struct MessagesArgs {
+    /// Instead: the Serbian catalogue in Cyrillic at this path written in Latin letters
+    /// (locales/sr-Latn.ftl is locales/sr-Cyrl.ftl so written).
+    #[arg(long, value_name = "FILE.ftl")]
+    serbian_latin: Option<std::path::PathBuf>,
 }
 
 /// The viewer's flags (no command).
@@ -462,6 +475,15 @@ pub fn main() -> ExitCode {
             print!("{}", reference::markdown());
             Ok(())
         }
+        Some(Command::Messages(a)) => match a.serbian_latin {
+            None => {
+                print!("{}", messages::english_catalogue());
+                Ok(())
+            }
+            Some(path) => std::fs::read_to_string(&path)
+                .map(|cyrillic| print!("{}", messages::serbian_latin(&cyrillic)))
+                .map_err(|e| format!("{}: {e}", path.display())),
+        },
     };
     match result {
         Err(msg) => {

@@ -18,6 +18,7 @@ pub mod gpu;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod headless;
 pub mod optics;
+pub mod page_words;
 pub mod param_spec;
 pub mod params;
 pub mod physics;

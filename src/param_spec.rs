@@ -33,6 +33,25 @@ pub struct ParamSpec {
 }
 
 impl ParamSpec {
+    /// The id of its label in the message catalogues (`locales/*.ftl`); its help is the
+    /// message's `help` attribute. The page and the viewer look a parameter's words up by it.
+    pub fn message_id(&self) -> String {
+        format!("param-{}", self.name)
+    }
+
+    /// The ids of its choices' names that words stand for (not numbers or shares, "128",
+    /// "50%"; not a set such as "sphere,duck", shown as its members' words), with the names.
+    pub fn choice_message_ids(&self) -> Vec<(&'static str, String)> {
+        let Control::Choice { names, .. } = self.control else { return Vec::new() };
+        names
+            .iter()
+            .filter(|n| {
+                n.starts_with(|c: char| c.is_ascii_lowercase()) && n.chars().all(|c| c.is_ascii_lowercase() || c == '_')
+            })
+            .map(|&n| (n, format!("param-{}-{n}", self.name)))
+            .collect()
+    }
+
     pub fn min(&self) -> f32 {
         match self.control {
             Control::Slider { min, .. } => min,
@@ -167,4 +186,10 @@ macro_rules! choices {
             }
         }
     };
+}
+
+/// The id of a group's name in the message catalogues: "group-" and the name in lower case,
+/// spaces as hyphens ("Flat water": "group-flat-water").
+pub fn group_message_id(group: &str) -> String {
+    format!("group-{}", group.to_lowercase().replace(' ', "-"))
 }

@@ -164,3 +164,137 @@ fn a_choice_is_set_by_its_name_as_by_its_number_and_a_preset_is_a_starting_point
     assert!(differ(&preset, &preset_traced) > 0.01, "--set after --preset did not win");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The message catalogues (locales/*.ftl): each language's file, read with the Fluent project's
+/// own parser, as a map from message id (and `id.attribute`) to the variables its text uses.
+mod catalogues {
+    use std::collections::{BTreeMap, BTreeSet};
+
+    use fluent_syntax::ast::{Entry, Expression, InlineExpression, Pattern, PatternElement};
+
+    pub type Messages = BTreeMap<String, BTreeSet<String>>;
+
+    pub fn dir() -> std::path::PathBuf {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("locales")
+    }
+
+    fn variables_in_inline(e: &InlineExpression<&str>, out: &mut BTreeSet<String>) {
+        match e {
+            InlineExpression::VariableReference { id } => {
+                out.insert(id.name.to_owned());
+            }
+            InlineExpression::Placeable { expression } => variables_in(expression, out),
+            _ => {}
+        }
+    }
+
+    fn variables_in(e: &Expression<&str>, out: &mut BTreeSet<String>) {
+        match e {
+            Expression::Inline(inline) => variables_in_inline(inline, out),
+            Expression::Select { selector, variants } => {
+                variables_in_inline(selector, out);
+                for v in variants {
+                    out.extend(variables(&v.value));
+                }
+            }
+        }
+    }
+
+    fn variables(p: &Pattern<&str>) -> BTreeSet<String> {
+        let mut out = BTreeSet::new();
+        for element in &p.elements {
+            if let PatternElement::Placeable { expression } = element {
+                variables_in(expression, &mut out);
+            }
+        }
+        out
+    }
+
+    /// The messages of `source`; a syntax error fails the test, naming the file.
+    pub fn read(name: &str, source: &str) -> Messages {
+        let resource = match fluent_syntax::parser::parse(source) {
+            Ok(r) => r,
+            Err((_, errors)) => panic!("{name}: {} Fluent syntax errors, the first {:?}", errors.len(), errors[0]),
+        };
+        let mut out = Messages::new();
+        for entry in &resource.body {
+            if let Entry::Message(m) = entry {
+                let id = m.id.name.to_owned();
+                if let Some(value) = &m.value {
+                    out.insert(id.clone(), variables(value));
+                }
+                for a in &m.attributes {
+                    out.insert(format!("{id}.{}", a.id.name), variables(&a.value));
+                }
+            }
+        }
+        out
+    }
+}
+
+#[test]
+fn the_english_catalogue_is_what_the_tables_say_now() {
+    let out = wavepool(&["messages"]);
+    assert!(out.status.success(), "wavepool messages failed: {}", stderr(&out));
+    let now = String::from_utf8(out.stdout).expect("UTF-8");
+    let english = catalogues::read("en.ftl", &now);
+    // Every parameter's label and help, every choice's words and every preset have a message.
+    let mut wanted: Vec<String> = Vec::new();
+    for p in wavepool::params::table() {
+        wanted.extend([p.message_id(), format!("{}.help", p.message_id())]);
+        wanted.extend(p.choice_message_ids().into_iter().map(|(_, id)| id));
+        wanted.push(wavepool::param_spec::group_message_id(p.group));
+    }
+    wanted.extend(wavepool::presets::PRESETS.iter().map(|p| format!("preset-{}", p.name)));
+    wanted.extend(wavepool::page_words::PAGE_WORDS.iter().map(|(id, _)| (*id).to_owned()));
+    let missing: Vec<&String> = wanted.iter().filter(|id| !english.contains_key(*id)).collect();
+    println!("en.ftl: {} messages and attributes, {} bytes", english.len(), now.len());
+    assert!(missing.is_empty(), "the English catalogue lacks {missing:?}");
+    let written = std::fs::read_to_string(catalogues::dir().join("en.ftl")).unwrap_or_default();
+    assert!(written == now, "locales/en.ftl is stale: write it again with `cargo run -- messages > locales/en.ftl`");
+}
+
+#[test]
+fn every_catalogue_has_every_english_message_with_the_same_variables() {
+    let read = |name: &str| {
+        let text = std::fs::read_to_string(catalogues::dir().join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        (text.len(), catalogues::read(name, &text))
+    };
+    let (_, english) = read("en.ftl");
+    let mut problems = Vec::new();
+    for tag in ["cs", "de", "es", "ru", "sr-Latn", "sr-Cyrl"] {
+        let name = format!("{tag}.ftl");
+        let (bytes, messages) = read(&name);
+        let missing: Vec<&String> = english.keys().filter(|id| !messages.contains_key(*id)).collect();
+        let extra: Vec<&String> = messages.keys().filter(|id| !english.contains_key(*id)).collect();
+        let changed: Vec<&String> =
+            english.iter().filter(|(id, v)| messages.get(*id).is_some_and(|w| w != *v)).map(|(id, _)| id).collect();
+        println!(
+            "{name}: {} messages, {bytes} bytes; missing {missing:?}, extra {extra:?}, other variables {changed:?}",
+            messages.len()
+        );
+        if !(missing.is_empty() && extra.is_empty() && changed.is_empty()) {
+            problems.push(name);
+        }
+    }
+    assert!(problems.is_empty(), "catalogues that differ from English's messages: {problems:?}");
+}
+
+/// Serbian's two scripts hold one translation: the Latin catalogue is the Cyrillic one with
+/// each letter written in Latin (ids, variables and Latin words are already Latin).
+#[test]
+fn serbian_in_latin_is_the_cyrillic_catalogue_transliterated() {
+    let cyrillic = std::fs::read_to_string(catalogues::dir().join("sr-Cyrl.ftl")).expect("sr-Cyrl.ftl");
+    let latin = std::fs::read_to_string(catalogues::dir().join("sr-Latn.ftl")).expect("sr-Latn.ftl");
+    let out = wavepool(&["messages", "--serbian-latin", "locales/sr-Cyrl.ftl"]);
+    assert!(out.status.success(), "wavepool messages --serbian-latin failed: {}", stderr(&out));
+    let written = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(written.lines().count() == cyrillic.lines().count(), "the transliteration has other lines");
+    let differing = written.lines().zip(latin.lines()).filter(|(a, b)| a != b).count();
+    println!("sr-Latn.ftl: {} lines, {differing} differ from sr-Cyrl.ftl transliterated", latin.lines().count());
+    assert!(
+        written == latin,
+        "sr-Latn.ftl is not sr-Cyrl.ftl transliterated ({differing} lines differ): write it with \
+         `cargo run -- messages --serbian-latin locales/sr-Cyrl.ftl > locales/sr-Latn.ftl`"
+    );
+}

@@ -5,7 +5,7 @@
 import { fresnelCurve, presetTable } from "./wavepool.js";
 import { FresnelPlot } from "./fresnel-plot.js";
 import { BROWSING_KEYS } from "./keys.js";
-import { formatValue, warn } from "./options.js";
+import { warn } from "./options.js";
 
 /** Paths of the overlay buttons' icons, on a 24 x 24 grid. */
 const ICONS = {
@@ -36,7 +36,7 @@ export const controlMethods = {
     drawer.className = "controls";
     drawer.open = true; // measured open, then folded where it would not fit (layout.js)
     const summary = document.createElement("summary");
-    summary.textContent = "Controls";
+    summary.textContent = this._words.page("controls");
     const panel = document.createElement("div");
     panel.className = "panel";
     drawer.append(summary, panel);
@@ -44,13 +44,17 @@ export const controlMethods = {
     this._said = document.createElement("p");
     this._said.className = "said";
     this._said.setAttribute("role", "status");
-    panel.append(this._presetRow());
+    // The language and the preset, one above the other in the panel's first cell.
+    const choosers = document.createElement("div");
+    choosers.className = "choosers";
+    choosers.append(this._languageRow(), this._presetRow());
+    panel.append(choosers);
     const groups = new Map();
     for (const p of this._table) {
       if (!groups.has(p.group)) {
         const fieldset = document.createElement("fieldset");
         const legend = document.createElement("legend");
-        legend.textContent = p.group;
+        legend.textContent = this._words.group(p.group);
         fieldset.append(legend);
         groups.set(p.group, fieldset);
         panel.append(fieldset);
@@ -76,44 +80,39 @@ export const controlMethods = {
     }
     if (groups.has("Optics")) {
       // The Fresnel models' curves beside their select.
-      this._plot = new FresnelPlot(fresnelCurve);
+      this._plot = new FresnelPlot(fresnelCurve, this._words);
       groups.get("Optics").append(this._plot.element);
       this._updatePlot();
     }
     const buttons = document.createElement("div");
     buttons.className = "buttons";
-    const button = (label, title, action) => {
+    const button = (id, action) => {
       const b = document.createElement("button");
       b.type = "button";
-      b.textContent = label;
-      b.title = title;
+      b.textContent = this._words.page(id);
+      b.title = this._words.page(`${id}.title`);
       b.addEventListener("click", action);
       buttons.append(b);
     };
-    button("Reset", "Back to how this page started: its parameters and view, calm water, the objects in place", () =>
-      this.reset(),
-    );
-    button("Defaults", "Set every parameter to its default", () => {
+    button("reset", () => this.reset());
+    button("defaults", () => {
       for (const p of this._table) this.set(p.name, p.default);
     });
     const said = this._said;
-    const copy = async (what, text) => {
+    const copy = async (copied, text) => {
       try {
         await navigator.clipboard.writeText(text);
-        said.textContent = `${what} copied.`;
+        said.textContent = this._words.page(copied);
       } catch (_) {
         said.textContent = text; // no clipboard here (an insecure page, a sandbox): shown to copy by hand
       }
     };
-    button("Share link", "Copy a link that opens this pool with these parameters and this view", () =>
-      copy("Link", this.shareLink()),
-    );
-    button("Copy embed code", "Copy an <iframe> that shows this pool, as it is now, in another page", () =>
-      copy("Embed code", this.embedCode()),
-    );
+    button("share-link", () => copy("link-copied", this.shareLink()));
+    button("embed-code", () => copy("embed-code-copied", this.embedCode()));
     buttons.append(said);
     panel.append(buttons);
     this._root.append(drawer);
+    this._drawer = drawer;
     drawer.open = this._drawerStartsOpen(drawer);
     drawer.addEventListener("toggle", () => this._fit());
     this._fit();
@@ -125,13 +124,13 @@ export const controlMethods = {
     row.className = "row preset";
     const label = document.createElement("label");
     label.htmlFor = `wavepool-${this._id}-preset`;
-    label.textContent = "Preset";
+    label.textContent = this._words.page("preset");
     const select = document.createElement("select");
     select.id = label.htmlFor;
-    select.append(new Option("choose…", ""));
+    select.append(new Option(this._words.page("preset-choose"), ""));
     for (const p of presetTable()) {
-      const option = new Option(p.label, p.name);
-      option.title = p.help;
+      const option = new Option(this._words.presetLabel(p), p.name);
+      option.title = this._words.presetHelp(p);
       select.append(option);
     }
     if (this._opts.preset) select.value = this._opts.preset.name;
@@ -143,7 +142,8 @@ export const controlMethods = {
       browsing = false;
       applied = select.value;
       if (select.value) this.applyPreset(select.value);
-      this._say(select.value ? `Preset ${select.selectedOptions[0].textContent} applied.` : "");
+      const name = select.selectedOptions[0].textContent;
+      this._say(select.value ? this._words.page("preset-applied", { name }) : "");
     };
     select.addEventListener("keydown", (e) => {
       if (e.key === "Enter") {
@@ -161,7 +161,7 @@ export const controlMethods = {
     });
     select.addEventListener("change", () => {
       if (!browsing) apply();
-      else this._say(`Press Enter to apply the preset ${select.selectedOptions[0].textContent}.`);
+      else this._say(this._words.page("preset-press-enter", { name: select.selectedOptions[0].textContent }));
     });
     row.append(label, select);
     return row;
@@ -173,12 +173,12 @@ export const controlMethods = {
     const inputId = `wavepool-${this._id}-${p.name}`;
     const label = document.createElement("label");
     label.htmlFor = inputId;
-    label.textContent = p.label;
-    label.title = p.help;
+    label.textContent = this._words.label(p);
+    label.title = this._words.help(p);
     const input = document.createElement(p.kind === "choice" ? "select" : "input");
     input.id = inputId;
     input.name = p.name;
-    input.title = p.help;
+    input.title = label.title;
     // The value as text, for the eye: the control itself tells assistive technology (a
     // slider's aria-valuetext, a select's option, a checkbox's state), so this is not read.
     const output = document.createElement("output");
@@ -188,7 +188,7 @@ export const controlMethods = {
       input.type = "checkbox";
       input.addEventListener("change", () => this.set(p.name, input.checked ? 1 : 0));
     } else if (p.kind === "choice") {
-      for (const v of p.choices) input.append(new Option(formatValue(p, v), String(v)));
+      for (const v of p.choices) input.append(new Option(this._words.value(p, v), String(v)));
       input.addEventListener("change", () => this.set(p.name, Number(input.value)));
     } else {
       input.type = "range";
@@ -201,7 +201,7 @@ export const controlMethods = {
       const v = this.get(p.name);
       if (p.kind === "toggle") input.checked = v >= 0.5;
       else input.value = String(v);
-      output.textContent = formatValue(p, v);
+      output.textContent = this._words.value(p, v);
       if (input.type === "range") input.setAttribute("aria-valuetext", output.textContent);
       // A model's own settings show only while that model is chosen, a scene's in that scene.
       row.hidden = !p.shownWhen.every((w) => w.values.includes(this.get(w.param)));
@@ -300,8 +300,8 @@ export const controlMethods = {
       full.type = "button";
       full.className = "fullscreen";
       full.append(icon(ICONS.fullscreen));
-      full.title = "Fullscreen (Esc leaves it)";
-      full.setAttribute("aria-label", "Fullscreen");
+      full.title = this._words.page("fullscreen.title");
+      full.setAttribute("aria-label", this._words.page("fullscreen"));
       full.addEventListener("click", () =>
         document.fullscreenElement === this._element
           ? document.exitFullscreen()
@@ -313,8 +313,9 @@ export const controlMethods = {
       if (!this._core) return;
       const paused = this.get("paused") >= 0.5;
       playIcon.firstChild.setAttribute("d", paused ? ICONS.play : ICONS.pause);
-      play.setAttribute("aria-label", paused ? "Play" : "Pause");
-      play.title = paused ? "Play: start the water and the objects moving" : "Pause: stop the water and the objects";
+      const id = paused ? "play" : "pause";
+      play.setAttribute("aria-label", this._words.page(id));
+      play.title = this._words.page(`${id}.title`);
       play.setAttribute("aria-pressed", String(!paused));
     };
     this._overlayUpdate();

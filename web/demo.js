@@ -5,6 +5,7 @@
 import { WebDemo, presetTable } from "./wavepool.js";
 import { contextsHeld, releaseContext } from "./context-budget.js";
 import { controlMethods } from "./controls.js";
+import { languageMethods } from "./language.js";
 import { linkMethods } from "./links.js";
 import { pickedMethods } from "./picked.js";
 import { frameLoopMethods, frameStats } from "./frame-loop.js";
@@ -194,7 +195,7 @@ export class Demo {
     const reduced = this._core.stats().reduced;
     if (!reduced.length) return;
     const list = reduced.map((r) => `${r.name} ${r.asked} → ${r.given}`).join(", ");
-    this._notice(`This browser draws without a GPU, so the largest sizes are reduced to keep it responsive: ${list}.`);
+    this._notice(this._words.page("notice-no-gpu", { sizes: list }));
   }
 
   _fail(text) {
@@ -378,6 +379,7 @@ Object.assign(
   inputMethods,
   layoutMethods,
   controlMethods,
+  languageMethods,
   linkMethods,
   pickedMethods,
   frameLoopMethods,

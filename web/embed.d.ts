@@ -39,6 +39,8 @@ export interface DemoOptions extends CreationOptions {
   preset?: PresetName;
   /** What was drawn with the pointer in the ripple tank (walls, erasures, the ruler), as `shareLink()` writes it: e.g. "W-120,40,-120,200_R-200,0,200,0" (whole mm from the tray's middle). */
   sketch?: string;
+  /** The language of the controls, notices and help: one of `languages` ("en", "cs", "de", "es", "ru", "sr-Latn", "sr-Cyrl"; "sr" is Cyrillic, "cs-CZ" is "cs"). Default: the element's or the page's `lang`, else the browser's preferred languages, else English. */
+  lang?: LanguageTag | string;
   /** Start when the element comes within 200 px of the viewport (true), or at once (false). Default true. */
   lazy?: boolean | 0 | 1 | "true" | "false";
   /** Parameter values, as an object of their own (the same as giving them beside the options). */
@@ -164,6 +166,12 @@ export interface WavePool {
   sketch(): string;
   /** Replaces what was drawn with `text` (as sketch() gives it); a text that cannot be read changes nothing and warns in the console. */
   setSketch(text: string): void;
+  /** The language the demo shows. */
+  language(): LanguageTag;
+  /** Shows the controls, notices and help in another language (its catalogue is fetched); the water, the view and the parameters stay. The element then fires `wavepool:language`. */
+  setLanguage(tag: LanguageTag | string): Promise<void>;
+  /** The demo's words in its language: a message of locales/en.ftl ("page-intro", "reset", "reset.title") with its `{ $name }`s filled from `args`; for a page showing them beside the demo. */
+  text(id: string, args?: Record<string, string | number>): string;
   /** With the tank's move tool, the dipper last picked (the first until one is) and its own settings; null otherwise. */
   picked(): PickedSettings | null;
   /** Sets a setting of what picked() returns ("frequency" Hz, "amplitude" mm, "phase" degrees), clamped to its range; it goes into sketch(). */
@@ -206,6 +214,15 @@ export function presets(): Promise<PresetSpec[]>;
  */
 export function setAssetLocation(url: string | URL): void;
 
+/** The languages there are catalogues for. */
+export type LanguageTag = "en" | "cs" | "de" | "es" | "ru" | "sr-Latn" | "sr-Cyrl";
+
+/** The languages there are catalogues for, each with its name in its own words. */
+export const languages: ReadonlyArray<{ tag: LanguageTag; name: string }>;
+
+/** The first of the browser's preferred languages there is a catalogue for, else "en". */
+export function browserLanguage(): LanguageTag;
+
 /** The events <wave-pool> fires. */
 export interface WavePoolEventMap extends HTMLElementEventMap {
   /** The first frame is on screen; `detail` is the demo's handle. */
@@ -244,6 +261,7 @@ export interface WavePoolAttributes extends ParamAttributes, CreationAttributes 
   camera?: string;
   preset?: PresetName;
   sketch?: string;
+  lang?: string;
   lazy?: "true" | "false" | "0" | "1";
 }
 

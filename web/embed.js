@@ -8,8 +8,10 @@ import { acquireContext, watchNear } from "./context-budget.js";
 import { Demo } from "./demo.js";
 import { assetUrl, inline, live, loadCore, setAssetLocation } from "./loader.js";
 import { optionName, readAspect, readOptions } from "./options.js";
+import { chooseLanguage } from "./i18n.js";
 
 export { setAssetLocation };
+export { browserLanguage, LANGUAGES as languages } from "./i18n.js";
 
 /** The presets: named starting states, each parameter values and maybe a camera. */
 export async function presets() {
@@ -80,6 +82,9 @@ export async function mount(element, options = {}) {
     const opts = readOptions(options, table);
     handle._table = table;
     handle._opts = opts;
+    // The language: its catalogue fetched while the GPU starts (English needs none).
+    handle._pageLanguage = chooseLanguage(null, element);
+    const words = handle._loadWords(chooseLanguage(opts.lang, element));
     // A GPU context only when near the viewport (lazy) and one of the page's few is free.
     handle._eager = !opts.lazy;
     handle._unwatch = watchNear(element, (near) => handle._nearChanged(near));
@@ -98,6 +103,7 @@ export async function mount(element, options = {}) {
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.camera) handle._core.setCamera(...opts.camera);
     if (opts.sketch) handle._core.setSketch(opts.sketch);
+    handle._setWords(await words);
     handle._noticeReduced();
     // What "Reset" returns to: this page's own start, not the table's defaults.
     handle._startState = handle._saveState();

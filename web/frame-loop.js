@@ -147,14 +147,14 @@ export const frameLoopMethods = {
     this._slowFrames = 0;
     if (this.get("quality") !== 0) {
       this.set("quality", 0);
-      this._notice("Frames took over a second here: the resolution is now automatic.");
+      this._notice(this._words.page("notice-slow-resolution"));
       return;
     }
     const size = this.get("sim_size");
     const smallest = Math.min(...this._table.find((p) => p.name === "sim_size").choices);
     if (size > smallest) {
       const given = this.set("sim_size", size / 2);
-      this._notice(`Frames took over a second here: the simulation grid is reduced to ${given} cells.`);
+      this._notice(this._words.page("notice-slow-grid", { cells: this._words.number(given, 0) }));
     }
   },
 
@@ -178,7 +178,7 @@ export const frameLoopMethods = {
     const saved = this._saveState();
     this._detachCore();
     try {
-      this._status("The graphics device was lost; restarting…");
+      this._status(this.text("status-device-lost"));
       await this._restart(saved);
     } catch (e) {
       this._fail(`The graphics device was lost and could not be restarted: ${e.message || e}`);

@@ -26,7 +26,8 @@ function pathOf(r) {
 
 export class FresnelPlot {
   /** `curve(model, fromWater, samples)`: the core's fresnelCurve. */
-  constructor(curve) {
+  // words: the language's (i18n.js), for the axis, the caption and the label.
+  constructor(curve, words) {
     this._curve = curve;
     this._model = null;
     this.element = document.createElement("figure");
@@ -34,7 +35,7 @@ export class FresnelPlot {
     const svg = element("svg", {
       viewBox: "0 0 220 132",
       role: "img",
-      "aria-label": "Reflectance against the angle of incidence: the chosen Fresnel model over the exact curve",
+      "aria-label": words.page("fresnel-plot"),
     });
     const { x, y, w, h } = AREA;
     element("rect", { x, y, width: w, height: h, class: "frame" }, svg);
@@ -45,7 +46,7 @@ export class FresnelPlot {
     for (const deg of [0, 30, 60, 90]) {
       element("text", { x: x + (deg / 90) * w, y: y + h + 11, class: "tick middle" }, svg).textContent = `${deg}°`;
     }
-    element("text", { x: x + w / 2, y: y + h + 22, class: "tick middle" }, svg).textContent = "angle of incidence";
+    element("text", { x: x + w / 2, y: y + h + 22, class: "tick middle" }, svg).textContent = words.page("fresnel-angle");
     const exactAir = curve(0, false, SAMPLES);
     const exactWater = curve(0, true, SAMPLES);
     element("path", { d: pathOf(exactWater), class: "exact water" }, svg);
@@ -54,7 +55,7 @@ export class FresnelPlot {
     this._air = element("path", { class: "model air" }, svg);
     this._mark = element("line", { y1: y, y2: y + h, class: "view" }, svg);
     const caption = document.createElement("figcaption");
-    caption.textContent = "Reflectance: chosen model (blue) over exact (grey); from air solid, from under water dashed; | your view";
+    caption.textContent = words.page("fresnel-caption");
     this.element.append(svg, caption);
   }
 

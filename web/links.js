@@ -17,6 +17,8 @@ export const linkMethods = {
     query.set("camera", this.camera().map((v) => Math.round(v * 10) / 10).join(","));
     const sketch = this.sketch();
     if (sketch) query.set("sketch", sketch);
+    // The language shown, where it is not the one the page would choose by itself.
+    if (this._words && this._words.tag !== this._pageLanguage) query.set("lang", this._words.tag);
     return query.toString().replace(/%2C/g, ",");
   },
 

@@ -1,5 +1,5 @@
 // mount()'s options and the parameters' values as pages write them: reading, clamping with a
-// console warning, formatting for the controls.
+// console warning.
 
 import { optionTable, presetTable } from "./wavepool.js";
 
@@ -16,6 +16,7 @@ export const DEFAULT_OPTIONS = Object.freeze({
   camera: null, // "yaw,pitch,distance" (degrees, degrees, m) to start from; null: the default view
   preset: null, // a named starting state from presets(): its values, then the page's own options
   sketch: null, // what was drawn with the pointer (the tank's walls and ruler), as shareLink() writes it
+  lang: null, // the language of the controls ("cs", "sr-Latn", ...; i18n.js); null: the page's or the browser's
   lazy: true, // start when scrolled near the viewport (false: at once); see context-budget.js
 });
 
@@ -85,6 +86,8 @@ export function readOptions(options, table) {
       const v = (Array.isArray(value) ? value : String(value).split(",")).map(Number);
       if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
       else warn(`camera "${value}" is not "yaw,pitch,distance" (three numbers); using the default view`);
+    } else if (key === "lang") {
+      out.lang = value ? String(value) : null; // i18n.js warns if there is no such catalogue
     } else if (key === "sketch") {
       out.sketch = String(value); // read by the core, which warns if it cannot
     } else if (key === "aspect") {
@@ -110,17 +113,6 @@ export function toNumber(value, spec) {
   if (value === true || value === "true" || value === "on") return 1;
   if (value === false || value === "false" || value === "off") return 0;
   return Number(value);
-}
-
-export function formatValue(p, v) {
-  if (p.kind === "toggle") return v >= 0.5 ? "on" : "off";
-  if (p.kind === "choice") {
-    const i = p.choices.indexOf(v);
-    if (i >= 0 && p.choiceNames[i]) return p.choiceNames[i];
-    return `${v}${p.unit ? ` ${p.unit}` : ""}`;
-  }
-  const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
-  return `${v.toFixed(decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${p.unit}`) : ""}`;
 }
 
 const CAMEL_OPTIONS = new Set([...Object.keys(DEFAULT_OPTIONS), "meshSize", "causticsSize"]);

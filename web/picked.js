@@ -2,8 +2,6 @@
 // their own under the scene's controls, shown while something is picked and refreshed four
 // times a second; methods of the demo (demo.js).
 
-import { formatValue } from "./options.js";
-
 export const pickedMethods = {
   /** What the pointer picked that has settings of its own: `{ title, settings }` (each setting a slider's spec with its `value`), or null. */
   picked() {
@@ -27,6 +25,12 @@ export const pickedMethods = {
     return fieldset;
   },
 
+  // The core's title ("Dipper 2") in the words shown: its number kept.
+  _pickedTitle(title) {
+    const number = /^Dipper (\d+)$/.exec(title);
+    return number ? this._words.page("dipper", { number: this._words.number(Number(number[1]), 0) }) : title;
+  },
+
   _pickedNote(time) {
     if (!this._pickedGroup || time - this._pickedAt < 250) return;
     this._pickedAt = time;
@@ -43,7 +47,7 @@ export const pickedMethods = {
     if (group.dataset.key !== key) {
       // Another thing picked: its title and a slider per setting.
       group.dataset.key = key;
-      group.querySelector("legend").textContent = picked.title;
+      group.querySelector("legend").textContent = this._pickedTitle(picked.title);
       group.querySelectorAll(".row").forEach((row) => row.remove());
       for (const s of picked.settings) group.append(this._pickedRow(s));
     }
@@ -51,7 +55,7 @@ export const pickedMethods = {
       const input = group.querySelector(`[name="${s.name}"]`);
       // Not under the user's hand while it is being moved.
       if (document.activeElement !== input) input.value = String(s.value);
-      input.nextElementSibling.textContent = formatValue(s, s.value);
+      input.nextElementSibling.textContent = this._words.value(s, s.value);
       input.setAttribute("aria-valuetext", input.nextElementSibling.textContent);
     }
   },
@@ -63,10 +67,11 @@ export const pickedMethods = {
     const id = `wavepool-${this._id}-picked-${s.name}`;
     const label = document.createElement("label");
     label.htmlFor = id;
-    label.textContent = s.label;
-    label.title = s.help;
+    label.textContent = this._words.label(s);
+    label.title = this._words.help(s);
     const input = document.createElement("input");
-    Object.assign(input, { id, name: s.name, title: s.help, type: "range", min: s.min, max: s.max, step: s.step });
+    const title = label.title;
+    Object.assign(input, { id, name: s.name, title, type: "range", min: s.min, max: s.max, step: s.step });
     input.addEventListener("input", () => this.setPicked(s.name, Number(input.value)));
     const output = document.createElement("output");
     output.htmlFor = id;

@@ -21,7 +21,7 @@ export const suspendMethods = {
   /** Every context is taken by demos on screen: say so until one scrolls away. */
   _blocked() {
     if (!this._suspended && !this._core) {
-      this._status("Waiting for a free GPU context: scroll another water demo on this page out of view.");
+      this._status(this.text("status-waiting"));
     }
   },
 

@@ -55,6 +55,17 @@ pub fn preset_table() -> js_sys::Array {
         .collect()
 }
 
+/// The page's own words in English (`page_words.rs`) as an object `{ id: text }`: what the
+/// page shows when no catalogue is loaded.
+#[wasm_bindgen(js_name = pageWords)]
+pub fn page_words() -> js_sys::Object {
+    let object = js_sys::Object::new();
+    for (id, text) in crate::page_words::PAGE_WORDS {
+        set(&object, id, *text);
+    }
+    object
+}
+
 /// Fresnel reflectance of the `fresnel` parameter's model `model` at `samples` incidence
 /// angles from 0° to 90°, seen from air or from under the water: the curve the page plots,
 /// from the same formulas the surface shader uses (optics.rs).
