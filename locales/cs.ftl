@@ -9,6 +9,7 @@
 language = Jazyk
 controls = Ovládání
 preset = Předvolba
+    .title = Začít znovu z nastavení a pohledu lekce
 preset-choose = vyberte…
 preset-applied = Předvolba { $name } použita.
 preset-press-enter = Stisknutím Enter použijete předvolbu { $name }.
@@ -44,6 +45,24 @@ page-starting = Spouštím vodu…
 page-running = Běží na { $api }, { $adapter }.
 page-running-unnamed = Běží na { $api } (prohlížeč neprozrazuje, na jakém GPU).
 page-failed = Voda se zde nemohla spustit: proč, říká rámeček níže.
+costs-gpu = Čas GPU při kreslení vody: { $times }.
+costs-no-gpu-time = Čas GPU: tento prohlížeč ho neměří (WebGPU bez časových značek).
+costs-between = Mezi snímky: { $times }.
+note-flat-under-water = Plochá voda je technika pro pohled nad vodou: pod vodou kreslí sledování paprsků.
+reading-probe-frequency = Frekvence sondy
+reading-probe-swing = Výchylka sondy
+reading-ruler = Pravítko
+viewer-reset-water = Vyhladit vodu
+    .title = Uklidní vodu a vrátí kouli na místo
+viewer-frame = snímek: { $cpu } ms CPU, { $between } ms mezi snímky
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = Čas GPU: toto zařízení nemá časové dotazy
+viewer-gpu-waiting = Čas GPU: čekám na první časové značky
+viewer-costs = kreslení vody (kaustiky + stínování): { $costs }
+viewer-water = voda: { $cells }² buněk, { $seconds } s simulováno
+viewer-adapter = adaptér: { $name }
+viewer-reset-one = výchozí
+    .title = Vrátit na výchozí hodnotu
 
 ## The parameter table and the presets
 ## (zapisuje `wavepool messages` z tabulek v src/: anglický text upravujte tam)
@@ -61,6 +80,7 @@ group-simulation = Simulace
 group-debug = Ladění
 group-display = Zobrazení
 group-flat-water = Plochá voda
+unit-cells = buněk
 
 ## Voda
 

@@ -9,6 +9,7 @@
 language = Sprache
 controls = Steuerung
 preset = Vorlage
+    .title = Neu beginnen mit den Einstellungen und der Ansicht einer Lektion
 preset-choose = auswählen…
 preset-applied = Vorlage { $name } angewendet.
 preset-press-enter = Enter drücken, um die Vorlage { $name } anzuwenden.
@@ -44,6 +45,24 @@ page-starting = Das Wasser startet…
 page-running = Läuft mit { $api }, { $adapter }.
 page-running-unnamed = Läuft mit { $api } (der Browser verrät nicht, welche GPU).
 page-failed = Das Wasser konnte hier nicht starten: Der Kasten unten sagt, warum.
+costs-gpu = GPU-Zeit für das Wasser: { $times }.
+costs-no-gpu-time = GPU-Zeit: Dieser Browser misst sie nicht (keine WebGPU-Zeitstempel).
+costs-between = Zwischen den Bildern: { $times }.
+note-flat-under-water = Ebenes Wasser ist eine Technik für den Blick von oben: Unter Wasser zeichnet das Raytracing.
+reading-probe-frequency = Frequenz der Sonde
+reading-probe-swing = Ausschlag der Sonde
+reading-ruler = Lineal
+viewer-reset-water = Wasser glätten
+    .title = Das Wasser glätten und die Kugel zurücklegen
+viewer-frame = Bild: { $cpu } ms CPU, { $between } ms zwischen Bildern
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = GPU-Zeit: Dieses Gerät hat keine Zeitstempel-Abfragen
+viewer-gpu-waiting = GPU-Zeit: Warte auf die ersten Zeitstempel
+viewer-costs = Wasser zeichnen (Kaustiken + Schattierung): { $costs }
+viewer-water = Wasser: { $cells }² Zellen, { $seconds } s simuliert
+viewer-adapter = Adapter: { $name }
+viewer-reset-one = zurück
+    .title = Auf den Standardwert zurücksetzen
 
 ## The parameter table and the presets
 ## (von `wavepool messages` aus den Tabellen in src/ erzeugt: das Englische dort bearbeiten)
@@ -61,6 +80,7 @@ group-simulation = Simulation
 group-debug = Debug
 group-display = Anzeige
 group-flat-water = Ebenes Wasser
+unit-cells = Zellen
 
 ## Wasser
 

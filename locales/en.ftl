@@ -10,6 +10,7 @@
 language = Language
 controls = Controls
 preset = Preset
+    .title = Start over from a lesson's settings and view
 preset-choose = choose…
 preset-applied = Preset { $name } applied.
 preset-press-enter = Press Enter to apply the preset { $name }.
@@ -45,6 +46,24 @@ page-starting = Starting the water…
 page-running = Running on { $api }, { $adapter }.
 page-running-unnamed = Running on { $api } (the browser does not tell which GPU).
 page-failed = The water could not start here: the box below says why.
+costs-gpu = GPU time drawing the water: { $times }.
+costs-no-gpu-time = GPU time: this browser does not measure it (no WebGPU timestamps).
+costs-between = Between frames: { $times }.
+note-flat-under-water = Flat water is an above-water technique: under the water the ray tracer draws.
+reading-probe-frequency = Probe frequency
+reading-probe-swing = Probe swing
+reading-ruler = Ruler
+viewer-reset-water = Reset water
+    .title = Flatten the water and put the sphere back
+viewer-frame = frame: { $cpu } ms CPU, { $between } ms between frames
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = GPU time: this device has no timestamp queries
+viewer-gpu-waiting = GPU time: waiting for the first timestamps
+viewer-costs = drawing the water (caustics + shading): { $costs }
+viewer-water = water: { $cells }² cells, { $seconds } s simulated
+viewer-adapter = adapter: { $name }
+viewer-reset-one = reset
+    .title = Reset to default
 
 ## The parameter table and the presets
 ## (written by `wavepool messages` from the tables in src/: edit the English there)
@@ -62,6 +81,7 @@ group-simulation = Simulation
 group-debug = Debug
 group-display = Display
 group-flat-water = Flat water
+unit-cells = cells
 
 ## Water
 

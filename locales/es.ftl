@@ -8,6 +8,7 @@
 language = Idioma
 controls = Controles
 preset = Ajuste predefinido
+    .title = Empezar de nuevo con los ajustes y la vista de una lección
 preset-choose = elegir…
 preset-applied = Ajuste { $name } aplicado.
 preset-press-enter = Pulsa Intro para aplicar el ajuste { $name }.
@@ -43,6 +44,24 @@ page-starting = Iniciando el agua…
 page-running = Funciona con { $api }, { $adapter }.
 page-running-unnamed = Funciona con { $api } (el navegador no dice qué GPU).
 page-failed = El agua no pudo iniciarse aquí: el recuadro de abajo explica por qué.
+costs-gpu = Tiempo de GPU dibujando el agua: { $times }.
+costs-no-gpu-time = Tiempo de GPU: este navegador no lo mide (sin marcas de tiempo de WebGPU).
+costs-between = Entre fotogramas: { $times }.
+note-flat-under-water = El agua plana es una técnica para mirar desde arriba del agua: bajo el agua dibuja el trazado de rayos.
+reading-probe-frequency = Frecuencia de la sonda
+reading-probe-swing = Oscilación de la sonda
+reading-ruler = Regla
+viewer-reset-water = Calmar el agua
+    .title = Alisa el agua y devuelve la esfera a su sitio
+viewer-frame = fotograma: { $cpu } ms de CPU, { $between } ms entre fotogramas
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = Tiempo de GPU: este dispositivo no tiene consultas de marcas de tiempo
+viewer-gpu-waiting = Tiempo de GPU: esperando las primeras marcas de tiempo
+viewer-costs = dibujar el agua (cáusticas + sombreado): { $costs }
+viewer-water = agua: { $cells }² celdas, { $seconds } s simulados
+viewer-adapter = adaptador: { $name }
+viewer-reset-one = inicial
+    .title = Volver al valor predeterminado
 
 ## The parameter table and the presets
 ## (generado por `wavepool messages` a partir de las tablas de src/: edita allí el inglés)
@@ -60,6 +79,7 @@ group-simulation = Simulación
 group-debug = Depuración
 group-display = Pantalla
 group-flat-water = Agua plana
+unit-cells = celdas
 
 ## Agua
 

@@ -8,6 +8,7 @@
 language = Язык
 controls = Управление
 preset = Пресет
+    .title = Начать заново с настроек и вида урока
 preset-choose = выберите…
 preset-applied = Пресет { $name } применён.
 preset-press-enter = Нажмите Enter, чтобы применить пресет { $name }.
@@ -43,6 +44,24 @@ page-starting = Запуск воды…
 page-running = Работает на { $api }, { $adapter }.
 page-running-unnamed = Работает на { $api } (браузер не сообщает, какой GPU).
 page-failed = Здесь вода не смогла запуститься: причина — в окне ниже.
+costs-gpu = Время GPU на отрисовку воды: { $times }.
+costs-no-gpu-time = Время GPU: этот браузер его не измеряет (нет меток времени WebGPU).
+costs-between = Между кадрами: { $times }.
+note-flat-under-water = Плоская вода — приём для взгляда над водой: под водой рисует трассировка лучей.
+reading-probe-frequency = Частота датчика
+reading-probe-swing = Размах датчика
+reading-ruler = Линейка
+viewer-reset-water = Успокоить воду
+    .title = Выровнять воду и вернуть шар на место
+viewer-frame = кадр: { $cpu } ms CPU, { $between } ms между кадрами
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = Время GPU: у устройства нет запросов меток времени
+viewer-gpu-waiting = Время GPU: ждём первых меток времени
+viewer-costs = отрисовка воды (каустики + затенение): { $costs }
+viewer-water = вода: { $cells }² ячеек, { $seconds } s смоделировано
+viewer-adapter = адаптер: { $name }
+viewer-reset-one = сброс
+    .title = Вернуть значение по умолчанию
 
 ## The parameter table and the presets
 ## (пишется командой `wavepool messages` из таблиц в src/: английский текст правьте там)
@@ -60,6 +79,7 @@ group-simulation = Моделирование
 group-debug = Отладка
 group-display = Отображение
 group-flat-water = Плоская вода
+unit-cells = ячеек
 
 ## Вода
 

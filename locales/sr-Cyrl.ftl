@@ -9,6 +9,7 @@
 language = Језик
 controls = Контроле
 preset = Поставка
+    .title = Почни изнова од подешавања и погледа лекције
 preset-choose = изаберите…
 preset-applied = Примењена је поставка { $name }.
 preset-press-enter = Притисните Enter да примените поставку { $name }.
@@ -44,6 +45,24 @@ page-starting = Покрећем воду…
 page-running = Ради на { $api }, { $adapter }.
 page-running-unnamed = Ради на { $api } (прегледач не каже на ком GPU-у).
 page-failed = Вода овде није могла да се покрене: оквир испод каже зашто.
+costs-gpu = GPU време за цртање воде: { $times }.
+costs-no-gpu-time = GPU време: овај прегледач га не мери (нема WebGPU временских ознака).
+costs-between = Између кадрова: { $times }.
+note-flat-under-water = Равна вода је техника за поглед изнад воде: под водом црта праћење зрака.
+reading-probe-frequency = Фреквенција сонде
+reading-probe-swing = Отклон сонде
+reading-ruler = Лењир
+viewer-reset-water = Умири воду
+    .title = Поравнај воду и врати куглу на место
+viewer-frame = кадар: { $cpu } ms CPU, { $between } ms између кадрова
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = GPU време: овај уређај нема упите временских ознака
+viewer-gpu-waiting = GPU време: чекам прве временске ознаке
+viewer-costs = цртање воде (каустике + сенчење): { $costs }
+viewer-water = вода: { $cells }² ћелија, { $seconds } s симулирано
+viewer-adapter = адаптер: { $name }
+viewer-reset-one = врати
+    .title = Врати подразумевану вредност
 
 ## The parameter table and the presets
 ## (пише их `wavepool messages` из табела у src/: енглески текст се мења тамо)
@@ -61,6 +80,7 @@ group-simulation = Симулација
 group-debug = Дијагностика
 group-display = Приказ
 group-flat-water = Равна вода
+unit-cells = ћелија
 
 ## Вода
 

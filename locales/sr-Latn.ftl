@@ -9,6 +9,7 @@
 language = Jezik
 controls = Kontrole
 preset = Postavka
+    .title = Počni iznova od podešavanja i pogleda lekcije
 preset-choose = izaberite…
 preset-applied = Primenjena je postavka { $name }.
 preset-press-enter = Pritisnite Enter da primenite postavku { $name }.
@@ -44,6 +45,24 @@ page-starting = Pokrećem vodu…
 page-running = Radi na { $api }, { $adapter }.
 page-running-unnamed = Radi na { $api } (pregledač ne kaže na kom GPU-u).
 page-failed = Voda ovde nije mogla da se pokrene: okvir ispod kaže zašto.
+costs-gpu = GPU vreme za crtanje vode: { $times }.
+costs-no-gpu-time = GPU vreme: ovaj pregledač ga ne meri (nema WebGPU vremenskih oznaka).
+costs-between = Između kadrova: { $times }.
+note-flat-under-water = Ravna voda je tehnika za pogled iznad vode: pod vodom crta praćenje zraka.
+reading-probe-frequency = Frekvencija sonde
+reading-probe-swing = Otklon sonde
+reading-ruler = Lenjir
+viewer-reset-water = Umiri vodu
+    .title = Poravnaj vodu i vrati kuglu na mesto
+viewer-frame = kadar: { $cpu } ms CPU, { $between } ms između kadrova
+viewer-gpu = GPU: { $stages }
+viewer-gpu-none = GPU vreme: ovaj uređaj nema upite vremenskih oznaka
+viewer-gpu-waiting = GPU vreme: čekam prve vremenske oznake
+viewer-costs = crtanje vode (kaustike + senčenje): { $costs }
+viewer-water = voda: { $cells }² ćelija, { $seconds } s simulirano
+viewer-adapter = adapter: { $name }
+viewer-reset-one = vrati
+    .title = Vrati podrazumevanu vrednost
 
 ## The parameter table and the presets
 ## (piše ih `wavepool messages` iz tabela u src/: engleski tekst se menja tamo)
@@ -61,6 +80,7 @@ group-simulation = Simulacija
 group-debug = Dijagnostika
 group-display = Prikaz
 group-flat-water = Ravna voda
+unit-cells = ćelija
 
 ## Voda
 

@@ -72,6 +72,9 @@ struct ViewerArgs {
     /// Save a PNG of the window after --frames N frames.
     #[arg(long, value_name = "FILE.png", requires = "frames")]
     screenshot: Option<PathBuf>,
+    /// The panel's language: en, cs, de, es, ru, sr-Latn or sr-Cyrl ("sr" is Cyrillic).
+    #[arg(long, value_name = "TAG", default_value = "en", value_parser = language)]
+    lang: String,
     /// Not for the viewer: `render --out` writes a file.
     #[arg(long, hide = true)]
     out: Option<PathBuf>,
@@ -446,12 +449,18 @@ fn bench(o: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// A language there is a catalogue for, as its tag.
+fn language(text: &str) -> Result<String, String> {
+    crate::catalogue::Catalogue::load(text).map(|c| c.tag.to_owned())
+}
+
 fn viewer_options(args: ViewerArgs) -> Result<crate::viewer::ViewerOptions, clap::Error> {
     if args.out.is_some() {
         let message = "the viewer takes --screenshot FILE, not --out (that is for render)";
         return Err(Cli::command().error(clap::error::ErrorKind::ArgumentConflict, message));
     }
     Ok(crate::viewer::ViewerOptions {
+        lang: args.lang,
         frames: args.frames,
         screenshot: args.screenshot,
         demo: args.start.demo_options(),

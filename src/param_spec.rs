@@ -188,6 +188,12 @@ macro_rules! choices {
     };
 }
 
+/// The id of a unit's word in the message catalogues ("cells": "unit-cells"), for units that
+/// are words rather than symbols (lower-case letters only, three or more: not "m", "Hz", "EV").
+pub fn unit_message_id(unit: &str) -> Option<String> {
+    (unit.len() >= 3 && unit.chars().all(|c| c.is_ascii_lowercase())).then(|| format!("unit-{unit}"))
+}
+
 /// The id of a group's name in the message catalogues: "group-" and the name in lower case,
 /// spaces as hyphens ("Flat water": "group-flat-water").
 pub fn group_message_id(group: &str) -> String {

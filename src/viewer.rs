@@ -12,11 +12,13 @@ use eframe::egui;
 
 use wavepool::demo::{DemoOptions, FrameContext, Key, WaterDemo};
 use wavepool::optics::{self, FresnelModel};
-use wavepool::params::{self, choice_label, table, Control, Param, ParamId};
+use wavepool::params::{self, table, Control, Param, ParamId};
 use wavepool::presets::{Preset, PRESETS};
 use wavepool::render::flat::ModeCosts;
 use wavepool::render::RenderMode;
 use wavepool::timing::{StageTimer, TIMESTAMP_FEATURES};
+
+use crate::catalogue::{self, Catalogue};
 
 /// Format of the texture the scene is drawn into; egui samples it like its own sRGB textures.
 const SCENE_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
@@ -36,6 +38,8 @@ pub struct ViewerOptions {
     pub sets: Vec<(String, f32)>,
     /// What was drawn in the tank (a share link's `sketch`), if given.
     pub sketch: Option<String>,
+    /// The panel's language (a tag `Catalogue::load` takes; checked by the command line).
+    pub lang: String,
 }
 
 /// Opens the window and runs until it is closed (or the frame count is reached).
@@ -99,6 +103,8 @@ struct Viewer {
     /// Set when the screenshot was requested; filled by the callback with the outcome.
     screenshot: Option<Outcome>,
     outcome: Outcome,
+    /// The panel's words.
+    words: Catalogue,
 }
 
 /// Where the screenshot callback leaves its outcome (`None` until it has run).
@@ -118,7 +124,12 @@ impl Viewer {
         if let Some(Err(why)) = options.sketch.as_deref().map(|text| demo.set_sketch(text)) {
             eprintln!("wavepool: --sketch ignored: {why}");
         }
+        let words = Catalogue::load(&options.lang).unwrap_or_else(|e| {
+            eprintln!("wavepool: {e}; the panel is in English");
+            Catalogue::load("en").expect("English is the tables'")
+        });
         Self {
+            words,
             demo,
             render_state: state.clone(),
             timer: StageTimer::new(&state.device, &state.queue),
@@ -168,19 +179,22 @@ impl Viewer {
     fn panel(&mut self, ui: &mut egui::Ui) {
         ui.heading("wavepool");
         egui::ScrollArea::vertical().show(ui, |ui| {
+            self.language_menu(ui);
             // A lesson's starting state: its values and view, calm water (as the page's select).
             let mut chosen: Option<&'static Preset> = None;
-            egui::ComboBox::from_label("Preset")
-                .selected_text("Lesson…")
+            let words = &self.words;
+            egui::ComboBox::from_label(words.page("preset"))
+                .selected_text(words.page("preset-choose"))
                 .show_ui(ui, |ui| {
                     for preset in PRESETS {
-                        if ui.selectable_label(false, preset.label).on_hover_text(preset.help).clicked() {
+                        let item = ui.selectable_label(false, words.preset_label(preset));
+                        if item.on_hover_text(words.preset_help(preset)).clicked() {
                             chosen = Some(preset);
                         }
                     }
                 })
                 .response
-                .on_hover_text("Start over from a lesson's settings and view");
+                .on_hover_text(words.page("preset.title"));
             if let Some(preset) = chosen {
                 self.demo.apply_preset(preset);
                 self.demo.reset(&self.render_state.queue);
@@ -195,26 +209,30 @@ impl Viewer {
             // a group with none of them shown not at all.
             let params = &self.demo.params;
             let shown = |spec: &&params::Param| {
-                wavepool::scenes::shown_when(spec.name).iter().all(|(on, values)| {
-                    values.contains(&params.get_by_name(on).expect("a parameter of the table"))
-                })
+                wavepool::scenes::shown_when(spec.name)
+                    .iter()
+                    .all(|(on, values)| values.contains(&params.get_by_name(on).expect("a parameter of the table")))
             };
             let shown: Vec<&params::Param> = table().iter().filter(shown).collect();
             for group in groups.into_iter().filter(|g| shown.iter().any(|p| p.group == *g)) {
-                egui::CollapsingHeader::new(group).default_open(true).show(ui, |ui| {
+                egui::CollapsingHeader::new(self.words.group(group)).id_salt(group).default_open(true).show(ui, |ui| {
                     for spec in shown.iter().filter(|p| p.group == group) {
                         self.control(ui, spec);
                     }
                     if group == "Optics" {
                         let model: FresnelModel = self.demo.params.choice(ParamId::Fresnel);
-                        fresnel_plot(ui, model, 90.0 - self.demo.camera().pitch.abs());
+                        fresnel_plot(ui, model, 90.0 - self.demo.camera().pitch.abs(), &self.words);
                     }
                 });
             }
             if let Some(picked) = self.demo.picked() {
-                egui::CollapsingHeader::new(picked.title).default_open(true).show(ui, |ui| {
+                let title = match picked.title.strip_prefix("Dipper ") {
+                    Some(number) => self.words.page_with("dipper", &[("number", number.to_owned())]).into_owned(),
+                    None => picked.title.clone(),
+                };
+                egui::CollapsingHeader::new(title).id_salt("picked").default_open(true).show(ui, |ui| {
                     for (spec, value) in picked.settings {
-                        if let Some(value) = picked_slider(ui, spec, value) {
+                        if let Some(value) = picked_slider(ui, spec, value, &self.words) {
                             let _ = self.demo.set_picked(spec.name, value);
                         }
                     }
@@ -222,78 +240,106 @@ impl Viewer {
             }
             ui.separator();
             ui.horizontal(|ui| {
-                if ui.button("Reset water").on_hover_text("Flatten the water and put the sphere back").clicked() {
+                let words = &self.words;
+                let reset = ui.button(words.page("viewer-reset-water"));
+                if reset.on_hover_text(words.page("viewer-reset-water.title")).clicked() {
                     self.demo.reset(&self.render_state.queue);
                 }
-                if ui.button("Defaults").on_hover_text("Every parameter back to its default").clicked() {
+                if ui.button(words.page("defaults")).on_hover_text(words.page("defaults.title")).clicked() {
                     for p in table() {
                         self.demo.params.reset_at(p.index);
                     }
                 }
             });
             ui.separator();
-            ui.label(format!("frame: {:.1} ms CPU, {:.1} ms between frames", self.cpu_ms, self.interval_ms));
+            let w = &self.words;
+            let (cpu, between) = (w.number(self.cpu_ms.into(), 1), w.number(self.interval_ms.into(), 1));
+            ui.label(w.page_with("viewer-frame", &[("cpu", cpu), ("between", between)]));
             match self.timer.as_ref().and_then(|t| t.latest()) {
                 Some(ms) => {
-                    let stages: Vec<String> = self.demo.stage_names().iter().zip(ms).map(|(n, v)| format!("{n} {v:.1} ms")).collect();
-                    ui.label(format!("GPU: {}", stages.join(", ")))
+                    let names = self.demo.stage_names();
+                    let stages: Vec<String> =
+                        names.iter().zip(ms).map(|(n, v)| format!("{n} {} ms", w.number(v, 1))).collect();
+                    ui.label(w.page_with("viewer-gpu", &[("stages", stages.join(", "))]))
                 }
-                None if self.timer.is_none() => ui.label("GPU time: this device has no timestamp queries"),
-                None => ui.label("GPU time: waiting for the first timestamps"),
+                None if self.timer.is_none() => ui.label(w.page("viewer-gpu-none")),
+                None => ui.label(w.page("viewer-gpu-waiting")),
             };
             let pool = self.demo.render_modes_apply();
             if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
                 let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
                 self.mode_costs.observe(mode, stages);
-                ui.label(format!("drawing the water (caustics + shading): {}", self.mode_costs.summary()));
+                ui.label(self.words.page_with("viewer-costs", &[("costs", self.mode_costs.summary())]));
             }
+            let w = &self.words;
             if let Some(note) = self.demo.flat_water_note() {
-                ui.colored_label(egui::Color32::from_rgb(230, 180, 60), note);
+                ui.colored_label(egui::Color32::from_rgb(230, 180, 60), w.page(note));
             }
-            ui.label(format!(
-                "water: {}² cells, {:.1} s simulated",
-                self.demo.water().size(),
-                self.demo.sim_time()
-            ));
-            ui.label(format!("adapter: {}", self.render_state.adapter.get_info().name));
+            let (cells, seconds) = (self.demo.water().size().to_string(), w.number(self.demo.sim_time(), 1));
+            ui.label(w.page_with("viewer-water", &[("cells", cells), ("seconds", seconds)]));
+            ui.label(w.page_with("viewer-adapter", &[("name", self.render_state.adapter.get_info().name)]));
             for (name, value, unit) in self.demo.readings() {
-                ui.label(format!("{name}: {value:.2} {unit}"));
+                ui.label(format!(
+                    "{}: {} {unit}",
+                    w.page(&format!("reading-{}", name.replace(' ', "-"))),
+                    w.number(value.into(), 2)
+                ));
             }
-            ui.small("Drag the water for ripples, the sphere to move it, elsewhere to turn; wheel zooms. Keys: space pause, G gravity, L light from the camera.");
+            ui.small(w.page("page-intro"));
         });
+    }
+
+    /// The panel's language: the catalogues' languages, each named in its own words.
+    fn language_menu(&mut self, ui: &mut egui::Ui) {
+        let mut chosen = None;
+        let shown = catalogue::languages().find(|l| l.0 == self.words.tag).map_or("", |l| l.1);
+        egui::ComboBox::from_label(self.words.page("language")).selected_text(shown).show_ui(ui, |ui| {
+            for (tag, name) in catalogue::languages() {
+                if ui.selectable_label(tag == self.words.tag, name).clicked() {
+                    chosen = Some(tag);
+                }
+            }
+        });
+        if let Some(words) = chosen.and_then(|tag| Catalogue::load(tag).ok()) {
+            self.words = words;
+        }
     }
 
     fn control(&mut self, ui: &mut egui::Ui, spec: &Param) {
         let mut value = self.demo.params.get_at(spec.index);
+        let (label, help) = (self.words.label(spec), self.words.help(spec));
+        let words = &self.words;
         ui.horizontal(|ui| {
             let changed = match spec.control {
                 Control::Slider { min, max, step } => {
-                    let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
+                    let suffix =
+                        if spec.unit.is_empty() { String::new() } else { format!(" {}", words.unit(spec.unit)) };
                     // In f64 from the table's decimal values, so that egui's snapping to the
                     // step lands on them exactly (f32 -> f64 casts would drift by an ulp).
                     let mut wide = decimal(value);
                     let slider = egui::Slider::new(&mut wide, decimal(min)..=decimal(max)).step_by(decimal(step));
-                    let response = ui.add(slider.suffix(suffix).text(spec.label)).on_hover_text(spec.help);
+                    let response =
+                        ui.add(localised(slider, step, words).suffix(suffix).text(label)).on_hover_text(help);
                     value = wide as f32;
                     response.changed()
                 }
                 Control::Toggle => {
                     let mut on = value >= 0.5;
-                    let r = ui.checkbox(&mut on, spec.label).on_hover_text(spec.help);
+                    let r = ui.checkbox(&mut on, label).on_hover_text(help);
                     value = if on { 1.0 } else { 0.0 };
                     r.changed()
                 }
                 Control::Choice { values, .. } => {
                     let before = value;
-                    egui::ComboBox::from_label(spec.label)
-                        .selected_text(choice_label(spec, value))
+                    egui::ComboBox::from_label(label)
+                        .selected_text(words.choice(spec, value))
                         .show_ui(ui, |ui| {
                             for &v in values {
-                                ui.selectable_value(&mut value, v, choice_label(spec, v));
+                                ui.selectable_value(&mut value, v, words.choice(spec, v));
                             }
                         })
                         .response
-                        .on_hover_text(spec.help);
+                        .on_hover_text(help);
                     value != before
                 }
             };
@@ -302,8 +348,8 @@ impl Viewer {
             }
             let at_default = self.demo.params.get_at(spec.index) == spec.default;
             if ui
-                .add_enabled(!at_default, egui::Button::new("reset").small())
-                .on_hover_text("Reset to default")
+                .add_enabled(!at_default, egui::Button::new(self.words.page("viewer-reset-one")).small())
+                .on_hover_text(self.words.page("viewer-reset-one.title"))
                 .clicked()
             {
                 self.demo.params.reset_at(spec.index);
@@ -469,7 +515,7 @@ impl eframe::App for Viewer {
 /// Reflectance against the angle of incidence, as the page draws it (web/fresnel-plot.js):
 /// `model` (blue) over the exact curve (grey), from air solid and from under the water dashed,
 /// and a mark at `view_deg`, the angle at which the view's centre meets the water.
-fn fresnel_plot(ui: &mut egui::Ui, model: FresnelModel, view_deg: f32) {
+fn fresnel_plot(ui: &mut egui::Ui, model: FresnelModel, view_deg: f32, words: &Catalogue) {
     const SAMPLES: usize = 91;
     let (rect, _) = ui.allocate_exact_size(egui::vec2(220.0, 110.0), egui::Sense::hover());
     let area = rect.shrink2(egui::vec2(8.0, 6.0));
@@ -497,19 +543,31 @@ fn fresnel_plot(ui: &mut egui::Ui, model: FresnelModel, view_deg: f32) {
         [egui::pos2(x, area.top()), egui::pos2(x, area.bottom())],
         egui::Stroke::new(1.5, egui::Color32::from_rgb(209, 70, 31)),
     );
-    ui.label(
-        egui::RichText::new("Reflectance 0-1 against incidence 0-90°: model (blue) over exact (grey); from air solid, under water dashed; red: your view")
-            .small(),
-    );
+    ui.label(egui::RichText::new(words.page("fresnel-caption")).small());
+}
+
+/// A slider whose value is written with the language's decimal mark, to the decimals of its
+/// step (as the page writes it), and read with either mark.
+fn localised<'a>(slider: egui::Slider<'a>, step: f32, words: &'a Catalogue) -> egui::Slider<'a> {
+    let decimals = (-(step as f64).log10().floor()).max(0.0) as usize;
+    slider
+        .custom_formatter(move |v, _| words.number(v, decimals))
+        .custom_parser(|text| text.trim().replace(',', ".").parse().ok())
 }
 
 /// A slider for a setting of what the pointer picked (`spec` is a slider's): its new value
 /// when moved.
-fn picked_slider(ui: &mut egui::Ui, spec: &wavepool::param_spec::ParamSpec, value: f32) -> Option<f32> {
+fn picked_slider(
+    ui: &mut egui::Ui,
+    spec: &wavepool::param_spec::ParamSpec,
+    value: f32,
+    words: &Catalogue,
+) -> Option<f32> {
     let Control::Slider { min, max, step } = spec.control else { return None };
     let mut wide = decimal(value);
     let slider = egui::Slider::new(&mut wide, decimal(min)..=decimal(max)).step_by(decimal(step));
-    let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", spec.unit) };
-    let response = ui.add(slider.suffix(suffix).text(spec.label)).on_hover_text(spec.help);
+    let slider = localised(slider, step, words);
+    let suffix = if spec.unit.is_empty() { String::new() } else { format!(" {}", words.unit(spec.unit)) };
+    let response = ui.add(slider.suffix(suffix).text(words.label(spec))).on_hover_text(words.help(spec));
     response.changed().then_some(wide as f32)
 }

@@ -165,71 +165,16 @@ fn a_choice_is_set_by_its_name_as_by_its_number_and_a_preset_is_a_starting_point
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// The message catalogues (locales/*.ftl): each language's file, read with the Fluent project's
-/// own parser, as a map from message id (and `id.attribute`) to the variables its text uses.
-mod catalogues {
-    use std::collections::{BTreeMap, BTreeSet};
+#[path = "support/catalogues.rs"]
+mod catalogues;
 
-    use fluent_syntax::ast::{Entry, Expression, InlineExpression, Pattern, PatternElement};
-
-    pub type Messages = BTreeMap<String, BTreeSet<String>>;
-
-    pub fn dir() -> std::path::PathBuf {
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("locales")
-    }
-
-    fn variables_in_inline(e: &InlineExpression<&str>, out: &mut BTreeSet<String>) {
-        match e {
-            InlineExpression::VariableReference { id } => {
-                out.insert(id.name.to_owned());
-            }
-            InlineExpression::Placeable { expression } => variables_in(expression, out),
-            _ => {}
-        }
-    }
-
-    fn variables_in(e: &Expression<&str>, out: &mut BTreeSet<String>) {
-        match e {
-            Expression::Inline(inline) => variables_in_inline(inline, out),
-            Expression::Select { selector, variants } => {
-                variables_in_inline(selector, out);
-                for v in variants {
-                    out.extend(variables(&v.value));
-                }
-            }
-        }
-    }
-
-    fn variables(p: &Pattern<&str>) -> BTreeSet<String> {
-        let mut out = BTreeSet::new();
-        for element in &p.elements {
-            if let PatternElement::Placeable { expression } = element {
-                variables_in(expression, &mut out);
-            }
-        }
-        out
-    }
-
-    /// The messages of `source`; a syntax error fails the test, naming the file.
-    pub fn read(name: &str, source: &str) -> Messages {
-        let resource = match fluent_syntax::parser::parse(source) {
-            Ok(r) => r,
-            Err((_, errors)) => panic!("{name}: {} Fluent syntax errors, the first {:?}", errors.len(), errors[0]),
-        };
-        let mut out = Messages::new();
-        for entry in &resource.body {
-            if let Entry::Message(m) = entry {
-                let id = m.id.name.to_owned();
-                if let Some(value) = &m.value {
-                    out.insert(id.clone(), variables(value));
-                }
-                for a in &m.attributes {
-                    out.insert(format!("{id}.{}", a.id.name), variables(&a.value));
-                }
-            }
-        }
-        out
-    }
+#[test]
+fn a_language_without_a_catalogue_is_a_usage_error_naming_those_there_are() {
+    let out = wavepool(&["--lang", "xx", "--frames", "1"]);
+    let err = stderr(&out);
+    println!("{err}");
+    assert_eq!(out.status.code(), Some(2), "exit status for --lang xx: {:?}", out.status);
+    assert!(err.contains("cs") && err.contains("sr-Cyrl"), "the message does not name the languages: {err}");
 }
 
 #[test]
@@ -244,6 +189,7 @@ fn the_english_catalogue_is_what_the_tables_say_now() {
         wanted.extend([p.message_id(), format!("{}.help", p.message_id())]);
         wanted.extend(p.choice_message_ids().into_iter().map(|(_, id)| id));
         wanted.push(wavepool::param_spec::group_message_id(p.group));
+        wanted.extend(wavepool::param_spec::unit_message_id(p.unit));
     }
     wanted.extend(wavepool::presets::PRESETS.iter().map(|p| format!("preset-{}", p.name)));
     wanted.extend(wavepool::page_words::PAGE_WORDS.iter().map(|(id, _)| (*id).to_owned()));

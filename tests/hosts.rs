@@ -16,7 +16,7 @@ use std::time::Duration;
 
 use fantoccini::actions::{InputSource, KeyAction, KeyActions};
 use serde_json::Value;
-use support::{canvas_rect_js, host_packages, serial, Browser, Graphics, Rect, StaticServer, READY};
+use support::{axe_violations, canvas_rect_js, host_packages, serial, Browser, Graphics, Rect, StaticServer, READY};
 
 /// WebDriver's codes for the keys the tests press.
 const ARROW_RIGHT: char = '\u{E014}';
@@ -320,24 +320,6 @@ const LOAD_WATCH_JS: &str = "window.__load = { shift: 0, longest: 0, blocking: 0
     new PerformanceObserver((list) => { for (const e of list.getEntries()) {
         window.__load.longest = Math.max(window.__load.longest, e.duration); window.__load.blocking += Math.max(0, e.duration - 50); } })
       .observe({ type: 'longtask', buffered: true });";
-
-/// Runs axe-core (from /hosts/) over the page, shadow roots included; the violations' rule
-/// ids with their node counts.
-async fn axe_violations(browser: &Browser) -> Vec<(String, u64)> {
-    let result = browser
-        .js_async(
-            "if (!window.axe) await new Promise((done, fail) => { const s = document.createElement('script');
-               s.src = '/hosts/axe-core/axe.min.js'; s.onload = done; s.onerror = fail; document.head.append(s); });
-             const r = await axe.run(document, { resultTypes: ['violations'] });
-             return r.violations.map((v) => [v.id, v.nodes.length, v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')]);",
-        )
-        .await;
-    let list = result.as_array().unwrap_or_else(|| panic!("axe-core did not run: {result}"));
-    for v in list {
-        println!("  violation {}: {} nodes ({})", v[0], v[1], v[2]);
-    }
-    list.iter().map(|v| (v[0].as_str().unwrap().to_owned(), v[1].as_u64().unwrap())).collect()
-}
 
 /// WCAG contrast ratio of two sRGB colours.
 fn contrast(a: [u8; 3], b: [u8; 3]) -> f64 {

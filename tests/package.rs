@@ -144,6 +144,10 @@ fn the_release_folder_holds_the_tarball_the_single_page_and_the_course_zip_with_
         ]
         .map(String::from),
     );
+    // The message catalogues and the Fluent runtime, fetched for a language other than English.
+    for entry in std::fs::read_dir(dist.join("locales")).expect("dist/locales") {
+        wanted.insert(format!("locales/{}", entry.expect("entry").file_name().to_string_lossy()));
+    }
     println!("the tarball's {} files: {files:?}", files.len());
     assert_eq!(files, wanted, "the tarball holds what the demo needs and nothing else");
     let pkg: serde_json::Value =
@@ -360,6 +364,15 @@ async fn the_course_zip_runs_deep_in_a_site_in_the_first_screen_and_the_package_
     for entry in std::fs::read_dir(package_dir()).expect("package") {
         let path = entry.expect("entry").path();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if path.is_dir() {
+            // The catalogues go with the assets (i18n.js finds them at setAssetLocation()'s).
+            std::fs::create_dir_all(files.join(&name)).expect("folder");
+            for inner in std::fs::read_dir(&path).expect("folder") {
+                let inner = inner.expect("entry").path();
+                std::fs::copy(&inner, files.join(&name).join(inner.file_name().unwrap())).expect("copy");
+            }
+            continue;
+        }
         let to = if name.ends_with(".js") { &js } else { &files };
         std::fs::copy(&path, to.join(&name)).expect("copy");
     }

@@ -1,7 +1,8 @@
 //! The desktop viewer as a user starts it, under a virtual X server (Xvfb) on lavapipe:
 //! `wavepool --frames N --screenshot FILE.png` opens the window, draws N frames, saves what
 //! the window showed and exits 0. The picture must hold both the parameter panel (egui's
-//! flat grey with text) and the pool (the colourful, varied scene to its right).
+//! flat grey with text) and the pool (the colourful, varied scene to its right). The panel is in
+//! Serbian Cyrillic (`--lang`).
 
 use std::process::Command;
 
@@ -15,7 +16,8 @@ fn the_viewer_window_shows_the_pool_and_the_panel() {
     let out = Command::new(xvfb_run)
         .args(["-a", "-s", "-screen 0 1280x800x24"])
         .arg(env!("CARGO_BIN_EXE_wavepool"))
-        .args(["--frames", "20", "--screenshot"])
+        // Its panel in Serbian Cyrillic: a catalogue read natively, letters egui's font must hold.
+        .args(["--lang", "sr-Cyrl", "--frames", "20", "--screenshot"])
         .arg(&shot)
         .env("XDG_RUNTIME_DIR", "/tmp")
         .env("WGPU_BACKEND", "vulkan")

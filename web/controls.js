@@ -230,19 +230,22 @@ export const controlMethods = {
     if (!this._costs || time - this._costsAt < 500) return;
     this._costsAt = time;
     const s = this._core.stats();
-    const names = ["ray-traced", "flat", "split"];
+    const w = this._words;
     const keys = ["raytraced", "flat", "split"];
+    const spec = this._table.find((p) => p.name === "render_mode");
+    const names = keys.map((k) => w.choice(spec, k));
+    const ms = (v, decimals) => (v === null || v === undefined ? "–" : `${w.number(v, decimals)} ms`);
     const gpu = s.gpuMs
-      ? "GPU time drawing the water: " +
-        names.map((n, i) => `${n} ${s.gpuMs[keys[i]] === null ? "–" : s.gpuMs[keys[i]].toFixed(1) + " ms"}`).join(" · ")
-      : "GPU time: this browser does not measure it (no WebGPU timestamps)";
+      ? w.page("costs-gpu", { times: names.map((n, i) => `${n} ${ms(s.gpuMs[keys[i]], 1)}`).join(" · ") })
+      : w.page("costs-no-gpu-time");
     const between = names
       .map((n, i) => {
         const l = [...this._modeIntervals[i]].sort((a, b) => a - b);
-        return `${n} ${l.length ? l[Math.floor((l.length - 1) / 2)].toFixed(0) + " ms" : "–"}`;
+        return `${n} ${ms(l.length ? l[Math.floor((l.length - 1) / 2)] : null, 0)}`;
       })
       .join(" · ");
-    this._costs.textContent = `${s.flatNote ? s.flatNote + " " : ""}${gpu}. Between frames: ${between}.`;
+    const note = s.flatNoteId ? `${w.page(s.flatNoteId)} ` : "";
+    this._costs.textContent = `${note}${gpu} ${w.page("costs-between", { times: between })}`;
   },
 
   // Twice a second, what the shown scene's instruments read: "probe frequency 10.00 Hz · …".
@@ -254,7 +257,7 @@ export const controlMethods = {
     // Hertz to a hundredth; lengths to three figures or whole millimetres.
     const digits = (r) => (r.unit === "Hz" ? 2 : Math.abs(r.value) >= 100 ? 0 : Math.abs(r.value) >= 1 ? 1 : 3);
     this._readings.textContent = readings
-      .map(([name, r]) => `${name[0].toUpperCase()}${name.slice(1)}: ${r.value.toFixed(digits(r))} ${r.unit}`)
+      .map(([name, r]) => `${this._words.page(`reading-${name.replace(/ /g, "-")}`)}: ${this._words.number(r.value, digits(r))} ${r.unit}`)
       .join(" · ");
   },
 

@@ -112,6 +112,8 @@ export interface Stats {
   stageMs: PoolStageMs | SeaStageMs | TankStageMs | null;
   /** Why flat water is not drawn now (under the water), or null. */
   flatNote: string | null;
+  /** That note's message id in the catalogues (locales/en.ftl), for showing it in the demo's language (`text()`); null with no note. */
+  flatNoteId: string | null;
   /** Sizes held to what this device affords. */
   reduced: { name: string; asked: number; given: number }[];
 }
@@ -168,8 +170,8 @@ export interface WavePool {
   setSketch(text: string): void;
   /** The language the demo shows. */
   language(): LanguageTag;
-  /** Shows the controls, notices and help in another language (its catalogue is fetched); the water, the view and the parameters stay. The element then fires `wavepool:language`. */
-  setLanguage(tag: LanguageTag | string): Promise<void>;
+  /** Shows the controls, notices and help in another language (its catalogue is fetched, or `catalogue` is taken: a Fluent text with locales/en.ftl's ids, for a language of the page's own under any tag); the water, the view and the parameters stay. The element then fires `wavepool:language`. */
+  setLanguage(tag: LanguageTag | string, catalogue?: string): Promise<void>;
   /** The demo's words in its language: a message of locales/en.ftl ("page-intro", "reset", "reset.title") with its `{ $name }`s filled from `args`; for a page showing them beside the demo. */
   text(id: string, args?: Record<string, string | number>): string;
   /** With the tank's move tool, the dipper last picked (the first until one is) and its own settings; null otherwise. */

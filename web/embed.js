@@ -8,10 +8,12 @@ import { acquireContext, watchNear } from "./context-budget.js";
 import { Demo } from "./demo.js";
 import { assetUrl, inline, live, loadCore, setAssetLocation } from "./loader.js";
 import { optionName, readAspect, readOptions } from "./options.js";
-import { chooseLanguage } from "./i18n.js";
+import { LANGUAGES, browserLanguage, chooseLanguage } from "./i18n.js";
 
-export { setAssetLocation };
-export { browserLanguage, LANGUAGES as languages } from "./i18n.js";
+export { setAssetLocation, browserLanguage };
+
+/** The languages there are catalogues for, each with its name in its own words (i18n.js). */
+export const languages = LANGUAGES;
 
 /** The presets: named starting states, each parameter values and maybe a camera. */
 export async function presets() {

@@ -5,7 +5,7 @@
 // language writes them (Intl.NumberFormat: "0,6" in Czech).
 
 import { pageWords } from "./wavepool.js";
-import { assetUrl } from "./loader.js";
+import { assetUrl, inline, inlineBytes } from "./loader.js";
 import { warn } from "./options.js";
 
 /** The languages there are catalogues for, each named in its own words (the select's options). */
@@ -60,20 +60,34 @@ export function englishWords() {
   return new Words("en", null);
 }
 
-/** The words of language `tag`: English at once, any other once its catalogue is loaded. */
-export async function loadWords(tag) {
-  if (tag === "en") return englishWords();
+/** The words of language `tag`: English at once, any other once its catalogue is loaded
+ * (`source`: its text, instead of locales/<tag>.ftl). */
+export async function loadWords(tag, source) {
+  if (tag === "en" && source === undefined) return englishWords();
   if (!fluent) {
-    await import(assetUrl("locales/fluent-bundle.js", new URL("./locales/fluent-bundle.js", import.meta.url)));
+    // Its one-file build sets globalThis.FluentBundle (the single file runs it from its text).
+    if (inline) new Function(await inlineText(inline.fluent)).call(globalThis);
+    else await import(assetUrl("locales/fluent-bundle.js", new URL("./locales/fluent-bundle.js", import.meta.url)));
     fluent = globalThis.FluentBundle;
   }
+  source ??= inline ? await inlineText(inline.locales[tag]) : await fetchText(tag);
+  const bundle = new fluent.FluentBundle(tag, { useIsolating: false });
+  const errors = bundle.addResource(new fluent.FluentResource(source));
+  for (const e of errors) warn(`catalogue ${tag}: ${e.message || e}`);
+  return new Words(tag, bundle);
+}
+
+async function fetchText(tag) {
   const url = assetUrl(`locales/${tag}.ftl`, new URL(`./locales/${tag}.ftl`, import.meta.url));
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: ${response.status}`);
-  const bundle = new fluent.FluentBundle(tag, { useIsolating: false });
-  const errors = bundle.addResource(new fluent.FluentResource(await response.text()));
-  for (const e of errors) warn(`catalogue ${tag}: ${e.message || e}`);
-  return new Words(tag, bundle);
+  return response.text();
+}
+
+// A text the single file carries packed.
+async function inlineText(packed) {
+  if (!packed) throw new Error("the single file carries no such catalogue");
+  return new TextDecoder().decode(await inlineBytes(...packed));
 }
 
 /** One language's words. Where its catalogue lacks a message the English shows, with a warning. */
@@ -128,11 +142,16 @@ export class Words {
 
   /** A choice's name as the controls show it: words translated, a set ("sphere,duck") by its members. */
   choice(p, name) {
-    if (!this._bundle || !/^[a-z_,]+$/.test(name)) return name;
+    if (!/^[a-z_,]+$/.test(name)) return name;
     return name
       .split(",")
-      .map((n) => this._lookup(`param-${p.name}-${n}`, null) || n)
+      .map((n) => (this._bundle && this._lookup(`param-${p.name}-${n}`, null)) || n)
       .join(", ");
+  }
+
+  /** A unit as shown after a value: a symbol as it is, a word ("cells") in the language's words. */
+  unit(unit) {
+    return (this._bundle && /^[a-z]{3,}$/.test(unit) && this._lookup(`unit-${unit}`, null)) || unit;
   }
 
   /** `v` with `decimals` decimals, as the language writes numbers. */
@@ -151,9 +170,9 @@ export class Words {
     if (p.kind === "choice") {
       const i = p.choices.indexOf(v);
       if (i >= 0 && p.choiceNames[i]) return this.choice(p, p.choiceNames[i]);
-      return `${this.number(v, 0)}${p.unit ? ` ${p.unit}` : ""}`;
+      return `${this.number(v, 0)}${p.unit ? ` ${this.unit(p.unit)}` : ""}`;
     }
     const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
-    return `${this.number(v, decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${p.unit}`) : ""}`;
+    return `${this.number(v, decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${this.unit(p.unit)}`) : ""}`;
   }
 }

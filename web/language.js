@@ -3,7 +3,7 @@
 // words a page may show beside the demo (text()); methods of the demo (demo.js). The words
 // themselves are i18n.js's.
 
-import { LANGUAGES, englishWords, loadWords } from "./i18n.js";
+import { LANGUAGES, englishWords, loadWords, supportedTag } from "./i18n.js";
 import { warn } from "./options.js";
 
 export const languageMethods = {
@@ -16,7 +16,8 @@ export const languageMethods = {
     label.textContent = this._words.page("language");
     const select = document.createElement("select");
     select.id = label.htmlFor;
-    for (const l of LANGUAGES) {
+    const shown = LANGUAGES.some((l) => l.tag === this._words.tag) ? LANGUAGES : [...LANGUAGES, { tag: this._words.tag, name: this._words.tag }];
+    for (const l of shown) {
       const option = new Option(l.name, l.tag);
       option.lang = l.tag;
       select.append(option);
@@ -28,19 +29,27 @@ export const languageMethods = {
   },
 
   /** Shows the controls, notices and help in language `tag` ("cs", "sr-Latn", ...; see
-   * LANGUAGES): its catalogue is fetched and the controls are made again in it; the water, the
-   * view and the parameters are not touched. Resolves once they show it. */
-  async setLanguage(tag) {
-    const words = await this._loadWords(String(tag));
+   * LANGUAGES): its catalogue is fetched (or `catalogue`, a Fluent text of a page's own, is
+   * taken for any tag) and the controls are made again in it; the water, the view and the
+   * parameters are not touched. Resolves once they show it. */
+  async setLanguage(tag, catalogue) {
+    const asked = catalogue === undefined ? supportedTag(tag) : String(tag);
+    if (!asked) {
+      warn(`setLanguage: "${tag}" is not one of ${LANGUAGES.map((l) => l.tag).join(", ")} (or give its catalogue)`);
+      return;
+    }
+    const words = await this._loadWords(asked, catalogue);
     if (this._dead) return;
     this._setWords(words);
     if (this._drawer) {
       const focused = this._shadow.activeElement && this._shadow.activeElement.id;
+      const open = this._drawer.open;
       this._drawer.remove();
       this._controls.clear();
       this._dependants.clear();
       this._plot = this._costs = this._readings = this._pickedGroup = null;
       this._buildControls();
+      this._drawer.open = open;
       if (focused) this._shadow.getElementById(focused)?.focus();
     }
     if (this._overlayUpdate) this._stage.querySelector(".overlay")?.remove();
@@ -64,10 +73,11 @@ export const languageMethods = {
     return this._words || (this._words = englishWords());
   },
 
-  // The words of `tag` (i18n.js), or English with a warning where they cannot be fetched.
-  async _loadWords(tag) {
+  // The words of `tag` (i18n.js; from `catalogue` if given), or English with a warning where
+  // they cannot be had.
+  async _loadWords(tag, catalogue) {
     try {
-      return await loadWords(tag);
+      return await loadWords(tag, catalogue);
     } catch (error) {
       warn(`the ${tag} catalogue could not be loaded (${error.message || error}); showing English`);
       return loadWords("en");

@@ -6,9 +6,11 @@ import init from "./wavepool.js";
 let ready = null; // one instantiation of the wasm module for every demo on the page
 export const live = new Set(); // mounted demos, told when the wasm module panics
 
-// The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm, picture }
-// ahead of this code in the same module: the stylesheet's text, the wasm module (gzip then
-// base 85 in the alphabet it carries, its gzip length in wasmBytes) and the no-GPU picture (a data: URL). Otherwise they are files next to this one.
+// The single-file build (scripts/standalone.py) declares WAVEPOOL_INLINE = { css, wasm, picture,
+// locales, fluent } ahead of this code in the same module: the stylesheet's text, the wasm
+// module (gzip then base 85 in the alphabet it carries, its gzip length in wasmBytes), the
+// no-GPU picture (a data: URL), the message catalogues but English's and the Fluent runtime
+// (each [base 85 of gzip, gzip length]). Otherwise they are files next to this one.
 // eslint-disable-next-line no-undef
 export const inline = typeof WAVEPOOL_INLINE === "undefined" ? null : WAVEPOOL_INLINE;
 let assetBase = null; // setAssetLocation()'s folder (null: the files are next to this module)
@@ -16,12 +18,11 @@ let wasmMemory = null; // the module's linear memory (for stats().wasmMemoryByte
 /** Linear memory made available at load: one demo at the defaults uses 9.7 MB. */
 const START_MEMORY_BYTES = 16 * 1024 * 1024;
 
-/** The inline wasm module's bytes: base 85 decoded (5 digits, most significant first, per
- * 4 bytes big-endian), then gunzipped by the browser. */
-async function inlineWasm() {
+/** Bytes the single file carries packed (`length` bytes of gzip, written in base 85: 5 digits,
+ * most significant first, per 4 bytes big-endian): decoded, then gunzipped by the browser. */
+export async function inlineBytes(text, length) {
   const digit = new Uint8Array(128);
   for (let i = 0; i < inline.alphabet.length; i++) digit[inline.alphabet.charCodeAt(i)] = i;
-  const text = inline.wasm;
   const packed = new Uint8Array((text.length / 5) * 4);
   for (let i = 0, o = 0; i < text.length; i += 5, o += 4) {
     let n = 0;
@@ -31,7 +32,7 @@ async function inlineWasm() {
     packed[o + 2] = (n >>> 8) & 255;
     packed[o + 3] = n & 255;
   }
-  const stream = new Blob([packed.subarray(0, inline.wasmBytes)]).stream().pipeThrough(new DecompressionStream("gzip"));
+  const stream = new Blob([packed.subarray(0, length)]).stream().pipeThrough(new DecompressionStream("gzip"));
   return new Response(stream).arrayBuffer();
 }
 
@@ -58,7 +59,7 @@ export function demoPage(name) {
 export function loadCore() {
   if (!ready) {
     const located = assetBase ? { module_or_path: new URL("wavepool_bg.wasm", assetBase) } : undefined;
-    const module = inline ? inlineWasm().then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(located);
+    const module = inline ? inlineBytes(inline.wasm, inline.wasmBytes).then((bytes) => ({ module_or_path: bytes })) : Promise.resolve(located);
     ready = module.then((source) => init(source)).then(
       (exports) => {
         wasmMemory = exports.memory;

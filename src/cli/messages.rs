@@ -4,7 +4,7 @@
 //! table's words up by them (`ParamSpec::message_id`, `group_message_id`).
 
 use wavepool::page_words::PAGE_WORDS;
-use wavepool::param_spec::group_message_id;
+use wavepool::param_spec::{group_message_id, unit_message_id};
 use wavepool::params::{self, ParamSpec};
 use wavepool::presets;
 use wavepool::tank::tuning::{DIPPER_AMPLITUDE, DIPPER_FREQUENCY, DIPPER_PHASE};
@@ -62,6 +62,12 @@ fn table_messages() -> String {
     }
     for group in &groups {
         out += &format!("{} = {}\n", group_message_id(group), pattern(group));
+    }
+    let mut units: Vec<&str> =
+        params::table().iter().map(|p| p.unit).filter(|u| unit_message_id(u).is_some()).collect();
+    units.dedup();
+    for unit in units {
+        out += &format!("{} = {unit}\n", unit_message_id(unit).expect("a word"));
     }
     for group in groups {
         out += &format!("\n## {group}\n\n");

@@ -89,7 +89,8 @@ impl WaterDemo {
     }
 
     /// Why the chosen flat water is not drawn in the pool shown, if it is not (for the page and
-    /// the viewer; nothing in a scene without render modes).
+    /// the viewer; nothing in a scene without render modes): the id of its message in
+    /// `page_words` and the catalogues.
     pub fn flat_water_note(&self) -> Option<&'static str> {
         self.scenes
             .get(self.shown)

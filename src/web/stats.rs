@@ -72,7 +72,10 @@ impl WebDemo {
             JsValue::from(o)
         });
         set(&o, "stageMs", stages);
-        set(&o, "flatNote", self.demo.flat_water_note().map_or(JsValue::NULL, JsValue::from_str));
+        let note = self.demo.flat_water_note();
+        let text = note.and_then(crate::page_words::english);
+        set(&o, "flatNote", text.map_or(JsValue::NULL, JsValue::from_str));
+        set(&o, "flatNoteId", note.map_or(JsValue::NULL, JsValue::from_str));
         let reduced: js_sys::Array = self
             .reduced
             .iter()

@@ -11,6 +11,9 @@
 #[path = "../support/browser.rs"]
 mod support;
 
+#[path = "../support/catalogues.rs"]
+mod catalogues;
+mod languages;
 mod models;
 mod pacing;
 mod scenes;

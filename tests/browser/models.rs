@@ -314,7 +314,7 @@ async fn flat_water_in_the_page(graphics: Graphics, backend: &str) {
         .await;
     println!("{backend}: costs {costs}");
     let text = costs["text"].as_str().unwrap_or("");
-    assert!(text.contains("Between frames: ray-traced") && !text.contains("flat –"), "{backend}: {text}");
+    assert!(text.contains("Between frames: raytraced") && !text.contains("flat –"), "{backend}: {text}");
     if backend == "webgpu" {
         for mode in ["raytraced", "flat", "split"] {
             assert!(

@@ -156,3 +156,21 @@ pub fn mkdocs() -> PathBuf {
     );
     bin
 }
+
+/// Runs axe-core (from /hosts/) over the page, shadow roots included; the violations' rule
+/// ids with their node counts.
+pub async fn axe_violations(browser: &super::Browser) -> Vec<(String, u64)> {
+    let result = browser
+        .js_async(
+            "if (!window.axe) await new Promise((done, fail) => { const s = document.createElement('script');
+               s.src = '/hosts/axe-core/axe.min.js'; s.onload = done; s.onerror = fail; document.head.append(s); });
+             const r = await axe.run(document, { resultTypes: ['violations'] });
+             return r.violations.map((v) => [v.id, v.nodes.length, v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')]);",
+        )
+        .await;
+    let list = result.as_array().unwrap_or_else(|| panic!("axe-core did not run: {result}"));
+    for v in list {
+        println!("  violation {}: {} nodes ({})", v[0], v[1], v[2]);
+    }
+    list.iter().map(|v| (v[0].as_str().unwrap().to_owned(), v[1].as_u64().unwrap())).collect()
+}

@@ -75,10 +75,10 @@ impl PoolScene {
         crate::render::flat_shown(&self.view(sh)).is_some()
     }
 
-    /// Why the chosen flat water is not drawn, if it is not (for the page and the viewer).
+    /// Why the chosen flat water is not drawn, if it is not (for the page and the viewer): the
+    /// id of its message (`page_words`, the catalogues).
     pub fn flat_water_note(&self, sh: Shared<'_>) -> Option<&'static str> {
         let mode = sh.params.choice::<RenderMode>(ParamId::RenderMode);
-        (mode != RenderMode::RayTraced && !self.flat_water_drawn(sh))
-            .then_some("Flat water is an above-water technique: under the water the ray tracer draws.")
+        (mode != RenderMode::RayTraced && !self.flat_water_drawn(sh)).then_some("note-flat-under-water")
     }
 }
