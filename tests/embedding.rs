@@ -304,7 +304,11 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
                 .await;
             println!("file:// in Serbian (Latin): {shown}");
             let texts = catalogues::texts_of("sr-Latn");
-            assert_eq!(shown["label"].as_str(), texts.get("param-wave_speed").map(String::as_str), "not the catalogue's words");
+            assert_eq!(
+                shown["label"].as_str(),
+                texts.get("param-wave_speed").map(String::as_str),
+                "not the catalogue's words"
+            );
             assert_eq!(shown["resources"], 0, "the single file fetched its catalogue");
         }
         browser.goto(&server.url(&format!("/?backend={backend}&quality=1"))).await;
