@@ -23,6 +23,7 @@ embed-code = Kopírovat kód pro vložení
     .title = Zkopírovat <iframe>, který na jiné stránce ukáže tento bazén tak, jak je teď
 link-copied = Odkaz zkopírován.
 embed-code-copied = Kód pro vložení zkopírován.
+embed-title = Interaktivní bazén s vodou (wavepool)
 fullscreen = Celá obrazovka
     .title = Celá obrazovka (Esc ji ukončí)
 play = Spustit
@@ -45,6 +46,16 @@ page-starting = Spouštím vodu…
 page-running = Běží na { $api }, { $adapter }.
 page-running-unnamed = Běží na { $api } (prohlížeč neprozrazuje, na jakém GPU).
 page-failed = Voda se zde nemohla spustit: proč, říká rámeček níže.
+error-backend-forced = Tato stránka žádala jen { $api } (backend={ $backend }) a tento prohlížeč ho nedokázal spustit:
+error-backend-forced-fix = Odstraňte backend={ $backend } z adresy nebo z voleb (nebo nastavte backend=auto), aby si ukázka vybrala rozhraní, které tento prohlížeč má.
+error-no-backend = Tento prohlížeč nedokázal spustit ukázku s vodou: nefungovalo ani WebGPU, ani WebGL2 (grafická akcelerace může být v jeho nastavení vypnutá).
+error-no-webgpu = WebGPU: tento prohlížeč ho nenabízí (chybí navigator.gpu)
+error-stopped = Ukázka s vodou se zastavila: { $reason }
+error-device-lost = Grafické zařízení bylo ztraceno a nepodařilo se ho znovu spustit: { $reason }
+error-crashed = Ukázka s vodou spadla: { $reason }
+error-restart = Ukázku s vodou se nepodařilo znovu spustit: { $reason }
+fallback-picture = Statický obrázek bazénu s vodou (živou ukázku zde nešlo spustit)
+canvas-label = Bazén s vodou. Tažením po vodě vytvoříte vlnky, tažením koule ji přesunete, tažením jinde otočíte kamerou. Klávesy: šipky otáčejí, + a - přibližují, Enter pustí kapku doprostřed, mezerník pozastaví, G gravitace, L světlo.
 costs-gpu = Čas GPU při kreslení vody: { $times }.
 costs-no-gpu-time = Čas GPU: tento prohlížeč ho neměří (WebGPU bez časových značek).
 costs-between = Mezi snímky: { $times }.

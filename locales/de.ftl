@@ -23,6 +23,7 @@ embed-code = Embed-Code kopieren
     .title = Ein <iframe> kopieren, das dieses Becken so, wie es jetzt ist, in einer anderen Seite zeigt
 link-copied = Link kopiert.
 embed-code-copied = Embed-Code kopiert.
+embed-title = Interaktives Wasserbecken (wavepool)
 fullscreen = Vollbild
     .title = Vollbild (Esc beendet es)
 play = Start
@@ -45,6 +46,16 @@ page-starting = Das Wasser startet…
 page-running = Läuft mit { $api }, { $adapter }.
 page-running-unnamed = Läuft mit { $api } (der Browser verrät nicht, welche GPU).
 page-failed = Das Wasser konnte hier nicht starten: Der Kasten unten sagt, warum.
+error-backend-forced = Diese Seite verlangte nur { $api } (backend={ $backend }), und dieser Browser konnte es nicht starten:
+error-backend-forced-fix = Entfernen Sie backend={ $backend } aus der Adresse oder den Optionen (oder setzen Sie backend=auto), damit die Demo eine Schnittstelle wählt, die dieser Browser hat.
+error-no-backend = Dieser Browser konnte die Wasser-Demo nicht starten: Weder WebGPU noch WebGL2 funktionierten (die Grafikbeschleunigung ist in seinen Einstellungen vielleicht ausgeschaltet).
+error-no-webgpu = WebGPU: Dieser Browser bietet es nicht an (navigator.gpu fehlt)
+error-stopped = Die Wasser-Demo hat angehalten: { $reason }
+error-device-lost = Das Grafikgerät ging verloren und konnte nicht neu gestartet werden: { $reason }
+error-crashed = Die Wasser-Demo ist abgestürzt: { $reason }
+error-restart = Die Wasser-Demo konnte nicht wieder starten: { $reason }
+fallback-picture = Ein Standbild des Wasserbeckens (die Live-Demo konnte hier nicht starten)
+canvas-label = Wasserbecken. Auf dem Wasser ziehen macht Wellen, die Kugel ziehen verschiebt sie, anderswo ziehen dreht die Kamera. Tasten: Pfeile drehen, + und - zoomen, Enter lässt einen Tropfen in die Mitte fallen, Leertaste hält an, G Schwerkraft, L Licht.
 costs-gpu = GPU-Zeit für das Wasser: { $times }.
 costs-no-gpu-time = GPU-Zeit: Dieser Browser misst sie nicht (keine WebGPU-Zeitstempel).
 costs-between = Zwischen den Bildern: { $times }.

@@ -22,6 +22,7 @@ embed-code = Copiar código para insertar
     .title = Copiar un <iframe> que muestra esta piscina, tal como está ahora, en otra página
 link-copied = Enlace copiado.
 embed-code-copied = Código para insertar copiado.
+embed-title = Piscina de agua interactiva (wavepool)
 fullscreen = Pantalla completa
     .title = Pantalla completa (Esc para salir)
 play = Reproducir
@@ -44,6 +45,16 @@ page-starting = Iniciando el agua…
 page-running = Funciona con { $api }, { $adapter }.
 page-running-unnamed = Funciona con { $api } (el navegador no dice qué GPU).
 page-failed = El agua no pudo iniciarse aquí: el recuadro de abajo explica por qué.
+error-backend-forced = Esta página pidió solo { $api } (backend={ $backend }) y este navegador no pudo iniciarlo:
+error-backend-forced-fix = Quita backend={ $backend } de la dirección o de las opciones (o pon backend=auto) para que la demo elija una interfaz que este navegador tenga.
+error-no-backend = Este navegador no pudo iniciar la demo de agua: no funcionó ni WebGPU ni WebGL2 (puede que la aceleración gráfica esté desactivada en su configuración).
+error-no-webgpu = WebGPU: este navegador no lo ofrece (falta navigator.gpu)
+error-stopped = La demo de agua se detuvo: { $reason }
+error-device-lost = Se perdió el dispositivo gráfico y no se pudo reiniciar: { $reason }
+error-crashed = La demo de agua falló: { $reason }
+error-restart = La demo de agua no pudo volver a iniciarse: { $reason }
+fallback-picture = Una imagen fija de la piscina (la demo en vivo no pudo iniciarse aquí)
+canvas-label = Piscina de agua. Arrastra sobre el agua para crear ondas, arrastra la esfera para moverla, arrastra en otro lugar para girar la cámara. Teclas: flechas giran, + y - acercan, Enter deja caer una gota en el centro, espacio pausa, G gravedad, L luz.
 costs-gpu = Tiempo de GPU dibujando el agua: { $times }.
 costs-no-gpu-time = Tiempo de GPU: este navegador no lo mide (sin marcas de tiempo de WebGPU).
 costs-between = Entre fotogramas: { $times }.

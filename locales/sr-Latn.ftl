@@ -23,6 +23,7 @@ embed-code = Kopiraj kod za umetanje
     .title = Kopira <iframe> koji prikazuje ovaj bazen, kakav je sada, na drugoj stranici
 link-copied = Veza je kopirana.
 embed-code-copied = Kod za umetanje je kopiran.
+embed-title = Interaktivni bazen sa vodom (wavepool)
 fullscreen = Ceo ekran
     .title = Ceo ekran (izlaz tasterom Esc)
 play = Pokreni
@@ -45,6 +46,16 @@ page-starting = Pokrećem vodu…
 page-running = Radi na { $api }, { $adapter }.
 page-running-unnamed = Radi na { $api } (pregledač ne kaže na kom GPU-u).
 page-failed = Voda ovde nije mogla da se pokrene: okvir ispod kaže zašto.
+error-backend-forced = Ova stranica je tražila samo { $api } (backend={ $backend }), a ovaj pregledač nije uspeo da ga pokrene:
+error-backend-forced-fix = Uklonite backend={ $backend } iz adrese ili opcija (ili postavite backend=auto) da bi demo izabrao interfejs koji ovaj pregledač ima.
+error-no-backend = Ovaj pregledač nije uspeo da pokrene demo sa vodom: nisu radili ni WebGPU ni WebGL2 (grafičko ubrzanje je možda isključeno u njegovim podešavanjima).
+error-no-webgpu = WebGPU: ovaj pregledač ga ne nudi (nedostaje navigator.gpu)
+error-stopped = Demo sa vodom se zaustavio: { $reason }
+error-device-lost = Grafički uređaj je izgubljen i nije mogao ponovo da se pokrene: { $reason }
+error-crashed = Demo sa vodom se srušio: { $reason }
+error-restart = Demo sa vodom nije mogao ponovo da se pokrene: { $reason }
+fallback-picture = Nepomična slika bazena (živi demo ovde nije mogao da se pokrene)
+canvas-label = Bazen sa vodom. Prevucite po vodi da napravite talasiće, prevucite kuglu da je pomerite, prevucite drugde da okrenete kameru. Tasteri: strelice okreću, + i - zumiraju, Enter pušta kap u sredinu, razmak pauzira, G gravitacija, L svetlo.
 costs-gpu = GPU vreme za crtanje vode: { $times }.
 costs-no-gpu-time = GPU vreme: ovaj pregledač ga ne meri (nema WebGPU vremenskih oznaka).
 costs-between = Između kadrova: { $times }.

@@ -68,6 +68,17 @@ pub const PAGE_WORDS: &[(&str, &str)] = &[
     ("viewer-adapter", "adapter: { $name }"),
     ("viewer-reset-one", "reset"),
     ("viewer-reset-one.title", "Reset to default"),
+    ("error-backend-forced", "This page asked for { $api } only (backend={ $backend }), and this browser could not start it:"),
+    ("error-backend-forced-fix", "Remove backend={ $backend } from the address or the options (or set backend=auto) to let the demo choose a backend this browser has."),
+    ("error-no-backend", "This browser could not start the water demo: neither WebGPU nor WebGL2 worked (graphics acceleration may be turned off in its settings)."),
+    ("error-no-webgpu", "WebGPU: this browser does not offer it (navigator.gpu is missing)"),
+    ("error-stopped", "The water demo stopped: { $reason }"),
+    ("error-device-lost", "The graphics device was lost and could not be restarted: { $reason }"),
+    ("error-crashed", "The water demo crashed: { $reason }"),
+    ("error-restart", "The water demo could not start again: { $reason }"),
+    ("fallback-picture", "A still picture of the water pool (the live demo could not start here)"),
+    ("canvas-label", "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere to turn the camera. Keys: arrows turn, + and - zoom, Enter makes a drop in the middle, space pauses, G gravity, L light."),
+    ("embed-title", "Interactive water pool (wavepool)"),
 ];
 
 /// The English text of `id` ("reset", or "reset.title" for an attribute).

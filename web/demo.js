@@ -16,21 +16,16 @@ import { assetUrl, inline, live, memoryBytes } from "./loader.js";
 import { toNumber } from "./options.js";
 import { suspendMethods } from "./suspend.js";
 
-/** The message shown when no backend started: what was tried, each one's reason, what to do. */
-function backendFailure(backend, failures) {
-  const name = { webgpu: "WebGPU", webgl2: "WebGL2" }[backend];
-  const reasons = failures.map((f) => `• ${f}`).join("\n");
-  if (name) {
-    return (
-      `This page asked for ${name} only (backend=${backend}), and this browser could not start it:\n` +
-      `${reasons}\nRemove backend=${backend} from the address or the options (or set backend=auto) ` +
-      "to let the demo choose a backend this browser has."
-    );
+/** The message shown when no backend started, in `words`: what was tried, each one's reason
+ * (a message id, or the browser's own words), what to do. */
+function backendFailure(words, backend, failures) {
+  const api = { webgpu: "WebGPU", webgl2: "WebGL2" }[backend];
+  const reasons = failures.map((f) => `• ${f.id ? words.page(f.id) : f}`).join("\n");
+  if (api) {
+    const fix = words.page("error-backend-forced-fix", { backend });
+    return `${words.page("error-backend-forced", { api, backend })}\n${reasons}\n${fix}`;
   }
-  return (
-    "This browser could not start the water demo: neither WebGPU nor WebGL2 worked " +
-    `(graphics acceleration may be turned off in its settings).\n${reasons}`
-  );
+  return `${words.page("error-no-backend")}\n${reasons}`;
 }
 
 /** How long a notice stays over the picture (ms). */
@@ -106,7 +101,7 @@ export class Demo {
     const failures = [];
     for (const backend of order) {
       if (backend === "webgpu" && !navigator.gpu) {
-        failures.push("WebGPU: this browser does not offer it (navigator.gpu is missing)");
+        failures.push({ id: "error-no-webgpu" });
         continue;
       }
       const canvas = this._makeCanvas();
@@ -131,19 +126,14 @@ export class Demo {
       this._listen();
       return;
     }
-    throw new Error(backendFailure(this._opts.backend, failures));
+    throw new Error(backendFailure(await this._settledWords(), this._opts.backend, failures));
   }
 
   _makeCanvas() {
     const canvas = document.createElement("canvas");
     canvas.tabIndex = 0;
     canvas.setAttribute("role", "application");
-    canvas.setAttribute(
-      "aria-label",
-      "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere " +
-        "to turn the camera. Keys: arrows turn, + and - zoom, Enter makes a drop in the middle, space " +
-        "pauses, G gravity, L light.",
-    );
+    canvas.setAttribute("aria-label", this.text("canvas-label")); // again once the words are loaded
     this._stage.prepend(canvas);
     this._sizeCanvas(canvas);
     return canvas;
@@ -208,7 +198,7 @@ export class Demo {
     if (!this._stage.querySelector(".fallback")) {
       const picture = new Image();
       picture.className = "fallback";
-      picture.alt = "A still picture of the water pool (the live demo could not start here)";
+      picture.alt = this.text("fallback-picture");
       picture.src = inline ? inline.picture : assetUrl("no-gpu.webp", new URL("./no-gpu.webp", import.meta.url));
       this._stage.prepend(picture);
     }

@@ -86,7 +86,7 @@ export async function mount(element, options = {}) {
     handle._opts = opts;
     // The language: its catalogue fetched while the GPU starts (English needs none).
     handle._pageLanguage = chooseLanguage(null, element);
-    const words = handle._loadWords(chooseLanguage(opts.lang, element));
+    const words = (handle._wordsLoading = handle._loadWords(chooseLanguage(opts.lang, element)));
     // A GPU context only when near the viewport (lazy) and one of the page's few is free.
     handle._eager = !opts.lazy;
     handle._unwatch = watchNear(element, (near) => handle._nearChanged(near));

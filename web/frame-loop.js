@@ -170,7 +170,7 @@ export const frameLoopMethods = {
     const text = String(error && error.message ? error.message : error);
     const now = performance.now();
     if (!/lost/.test(text) || now - this._lastRestart < 10000) {
-      this._fail(`The water demo stopped: ${text}`);
+      this._fail(this.text("error-stopped", { reason: text }));
       return;
     }
     this._lastRestart = now;
@@ -181,7 +181,7 @@ export const frameLoopMethods = {
       this._status(this.text("status-device-lost"));
       await this._restart(saved);
     } catch (e) {
-      this._fail(`The graphics device was lost and could not be restarted: ${e.message || e}`);
+      this._fail(this.text("error-device-lost", { reason: e.message || e }));
     }
   },
 

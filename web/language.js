@@ -84,10 +84,18 @@ export const languageMethods = {
     }
   },
 
-  // Words to show from now on; the controls' `lang` follows them, for screen readers.
+  // Words to show from now on; the controls' `lang` follows them, for screen readers, and the
+  // canvas's label is said in them.
   _setWords(words) {
     this._words = words;
     this._root.lang = words.tag;
+    if (this._canvas) this._canvas.setAttribute("aria-label", words.page("canvas-label"));
+  },
+
+  // The words being loaded at mount (embed.js), once they are (English if they failed).
+  async _settledWords() {
+    if (this._wordsLoading) this._setWords(await this._wordsLoading);
+    return this._text();
   },
 
 };

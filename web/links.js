@@ -32,7 +32,7 @@ export const linkMethods = {
     const page = demoPage("embed.html");
     return (
       `<iframe src="${page}?${this._query()}" width="800" height="600" allow="fullscreen" ` +
-      `title="Interactive water pool (wavepool)"></iframe>`
+      `title="${this.text("embed-title")}"></iframe>`
     );
   },
 

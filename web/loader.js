@@ -70,7 +70,7 @@ export function loadCore() {
         const pages = Math.ceil((START_MEMORY_BYTES - wasmMemory.buffer.byteLength) / 65536);
         if (pages > 0) wasmMemory.grow(pages);
         window.addEventListener("wavepool:panic", (event) => {
-          for (const demo of live) demo._fail(`The water demo crashed: ${event.detail}`);
+          for (const demo of live) demo._fail(demo.text("error-crashed", { reason: event.detail }));
         });
         // Printing: a GPU canvas prints blank or not at all, so each demo puts a still of its
         // current frame in its place until the print is done.

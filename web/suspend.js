@@ -48,7 +48,7 @@ export const suspendMethods = {
       this._suspended = false;
       delete this._element.dataset.suspended;
     } catch (e) {
-      this._fail(`The water demo could not start again: ${e.message || e}`);
+      this._fail(this.text("error-restart", { reason: e.message || e }));
     } finally {
       this._waking = false;
     }

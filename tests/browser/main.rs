@@ -326,6 +326,16 @@ async fn no_gpu_shows_a_message_in_the_page() {
     let loaded = "(() => { const i = document.querySelector('#pool').shadowRoot.querySelector('img.fallback');
                   return i && i.complete ? i.naturalWidth : 0; })() > 0";
     assert!(browser.wait_for(loaded, Duration::from_secs(10)).await, "no picture");
+    // In German, the message is the German catalogue's (its words for no backend at all).
+    browser.goto(&server.url("/?lang=de")).await;
+    let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
+    let message = browser.js(MESSAGE_JS).await;
+    let german = catalogues::texts_of("de");
+    println!("in German: {message}");
+    assert!(
+        failed && message.as_str().unwrap().starts_with(german["error-no-backend"].as_str()),
+        "in German: {message}"
+    );
     let file = support::dist_dir().join("wavepool-standalone.html");
     browser.goto(&format!("file://{}", file.display())).await;
     let failed = browser.wait_for("document.querySelector('#pool').dataset.error === 'true'", READY).await;
