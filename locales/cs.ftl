@@ -72,6 +72,13 @@ viewer-gpu-waiting = Čas GPU: čekám na první časové značky
 viewer-costs = kreslení vody (kaustiky + stínování): { $costs }
 viewer-water = voda: { $cells }² buněk, { $seconds } s simulováno
 viewer-adapter = adaptér: { $name }
+stage-simulation = simulace
+stage-caustics = kaustiky
+stage-maps = mapy
+stage-screen = stínítko
+stage-shading = stínování
+stage-the-tank = vana
+stage-waves = vlny
 viewer-reset-one = výchozí
     .title = Vrátit na výchozí hodnotu
 

@@ -72,6 +72,13 @@ viewer-gpu-waiting = GPU-Zeit: Warte auf die ersten Zeitstempel
 viewer-costs = Wasser zeichnen (Kaustiken + Schattierung): { $costs }
 viewer-water = Wasser: { $cells }² Zellen, { $seconds } s simuliert
 viewer-adapter = Adapter: { $name }
+stage-simulation = Simulation
+stage-caustics = Kaustiken
+stage-maps = Karten
+stage-screen = Schirm
+stage-shading = Schattierung
+stage-the-tank = Wanne
+stage-waves = Wellen
 viewer-reset-one = zurück
     .title = Auf den Standardwert zurücksetzen
 

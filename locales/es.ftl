@@ -71,6 +71,13 @@ viewer-gpu-waiting = Tiempo de GPU: esperando las primeras marcas de tiempo
 viewer-costs = dibujar el agua (cáusticas + sombreado): { $costs }
 viewer-water = agua: { $cells }² celdas, { $seconds } s simulados
 viewer-adapter = adaptador: { $name }
+stage-simulation = simulación
+stage-caustics = cáusticas
+stage-maps = mapas
+stage-screen = pantalla
+stage-shading = sombreado
+stage-the-tank = cubeta
+stage-waves = olas
 viewer-reset-one = inicial
     .title = Volver al valor predeterminado
 

@@ -71,6 +71,13 @@ viewer-gpu-waiting = Время GPU: ждём первых меток време
 viewer-costs = отрисовка воды (каустики + затенение): { $costs }
 viewer-water = вода: { $cells }² ячеек, { $seconds } s смоделировано
 viewer-adapter = адаптер: { $name }
+stage-simulation = моделирование
+stage-caustics = каустики
+stage-maps = карты
+stage-screen = экран
+stage-shading = затенение
+stage-the-tank = ванна
+stage-waves = волны
 viewer-reset-one = сброс
     .title = Вернуть значение по умолчанию
 

@@ -72,6 +72,13 @@ viewer-gpu-waiting = GPU време: чекам прве временске оз
 viewer-costs = цртање воде (каустике + сенчење): { $costs }
 viewer-water = вода: { $cells }² ћелија, { $seconds } s симулирано
 viewer-adapter = адаптер: { $name }
+stage-simulation = симулација
+stage-caustics = каустике
+stage-maps = мапе
+stage-screen = екран
+stage-shading = сенчење
+stage-the-tank = када
+stage-waves = таласи
 viewer-reset-one = врати
     .title = Врати подразумевану вредност
 

@@ -72,6 +72,13 @@ viewer-gpu-waiting = GPU vreme: čekam prve vremenske oznake
 viewer-costs = crtanje vode (kaustike + senčenje): { $costs }
 viewer-water = voda: { $cells }² ćelija, { $seconds } s simulirano
 viewer-adapter = adapter: { $name }
+stage-simulation = simulacija
+stage-caustics = kaustike
+stage-maps = mape
+stage-screen = ekran
+stage-shading = senčenje
+stage-the-tank = kada
+stage-waves = talasi
 viewer-reset-one = vrati
     .title = Vrati podrazumevanu vrednost
 

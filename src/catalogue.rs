@@ -100,6 +100,12 @@ impl Catalogue {
         Cow::Owned(text)
     }
 
+    /// A scene's stage, named as `Scene::stage_names` names it ("the tank": message stage-the-tank).
+    pub fn stage(&self, name: &'static str) -> Cow<'static, str> {
+        let id = format!("stage-{}", name.replace(' ', "-"));
+        self.lookup(&id, None, None).map_or(Cow::Borrowed(name), Cow::Owned)
+    }
+
     pub fn label(&self, p: &ParamSpec) -> Cow<'static, str> {
         self.lookup(&p.message_id(), None, None).map_or(Cow::Borrowed(p.label), Cow::Owned)
     }

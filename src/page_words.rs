@@ -79,6 +79,13 @@ pub const PAGE_WORDS: &[(&str, &str)] = &[
     ("fallback-picture", "A still picture of the water pool (the live demo could not start here)"),
     ("canvas-label", "Water pool. Drag on the water to make ripples, drag the sphere to move it, drag elsewhere to turn the camera. Keys: arrows turn, + and - zoom, Enter makes a drop in the middle, space pauses, G gravity, L light."),
     ("embed-title", "Interactive water pool (wavepool)"),
+    ("stage-simulation", "simulation"),
+    ("stage-caustics", "caustics"),
+    ("stage-maps", "maps"),
+    ("stage-screen", "screen"),
+    ("stage-shading", "shading"),
+    ("stage-the-tank", "the tank"),
+    ("stage-waves", "waves"),
 ];
 
 /// The English text of `id` ("reset", or "reset.title" for an attribute).

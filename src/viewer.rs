@@ -259,7 +259,7 @@ impl Viewer {
                 Some(ms) => {
                     let names = self.demo.stage_names();
                     let stages: Vec<String> =
-                        names.iter().zip(ms).map(|(n, v)| format!("{n} {} ms", w.number(v, 1))).collect();
+                        names.iter().zip(ms).map(|(n, v)| format!("{} {} ms", w.stage(n), w.number(v, 1))).collect();
                     ui.label(w.page_with("viewer-gpu", &[("stages", stages.join(", "))]))
                 }
                 None if self.timer.is_none() => ui.label(w.page("viewer-gpu-none")),
@@ -269,7 +269,9 @@ impl Viewer {
             if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
                 let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
                 self.mode_costs.observe(mode, stages);
-                ui.label(self.words.page_with("viewer-costs", &[("costs", self.mode_costs.summary())]));
+                let spec = table()[ParamId::RenderMode as usize].spec;
+                let costs = self.mode_costs.summary_named(|mode| self.words.choice(spec, mode.value()));
+                ui.label(self.words.page_with("viewer-costs", &[("costs", costs)]));
             }
             let w = &self.words;
             if let Some(note) = self.demo.flat_water_note() {

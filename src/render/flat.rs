@@ -418,12 +418,12 @@ impl ModeCosts {
         self.ms[mode as usize]
     }
 
-    /// "ray-traced 6.2 ms · flat 2.4 ms · split –" (– : not drawn yet).
-    pub fn summary(&self) -> String {
+    /// Each mode's cost, named by `name` (the viewer's words for the `render_mode` choices).
+    pub fn summary_named(&self, name: impl Fn(RenderMode) -> String) -> String {
         [RenderMode::RayTraced, RenderMode::Flat, RenderMode::Split]
             .iter()
-            .zip(["ray-traced", "flat", "split"])
-            .map(|(&mode, name)| match self.of(mode) {
+            .map(|&mode| (mode, name(mode)))
+            .map(|(mode, name)| match self.of(mode) {
                 Some(ms) => format!("{name} {ms:.1} ms"),
                 None => format!("{name} –"),
             })
