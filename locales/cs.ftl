@@ -39,6 +39,7 @@ notice-slow-grid = Snímky tu trvaly déle než sekundu: simulační mřížka j
 fresnel-plot = Odrazivost v závislosti na úhlu dopadu: zvolený Fresnelův model nad přesnou křivkou
 fresnel-angle = úhel dopadu
 fresnel-caption = Odrazivost: zvolený model (modře) proti přesnému (šedě); ze vzduchu plnou čarou, zpod vody čárkovaně; | váš pohled
+status-loading = Načítám vodu…
 status-device-lost = Grafické zařízení bylo ztraceno; spouštím znovu…
 status-waiting = Čekám na volný kontext GPU: posuňte jinou ukázku s vodou na této stránce mimo obrazovku.
 page-intro = Klepnutím nebo tažením po vodě vytvoříte vlnky, tažením plovoucího předmětu ho přesunete, tažením jinde otočíte kamerou; kolečkem nebo sevřením prstů přibližujete. Když je ukázka aktivní: mezerník pozastaví, G upustí předměty, L postaví slunce za vás.

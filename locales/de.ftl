@@ -39,6 +39,7 @@ notice-slow-grid = Bilder dauerten hier über eine Sekunde: Das Simulationsgitte
 fresnel-plot = Reflexionsgrad über dem Einfallswinkel: das gewählte Fresnel-Modell über der exakten Kurve
 fresnel-angle = Einfallswinkel
 fresnel-caption = Reflexionsgrad: gewähltes Modell (blau) über exakt (grau); aus Luft durchgezogen, von unter Wasser gestrichelt; | dein Blick
+status-loading = Das Wasser lädt…
 status-device-lost = Das Grafikgerät ging verloren; Neustart…
 status-waiting = Warte auf einen freien GPU-Kontext: Scrollen Sie eine andere Wasser-Demo auf dieser Seite aus dem Bild.
 page-intro = Klicken oder ziehen Sie auf dem Wasser, um Wellen zu erzeugen, ziehen Sie einen schwimmenden Gegenstand, um ihn zu verschieben, und ziehen Sie anderswo, um die Kamera zu drehen; scrollen oder mit zwei Fingern zoomen. Wenn die Demo den Fokus hat: Leertaste hält an, G lässt die Gegenstände fallen, L stellt die Sonne hinter Sie.

@@ -38,6 +38,7 @@ notice-slow-grid = Aquí los fotogramas tardaban más de un segundo: la malla de
 fresnel-plot = Reflectancia según el ángulo de incidencia: el modelo de Fresnel elegido sobre la curva exacta
 fresnel-angle = ángulo de incidencia
 fresnel-caption = Reflectancia: modelo elegido (azul) sobre el exacto (gris); desde el aire, línea continua; desde bajo el agua, discontinua; | tu vista
+status-loading = Cargando el agua…
 status-device-lost = Se perdió el dispositivo gráfico; reiniciando…
 status-waiting = Esperando un contexto de GPU libre: desplaza fuera de la vista otra demo de agua de esta página.
 page-intro = Haz clic o arrastra sobre el agua para crear ondas, arrastra un objeto flotante para moverlo y arrastra en otro lugar para girar la cámara; desplaza o pellizca para acercar. Con la demo enfocada: la barra espaciadora pausa, G suelta los objetos, L pone el sol detrás de ti.

@@ -39,6 +39,7 @@ notice-slow-grid = Kadrovi su ovde trajali duže od sekunde: mreža simulacije j
 fresnel-plot = Refleksija u zavisnosti od upadnog ugla: izabrani Frenelov model preko tačne krive
 fresnel-angle = upadni ugao
 fresnel-caption = Refleksivnost: izabrani model (plavo) preko tačnog (sivo); iz vazduha puna linija, ispod vode isprekidana; | vaš pogled
+status-loading = Učitavam vodu…
 status-device-lost = Grafički uređaj je izgubljen; ponovo pokrećem…
 status-waiting = Čekam slobodan GPU kontekst: skrolujte drugu demonstraciju vode na ovoj stranici van vidokruga.
 page-intro = Kliknite ili prevucite po vodi da napravite talasiće, prevucite plutajući predmet da ga pomerite, prevucite drugde da okrenete kameru; točkićem ili štipanjem zumirajte. Kad je demo u fokusu: razmak pauzira, G ispušta predmete, L stavlja sunce iza vas.

@@ -43,6 +43,7 @@ pub const PAGE_WORDS: &[(&str, &str)] = &[
         "fresnel-caption",
         "Reflectance: chosen model (blue) over exact (grey); from air solid, from under water dashed; | your view",
     ),
+    ("status-loading", "Loading the water…"),
     ("status-device-lost", "The graphics device was lost; restarting…"),
     ("status-waiting", "Waiting for a free GPU context: scroll another water demo on this page out of view."),
     ("page-intro", "Click or drag on the water to make ripples, drag a floating object to move it, drag elsewhere to turn the camera; scroll or pinch to zoom. With the demo focused: space pauses, G drops the objects, L puts the sun behind you."),

@@ -200,6 +200,28 @@ fn the_english_catalogue_is_what_the_tables_say_now() {
     assert!(written == now, "locales/en.ftl is stale: write it again with `cargo run -- messages > locales/en.ftl`");
 }
 
+/// The English words web/i18n.js holds for the time before the core (which holds English's) has
+/// loaded are `page_words.rs`'s.
+#[test]
+fn the_words_the_page_shows_before_the_core_loads_are_the_english_catalogues() {
+    let i18n = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("web/i18n.js"))
+        .expect("web/i18n.js");
+    let block = i18n
+        .split("const BEFORE_CORE = Object.freeze({")
+        .nth(1)
+        .and_then(|b| b.split("});").next())
+        .expect("BEFORE_CORE");
+    let mut count = 0;
+    for line in block.lines().filter(|l| l.contains(": ")) {
+        let (id, text) = line.trim().trim_end_matches(',').split_once(": ").expect("id: text");
+        let (id, text) = (id.trim_matches('"'), text.trim_matches('"'));
+        assert_eq!(wavepool::page_words::english(id), Some(text), "web/i18n.js's {id}");
+        count += 1;
+    }
+    println!("{count} words before the core");
+    assert!(count >= 2, "BEFORE_CORE read {count} entries");
+}
+
 #[test]
 fn every_catalogue_has_every_english_message_with_the_same_variables() {
     let read = |name: &str| {

@@ -332,8 +332,14 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
     let ready = browser.wait_for("window.__messages.some((m) => m && m.type === 'wavepool:ready')", READY).await;
     let messages = browser.js("return window.__messages;").await;
     let rect = Rect::from_js(&browser.js("const r = document.getElementById('frame').getBoundingClientRect(); return { left: r.left, top: r.top, width: r.width, height: 300 };").await);
-    tokio::time::sleep(Duration::from_millis(500)).await;
-    let spread = browser.screenshot().await.luma_spread(Rect { y: rect.y + 60, ..rect });
+    // The frame's picture, once the browser has put it on the screen.
+    let mut spread = 0.0;
+    for _ in 0..40 {
+        spread = browser.screenshot().await.luma_spread(Rect { y: rect.y + 60, ..rect });
+        if spread > 12.0 {
+            break;
+        }
+    }
     let requests = server.requests()[before..].to_vec();
     println!("sandboxed frame: messages {messages}, luma spread {spread:.1}, requests {requests:?}");
     assert!(ready, "no wavepool:ready from the sandboxed frame: {messages}");
@@ -390,7 +396,9 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
         .collect();
     browser.goto(&server.url(&format!("/test/sandboxed.html?sandbox=none&src={encoded}"))).await;
     let ready = browser.wait_for("window.__messages.some((m) => m && m.type === 'wavepool:ready')", READY).await;
-    tokio::time::sleep(Duration::from_millis(500)).await;
+    // The height the frame page asks for once its pool is laid out.
+    let tall = "window.__messages.some((m) => m && m.type === 'wavepool:height' && m.height === 600)";
+    browser.wait_for(tall, Duration::from_secs(10)).await;
     let messages = browser.js("return window.__messages;").await;
     let inside = browser
         .js("const d = document.getElementById('frame').contentWindow.demo;

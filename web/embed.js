@@ -78,15 +78,18 @@ export async function mount(element, options = {}) {
   live.add(handle);
   pending.set(element, handle);
   try {
-    handle._status("Loading the water…");
+    // The language: its catalogue fetched while the core loads and the GPU starts (English
+    // needs none: its words are the core's; until the core is here i18n.js has the status's).
+    const language = chooseLanguage(options && options.lang, element);
+    handle._pageLanguage = chooseLanguage(null, element);
+    const words = (handle._wordsLoading = handle._loadWords(language));
+    handle._status(handle.text("status-loading"));
+    words.then((w) => w.tag !== "en" && !handle._core && !handle._dead && handle._status(w.page("status-loading")));
     await loadCore();
     const table = paramTable();
     const opts = readOptions(options, table);
     handle._table = table;
     handle._opts = opts;
-    // The language: its catalogue fetched while the GPU starts (English needs none).
-    handle._pageLanguage = chooseLanguage(null, element);
-    const words = (handle._wordsLoading = handle._loadWords(chooseLanguage(opts.lang, element)));
     // A GPU context only when near the viewport (lazy) and one of the page's few is free.
     handle._eager = !opts.lazy;
     handle._unwatch = watchNear(element, (near) => handle._nearChanged(near));

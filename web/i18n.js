@@ -53,6 +53,13 @@ export function chooseLanguage(option, element) {
   return declared ? supportedTag(declared) || "en" : browserLanguage();
 }
 
+/** The English words a demo can show before the core (which holds English's) has loaded, or
+ * when it could not load: as src/page_words.rs has them (a test holds the two the same). */
+const BEFORE_CORE = Object.freeze({
+  "status-loading": "Loading the water…",
+  "fallback-picture": "A still picture of the water pool (the live demo could not start here)",
+});
+
 let fluent = null; // the Fluent runtime's exports, once loaded
 
 /** English's words (the core's tables; the core must be loaded). */
@@ -95,8 +102,20 @@ export class Words {
   constructor(tag, bundle) {
     this.tag = tag;
     this._bundle = bundle;
-    this._english = pageWords();
     this._formats = new Map();
+  }
+
+  // English's words: the core's, or before it has loaded (or where it could not) the few a
+  // page can need by then.
+  get _english() {
+    if (!this.__english) {
+      try {
+        this.__english = pageWords();
+      } catch (_) {
+        return BEFORE_CORE;
+      }
+    }
+    return this.__english;
   }
 
   // The message `id`'s text (`attribute`: one of its attributes), or null where it has none.

@@ -87,7 +87,7 @@ export function readOptions(options, table) {
       if (v.length === 3 && v.every(Number.isFinite)) out.camera = v;
       else warn(`camera "${value}" is not "yaw,pitch,distance" (three numbers); using the default view`);
     } else if (key === "lang") {
-      out.lang = value ? String(value) : null; // i18n.js warns if there is no such catalogue
+      out.lang = value ? String(value) : null; // chosen and checked before (i18n.js, at mount)
     } else if (key === "sketch") {
       out.sketch = String(value); // read by the core, which warns if it cannot
     } else if (key === "aspect") {
