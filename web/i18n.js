@@ -62,7 +62,7 @@ const BEFORE_CORE = Object.freeze({
 
 let fluent = null; // the Fluent runtime's exports, once loaded
 
-/** English's words (the core's tables; the core must be loaded). */
+/** English's words: the core's tables (before the core has loaded, BEFORE_CORE's few). */
 export function englishWords() {
   return new Words("en", null);
 }
