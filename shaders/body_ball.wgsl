@@ -41,10 +41,10 @@ fn ball_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     return ObjectHit(t, n, ball_albedo(n));
 }
 
-// Whether p lies inside the ball (inside_bodies).
-fn ball_inside(p: vec3<f32>) -> bool {
+// Signed distance (m) from the ball's surface, negative inside (bodies_field).
+fn ball_field(p: vec3<f32>) -> f32 {
     let u = ball_uniform();
-    return distance(p, u.xyz) < u.w;
+    return distance(p, u.xyz) - u.w;
 }
 
 fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {

@@ -69,18 +69,24 @@ fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, i: i32) -> 
     return smoothstep(0.85, 1.1, length(o + d * t));
 }
 
-// Whether p lies inside one of the duck's traced parts (inside_bodies).
-fn duck_inside(p: vec3<f32>) -> bool {
-    if (scene.bodies[DUCK_SLOT + 4].w <= 0.0 || distance(p, scene.bodies[DUCK_SLOT + 4].xyz) > scene.bodies[DUCK_SLOT + 4].w) {
-        return false;
+// Signed distance (m) from the duck's traced parts, negative inside one (bodies_field): per
+// part its unit-ball distance scaled by its shortest radius (exact on a sphere, of the right
+// sign and smooth elsewhere, which is what a waterline's fade needs); outside the bounding
+// sphere, 1 m more than the distance from that: far from any waterline.
+fn duck_field(p: vec3<f32>) -> f32 {
+    let bound = scene.bodies[DUCK_SLOT + 4];
+    let outside = distance(p, bound.xyz) - bound.w;
+    if (bound.w <= 0.0 || outside > 0.0) {
+        return max(outside, 0.0) + 1.0;
     }
     let local = transpose(duck_rotation()) * (p - scene.bodies[DUCK_SLOT + 3].xyz);
-    var inside = false;
+    var d = NO_HIT;
     for (var i = 0; i < DUCK_PARTS; i++) {
-        let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-        inside = inside || dot(o, o) < 1.0;
+        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+        let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+        d = min(d, (length(o) - 1.0) * min(radii.x, min(radii.y, radii.z)));
     }
-    return inside;
+    return d;
 }
 
 // Nothing for the pool's ambient light: the duck is small next to it.

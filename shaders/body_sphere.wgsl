@@ -22,10 +22,10 @@ fn sphere_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     return ObjectHit(intersect_sphere(origin, dir, u.xyz, u.w), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
 }
 
-// Whether p lies inside the sphere (the water's surface is not drawn there: inside_bodies).
-fn sphere_inside(p: vec3<f32>) -> bool {
+// Signed distance (m) from the sphere's surface, negative inside (bodies_field).
+fn sphere_field(p: vec3<f32>) -> f32 {
     let u = sphere_uniform();
-    return distance(p, u.xyz) < u.w;
+    return distance(p, u.xyz) - u.w;
 }
 
 // Light the sphere lets through along a segment (see sphere_visibility).

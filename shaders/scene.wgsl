@@ -17,7 +17,8 @@ struct Scene {
     water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x unused (the sRGB encoding is the constant ENCODE_SRGB);
-                               // y debug view (0 none, see debug_view.wgsl)
+                               // y debug view (0 none, see debug_view.wgsl), z the bodies'
+                               // outlines and waterlines blended (0/1)
     optics: vec4<f32>,         // x highlight exponent s, y and z cosines of the sun disk's edge
                                // and core (optics::sun_disk_cosines)
     absorption: vec4<f32>,     // xyz Beer–Lambert absorption of the water per channel (1/m)

@@ -54,7 +54,7 @@ pub struct BodyKind {
     pub vertex_stride: u64,
     /// Its WGSL: `<name>_hit`, `<name>_light` (what it lets through along a segment),
     /// `<name>_shade` (its colour at a point; `direct`: seen directly, not in a traced ray),
-    /// `<name>_occlusion`, `<name>_inside` (whether a point lies in it) and the mesh's `vs_<name>`, `fs_<name>`; it reads its
+    /// `<name>_occlusion`, `<name>_field` (signed distance from its hull, m: negative inside; for a hull of several parts a bound of it) and the mesh's `vs_<name>`, `fs_<name>`; it reads its
     /// uniform at `<NAME>_SLOT`.
     pub wgsl: &'static str,
     /// WGSL its code reads, written from Rust: constants, and code generated from its tables
@@ -233,8 +233,10 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
 /// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
 /// the code that asks every kind present: the nearest hit (`hit_bodies`), its colour
-/// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
-/// they take from a point (`bodies_occlusion`).
+/// (`body_colour`; `direct`: as the eye sees it, with its coat's mirror, not along a traced ray), the light they let through (`objects_visibility`) and the ambient light
+/// they take from a point (`bodies_occlusion`) and the signed distance from the nearest hull
+/// (`bodies_field`: x any kind's, the water's surface is not drawn inside one; y of the kinds
+/// drawn as traced (`edge`), whose waterline the water fades out at).
 pub fn wgsl(present: u32) -> String {
     let mut out = format!(
         "const BODY_SLOTS: u32 = {UNIFORM_SLOTS}u;\nconst HAS_BODIES: bool = {};\n",
@@ -262,9 +264,9 @@ pub fn wgsl(present: u32) -> String {
         ))
     );
     out += &format!(
-        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
+        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under, false);\n    }}\n"
+            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under, direct);\n    }}\n"
         ))
     );
     out += &format!(
@@ -272,8 +274,15 @@ pub fn wgsl(present: u32) -> String {
         each(&|name, upper| format!("    if (HAS_{upper}) {{\n        light *= {name}_light(p, dir, t_max);\n    }}\n"))
     );
     out += &format!(
-        "fn inside_bodies(p: vec3<f32>) -> bool {{\n    var inside = false;\n{}    return inside;\n}}\n",
-        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        inside = inside || {name}_inside(p);\n    }}\n"))
+        "fn bodies_field(p: vec3<f32>) -> vec2<f32> {{\n    var d = vec2<f32>(NO_HIT);\n{}    return d;\n}}\n",
+        KINDS
+            .iter()
+            .map(|k| {
+                let (name, upper) = (k.name, k.name.to_uppercase());
+                let exact = if k.edge { format!("        d.y = min(d.y, {name}_field(p));\n") } else { String::new() };
+                format!("    if (HAS_{upper}) {{\n        d.x = min(d.x, {name}_field(p));\n{exact}    }}\n")
+            })
+            .collect::<String>()
     );
     out += &format!(
         "fn bodies_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {{\n    var o = 0.0;\n{}    return o;\n}}\n",

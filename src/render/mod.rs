@@ -142,7 +142,8 @@ pub struct Renderer {
     /// The water surface traces the objects only in their regions (`regions::surface_regions`);
     /// off, everywhere (for tests: the regions must not change the picture).
     object_regions: bool,
-    /// The bodies' outlines are blended in (`BodyKind::edge`); off for tests to compare with.
+    /// The bodies' outlines are blended in (`BodyKind::edge`), and the water at their
+    /// waterlines (`shaders/water.wgsl`); off for tests to compare with.
     body_outlines: bool,
 }
 
@@ -302,8 +303,9 @@ impl Renderer {
         self.object_regions = on;
     }
 
-    /// Whether the bodies' outlines are blended in (the default) or left as the mesh's
-    /// pixels draw them (for tests to compare with).
+    /// Whether the bodies' outlines and the water at their waterlines are blended in (the
+    /// default) or left as the pixels draw them, each wholly in or out (for tests to compare
+    /// with).
     #[doc(hidden)]
     pub fn set_body_outlines(&mut self, on: bool) {
         self.body_outlines = on;

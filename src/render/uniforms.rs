@@ -69,7 +69,12 @@ impl Renderer {
             refracted_sun: refracted.extend(0.0).to_array(),
             pool: [self.settings.pool.half_width, self.settings.pool.depth, self.settings.pool.rim, view.tile_gloss],
             water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
-            output: [0.0, view.debug.map_or(0.0, |d| d.texture as u32 as f32), 0.0, 0.0],
+            output: [
+                0.0,
+                view.debug.map_or(0.0, |d| d.texture as u32 as f32),
+                if self.body_outlines { 1.0 } else { 0.0 },
+                0.0,
+            ],
             optics: {
                 let (edge, core) = optics::sun_disk_cosines(view.optics.sun_size);
                 [view.optics.shininess, edge, core, 0.0]
