@@ -10,7 +10,7 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
     let body = hit_bodies(origin, dir);
     if (body.t < t) {
         t = body.t;
-        colour = body_colour(body, origin + dir * t, dir, true, false);
+        colour = body_colour(body, origin + dir * t, dir, true);
     } else {
         let hit = origin + dir * t;
         colour = pool_colour_at_hit(hit, lod, true);
@@ -33,7 +33,7 @@ fn trace_air(origin: vec3<f32>, dir: vec3<f32>, normal: vec3<f32>, t_exit: f32, 
     let t = t_exit;
     let body = hit_bodies(origin, dir);
     if (body.t < t) {
-        return body_colour(body, origin + dir * body.t, dir, false, false);
+        return body_colour(body, origin + dir * body.t, dir, false);
     }
     let hit = origin + dir * t;
     if (hit.y < rim() - 1.0e-3) {

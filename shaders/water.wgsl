@@ -92,43 +92,26 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     }
     // Water inside a body (the surface's coarse triangles rise through a hull near its
     // waterline) is not drawn: the body's own pixel, drawn before, stays (its traced rays
-    // would start inside the hull). Within a pixel's footprint outside the hull the water
-    // covers only its share of the pixel and the body at its waterline the rest, so the
-    // waterline has no stair-steps. Discarded last, so
-    // every derivative above was taken with all four pixels of the quad.
+    // would start inside the hull). Within a pixel's footprint outside a hull drawn as it is
+    // traced, the water covers only its share of the pixel (its alpha, blended over the body
+    // drawn before), so the waterline has no stair-steps. Discarded last, so every derivative
+    // above was taken with all four pixels of the quad.
+    var out = finish(with_deck_edge(colour, edge));
     if (HAS_BODIES) {
         let footprint = max(length(dpdx(in.world)), length(dpdy(in.world)));
         let field = bodies_field(in.world);
         if (field.x < 0.0) {
             discard;
         }
-        // Faded at the hulls drawn as they are traced (field.y); output.z 0: each pixel wholly
-        // in or out (the outlines off, for tests to compare with).
-        let share = select(1.0, clamp(field.y / max(footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
-        if (share < 1.0) {
-            let body = waterline_body(in.world, field.y, footprint);
-            colour = mix(body.rgb, colour, mix(1.0, share, body.a));
+        // output.z 0: each pixel wholly in or out (the outlines off, for tests to compare with).
+        out.a = select(1.0, clamp(field.y / max(footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
+        // Where the eye's ray passes by the hull (its outline meets the waterline) nothing of
+        // the body lies behind to blend with: the pixel is the water's.
+        if (out.a < 1.0 && hit_bodies(scene.eye.xyz, view).t >= NO_HIT) {
+            out.a = 1.0;
         }
     }
-    return finish(with_deck_edge(colour, edge));
-}
-
-// The body at its waterline next to the water's point p (d: bodies_field(p).y, within a pixel
-// of 0), as the eye sees it: p moved onto the hull by one Newton step along the field's
-// gradient, the body's shading there (its paint and coat above the water); alpha 0 where the
-// eye does not see that point (behind the body's outline: the water's pixel stays whole). The
-// eye's own ray at the pixel would hit the hull's part under the water, behind the surface.
-fn waterline_body(p: vec3<f32>, d: f32, footprint: f32) -> vec4<f32> {
-    let e = 1.0e-3;
-    let grad = vec3<f32>(bodies_field(p + vec3<f32>(e, 0.0, 0.0)).y, bodies_field(p + vec3<f32>(0.0, e, 0.0)).y, bodies_field(p + vec3<f32>(0.0, 0.0, e)).y) - d;
-    let on_hull = p - grad * (d * e / max(dot(grad, grad), 1.0e-12));
-    let dir = normalize(on_hull - scene.eye.xyz);
-    let body = hit_bodies(scene.eye.xyz, dir);
-    let q = scene.eye.xyz + dir * body.t;
-    if (body.t >= NO_HIT || distance(q, on_hull) > 2.0 * footprint) {
-        return vec4<f32>(0.0);
-    }
-    return vec4<f32>(through_water(body_colour(body, q, dir, lit_under(q), true), scene.eye.xyz, q), 1.0);
+    return out;
 }
 
 // The surface's colour for light of refractive index `ior` (dispersion): the ray refracted by

@@ -34,7 +34,7 @@ fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
     if (hit.t >= NO_HIT) {
         return behind;
     }
-    return vec4<f32>(body_colour(hit, p + up * hit.t, up, false, false), 1.0);
+    return vec4<f32>(body_colour(hit, p + up * hit.t, up, false), 1.0);
 }
 
 // The share of the sun's light on the floor `depth` m under the surface point p (seen along

@@ -233,7 +233,7 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
 /// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
 /// the code that asks every kind present: the nearest hit (`hit_bodies`), its colour
-/// (`body_colour`; `direct`: as the eye sees it, with its coat's mirror, not along a traced ray), the light they let through (`objects_visibility`) and the ambient light
+/// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
 /// they take from a point (`bodies_occlusion`) and the signed distance from the nearest hull
 /// (`bodies_field`: x any kind's, the water's surface is not drawn inside one; y of the kinds
 /// drawn as traced (`edge`), whose waterline the water fades out at).
@@ -264,9 +264,9 @@ pub fn wgsl(present: u32) -> String {
         ))
     );
     out += &format!(
-        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
+        "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under, direct);\n    }}\n"
+            "    if (HAS_{upper} && hit.kind == {upper}_KIND) {{\n        return {name}_shade(p, hit.normal, hit.albedo, dir, under, false);\n    }}\n"
         ))
     );
     out += &format!(

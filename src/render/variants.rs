@@ -78,8 +78,15 @@ impl VariantBuild {
         let pool_attributes = &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
         let back = Some(wgpu::Face::Back);
         let scene = |label: &str, module: &wgpu::ShaderModule, vs: &str, fs: &str, attributes, stride, cull| {
-            let part =
-                ScenePart { label, module, entries: [vs, fs], vertex: (attributes, stride), cull, overlay: false };
+            let part = ScenePart {
+                label,
+                module,
+                entries: [vs, fs],
+                vertex: (attributes, stride),
+                cull,
+                overlay: false,
+                blended: false,
+            };
             scene_pipeline(device, features, targets, part)
         };
         if self.caustics.is_none() {
@@ -88,7 +95,18 @@ impl VariantBuild {
             // Culling off: front faces are the surface seen from above, back faces from below.
             let attributes = &wgpu::vertex_attr_array![0 => Float32x2];
             let module = module("water surface", shaders::WATER);
-            self.surface = Some(scene("water surface", &module, "vs_surface", "fs_surface", attributes, 8, None));
+            // With bodies the surface is blended by its alpha: the share of a pixel it covers
+            // at a waterline, over the body drawn before (1 elsewhere).
+            let part = ScenePart {
+                label: "water surface",
+                module: &module,
+                entries: ["vs_surface", "fs_surface"],
+                vertex: (attributes, 8),
+                cull: None,
+                overlay: false,
+                blended: features.bodies != 0,
+            };
+            self.surface = Some(scene_pipeline(device, features, targets, part));
         } else if self.pool.is_none() {
             let module = module("pool", shaders::POOL);
             self.pool = Some(scene("pool", &module, "vs_pool", "fs_pool", pool_attributes, 24, back));
@@ -125,6 +143,7 @@ impl VariantBuild {
                         vertex: (attributes, stride),
                         cull: back,
                         overlay: true,
+                        blended: true,
                     };
                     scene_pipeline(device, features, targets, part)
                 }));
@@ -152,8 +171,8 @@ impl VariantBuild {
 }
 
 /// A pipeline of the scene pass: its label and shader module, its vertex and fragment entry
-/// points, the mesh's attributes and stride (bytes), its culling; an overlay is blended by its
-/// alpha over what is drawn and leaves the depth as it is.
+/// points, the mesh's attributes and stride (bytes), its culling; a blended part is blended by
+/// its alpha over what is drawn, and an overlay (blended) also leaves the depth as it is.
 struct ScenePart<'a> {
     label: &'a str,
     module: &'a wgpu::ShaderModule,
@@ -161,6 +180,7 @@ struct ScenePart<'a> {
     vertex: (&'a [wgpu::VertexAttribute], u64),
     cull: Option<wgpu::Face>,
     overlay: bool,
+    blended: bool,
 }
 
 /// `part`'s pipeline for `features`.
@@ -170,7 +190,7 @@ fn scene_pipeline(
     targets: &PipelineTargets<'_>,
     part: ScenePart<'_>,
 ) -> wgpu::RenderPipeline {
-    let ScenePart { label, module, entries, vertex, cull, overlay } = part;
+    let ScenePart { label, module, entries, vertex, cull, overlay, blended } = part;
     // The mirrored camera (the flat water's reflection) turns every triangle's winding over.
     let front_face = if features.clip > 0 { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw };
     mesh_pipeline(
@@ -186,7 +206,7 @@ fn scene_pipeline(
             cull,
             front_face,
             format: targets.format,
-            blend: overlay.then_some(wgpu::BlendState::ALPHA_BLENDING),
+            blend: blended.then_some(wgpu::BlendState::ALPHA_BLENDING),
             write_mask: wgpu::ColorWrites::ALL,
             depth: if overlay { DepthUse::Test } else { DepthUse::TestAndWrite },
         },
