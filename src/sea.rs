@@ -320,6 +320,9 @@ pub struct SeaVariant {
     pub island: Option<island::Place>,
     /// The grid's cells outlined.
     pub grid_lines: bool,
+    /// Whitecaps: the waves can break (`SeaWaves::may_break`), so each pixel reads the
+    /// cascades' Jacobian (its carry's gradient) to find them.
+    pub whitecaps: bool,
     /// The whitecaps kept over time (where the device renders into float textures).
     pub whitecap_map: bool,
     /// The waves' caustics on the shallows' floor (with the island and the `caustics`
@@ -339,17 +342,18 @@ pub const WHITECAP_MAP_HALF_WIDTH: f32 = 128.0;
 pub const WHITECAP_MAP_TEXELS: u32 = 128;
 pub const WHITECAP_LIFETIME: f32 = 1.0;
 
-/// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`, `WHITECAP_MAP`,
+/// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`, `WHITECAPS`, `WHITECAP_MAP`,
 /// `SHALLOW_CAUSTICS`, `MIRRORED_BODIES`).
 pub fn wgsl_constants(variant: SeaVariant) -> String {
-    let SeaVariant { island, grid_lines, whitecap_map, shallow_caustics, mirrored_bodies } = variant;
+    let SeaVariant { island, grid_lines, whitecaps, whitecap_map, shallow_caustics, mirrored_bodies } = variant;
     let [r, g, b] = deep_water_albedo();
     let [ar, ag, ab] = SEA_ABSORPTION;
     let absorption = format!(
         "const SEA_ABSORPTION: vec3<f32> = vec3<f32>({ar:?}, {ag:?}, {ab:?});\nconst SEA_SCATTERING: f32 = {SEA_SCATTERING:?};\n"
     );
     let switches = format!(
-        "const ISLAND: bool = {};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAP_MAP: bool = {whitecap_map};\n\
+        "const ISLAND: bool = {};\nconst GRID_LINES: bool = {grid_lines};\nconst WHITECAPS: bool = {whitecaps};\n\
+         const WHITECAP_MAP: bool = {whitecap_map};\n\
          const SHALLOW_CAUSTICS: bool = {shallow_caustics};\nconst MIRRORED_BODIES: bool = {mirrored_bodies};\n\
          const WHITECAP_MAP_HALF_WIDTH: f32 = {WHITECAP_MAP_HALF_WIDTH:?};\nconst WHITECAP_MAP_TEXELS: u32 = {WHITECAP_MAP_TEXELS}u;\n",
         island.is_some()

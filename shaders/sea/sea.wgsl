@@ -122,9 +122,11 @@ struct SeaOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
     @location(1) rest: vec2<f32>,
-    // det of the map x0 -> x0 - lambda D at the vertex: below 1 where the water is squeezed.
-    @location(2) jacobian: f32,
+    // With whitecaps, the longer cascades' carry gradient at the vertex (add_gradient); the
+    // finest ones', shorter than the grid's cells, each pixel reads itself.
+    @location(2) carry_gradient: vec3<f32>,
 }
+
 
 // Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
 @vertex
@@ -143,7 +145,7 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
     let footprint = sea.cells.z * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
     let waves = waves_at(rest, footprint);
     var out: SeaOut;
-    out.jacobian = waves.jacobian;
+    out.carry_gradient = waves.long_gradient;
     let moved = rest - sea.waves.x * waves.carry;
     out.world = vec3<f32>(moved.x, waves.height + ripples_at(rest, footprint).x, moved.y);
     out.rest = rest;
@@ -157,9 +159,16 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     var slope = vec2<f32>(0.0);
     var removed = 0.0;
     var finest = vec2<f32>(0.0); // the last cascade's slope in its frame (shallows_caustics)
+    var carry_gradient = in.carry_gradient; // with whitecaps, for the pixel's own Jacobian
     for (var c = 0; c < CASCADES; c++) {
         let w = slope_weight(c, footprint);
-        let s = cascade_texel(sea_surface, c, to_cascade(c, in.rest), sea.cascades[c].z).yz;
+        let local = to_cascade(c, in.rest);
+        let surface = cascade_texel(sea_surface, c, local, sea.cascades[c].z);
+        if WHITECAPS && c >= PIXEL_GRADIENT_FROM {
+            let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
+            carry_gradient = add_gradient(carry_gradient, c, cascade_weight(c, footprint), displacement, surface);
+        }
+        let s = surface.yz;
         finest = s;
         slope += w * from_cascade(c, s);
         removed += (1.0 - w * w) * sea.cascades[c].w;
@@ -172,7 +181,13 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let dn = dot(dpdx(n), dpdx(n)) + dot(dpdy(n), dpdy(n));
     specular_spread = 1.0 / (1.0 + scene.optics.x * (0.5 * removed + dn / 24.0));
     var under = deep_water();
-    var foam = whitecap(in.jacobian);
+    // The whitecaps from the pixel's own Jacobian: the grid's vertices' Jacobian, interpolated,
+    // would cut them into slivers along its triangles.
+    var foam = 0.0;
+    if WHITECAPS {
+        let l = sea.waves.x * carry_gradient;
+        foam = whitecap_foam((1.0 - l.x) * (1.0 - l.z) - l.y * l.y, in.rest, footprint);
+    }
     if WHITECAP_MAP {
         foam = max(foam, kept_whitecaps(in.rest));
     }

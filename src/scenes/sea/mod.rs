@@ -230,6 +230,7 @@ impl SeaScene {
             variant: sea::SeaVariant {
                 island: settings.island,
                 grid_lines: settings.grid_lines,
+                whitecaps: sea.may_break,
                 whitecap_map: sea.may_break,
                 shallow_caustics: settings.island.is_some() && sh.params.flag(ParamId::Caustics),
                 mirrored_bodies: extras.mirrored_bodies && view.bodies.iter().any(Option::is_some),
