@@ -316,3 +316,47 @@ fn a_body_over_the_shallows_shades_the_sand_under_it() {
     );
     assert!(share > 0.005, "no shadow of the duck on the sand: {share}");
 }
+
+/// In the sea, as in the pool, the water at a sphere's waterline covers only its share of each
+/// pixel: with that blending off for comparison, the pixels that change lie round the sphere
+/// and between their neighbours' colours.
+#[test]
+fn the_seas_water_is_blended_at_a_spheres_waterline_and_nowhere_else() {
+    let sphere = BodyId::named("sphere").expect("the sphere");
+    let (w, h) = (320u32, 240u32);
+    let frame = |outlines: bool| {
+        let mut d = sea_with(sphere.bit(), 40.0);
+        d.set_body_outlines(outlines);
+        let image = render(&mut d, w, h, 30, 1.0 / 60.0);
+        let centre = d.sea_body(sphere).expect("the sea's bodies").pose.position;
+        let radius = d.params.get(ParamId::SphereRadius) * patch_scale();
+        let size = glam::Vec2::new(w as f32, h as f32);
+        let middle = d.camera().project(centre, size).expect("the sphere is in the frame");
+        let right = d.camera().view().inverse().col(0).truncate();
+        let edge = d.camera().project(centre + right * radius, size).expect("the sphere is in the frame");
+        (image, middle, middle.distance(edge))
+    };
+    let ((blended, middle, radius), (stepped, _, _)) = (frame(true), frame(false));
+    let (mut changed, mut astray) = (0, 0);
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let i = ((y * w + x) * 4) as usize;
+            if (0..3).all(|k| blended.rgba[i + k].abs_diff(stepped.rgba[i + k]) <= 2) {
+                continue;
+            }
+            changed += 1;
+            let around: Vec<f32> = (0..9).map(|k| stepped.unit_luma(x + k % 3 - 1, y + k / 3 - 1)).collect();
+            let (lo, hi) = around.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &l| (lo.min(l), hi.max(l)));
+            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.unit_luma(x, y));
+            let near = glam::Vec2::new(x as f32 + 0.5, y as f32 + 0.5).distance(middle) <= radius + 3.0;
+            if !(between && near) {
+                astray += 1;
+            }
+        }
+    }
+    println!("{changed} pixels blended at the sphere's waterline (radius {radius:.1} px), {astray} away from it or outside their neighbours' colours");
+    assert!(changed >= 20, "only {changed} pixels of the waterline were blended");
+    // A few pixels at the waterline's ends, where it meets the outline, take some of the
+    // hull's part under the water behind them, lighter than any of their neighbours.
+    assert!(astray * 10 <= changed, "{astray} of {changed} blended pixels are not at the waterline");
+}

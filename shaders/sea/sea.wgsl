@@ -156,6 +156,8 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
 @fragment
 fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let footprint = max(length(dpdx(in.rest)), length(dpdy(in.rest)));
+    // The pixel's size on the water as drawn (m), for the bodies' waterlines.
+    let world_footprint = max(length(dpdx(in.world)), length(dpdy(in.world)));
     var slope = vec2<f32>(0.0);
     var removed = 0.0;
     var finest = vec2<f32>(0.0); // the last cascade's slope in its frame (shallows_caustics)
@@ -223,7 +225,22 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     if GRID_LINES {
         seen = mix(seen, GRID_LINE_COLOUR * light_on_sea(), 0.6 * grid_line(in.rest));
     }
-    return finish(seen);
+    var out = finish(seen);
+    // Near the bodies (their own variant, blended by its alpha) the water is not drawn inside
+    // a hull, and at the waterline of one drawn as it is traced it covers only its share of
+    // the pixel, over the body drawn before, as in the pool (shaders/water.wgsl).
+    if MIRRORED_BODIES {
+        let field = bodies_field(in.world);
+        if field.x < 0.0 {
+            discard;
+        }
+        // output.z 0: each pixel wholly in or out (the outlines off, for tests to compare with).
+        out.a = select(1.0, clamp(field.y / max(world_footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
+        if out.a < 1.0 && hit_bodies(sea.eye.xyz, v).t >= NO_HIT {
+            out.a = 1.0;
+        }
+    }
+    return out;
 }
 
 // Where the grid drew nothing: the sky, and between the grid's far edge and the horizon the sea

@@ -101,12 +101,18 @@ impl IslandDrawing {
             contents: bytemuck::cast_slice(&indices),
             usage: wgpu::BufferUsages::INDEX,
         });
-        let shallows = mesh_pipeline(device, p, "sea shallows", ["vs_sea", "fs_sea"], (p.format, None));
-        let land = mesh_pipeline(device, p, "island", ["vs_island", "fs_island"], (p.format, Some(wgpu::Face::Back)));
+        let shallows = mesh_pipeline(device, p, "sea shallows", ["vs_sea", "fs_sea"], (p.format, None, None));
+        let land =
+            mesh_pipeline(device, p, "island", ["vs_island", "fs_island"], (p.format, Some(wgpu::Face::Back), None));
         let into_mirror = IslandPipelines { layouts: [p.layouts[1]; 2], ..*p };
         let entries = ["vs_island_mirrored", "fs_island_mirrored"];
-        let mirrored =
-            mesh_pipeline(device, &into_mirror, "island mirrored", entries, (MIRROR_FORMAT, Some(wgpu::Face::Front)));
+        let mirrored = mesh_pipeline(
+            device,
+            &into_mirror,
+            "island mirrored",
+            entries,
+            (MIRROR_FORMAT, Some(wgpu::Face::Front), None),
+        );
         let (least, most, _) = island::extent_above(-island::SEE_DEPTH, place);
         let water = (Vec3::new(least[0], 0.0, least[1]), Vec3::new(most[0], 0.0, most[1]));
         let (least, most, top) = island::extent_above(0.0, place);
@@ -223,7 +229,7 @@ pub(super) fn mesh_pipeline(
     p: &IslandPipelines<'_>,
     label: &str,
     entries: [&str; 2],
-    (format, cull): (wgpu::TextureFormat, Option<wgpu::Face>),
+    (format, cull, blend): (wgpu::TextureFormat, Option<wgpu::Face>, Option<wgpu::BlendState>),
 ) -> wgpu::RenderPipeline {
     let [vertex_entry, fragment_entry] = entries;
     crate::render::scene_parts::mesh_pipeline(
@@ -239,7 +245,7 @@ pub(super) fn mesh_pipeline(
             cull,
             front_face: wgpu::FrontFace::Ccw,
             format,
-            blend: None,
+            blend,
             write_mask: wgpu::ColorWrites::ALL,
             depth: crate::render::scene_parts::DepthUse::TestAndWrite,
         },

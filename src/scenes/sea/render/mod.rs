@@ -154,7 +154,7 @@ impl SeaRenderer {
         let (with_frame, without_frame) = (&layouts[..], &layouts[..3]);
         let plain = module(false, false);
         let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
-        let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None));
+        let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None, None));
         let bodies = bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
@@ -168,7 +168,9 @@ impl SeaRenderer {
         let near_bodies = |with_island: bool| {
             let module = module(with_island, true);
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
-            mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None))
+            // Blended: the water's share of a pixel at a body's waterline is its alpha.
+            let blend = Some(wgpu::BlendState::ALPHA_BLENDING);
+            mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None, blend))
         };
         let near_bodies = variant.mirrored_bodies.then(|| {
             let away = near_bodies(false);
