@@ -21,6 +21,15 @@ fn caustics_at(uv: vec2<f32>) -> vec4<f32> {
     return textureSampleLevel(caustics_map, clamp_sampler, uv, caustics_lod);
 }
 
+// The caustics map's light at underwater point p (uv: where its sunbeam entered): just under
+// the surface the waves' light has not yet gathered into lines, so the map (the light on the
+// floor) is read at a coarser level, its last at the surface, its footprint's from
+// CAUSTICS_SHARPEN_DEPTH down.
+fn caustics_under(uv: vec2<f32>, p: vec3<f32>) -> vec4<f32> {
+    let shallow = 1.0 - clamp(-p.y / CAUSTICS_SHARPEN_DEPTH, 0.0, 1.0);
+    return textureSampleLevel(caustics_map, clamp_sampler, uv, max(caustics_lod, shallow * CAUSTICS_LAST_LOD));
+}
+
 // 1 when the straight ray from the surface point p towards the sun clears the pool rim.
 fn rim_visibility(p: vec3<f32>) -> f32 {
     let s = scene.sun.xyz;
@@ -42,7 +51,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
         return 0.0;
     }
     if (HAS_CAUSTICS) {
-        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
+        let c = caustics_under(caustics_uv(entry), p) * scene.water.w;
         return select(c.r, c.g, with_sphere_shadow);
     }
     // Caustics off: a calm surface, with the same rim and sphere shadows.
@@ -73,7 +82,7 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
         if (!all(abs(entry) <= vec2<f32>(half_width()))) {
             return vec3<f32>(0.0);
         }
-        let c = caustics_at(caustics_uv(entry)) * scene.water.w;
+        let c = caustics_under(caustics_uv(entry), p) * scene.water.w;
         return select(vec3<f32>(c.a), c.rgb, with_sphere_shadow);
     }
     return vec3<f32>(underwater_light(p, with_sphere_shadow));

@@ -10,6 +10,12 @@ pub const CAUSTICS_MIPS: u32 = 4;
 /// The finest level the scene reads at: 0.7 blends in the next level's average, so lines
 /// focused into one texel are about two wide and do not flicker from pixel to pixel.
 pub const CAUSTICS_MIN_LOD: f32 = 0.7;
+/// Depth (m) over which the caustics sharpen under the surface: the map holds the light on the
+/// floor, where the waves' lenses have focused it; just under the surface the light has not
+/// yet gathered into lines, so a point there reads the map's coarsest level, and the level
+/// falls to the finest at this depth (a ripple a few centimetres long focuses about 0.1 m
+/// down).
+pub const CAUSTICS_SHARPEN_DEPTH: f32 = 0.25;
 
 /// The caustics map (`size` texels at level 0) and the passes that fill its lower levels.
 pub struct CausticsMips {
@@ -79,6 +85,9 @@ impl CausticsMips {
 
     /// The constants `caustics_at` reads.
     pub fn wgsl_constants() -> String {
-        format!("const CAUSTICS_MIN_LOD: f32 = {CAUSTICS_MIN_LOD:?};\n")
+        format!(
+            "const CAUSTICS_MIN_LOD: f32 = {CAUSTICS_MIN_LOD:?};\nconst CAUSTICS_SHARPEN_DEPTH: f32 = {CAUSTICS_SHARPEN_DEPTH:?};\nconst CAUSTICS_LAST_LOD: f32 = {:?};\n",
+            (CAUSTICS_MIPS - 1) as f32
+        )
     }
 }
