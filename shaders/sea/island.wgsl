@@ -166,9 +166,12 @@ fn mirrored_land(pixel: vec2<f32>, n: vec3<f32>, rough: f32) -> vec4<f32> {
     let tilt = vec2<f32>(dot(n, across), dot(n, ahead));
     let centre = pixel * sea.mirror.xy + MIRROR_WOBBLE * tilt;
     let spread = vec2<f32>(0.0, MIRROR_BLUR * rough / length(sea.up.xyz));
+    // Four taps over [-spread, spread], the inner two weighted twice: three, a spread apart,
+    // left three copies of the land's outline, stepped, where the smear is wider than a pixel.
     let m = (textureSampleLevel(mirror_map, clamp_sampler, centre - spread, 0.0)
-        + textureSampleLevel(mirror_map, clamp_sampler, centre, 0.0)
-        + textureSampleLevel(mirror_map, clamp_sampler, centre + spread, 0.0)) / 3.0;
+        + 2.0 * textureSampleLevel(mirror_map, clamp_sampler, centre - spread / 3.0, 0.0)
+        + 2.0 * textureSampleLevel(mirror_map, clamp_sampler, centre + spread / 3.0, 0.0)
+        + textureSampleLevel(mirror_map, clamp_sampler, centre + spread, 0.0)) / 6.0;
     let shade = m.rgb / max(m.a, 1.0e-3);
     return vec4<f32>(shade * shade * MIRROR_RANGE, m.a);
 }
