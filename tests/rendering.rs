@@ -401,29 +401,17 @@ fn the_spheres_outline_and_waterline_are_blended_on_their_edges_and_nowhere_else
         (image, waterline(&demo, Vec2::new(w as f32, h as f32)))
     };
     let ((blended, waterline), (stepped, _)) = (frame(true), frame(false));
-    let (mut changed, mut elsewhere, mut on_waterline) = (0, 0, 0);
-    for y in 1..h - 1 {
-        for x in 1..w - 1 {
-            let i = ((y * w + x) * 4) as usize;
-            if (0..3).all(|k| blended.rgba[i + k].abs_diff(stepped.rgba[i + k]) <= 2) {
-                continue;
-            }
-            changed += 1;
-            let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
-            let at_waterline = waterline.iter().any(|q| q.distance(p) <= 3.0);
-            on_waterline += at_waterline as u32;
-            let around: Vec<f32> = (-1..=1)
-                .flat_map(|dy| (-1..=1).map(move |dx| (x as i32 + dx, y as i32 + dy)))
-                .map(|(nx, ny)| stepped.unit_luma(nx as u32, ny as u32))
-                .collect();
-            let (lo, hi) = around.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &l| (lo.min(l), hi.max(l)));
-            // The outline is where the shading steps; the waterline, against water that shows
-            // the wet sphere through it, may step less: there the blend need only lie between.
-            let on_edge = hi - lo > 0.08 || at_waterline;
-            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.unit_luma(x, y));
-            if !(on_edge && between) {
-                elsewhere += 1;
-            }
+    let blended = blended.blended_against(&stepped);
+    let changed = blended.len();
+    let (mut elsewhere, mut on_waterline) = (0, 0);
+    for b in &blended {
+        let p = Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5);
+        let at_waterline = waterline.iter().any(|q| q.distance(p) <= 3.0);
+        on_waterline += at_waterline as u32;
+        // The outline is where the shading steps; the waterline, against water that shows
+        // the wet sphere through it, may step less: there the blend need only lie between.
+        if !((b.contrast > 0.08 || at_waterline) && b.between) {
+            elsewhere += 1;
         }
     }
     println!(

@@ -337,23 +337,14 @@ fn the_seas_water_is_blended_at_a_spheres_waterline_and_nowhere_else() {
         (image, middle, middle.distance(edge))
     };
     let ((blended, middle, radius), (stepped, _, _)) = (frame(true), frame(false));
-    let (mut changed, mut astray) = (0, 0);
-    for y in 1..h - 1 {
-        for x in 1..w - 1 {
-            let i = ((y * w + x) * 4) as usize;
-            if (0..3).all(|k| blended.rgba[i + k].abs_diff(stepped.rgba[i + k]) <= 2) {
-                continue;
-            }
-            changed += 1;
-            let around: Vec<f32> = (0..9).map(|k| stepped.unit_luma(x + k % 3 - 1, y + k / 3 - 1)).collect();
-            let (lo, hi) = around.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &l| (lo.min(l), hi.max(l)));
-            let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&blended.unit_luma(x, y));
-            let near = glam::Vec2::new(x as f32 + 0.5, y as f32 + 0.5).distance(middle) <= radius + 3.0;
-            if !(between && near) {
-                astray += 1;
-            }
-        }
-    }
+    let blended = blended.blended_against(&stepped);
+    let changed = blended.len();
+    let astray = blended
+        .iter()
+        .filter(|b| {
+            !(b.between && glam::Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5).distance(middle) <= radius + 3.0)
+        })
+        .count();
     println!("{changed} pixels blended at the sphere's waterline (radius {radius:.1} px), {astray} away from it or outside their neighbours' colours");
     assert!(changed >= 20, "only {changed} pixels of the waterline were blended");
     // A few pixels at the waterline's ends, where it meets the outline, take some of the

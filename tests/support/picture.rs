@@ -59,6 +59,26 @@ impl Image {
         }
     }
 
+    /// The pixels (off the border) where this picture differs from `stepped`, the same frame
+    /// drawn without some blending, by more than 2 in a channel: each with whether its luma
+    /// lies within the range of `stepped`'s 3 × 3 round it (±2/255), and that range (0-1).
+    /// A blended edge changes only pixels on the edge, to a colour between its two sides.
+    pub fn blended_against(&self, stepped: &Image) -> Vec<Blended> {
+        let mut out = Vec::new();
+        for y in 1..self.height - 1 {
+            for x in 1..self.width - 1 {
+                if self.pixel(x, y).iter().zip(stepped.pixel(x, y)).all(|(a, b)| a.abs_diff(b) <= 2) {
+                    continue;
+                }
+                let around = (0..9).map(|k| stepped.unit_luma(x + k % 3 - 1, y + k / 3 - 1));
+                let (lo, hi) = around.fold((f32::MAX, f32::MIN), |(lo, hi), l| (lo.min(l), hi.max(l)));
+                let between = (lo - 2.0 / 255.0..=hi + 2.0 / 255.0).contains(&self.unit_luma(x, y));
+                out.push(Blended { x, y, between, contrast: hi - lo });
+            }
+        }
+        out
+    }
+
     /// The whole picture as a rectangle.
     pub fn full(&self) -> Rect {
         Rect { x: 0, y: 0, w: self.width, h: self.height }
@@ -210,6 +230,15 @@ impl Region for Area {
 
 /// Rec. 709 luma's weights of R, G and B.
 pub const REC709: [f64; 3] = [0.2126, 0.7152, 0.0722];
+
+/// A pixel a blend changed (`Image::blended_against`).
+#[derive(Clone, Copy, Debug)]
+pub struct Blended {
+    pub x: u32,
+    pub y: u32,
+    pub between: bool,
+    pub contrast: f32,
+}
 
 /// Rec. 709 luma of sRGB-encoded (R, G, B), 0-255: 0.2126 R + 0.7152 G + 0.0722 B.
 pub fn luma([r, g, b]: [f64; 3]) -> f64 {
