@@ -59,8 +59,12 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     let water_dir = select(reflected, refracted, from_above);
     let t_air = pool_exit_distance(in.world, air_dir);
     let t_water = pool_exit_distance(in.world, water_dir);
-    let lod_air = tile_lod(in.world + air_dir * t_air);
-    let lod_water = tile_lod(in.world + water_dir * t_water);
+    // The tiles' level from how their coordinates change across the quad, raised where the
+    // normal turns fast across the pixel (ripples finer than the quad's differences see):
+    // there the grout, one or two texels wide, would alias into dark specks.
+    let turning = min(1.5, 15.0 * sqrt(dot(dnx, dnx) + dot(dny, dny)));
+    let lod_air = tile_lod(in.world + air_dir * t_air) + turning;
+    let lod_water = tile_lod(in.world + water_dir * t_water) + turning;
     let r = reflectance(dot(-view, n), eta);
     if (SHOW_REFLECTANCE) {
         // Grey; with dispersion each channel's own reflectance (its own critical angle).
