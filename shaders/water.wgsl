@@ -3,6 +3,10 @@
 // traced analytically to the pool, the sphere or the sky, and the two are blended by the
 // Fresnel reflectance (the exact equations for unpolarised light, or a model a lesson picks).
 
+// Tile levels added per radian the normal turns across a pixel, and at most (fs_surface).
+const TILE_LOD_PER_TURN: f32 = 15.0;
+const TILE_LOD_TURNING_MAX: f32 = 1.5;
+
 struct SurfaceOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
@@ -62,7 +66,7 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     // The tiles' level from how their coordinates change across the quad, raised where the
     // normal turns fast across the pixel (ripples finer than the quad's differences see):
     // there the grout, one or two texels wide, would alias into dark specks.
-    let turning = min(1.5, 15.0 * sqrt(dot(dnx, dnx) + dot(dny, dny)));
+    let turning = min(TILE_LOD_TURNING_MAX, TILE_LOD_PER_TURN * sqrt(dot(dnx, dnx) + dot(dny, dny)));
     let lod_air = tile_lod(in.world + air_dir * t_air) + turning;
     let lod_water = tile_lod(in.world + water_dir * t_water) + turning;
     let r = reflectance(dot(-view, n), eta);
@@ -103,16 +107,9 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     var out = finish(with_deck_edge(colour, edge));
     if (HAS_BODIES) {
         let footprint = max(length(dpdx(in.world)), length(dpdy(in.world)));
-        let field = bodies_field(in.world);
-        if (field.x < 0.0) {
+        out.a = water_share(in.world, scene.eye.xyz, view, footprint);
+        if (out.a < 0.0) {
             discard;
-        }
-        // output.z 0: each pixel wholly in or out (the outlines off, for tests to compare with).
-        out.a = select(1.0, clamp(field.y / max(footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
-        // Where the eye's ray passes by the hull (its outline meets the waterline) nothing of
-        // the body lies behind to blend with: the pixel is the water's.
-        if (out.a < 1.0 && hit_bodies(scene.eye.xyz, view).t >= NO_HIT) {
-            out.a = 1.0;
         }
     }
     return out;

@@ -127,7 +127,6 @@ struct SeaOut {
     @location(2) carry_gradient: vec3<f32>,
 }
 
-
 // Vertex `index` of the grid's quads (two triangles each), row by row up the screen.
 @vertex
 fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
@@ -230,14 +229,9 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     // a hull, and at the waterline of one drawn as it is traced it covers only its share of
     // the pixel, over the body drawn before, as in the pool (shaders/water.wgsl).
     if MIRRORED_BODIES {
-        let field = bodies_field(in.world);
-        if field.x < 0.0 {
+        out.a = water_share(in.world, sea.eye.xyz, v, world_footprint);
+        if out.a < 0.0 {
             discard;
-        }
-        // output.z 0: each pixel wholly in or out (the outlines off, for tests to compare with).
-        out.a = select(1.0, clamp(field.y / max(world_footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
-        if out.a < 1.0 && hit_bodies(sea.eye.xyz, v).t >= NO_HIT {
-            out.a = 1.0;
         }
     }
     return out;

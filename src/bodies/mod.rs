@@ -230,13 +230,34 @@ pub const PARAMS: &[ParamSpec] = &[ParamSpec {
     help: "What floats in the pool: any of the sphere, a rubber duck and a beach ball (as a list, e.g. sphere,duck), all or none.",
 }];
 
+/// The share of a pixel a water surface covers next to the bodies, for any scene's water
+/// (the pool's, the sea's): negative inside a hull (not drawn); at a traced kind's waterline
+/// the share within the pixel's footprint of its hull, where the eye's ray meets the hull behind
+/// (the water's pipeline blends it over the body drawn before); 1 elsewhere.
+const WATER_SHARE: &str = "
+fn water_share(p: vec3<f32>, eye: vec3<f32>, dir: vec3<f32>, footprint: f32) -> f32 {
+    let field = bodies_field(p);
+    if (field.x < 0.0) {
+        return -1.0;
+    }
+    // output.z 0: each pixel wholly in or out (the outlines off, for tests to compare with).
+    let share = select(1.0, clamp(field.y / max(footprint, 1.0e-6), 0.0, 1.0), scene.output.z > 0.0);
+    // Where the eye's ray passes by the hull (its outline meets the waterline) nothing of the
+    // body lies behind to blend with: the pixel is the water's.
+    if (share < 1.0 && hit_bodies(eye, dir).t >= NO_HIT) {
+        return 1.0;
+    }
+    return share;
+}
+";
+
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
 /// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
 /// the code that asks every kind present: the nearest hit (`hit_bodies`), its colour
 /// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
 /// they take from a point (`bodies_occlusion`) and the signed distance from the nearest hull
 /// (`bodies_field`: x any kind's, the water's surface is not drawn inside one; y of the kinds
-/// drawn as traced (`edge`), whose waterline the water fades out at).
+/// drawn as traced (`edge`), whose waterline the water fades out at) and `water_share`, what a water surface covers of a pixel.
 pub fn wgsl(present: u32) -> String {
     let mut out = format!(
         "const BODY_SLOTS: u32 = {UNIFORM_SLOTS}u;\nconst HAS_BODIES: bool = {};\n",
@@ -284,6 +305,7 @@ pub fn wgsl(present: u32) -> String {
             })
             .collect::<String>()
     );
+    out += WATER_SHARE;
     out += &format!(
         "fn bodies_occlusion(p: vec3<f32>, n: vec3<f32>) -> f32 {{\n    var o = 0.0;\n{}    return o;\n}}\n",
         each(&|name, upper| format!("    if (HAS_{upper}) {{\n        o += {name}_occlusion(p, n);\n    }}\n"))
