@@ -34,6 +34,7 @@ struct Scene {
                                // w exposure factor 2^EV before the tone curve
     sky_light: vec4<f32>,      // rgb the sky's light on a surface facing up (albedo factor);
                                // w 1 with the deck around the pool, 0 cut-away
+    floor_bounce: vec4<f32>,   // rgb the calm floor's light times the tiles' mean albedo (scene units)
     horizon: array<vec4<f32>, HORIZON_TERMS>, // the sky at the horizon (deck.rs: horizon_fit)
     // Each kind of body's share (bodies::wgsl: <NAME>_SLOT on; see its body_<name>.wgsl).
     bodies: array<vec4<f32>, BODY_SLOTS>,

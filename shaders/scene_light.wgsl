@@ -105,16 +105,29 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
     return select(wall, p.xz, abs(n.y) > 0.5);
 }
 
+// The light round an underwater point p facing n, besides the sun's own: from above, the sky's
+// through the surface; from below, the pool's tiles lit by the refracted sun and the sky
+// (scene.floor_bounce: the calm floor's light times their mean albedo), having crossed the water down to the
+// floor and back up to p, which tints it as the water is tinted. Each weighted by the share of
+// its hemisphere n faces (a cosine lobe), so an underside is lit by the floor, not black.
+fn light_under_water(p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
+    let crossed = depth() + max(p.y + depth(), 0.0);
+    let from_below = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
+    let up = 0.5 + 0.5 * n.y;
+    return sky_light_at(true) * up + from_below * (1.0 - up);
+}
+
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour
 // albedo, before any water attenuation between p and the viewer. Under the rest level the
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
 // it, as object_colour's), times sun_through: the light the objects let through towards the
 // sun above the water (1 where their shadows are left out; under it the caustics map holds them).
+// Under the water a wall takes the sunlit floor's light too (light_under_water), as a body does.
 fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_through: f32) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
+        let ambient = light_under_water(p, n) * (1.0 - 0.9 * bodies_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
@@ -123,7 +136,11 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * sun_through;
     }
-    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
+    var around = sky_light_at(false);
+    if (under) {
+        around = light_under_water(p, n);
+    }
+    let ambient = around * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
 }
 

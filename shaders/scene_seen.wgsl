@@ -27,20 +27,6 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool) -> 
     return albedo * (ambient + direct * sun_light());
 }
 
-// The light round an underwater point p facing n, besides the sun's own: from above, the sky's
-// through the surface; from below, the pool's tiles lit by the refracted sun and the sky (their
-// mean albedo: the tile map's last mip level), the light having crossed the water down to the
-// floor and back up to p, which tints it as the water is tinted. Each weighted by the share of
-// its hemisphere n faces (a cosine lobe), so an underside is lit by the floor, not black.
-fn light_under_water(p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
-    let floor_albedo = textureSampleLevel(tile_texture, repeat_sampler, vec2<f32>(0.5), 16.0).rgb;
-    let on_floor = sun_light() * -scene.refracted_sun.y + sky_light_at(true);
-    let crossed = depth() + max(p.y + depth(), 0.0);
-    let from_below = floor_albedo * on_floor * exp(-scene.absorption.xyz * crossed);
-    let up = 0.5 + 0.5 * n.y;
-    return sky_light_at(true) * up + from_below * (1.0 - up);
-}
-
 // A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to
 // the target: dimmed by the water between it and the eye. In the flat water's textures
 // (CLIP_SIDE, flat.rs) only the side of the water plane the texture keeps; the refraction

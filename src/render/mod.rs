@@ -142,6 +142,8 @@ pub struct Renderer {
     /// The water surface traces the objects only in their regions (`regions::surface_regions`);
     /// off, everywhere (for tests: the regions must not change the picture).
     object_regions: bool,
+    /// The tiles' mean albedo (linear RGB), for the light the floor sends back up.
+    floor_albedo: glam::Vec3,
     /// The bodies' outlines are blended in (`BodyKind::edge`), and the water at their
     /// waterlines (`shaders/water.wgsl`); off for tests to compare with.
     body_outlines: bool,
@@ -222,6 +224,7 @@ impl Renderer {
             depth: None,
             upscale: Upscale::new(device, settings.target_format),
             object_regions: true,
+            floor_albedo: crate::textures::tile_mean_albedo(tile_mips),
             body_outlines: true,
         }
     }

@@ -28,6 +28,7 @@ pub(super) struct SceneUniforms {
     pub(super) flat: [f32; 4],
     pub(super) sun_light: [f32; 4],
     pub(super) sky_light: [f32; 4],
+    pub(super) floor_bounce: [f32; 4],
     pub(super) horizon: [[f32; 4]; super::deck::HORIZON_TERMS],
     pub(super) bodies: [[f32; 4]; UNIFORM_SLOTS],
 }
@@ -91,6 +92,12 @@ impl Renderer {
             // The exposure parameter, and the part the camera adapts to this sky by itself.
             sun_light: daylight.sun_light.extend(2f32.powf(view.exposure + daylight.adapted_exposure())).to_array(),
             sky_light: daylight.ambient.extend(if view.deck { 1.0 } else { 0.0 }).to_array(),
+            // The calm floor's light (the refracted sun's and the sky's under the water) times
+            // the tiles' mean albedo: what it sends back up (light_under_water).
+            floor_bounce: (self.floor_albedo
+                * (daylight.sun_light * -refracted.y + daylight.ambient * crate::sky::UNDERWATER_SKY))
+                .extend(0.0)
+                .to_array(),
             horizon: self.horizon.1,
             bodies: bodies_uniform(view),
         };
