@@ -119,11 +119,31 @@ const CLASSIC_TOP_VIEW_JS: &str = "angleX = -89.9;
   gl.clearColor(0, 0, 0, 1);
   return { angleX, angleY, lightDir: [renderer.lightDir.x, renderer.lightDir.y, renderer.lightDir.z] };";
 
+/// The pool's opening (the water's rest level, y = 0) and its floor (y = -1), each as the
+/// four corners (x, z = ±1, m) where they appear, in CSS px from the viewport's corner: both pages
+/// draw a 2 m x 2 m pool 1 m deep. Ours through `demo.project`.
+const OUR_POOL_CORNERS_JS: &str = "const out = [];
+  for (const y of [0, -1]) for (const [x, z] of [[-1, -1], [1, -1], [1, 1], [-1, 1]]) out.push(window.demo.project(x, y, z));
+  return out;";
+
+/// The same for the classic: lightgl's `gl.project` with the camera's matrices as its last
+/// frame left them, over the canvas's own viewport (y up from its bottom, turned to CSS px down).
+const CLASSIC_POOL_CORNERS_JS: &str = "const c = document.querySelector('canvas'); const r = c.getBoundingClientRect();
+  const out = [];
+  for (const y of [0, -1]) for (const [x, z] of [[-1, -1], [1, -1], [1, 1], [-1, 1]]) {
+    const v = gl.project(x, y, z, gl.modelviewMatrix, gl.projectionMatrix, [0, 0, c.width, c.height]);
+    out.push({ x: r.left + v.x * r.width / c.width, y: r.top + (c.height - v.y) * r.height / c.height });
+  }
+  return out;";
+
 /// One page and measurement: its name in the summary and its figures.
 struct Row {
     page: String,
     measurement: &'static str,
     stats: PictureStats,
+    /// The floor's caustic contrast as the view shows it (`floor_in_view`), for `load` and
+    /// `ripples`.
+    floor_in_view: Option<f64>,
 }
 
 /// Whether the pages are measured at their own canvases in `PAGE_VIEWPORT` (`WAVEPOOL_LOOK_SIZE=page`).
@@ -168,7 +188,8 @@ async fn main() {
         for row in rows.iter().filter(|r| r.measurement == measurement) {
             let s = row.stats.to_json();
             line[&row.page] = json!({ "colourfulness": s["colourfulness"], "luma_std": s["luma_std"],
-                                      "sparkle_share": s["sparkle_share"], "caustic_contrast": s["caustic_contrast"] });
+                                      "sparkle_share": s["sparkle_share"], "caustic_contrast": s["caustic_contrast"],
+                                      "floor_in_view": row.floor_in_view.map(|c| (c * 1e4).round() / 1e4) });
         }
         println!("{line}");
     }
@@ -267,16 +288,60 @@ async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &s
     save_png(&file, width, height, &rgba);
     let img = Image::new(width, height, rgba);
     let mut stats = PictureStats::of(&img, img.full());
+    let mut floor_in_view = None;
     if measurement == "caustics" {
         stats = stats.with_caustic_contrast(&img, picture::Rect::centred_square(width, height, FLOOR_SQUARE));
+    } else {
+        let corners = browser.js(if page == "classic" { CLASSIC_POOL_CORNERS_JS } else { OUR_POOL_CORNERS_JS }).await;
+        // The classic draws no near walls: its floor shows whole, through them or the water.
+        floor_in_view = floor_contrast_in_view(&img, &corners, rect, page != "classic");
     }
     println!(
         "{}",
         json!({ "page": page, "measurement": measurement, "url": url, "canvas": [width, height],
                 "canvas_at": [rect.x, rect.y], "png": file.display().to_string(), "page_state": info,
-                "figures": stats.to_json() })
+                "figures": stats.to_json(), "floor_in_view": floor_in_view })
     );
-    Row { page: page.replace('-', "_"), measurement, stats }
+    Row { page: page.replace('-', "_"), measurement, stats, floor_in_view }
+}
+
+/// The floor's caustic contrast as the view shows it: the 95th / 50th luma percentile over the
+/// pixels of the pool's floor as projected (`corners`: the opening's four, then the floor's, in
+/// CSS px of the viewport; the picture is the canvas cut at `at`), and inside the opening too
+/// where the near walls hide the rest (`behind_walls`: ours, sunk in its deck): the pixels that
+/// show the floor (or a wall's foot, or a body). None when a corner is behind the camera.
+fn floor_contrast_in_view(img: &Image, corners: &Value, at: Rect, behind_walls: bool) -> Option<f64> {
+    let points: Vec<(f64, f64)> = corners
+        .as_array()?
+        .iter()
+        .map(|p| Some((p["x"].as_f64()? - at.x as f64, p["y"].as_f64()? - at.y as f64)))
+        .collect::<Option<_>>()?;
+    let (opening, floor) = points.split_at(4);
+    let mut lumas: Vec<f64> = (0..img.height)
+        .flat_map(|y| (0..img.width).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let p = (x as f64 + 0.5, y as f64 + 0.5);
+            inside_convex(floor, p) && (!behind_walls || inside_convex(opening, p))
+        })
+        .map(|(x, y)| img.luma(x, y))
+        .collect();
+    if lumas.len() < 100 {
+        return None;
+    }
+    lumas.sort_unstable_by(f64::total_cmp);
+    let at_rank = |q: f64| lumas[((lumas.len() - 1) as f64 * q).round() as usize];
+    Some(at_rank(0.95) / at_rank(0.5))
+}
+
+/// Whether `p` lies inside the convex polygon `poly` (either winding).
+fn inside_convex(poly: &[(f64, f64)], p: (f64, f64)) -> bool {
+    let sides: Vec<f64> = (0..poly.len())
+        .map(|i| {
+            let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+            (b.0 - a.0) * (p.1 - a.1) - (b.1 - a.1) * (p.0 - a.0)
+        })
+        .collect();
+    sides.iter().all(|&s| s >= 0.0) || sides.iter().all(|&s| s <= 0.0)
 }
 
 /// The pixels of `r` (clipped to the shot): width, height, RGBA8.
