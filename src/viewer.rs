@@ -226,10 +226,8 @@ impl Viewer {
                 });
             }
             if let Some(picked) = self.demo.picked() {
-                let title = match picked.title.strip_prefix("Dipper ") {
-                    Some(number) => self.words.page_with("dipper", &[("number", number.to_owned())]).into_owned(),
-                    None => picked.title.clone(),
-                };
+                let title =
+                    self.words.page_with(picked.title_id, &[("number", picked.number.to_string())]).into_owned();
                 egui::CollapsingHeader::new(title).id_salt("picked").default_open(true).show(ui, |ui| {
                     for (spec, value) in picked.settings {
                         if let Some(value) = picked_slider(ui, spec, value, &self.words) {

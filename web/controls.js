@@ -54,7 +54,7 @@ export const controlMethods = {
       if (!groups.has(p.group)) {
         const fieldset = document.createElement("fieldset");
         const legend = document.createElement("legend");
-        legend.textContent = this._words.group(p.group);
+        legend.textContent = this._words.group(p);
         fieldset.append(legend);
         groups.set(p.group, fieldset);
         panel.append(fieldset);

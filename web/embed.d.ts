@@ -128,12 +128,30 @@ export interface SuspendedStats {
   contextsOnPage: number;
 }
 
-/** The pool's frame stages (ms). */
 /** The settings of what the pointer picked (a tank's dipper): sliders, each with its value. */
 export interface PickedSettings {
-  /** "Dipper 2". */
+  /** "Dipper 2", in English. */
   title: string;
-  settings: { name: string; label: string; group: string; unit: string; kind: "slider"; min: number; max: number; step: number; default: number; help: string; value: number }[];
+  /** The title's message in the page's words ("dipper") and the number it fills in (2). */
+  titleId: string;
+  number: number;
+  settings: {
+    name: string;
+    label: string;
+    group: string;
+    unit: string;
+    kind: "slider";
+    min: number;
+    max: number;
+    step: number;
+    default: number;
+    help: string;
+    value: number;
+    messageId: string;
+    groupMessageId: string;
+    unitMessageId: string | null;
+    choiceMessageIds: string[];
+  }[];
 }
 
 export interface PoolStageMs { simulation: number; waves: number; caustics: number; shading: number }

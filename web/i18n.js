@@ -136,18 +136,18 @@ export class Words {
     return text ?? String(this._english[id] ?? id).replace(/\{ \$(\w+) \}/g, (_, name) => String(args[name]));
   }
 
-  /** A parameter's label and help (`p`: its entry in the core's table, or a picked setting's). */
+  /** A parameter's label and help (`p`: its entry in the core's table, or a picked setting's; the core names its messages). */
   label(p) {
-    return (this._bundle && this._lookup(`param-${p.name}`, null)) || p.label;
+    return (this._bundle && this._lookup(p.messageId, null)) || p.label;
   }
 
   help(p) {
-    return (this._bundle && this._lookup(`param-${p.name}`, "help")) || p.help;
+    return (this._bundle && this._lookup(p.messageId, "help")) || p.help;
   }
 
-  /** A group's name ("Flat water": message group-flat-water). */
-  group(name) {
-    return (this._bundle && this._lookup(`group-${name.toLowerCase().replace(/ /g, "-")}`, null)) || name;
+  /** The name of a parameter's group ("Flat water"). */
+  group(p) {
+    return (this._bundle && this._lookup(p.groupMessageId, null)) || p.group;
   }
 
   /** A preset's name and what it says (`p`: its entry in the core's presets). */
@@ -161,16 +161,16 @@ export class Words {
 
   /** A choice's name as the controls show it: words translated, a set ("sphere,duck") by its members. */
   choice(p, name) {
-    if (!/^[a-z_,]+$/.test(name)) return name;
-    return name
-      .split(",")
-      .map((n) => (this._bundle && this._lookup(`param-${p.name}-${n}`, null)) || n)
-      .join(", ");
+    const word = (n) => {
+      const id = p.choiceMessageIds[p.choiceNames.indexOf(n)];
+      return (this._bundle && id && this._lookup(id, null)) || n;
+    };
+    return name.includes(",") ? name.split(",").map(word).join(", ") : word(name);
   }
 
-  /** A unit as shown after a value: a symbol as it is, a word ("cells") in the language's words. */
-  unit(unit) {
-    return (this._bundle && /^[a-z]{3,}$/.test(unit) && this._lookup(`unit-${unit}`, null)) || unit;
+  /** A parameter's unit as shown after a value: a symbol as it is, a word ("cells") in the language's words. */
+  unit(p) {
+    return (this._bundle && p.unitMessageId && this._lookup(p.unitMessageId, null)) || p.unit;
   }
 
   /** `v` with `decimals` decimals, as the language writes numbers. */
@@ -189,9 +189,9 @@ export class Words {
     if (p.kind === "choice") {
       const i = p.choices.indexOf(v);
       if (i >= 0 && p.choiceNames[i]) return this.choice(p, p.choiceNames[i]);
-      return `${this.number(v, 0)}${p.unit ? ` ${this.unit(p.unit)}` : ""}`;
+      return `${this.number(v, 0)}${p.unit ? ` ${this.unit(p)}` : ""}`;
     }
     const decimals = Math.max(0, -Math.floor(Math.log10(p.step) + 1e-9));
-    return `${this.number(v, decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${this.unit(p.unit)}`) : ""}`;
+    return `${this.number(v, decimals)}${p.unit ? (p.unit === "°" ? "°" : ` ${this.unit(p)}`) : ""}`;
   }
 }

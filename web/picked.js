@@ -25,10 +25,9 @@ export const pickedMethods = {
     return fieldset;
   },
 
-  // The core's title ("Dipper 2") in the words shown: its number kept.
-  _pickedTitle(title) {
-    const number = /^Dipper (\d+)$/.exec(title);
-    return number ? this._words.page("dipper", { number: this._words.number(Number(number[1]), 0) }) : title;
+  // The picked thing's title in the words shown ("Dipper 2": the message the core names, its number filled in).
+  _pickedTitle(picked) {
+    return this._words.page(picked.titleId, { number: this._words.number(picked.number, 0) });
   },
 
   _pickedNote(time) {
@@ -47,7 +46,7 @@ export const pickedMethods = {
     if (group.dataset.key !== key) {
       // Another thing picked: its title and a slider per setting.
       group.dataset.key = key;
-      group.querySelector("legend").textContent = this._pickedTitle(picked.title);
+      group.querySelector("legend").textContent = this._pickedTitle(picked);
       group.querySelectorAll(".row").forEach((row) => row.remove());
       for (const s of picked.settings) group.append(this._pickedRow(s));
     }

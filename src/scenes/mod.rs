@@ -79,12 +79,22 @@ pub struct SceneFrame<'a, 'b> {
     pub mark: &'b mut dyn FnMut(&mut wgpu::CommandEncoder, Stage),
 }
 
-/// What the pointer picked that has settings of its own: a title ("Dipper 2") and each
-/// setting's spec (its name, label, range and help; not in the parameter table) and value.
+/// What the pointer picked that has settings of its own: its title, a message of the page's
+/// words with the number it fills in (`"dipper"`, 2: "Dipper 2"), and each setting's spec (its
+/// name, label, range and help; not in the parameter table) and value.
 #[derive(Clone, Debug)]
 pub struct Picked {
-    pub title: String,
+    pub title_id: &'static str,
+    pub number: u32,
     pub settings: Vec<(&'static crate::param_spec::ParamSpec, f32)>,
+}
+
+impl Picked {
+    /// The title in English ("Dipper 2").
+    pub fn english_title(&self) -> String {
+        let text = crate::page_words::english(self.title_id).unwrap_or(self.title_id);
+        text.replace("{ $number }", &self.number.to_string())
+    }
 }
 
 /// What one scene does; the demo calls the shown scene's hooks. Lengths in m in the scene's own

@@ -8,12 +8,16 @@ use super::{warn, WebDemo};
 
 #[wasm_bindgen]
 impl WebDemo {
-    /// `{ title, settings: [spec with value] }` (each spec as in `paramTable()`, without
-    /// `shownWhen`, and its `value`), or null when nothing with settings of its own is picked.
+    /// `{ title, titleId, number, settings: [spec with value] }` (`title` in English, `titleId`
+    /// its message in the page's words with `number` to fill in; each spec as in `paramTable()`,
+    /// without `shownWhen`, and its `value`), or null when nothing with settings of its own is
+    /// picked.
     pub fn picked(&self) -> JsValue {
         let Some(picked) = self.demo.picked() else { return JsValue::NULL };
         let o = js_sys::Object::new();
-        set(&o, "title", picked.title.as_str());
+        set(&o, "title", picked.english_title());
+        set(&o, "titleId", picked.title_id);
+        set(&o, "number", picked.number);
         let settings = (picked.settings.iter())
             .map(|(spec, value)| {
                 let s = spec_object(spec);

@@ -5,6 +5,7 @@
 use wasm_bindgen::prelude::*;
 
 use crate::demo::DemoOptions;
+use crate::param_spec::{group_message_id, unit_message_id};
 use crate::params::{table, Control};
 
 /// The creation options (`meshSize`, `causticsSize`) as an array of
@@ -91,10 +92,13 @@ pub(super) fn set(object: &js_sys::Object, key: &str, value: impl Into<JsValue>)
 
 /// The parameter table (the core's one source of truth) as an array of plain objects:
 /// `{ name, label, group, unit, kind: "slider" | "toggle" | "choice", min, max, step,
-/// choices, choiceNames, default, help, shownWhen }` (`choices`: the allowed values of a
-/// choice, else empty; `choiceNames`: what to show for them, or empty to show the numbers;
-/// `shownWhen`: the conditions `{ param, values }` that must all hold for the control to
-/// matter: those values of another parameter, e.g. the scene it belongs to).
+/// choices, choiceNames, default, help, shownWhen, messageId, groupMessageId, unitMessageId,
+/// choiceMessageIds }` (`choices`: the allowed values of a choice, else empty; `choiceNames`:
+/// what to show for them, or empty to show the numbers; `shownWhen`: the conditions
+/// `{ param, values }` that must all hold for the control to matter: those values of another
+/// parameter, e.g. the scene it belongs to; the message ids: where the catalogues hold the
+/// label and help, the group's name, a unit's word (null for a symbol) and each choice name's
+/// word ("" for a number or a set, shown as its members)).
 #[wasm_bindgen(js_name = paramTable)]
 pub fn param_table() -> js_sys::Array {
     table()
@@ -140,6 +144,15 @@ pub(super) fn spec_object(p: &crate::param_spec::ParamSpec) -> js_sys::Object {
     set(&o, "step", to_js_number(step));
     set(&o, "default", to_js_number(p.default));
     set(&o, "help", p.help);
+    set(&o, "messageId", p.message_id());
+    set(&o, "groupMessageId", group_message_id(p.group));
+    set(&o, "unitMessageId", unit_message_id(p.unit).map_or(JsValue::NULL, JsValue::from));
+    let word_ids = p.choice_message_ids();
+    let choice_ids = names.iter().map(|name| {
+        let id = word_ids.iter().find(|(word, _)| word == name).map_or("", |(_, id)| id.as_str());
+        JsValue::from_str(id)
+    });
+    set(&o, "choiceMessageIds", choice_ids.collect::<js_sys::Array>());
     o
 }
 

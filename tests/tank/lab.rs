@@ -354,15 +354,15 @@ fn a_dippers_own_frequency_amplitude_and_phase_change_its_waves_and_the_link_kee
     d.sync_scene();
     let picked = d.picked().expect("the move tool shows a dipper's settings");
     let shown: Vec<(&str, f32)> = picked.settings.iter().map(|(s, v)| (s.name, *v)).collect();
-    println!("{}: {shown:?}", picked.title);
+    println!("{}: {shown:?}", picked.english_title());
     assert_eq!(
-        (picked.title.as_str(), shown),
+        (picked.english_title().as_str(), shown),
         ("Dipper 1", vec![("frequency", 10.0), ("amplitude", 0.3), ("phase", 0.0)])
     );
     // A press on the second dipper picks it.
     let second = d.tank().medium().sources.dippers[1];
     drag(&mut d, (320, 240), (second.x, second.z), (second.x, second.z), 0);
-    assert_eq!(d.picked().unwrap().title, "Dipper 2");
+    assert_eq!(d.picked().unwrap().english_title(), "Dipper 2");
     let bad = d.set_picked("colour", 1.0);
     assert!(bad.is_err(), "a dipper has no colour");
     // Crest against trough: the line through the middle between them is still.

@@ -511,7 +511,7 @@ impl super::Scene for TankScene {
         let dippers = &self.medium.sources.dippers;
         let k = self.picked.min(dippers.len().checked_sub(1)?);
         let own = Tuning::of(&dippers[k], &self.settings);
-        Some(Picked { title: format!("Dipper {}", k + 1), settings: own.values().to_vec() })
+        Some(Picked { title_id: "dipper", number: k as u32 + 1, settings: own.values().to_vec() })
     }
 
     fn set_picked(&mut self, name: &str, value: f32) -> Result<(), String> {
