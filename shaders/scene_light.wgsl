@@ -122,12 +122,13 @@ fn light_under_water(p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
 // it, as object_colour's), times sun_through: the light the objects let through towards the
 // sun above the water (1 where their shadows are left out; under it the caustics map holds them).
-// Under the water a wall takes the sunlit floor's light too (light_under_water), as a body does.
+// The walls under the water take the sky's light only, not the floor's (light_under_water):
+// lit by the floor too they read flatter and their caustics faded (judged blind, 2026-11-29).
 fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_through: f32) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = light_under_water(p, n) * (1.0 - 0.9 * bodies_occlusion(p, n));
+        let ambient = sky_light_at(true) * (1.0 - 0.9 * bodies_occlusion(p, n));
         return albedo * (ambient + direct_rgb * sun_light());
     }
     var direct: f32;
@@ -136,11 +137,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * sun_through;
     }
-    var around = sky_light_at(false);
-    if (under) {
-        around = light_under_water(p, n);
-    }
-    let ambient = around * (1.0 - 0.9 * bodies_occlusion(p, n));
+    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
     return albedo * (ambient + direct * sun_light());
 }
 

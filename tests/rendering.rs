@@ -457,38 +457,3 @@ fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
     // The walls' dry band lies in the upper half of the opening.
     assert!(lowest < h * 3 / 5, "glaze down to row {lowest}");
 }
-
-/// Under the water a wall the sun does not reach is lit by the sunlit floor across the pool,
-/// as the underside of a body is (`light_under_water`): seen through the cut-away, with a low
-/// sun (25°) square on one far wall and grazing the other, the grazed wall's tiles (half a
-/// metre down, in the middle) show more than 0.38 of the lit wall's luma (0.43 on 2026-11-29;
-/// 0.33 lit by the sky's light alone, as before).
-#[test]
-fn a_wall_the_sun_misses_under_the_water_is_lit_by_the_sunlit_floor() {
-    let mut demo = common::demo(DemoOptions::default());
-    demo.params.set(ParamId::Objects, 0.0);
-    demo.params.set(ParamId::Setting, 1.0);
-    let size = Vec2::new(W as f32, H as f32);
-    let eye = demo.camera().eye();
-    let w = wavepool::world::PoolShape::CLASSIC.half_width;
-    // The walls whose tiled side faces the eye (inward normal, a point half a metre down).
-    let walls: Vec<(Vec3, Vec3)> = [Vec3::X, Vec3::NEG_X, Vec3::Z, Vec3::NEG_Z]
-        .into_iter()
-        .map(|n| (n, -n * w + Vec3::new(0.0, -0.5, 0.0)))
-        .filter(|&(n, p)| n.dot(eye - p) > 0.0)
-        .collect();
-    assert_eq!(walls.len(), 2, "the cut-away shows two far walls");
-    // The sun square on the first (it faces the sun: the sun lies along its normal).
-    let (azimuth, _) = wavepool::world::direction_angles(walls[0].0);
-    demo.params.set(ParamId::SunAzimuth, azimuth);
-    demo.params.set(ParamId::SunElevation, 25.0);
-    let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
-    let patch_luma = |p: Vec3| {
-        let at = demo.camera().project(p, size).expect("the wall in view");
-        let (x, y) = (at.x / size.x, at.y / size.y);
-        frame.luma_stats(Area(x - 0.02, y - 0.02, x + 0.02, y + 0.02)).0
-    };
-    let (lit, grazed) = (patch_luma(walls[0].1), patch_luma(walls[1].1));
-    println!("walls under the water: in the sun luma {lit:.3}, the sun grazing it {grazed:.3} ({:.2})", grazed / lit);
-    assert!(grazed > 0.38 * lit, "the wall the sun misses is dark: {grazed:.3} against {lit:.3}");
-}
