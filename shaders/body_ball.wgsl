@@ -47,9 +47,9 @@ fn ball_field(p: vec3<f32>) -> f32 {
     return distance(p, u.xyz) - u.w;
 }
 
-fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let u = ball_uniform();
-    return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
+    return sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w);
 }
 
 // Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within

@@ -52,8 +52,9 @@ fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
 // the segment passes to its centre in the part's unit-ball space (duck_parts_light, written by
 // bodies/duck.rs: the product over the parts, written out). Unlike sphere_visibility it has no
 // early return far from the duck: on a software rasteriser, which runs every branch anyway,
-// the branch cost more than the parts.
-fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+// the branch cost more than the parts. Its penumbra is the parts' own, whatever the distance
+// to the point lit (t_lit, unused).
+fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let to_duck = transpose(duck_rotation());
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
     return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max), near_duck(origin, dir, t_max));

@@ -28,10 +28,10 @@ fn sphere_field(p: vec3<f32>) -> f32 {
     return distance(p, u.xyz) - u.w;
 }
 
-// Light the sphere lets through along a segment (see sphere_visibility).
-fn sphere_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {
+// Light the sphere lets through along a segment to the point at t_lit (see sphere_visibility).
+fn sphere_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let u = sphere_uniform();
-    return sphere_visibility(origin, dir, t_max, u.xyz, u.w);
+    return sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w);
 }
 
 fn sphere_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {

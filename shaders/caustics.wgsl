@@ -29,7 +29,9 @@ fn vs_caustics(@location(0) grid: vec2<f32>) -> CausticsOut {
     out.calm_entry = xz;
     out.wavy_entry = entry;
     let rim_light = rim_visibility(p);
-    let sphere_light = objects_visibility(p, ray, t_floor) * objects_visibility(p, scene.sun.xyz, 10.0);
+    // The floor is lit: at the refracted ray's end, and t_floor past the surface for the part
+    // of a body above the water (behind the segment's origin on its line to the sun).
+    let sphere_light = objects_visibility(p, ray, t_floor, t_floor) * objects_visibility(p, scene.sun.xyz, 10.0, -t_floor);
     out.visibility = vec2<f32>(rim_light, rim_light * sphere_light);
     return out;
 }

@@ -37,16 +37,23 @@ fn intersect_sphere(origin: vec3<f32>, dir: vec3<f32>, centre: vec3<f32>, radius
     return select(NO_HIT, t2, t2 > 1.0e-4 && c > 0.0);
 }
 
-// Fraction of light a sphere lets through along the segment origin + t*dir, t in [0, t_max]:
-// 0 when the segment passes through the sphere's core, 1 when it misses, soft in between
-// (a cheap penumbra that keeps shadows from aliasing).
-fn sphere_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, centre: vec3<f32>, radius: f32) -> f32 {
+// Fraction of light a sphere lets through along the segment origin + t*dir, t in [0, t_max], to
+// the point it lights, t_lit along the same line (t_max for a beam the segment follows down, 0
+// where the segment starts at the point lit and runs towards the sun, negative where the light
+// goes on past the origin): 0 when the segment passes through the sphere's core, 1 when it
+// misses, soft in between. The penumbra grows with the distance from the sphere to the point
+// lit, SHADOW_SPREAD per metre (the sun's disk, and the spread of directions the ripples give
+// the light), from a tenth of the radius where the sphere nearly touches it: a contact shadow.
+const SHADOW_SPREAD: f32 = 0.1;
+
+fn sphere_visibility(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32, centre: vec3<f32>, radius: f32) -> f32 {
     if (radius <= 0.0) {
         return 1.0;
     }
     let t = clamp(dot(centre - origin, dir), 0.0, t_max);
     let closest = distance(origin + dir * t, centre);
-    return smoothstep(radius * 0.85, radius * 1.1, closest);
+    let half = radius * 0.1 + abs(t_lit - t) * SHADOW_SPREAD;
+    return smoothstep(radius - half, radius + half, closest);
 }
 
 // Reflectance of a smooth dielectric for unpolarised light (exact Fresnel equations).

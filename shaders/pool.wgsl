@@ -32,7 +32,7 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     // colour and its glaze.
     var sun_through = 1.0;
     if (!under) {
-        sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0);
+        sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0, 0.0);
     }
     var colour = pool_colour(in.world, n, texel.rgb, under, sun_through);
     if (HAS_GLAZE && !under) {

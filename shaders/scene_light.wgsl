@@ -67,8 +67,9 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
     }
     if (with_sphere_shadow && HAS_BODIES) {
         let r = scene.refracted_sun.xyz;
-        light *= objects_visibility(surface, r, distance(surface, p));
-        light *= objects_visibility(surface, scene.sun.xyz, 10.0);
+        let down = distance(surface, p);
+        light *= objects_visibility(surface, r, down, down);
+        light *= objects_visibility(surface, scene.sun.xyz, 10.0, -down);
     }
     return light;
 }

@@ -413,3 +413,50 @@ fn the_water_round_a_bobbing_duck_has_no_ripples_at_the_grids_own_scale() {
     // crossing a cell at once rang at the grid's own scale, dark specks round it on screen.
     assert!(share < 0.03, "grid-scale ripples {:.1} % of the waves", share * 100.0);
 }
+
+/// The sphere's shadow on the floor is a contact shadow: sharp where the sphere nearly touches
+/// the floor, soft when it floats a metre above it (its penumbra grows with the distance, as
+/// the sun's disk and the ripples spread the light). Read off the caustics map (the debug
+/// view: the floor's light, no water in front), along the row through the shadow with the sun
+/// from the side: the edges' widths from 10 % to 90 % of the lit floor's light.
+#[test]
+fn a_spheres_shadow_is_sharp_where_it_nearly_touches_the_floor_and_soft_when_it_floats() {
+    let (w, h) = (320, 240);
+    let radius = 0.25;
+    let edge_width = |centre_y: f32| {
+        let mut demo = demo_with(SPHERE, true);
+        demo.params.set(ParamId::SphereRadius, radius);
+        demo.params.set(ParamId::Gravity, 0.0);
+        demo.params.set(ParamId::SunAzimuth, 90.0);
+        demo.params.set(ParamId::SunElevation, 60.0);
+        demo.params.set(ParamId::DebugView, 4.0);
+        demo.params.set(ParamId::DebugInset, 0.0);
+        demo.set_sphere_centre(Vec3::new(0.0, centre_y, 0.0));
+        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+        // The sun has no z: the shadow's middle is the map's middle row. The map is the frame's
+        // middle square (the deck round it), its edge a few pixels in from the pool's rim.
+        let row: Vec<f64> = ((w - h) / 2 + 8..(w + h) / 2 - 8).map(|x| frame.luma(x, h / 2)).collect();
+        let mut sorted = row.clone();
+        sorted.sort_unstable_by(f64::total_cmp);
+        let lit = sorted[sorted.len() * 3 / 4];
+        let darkest = (0..row.len()).min_by(|&a, &b| row[a].total_cmp(&row[b])).unwrap();
+        let crossing = |step: isize, level: f64| {
+            let mut x = darkest as isize;
+            while x > 0 && x < row.len() as isize - 1 && row[x as usize] < level * lit {
+                x += step;
+            }
+            x
+        };
+        let left = (crossing(-1, 0.9) - crossing(-1, 0.1)).abs();
+        let right = (crossing(1, 0.9) - crossing(1, 0.1)).abs();
+        println!("sphere centre at y = {centre_y} m: shadow edges {left} and {right} px wide (lit luma {lit:.0})");
+        (left + right) as f32 / 2.0
+    };
+    let touching = edge_width(-1.0 + radius + 0.01);
+    let floating = edge_width(0.0);
+    assert!(touching >= 1.0, "no shadow edge found under the sphere on the floor");
+    assert!(
+        floating > 1.6 * touching,
+        "the floating sphere's shadow is not softer: {floating} px against {touching} px"
+    );
+}

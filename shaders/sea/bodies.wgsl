@@ -44,5 +44,5 @@ fn bodies_shade_on_floor(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, depth: f32) -
     let down = refract(v, n, IOR_AIR / IOR_WATER);
     let floor = p + down * (depth / max(-down.y, 0.2));
     let to_sun = -refract(-scene.sun.xyz, vec3<f32>(0.0, 1.0, 0.0), IOR_AIR / IOR_WATER);
-    return objects_visibility(floor, to_sun, FAR_AWAY);
+    return objects_visibility(floor, to_sun, FAR_AWAY, 0.0);
 }

@@ -291,8 +291,8 @@ pub fn wgsl(present: u32) -> String {
         ))
     );
     out += &format!(
-        "fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32) -> f32 {{\n    var light = 1.0;\n{}    return light;\n}}\n",
-        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        light *= {name}_light(p, dir, t_max);\n    }}\n"))
+        "fn objects_visibility(p: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {{\n    var light = 1.0;\n{}    return light;\n}}\n",
+        each(&|name, upper| format!("    if (HAS_{upper}) {{\n        light *= {name}_light(p, dir, t_max, t_lit);\n    }}\n"))
     );
     out += &format!(
         "fn bodies_field(p: vec3<f32>) -> vec2<f32> {{\n    var d = vec2<f32>(NO_HIT);\n{}    return d;\n}}\n",
