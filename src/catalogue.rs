@@ -89,15 +89,10 @@ impl Catalogue {
         if let Some(text) = self.lookup(message, attribute, Some(&fluent)) {
             return Cow::Owned(text);
         }
-        let english = page_words::english(id).unwrap_or("");
         if args.is_empty() {
-            return Cow::Borrowed(english);
+            return Cow::Borrowed(page_words::english(id).unwrap_or(""));
         }
-        let mut text = english.to_owned();
-        for (name, value) in args {
-            text = text.replace(&format!("{{ ${name} }}"), value);
-        }
-        Cow::Owned(text)
+        Cow::Owned(page_words::english_with(id, args))
     }
 
     /// A scene's stage, named as `Scene::stage_names` names it ("the tank": message stage-the-tank).

@@ -93,3 +93,12 @@ pub const PAGE_WORDS: &[(&str, &str)] = &[
 pub fn english(id: &str) -> Option<&'static str> {
     PAGE_WORDS.iter().find(|(i, _)| *i == id).map(|&(_, text)| text)
 }
+
+/// The English text of `id` with its `{ $name }`s filled in from `args` ("" for an unknown id).
+pub fn english_with(id: &str, args: &[(&str, String)]) -> String {
+    let mut text = english(id).unwrap_or("").to_owned();
+    for (name, value) in args {
+        text = text.replace(&format!("{{ ${name} }}"), value);
+    }
+    text
+}

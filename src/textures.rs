@@ -132,14 +132,14 @@ pub fn tile_mips() -> Vec<Vec<u8>> {
     mips
 }
 
-/// The tile texture from its levels ([`tile_mips`], made ahead by a shell that spreads its
-/// start-up over tasks).
 /// The tiles' mean albedo (linear RGB): the last of `mips`, one texel (sRGB-encoded).
 pub fn tile_mean_albedo(mips: &[Vec<u8>]) -> glam::Vec3 {
     let last = mips.last().expect("the tiles' mip levels");
     glam::Vec3::from_array([0, 1, 2].map(|k| srgb_to_linear(last[k] as f32 / 255.0)))
 }
 
+/// The tile texture from its levels ([`tile_mips`], made ahead by a shell that spreads its
+/// start-up over tasks).
 pub fn create_tile_texture(device: &wgpu::Device, queue: &wgpu::Queue, mips: &[Vec<u8>]) -> wgpu::Texture {
     let texture = gpu::texture_2d(
         device,

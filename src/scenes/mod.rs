@@ -92,8 +92,7 @@ pub struct Picked {
 impl Picked {
     /// The title in English ("Dipper 2").
     pub fn english_title(&self) -> String {
-        let text = crate::page_words::english(self.title_id).unwrap_or(self.title_id);
-        text.replace("{ $number }", &self.number.to_string())
+        crate::page_words::english_with(self.title_id, &[("number", self.number.to_string())])
     }
 }
 
