@@ -355,7 +355,7 @@ impl AmbientWaves {
 pub const MAX_STEEPNESS: f32 = 0.9;
 
 /// WGSL constants of this module, for the passes that use them (the scene's, see
-/// `render::shaders::scene_prelude`; the FFT's).
+/// `render::shaders::scene_prelude_in`; the FFT's).
 pub fn wgsl_constants() -> String {
     format!(
         "const AMBIENT_NONE: u32 = {}u;\nconst AMBIENT_SINES: u32 = {}u;\nconst AMBIENT_MODES: u32 = {}u;\n\

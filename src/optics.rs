@@ -166,7 +166,7 @@ pub fn channel_iors(dispersion: f32) -> [f32; 3] {
 /// (0, 0.05, 0.15) at grazing and (0, 0.1, 0.15) looking down, half the green.
 pub const GRAZING_TINT: [f32; 3] = [1.0, 0.5, 1.0];
 
-/// WGSL constants of this module, for the scene's passes (`render::shaders::scene_prelude`).
+/// WGSL constants of this module, for the scene's passes (`render::shaders::scene_prelude_in`).
 pub fn wgsl_constants() -> String {
     use FresnelModel::*;
     format!(

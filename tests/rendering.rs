@@ -313,7 +313,7 @@ fn pipelines_built_ahead_leave_the_first_frame_nothing_to_build() {
 }
 
 /// The water surface traces the objects only in the screen regions where it can show them
-/// (variants::surface_regions); under forty strong drops that picture is still the one tracing
+/// (the pool's regions::surface_regions); under forty strong drops that picture is still the one tracing
 /// them over all the water gives. (Regions without their margin change 0.013 % of it.)
 #[test]
 fn the_objects_regions_draw_what_tracing_the_objects_everywhere_draws() {

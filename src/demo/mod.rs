@@ -111,7 +111,7 @@ impl DemoBuild {
         };
         let renderer = Renderer::new(device, queue, settings, &water, self.tile_mips.as_deref().unwrap_or_default());
         let software = device.adapter_info().device_type == wgpu::DeviceType::Cpu;
-        Some(WaterDemo::assemble(water, renderer, options, software))
+        Some(WaterDemo::assemble(device, water, renderer, options, software))
     }
 }
 
@@ -132,12 +132,18 @@ impl WaterDemo {
     }
 
     /// The demo from its parts; `software`: whether the adapter is a software rasteriser.
-    fn assemble(water: HeightField, renderer: Renderer, options: DemoOptions, software: bool) -> Self {
+    fn assemble(
+        device: &wgpu::Device,
+        water: HeightField,
+        renderer: Renderer,
+        options: DemoOptions,
+        software: bool,
+    ) -> Self {
         let mut params = Params::default();
         params.set(ParamId::SimSize, options.sim_size as f32);
         let mut demo = Self {
             params,
-            scenes: Scenes::new(POOL, water, options.float_targets, software),
+            scenes: Scenes::new((device, &renderer), POOL, water, options.float_targets, software),
             shown: SceneKind::default(),
             renderer,
             clock: FixedStep::new(STEP_DT, MAX_STEPS_PER_FRAME),
@@ -236,10 +242,10 @@ impl WaterDemo {
         self.sync_scene();
     }
 
-    /// See [`Renderer::set_object_regions`].
+    /// See [`PoolPasses::set_object_regions`](crate::scenes::pool::render::PoolPasses::set_object_regions).
     #[doc(hidden)]
     pub fn set_object_regions(&mut self, on: bool) {
-        self.renderer.set_object_regions(on);
+        self.scenes.pool.passes_mut().set_object_regions(on);
     }
 
     /// See [`Renderer::set_body_outlines`].
@@ -248,9 +254,10 @@ impl WaterDemo {
         self.renderer.set_body_outlines(on);
     }
 
-    /// Pipeline sets built so far (see [`Renderer::pipeline_sets_built`]).
+    /// The pool's pipeline sets built so far (see
+    /// [`PoolPasses::pipeline_sets_built`](crate::scenes::pool::render::PoolPasses::pipeline_sets_built)).
     pub fn pipeline_sets_built(&self) -> usize {
-        self.renderer.pipeline_sets_built()
+        self.scenes.pool.passes().pipeline_sets_built()
     }
 
     /// Simulated time so far (s).

@@ -78,7 +78,7 @@ impl WaterDemo {
     /// The flat water's reflection texture, once flat water has been drawn (for tests).
     #[doc(hidden)]
     pub fn flat_reflection_texture(&self) -> Option<&wgpu::Texture> {
-        self.renderer.flat_reflection_texture()
+        self.scenes.pool.passes().flat_reflection_texture()
     }
 
     /// Whether the pool's flat water is drawn now: the pool shown, flat or split chosen and the

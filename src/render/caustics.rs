@@ -1,13 +1,10 @@
-//! The caustics map: the water grid projected along the refracted sunlight, each
-//! triangle adding the light its area gathers (`shaders/caustics.wgsl`), then its mip chain.
+//! The caustics map every scene pass binds, and its mip chain: the water grid projected along
+//! the refracted sunlight, each triangle adding the light its area gathers (drawn by the pool's
+//! caustics pass, `scenes/pool/render/caustics.rs`).
 
 use super::caustics_mips::CausticsMips;
-use super::meshes::{banded_grid, Mesh};
-use super::render_mode::{FlatCaustics, RenderMode};
-use super::{flat_shown, Renderer, View};
-use crate::gpu;
+use super::Renderer;
 use crate::param_spec::{Control, ParamSpec};
-use crate::sim::HeightField;
 
 /// Caustics map: red = light, green = light with the sphere's shadow.
 pub const CAUSTICS_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rg16Float;
@@ -17,15 +14,8 @@ pub const CAUSTICS_FORMAT_8BIT: wgpu::TextureFormat = wgpu::TextureFormat::Rg8Un
 /// light up to 10x is kept in 1/255 steps of it, brighter lines are clipped (the tone curve
 /// has flattened them by then anyway).
 pub const CAUSTICS_8BIT_SCALE: f32 = 10.0;
-/// Quads per side of the mesh projected into the caustics map for a simulation of
-/// `sim_size` cells per side: one quad per two cells resolves the shortest waves that make
-/// caustics while keeping the triangle count, which software rasterisers pay for, low.
-pub fn caustics_grid(sim_size: u32) -> u32 {
-    (sim_size / 2).clamp(64, 256)
-}
-
-/// The caustics map and the water grid (see [`caustics_grid`]) drawn into it (its pipeline
-/// is one of the [`ScenePipelines`]).
+/// The caustics map (the scene passes read it; the pool's caustics pass draws the water grid into
+/// it).
 pub(super) struct CausticsMap {
     /// The map and its mip chain.
     pub(super) mips: CausticsMips,
@@ -33,17 +23,11 @@ pub(super) struct CausticsMap {
     pub(super) size: u32,
     /// Whether `view` holds light per colour channel (dispersion; an RGBA map).
     pub(super) per_channel: bool,
-    pub(super) grid: Mesh,
-    /// Quads per side of `grid`.
-    pub(super) grid_size: u32,
 }
 
 impl CausticsMap {
-    pub(super) fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat, sim_size: u32) -> Self {
-        let grid_size = caustics_grid(sim_size);
-        let (grid_vertices, grid_indices) = banded_grid(grid_size);
-        let grid = Mesh::new(device, "caustics grid", &grid_vertices, &grid_indices);
-        Self { mips: CausticsMips::new(device, size, format), size, per_channel: false, grid, grid_size }
+    pub(super) fn new(device: &wgpu::Device, size: u32, format: wgpu::TextureFormat) -> Self {
+        Self { mips: CausticsMips::new(device, size, format), size, per_channel: false }
     }
 }
 
@@ -58,7 +42,7 @@ impl Renderer {
 
     /// Makes the caustics map `size` texels per side, with light per colour channel or not
     /// (rebinding it), if it is not already.
-    pub(super) fn resize_caustics(&mut self, device: &wgpu::Device, size: u32, per_channel: bool) {
+    pub fn resize_caustics(&mut self, device: &wgpu::Device, size: u32, per_channel: bool) {
         if size != self.caustics.size || per_channel != self.caustics.per_channel {
             self.caustics.mips = CausticsMips::new(device, size, self.settings.caustics_format_for(per_channel).0);
             self.caustics.size = size;
@@ -68,36 +52,13 @@ impl Renderer {
         }
     }
 
-    /// Projects the water grid along the refracted sunlight into the caustics map.
-    pub fn encode_caustics(
-        &mut self,
-        device: &wgpu::Device,
-        encoder: &mut wgpu::CommandEncoder,
-        view: &View,
-        water: &HeightField,
-    ) {
-        let features = view.features();
-        self.resize_caustics(device, self.caustics_size(view.render_scale), features.dispersion);
-        // The ray-traced part reads the map if caustics are on, flat water if it uses the real ones.
-        let traced_shown = flat_shown(view).is_none_or(|f| f.mode == RenderMode::Split && f.split < 1.0);
-        let flat_reads = flat_shown(view).is_some_and(|f| f.caustics == FlatCaustics::Real);
-        if !((view.caustics && traced_shown) || flat_reads) {
-            return;
-        }
-        self.variant(device, features);
-        let mut pass = gpu::colour_pass(
-            encoder,
-            "caustics",
-            &self.caustics.mips.target,
-            wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-        );
-        pass.set_bind_group(0, Some(&self.water_groups[water.state().current()]), &[]);
-        // One draw, or with dispersion one per colour channel (each with its own index).
-        for pipeline in &self.variants[&features].caustics {
-            pass.set_pipeline(pipeline);
-            self.caustics.grid.draw(&mut pass);
-        }
-        drop(pass);
+    /// The caustics map's finest level, to draw into (then [`Renderer::encode_caustics_mips`]).
+    pub fn caustics_target(&self) -> &wgpu::TextureView {
+        &self.caustics.mips.target
+    }
+
+    /// Makes the caustics map's coarser levels from its finest.
+    pub fn encode_caustics_mips(&self, encoder: &mut wgpu::CommandEncoder) {
         self.caustics.mips.encode(encoder);
     }
 }

@@ -1,36 +1,8 @@
-//! The debug view: one of the renderer's inner textures drawn in an inset or over the
-//! whole frame (`shaders/debug_view.wgsl`), one pass per texture shown.
+//! The debug view's parameters: which of the renderer's inner textures it shows, and where
+//! (drawn by the pool's passes, `scenes/pool/render/debug_view.rs`).
 
-use super::debug_choice::{DebugChoice, DebugTexture};
-use super::{shaders, AmbientView, Features, Renderer};
-use crate::gpu::{FullscreenPass, FullscreenTarget};
+use super::debug_choice::DebugChoice;
 use crate::param_spec::{Control, ParamSpec};
-
-impl Renderer {
-    /// The debug view's pass for `texture`, seeing the water with `ambient` waves added.
-    pub(super) fn debug_pass(
-        &mut self,
-        device: &wgpu::Device,
-        texture: DebugTexture,
-        ambient: AmbientView,
-    ) -> &FullscreenPass {
-        let layouts = [&self.water_layout, &self.textures_layout];
-        let format = self.settings.target_format;
-        let key = (texture, ambient.model, ambient.choppy());
-        self.debug_passes.entry(key).or_insert_with(|| {
-            let features = Features { ambient: ambient.model, choppy: ambient.choppy(), ..Features::default() };
-            let constants = format!("const DEBUG_TEXTURE: i32 = {};\n", texture as i32);
-            FullscreenPass::new(
-                device,
-                "debug view",
-                &[&constants, &shaders::scene_prelude(features, format), shaders::DEBUG_VIEW],
-                "fs_debug",
-                &layouts,
-                FullscreenTarget { format, blend: None, depth: None },
-            )
-        })
-    }
-}
 
 /// Which inner texture the debug view shows, and where. (The parameter table, `params::table`, lists them in this order.)
 pub const PARAMS: &[ParamSpec] = &[

@@ -1,6 +1,7 @@
 //! The paved deck the pool is sunk in (the `setting` parameter's default): a ring of ground at
 //! the rim's height from the pool's opening out to [`DECK_EXTENT`], coping stones along the
-//! opening, paving slabs beyond, fading into the sky's haze with distance (`shaders/deck.wgsl`).
+//! opening, paving slabs beyond, fading into the sky's haze with distance (drawn by the pool's
+//! passes with `shaders/pool/deck.wgsl`; the haze's shading, `deck_shade.wgsl`, is shared).
 
 use glam::{Mat4, Vec2, Vec3};
 
@@ -32,9 +33,6 @@ const BACKDROP_PATH_DOWN: f32 = 12.0;
 const HORIZON_LIFT: f32 = 0.01;
 /// Terms of the polynomial the haze's colour is written as ([`horizon_fit`]).
 pub const HORIZON_TERMS: usize = 5; // written out in horizon_colour (deck_shade.wgsl)
-
-/// The deck's fragment shader (its vertices go through the pool's `vs_pool`).
-pub const WGSL: &str = crate::wgsl!("deck.wgsl");
 
 /// The deck's WGSL constants.
 pub fn wgsl_constants() -> String {

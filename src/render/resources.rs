@@ -1,9 +1,7 @@
 //! The scene passes' bind groups and what they bind: the uniforms with the water's state and
 //! the ambient maps (group 0), the textures and samplers (group 1), the depth buffer.
 
-use super::caustics::caustics_grid;
 use super::flat;
-use super::meshes::{banded_grid, Mesh};
 use super::{Renderer, DEPTH_FORMAT};
 use crate::ambient::SPECTRUM_IMAGE_SIZE;
 use crate::gpu;
@@ -146,24 +144,29 @@ pub(super) struct DepthBuffer {
 }
 
 impl Renderer {
-    /// Rebinds the water state textures (after the heightfield was replaced).
-    /// Points the renderer at another heightfield (after a change of resolution); the caustics
-    /// mesh follows the new simulation size.
+    /// Points the renderer at another heightfield (after a change of resolution).
     pub fn rebind_water(&mut self, device: &wgpu::Device, water: &HeightField) {
-        let grid_size = caustics_grid(water.size());
-        if grid_size != self.caustics.grid_size {
-            let (vertices, indices) = banded_grid(grid_size);
-            self.caustics.grid = Mesh::new(device, "caustics grid", &vertices, &indices);
-            self.caustics.grid_size = grid_size;
-        }
         self.bind_water(device, water);
     }
 
-    /// Makes the scene passes' group 0 (for the camera and the mirrored one) for `water`.
+    /// Makes the scene passes' group 0 for `water`, and counts the binding
+    /// ([`Renderer::water_binding`]).
     pub(super) fn bind_water(&mut self, device: &wgpu::Device, water: &HeightField) {
         self.water_groups = water_bind_groups(device, &self.water_layout, &self.uniforms, water, &self.ambient_views);
-        self.mirror_groups =
-            water_bind_groups(device, &self.water_layout, &self.mirror_uniforms, water, &self.ambient_views);
+        self.water_binding += 1;
+    }
+
+    /// How many times group 0 has been made: a scene pass that binds the water and the ambient
+    /// maps with uniforms of its own (the flat water's mirrored camera) makes its groups again
+    /// when this changes.
+    pub fn water_binding(&self) -> u64 {
+        self.water_binding
+    }
+
+    /// The scene uniforms with each of the water's two state textures and the ambient maps
+    /// (group 0 of a scene pass), as [`water_bind_groups`] made them.
+    pub fn water_groups(&self) -> &[wgpu::BindGroup; 2] {
+        &self.water_groups
     }
 
     /// Reads the FFT ocean's surface and displacement from `views` (the GPU ocean's outputs)
@@ -199,7 +202,7 @@ impl Renderer {
     }
 
     /// Copies the foam amounts into the foam map the surface reads (remade, and rebound, when
-    /// the foam's grid changes size). Call before [`Renderer::encode_pool`] when foam is on.
+    /// the foam's grid changes size). Call before the scene's passes when foam is on.
     pub fn upload_foam(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, foam: &Foam) {
         let size = foam.size();
         if self.scene_textures.foam.0.width() != size {

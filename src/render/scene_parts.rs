@@ -1,16 +1,14 @@
 //! What a scene's own passes (`scenes/<name>/render`) take from the renderer: the scene
 //! uniforms and the layouts and bind groups every scene pass binds (the water's, the
-//! textures'), the depth target, the bodies' meshes, the render scale and its upscaler, and the
-//! helpers the pool's pipelines and passes are built with. The renderer names no scene but the
-//! pool it draws itself.
+//! textures'), the caustics map, the depth target, the bodies' meshes, the render scale and its
+//! upscaler, and the helpers pipelines and passes are built with. The renderer names no scene.
 
 use super::{Renderer, View};
 
-pub use super::meshes::{banded_grid, Mesh};
-pub use super::passes::begin_scene_pass;
+pub use super::meshes::{banded_grid, grid_coordinate, Mesh, GRID_BAND, VERTEX_CACHE};
+pub use super::pipelines::{begin_scene_pass, mesh_pipeline, DepthUse, MeshPipeline};
 pub use super::resources::water_bind_groups;
 pub use super::shaders::scene_prelude_in;
-pub use super::variants::{mesh_pipeline, DepthUse, MeshPipeline};
 pub use super::DEPTH_FORMAT;
 
 impl Renderer {
@@ -22,6 +20,12 @@ impl Renderer {
     /// The scene uniforms' buffer (written by [`Renderer::prepare`]).
     pub fn uniforms(&self) -> &wgpu::Buffer {
         &self.uniforms
+    }
+
+    /// A buffer of the scene uniforms' layout (zeroed), for a pass with a camera of its own
+    /// ([`Renderer::write_uniforms_above_water`]).
+    pub fn scene_uniform_buffer(&self, device: &wgpu::Device, label: &str) -> wgpu::Buffer {
+        crate::gpu::uniform_buffer(device, label, &<super::uniforms::SceneUniforms as bytemuck::Zeroable>::zeroed())
     }
 
     /// The layouts of a scene pass's first two bind groups: the uniforms with a water's state,
@@ -50,9 +54,15 @@ impl Renderer {
         self.depth_view(device, size)
     }
 
-    /// The size (pixels) a frame of `size` is drawn at by the view's render scale.
+    /// The size (pixels) a frame of `size` is drawn at: the view's render scale of it.
     pub fn scene_size(&self, view: &View, size: (u32, u32)) -> (u32, u32) {
-        self.scaled_size(view, size)
+        let scale = view.render_scale.clamp(0.25, 1.0);
+        if scale < 1.0 {
+            let scaled = |side: u32| ((side as f32 * scale).round() as u32).max(1);
+            (scaled(size.0), scaled(size.1))
+        } else {
+            size
+        }
     }
 
     /// The image to draw a frame into at `size` pixels below the target's (see

@@ -1,7 +1,9 @@
 //! The scene uniforms every scene pass reads (group 0, binding 0), written once per frame
 //! from the [`View`].
 
-use super::{flat, flat_shown, Renderer, View};
+use glam::{Mat4, Vec3};
+
+use super::{Renderer, View};
 use crate::ambient::MAX_AMBIENT_WAVES;
 use crate::bodies::{BodyId, UNIFORM_SLOTS};
 use crate::optics;
@@ -47,7 +49,7 @@ fn bodies_uniform(view: &View) -> [[f32; 4]; UNIFORM_SLOTS] {
 
 impl Renderer {
     /// Writes this frame's uniforms and repaints the sky if the sun moved.
-    /// Call once per submission, before [`Renderer::encode_caustics`] and [`Renderer::encode_pool`].
+    /// Call once per submission, before the scene's passes.
     pub fn prepare(
         &mut self,
         queue: &wgpu::Queue,
@@ -102,20 +104,22 @@ impl Renderer {
             bodies: bodies_uniform(view),
         };
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&u));
-        if let Some(f) = flat_shown(view) {
-            // The mirrored camera: everything it sees is above the water, so nothing is dimmed
-            // by water on the way (no absorption, no scattering).
-            let mirrored = view.view_proj * flat::mirror(f.plane);
-            let eye = view.eye * glam::Vec3::new(1.0, -1.0, 1.0) + glam::Vec3::new(0.0, 2.0 * f.plane, 0.0);
-            let m = SceneUniforms {
-                view_proj: mirrored.to_cols_array_2d(),
-                inv_view_proj: mirrored.inverse().to_cols_array_2d(),
-                eye: eye.extend(1.0).to_array(),
-                absorption: [0.0; 4],
-                scatter: [0.0; 4],
-                ..u
-            };
-            queue.write_buffer(&self.mirror_uniforms, 0, bytemuck::bytes_of(&m));
-        }
+        self.frame_uniforms = u;
+    }
+
+    /// Writes this frame's uniforms (from the last [`Renderer::prepare`]) as seen by another
+    /// camera into `buffer`: one that sees only what is above the water (the flat water's
+    /// mirrored camera), so nothing is dimmed by water on the way (no absorption, no
+    /// scattering).
+    pub fn write_uniforms_above_water(&self, queue: &wgpu::Queue, buffer: &wgpu::Buffer, view_proj: Mat4, eye: Vec3) {
+        let u = SceneUniforms {
+            view_proj: view_proj.to_cols_array_2d(),
+            inv_view_proj: view_proj.inverse().to_cols_array_2d(),
+            eye: eye.extend(1.0).to_array(),
+            absorption: [0.0; 4],
+            scatter: [0.0; 4],
+            ..self.frame_uniforms
+        };
+        queue.write_buffer(buffer, 0, bytemuck::bytes_of(&u));
     }
 }

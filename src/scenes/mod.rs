@@ -224,9 +224,11 @@ pub struct Scenes {
 }
 
 impl Scenes {
-    /// The scenes at their starts: the pool of `shape` with `water`; `float_targets`: whether
-    /// the device renders into float textures; `software`: whether it is a software rasteriser.
+    /// The scenes at their starts, drawn by `renderer`: the pool of `shape` with `water`;
+    /// `float_targets`: whether the device renders into float textures; `software`: whether it
+    /// is a software rasteriser.
     pub fn new(
+        (device, renderer): (&wgpu::Device, &Renderer),
         shape: crate::world::PoolShape,
         water: crate::sim::HeightField,
         float_targets: bool,
@@ -234,7 +236,7 @@ impl Scenes {
     ) -> Self {
         let engine = water.engine();
         Self {
-            pool: pool::PoolScene::new(shape, water, float_targets),
+            pool: pool::PoolScene::new((device, renderer), shape, water, float_targets),
             sea: sea::SeaScene::new(engine, float_targets, software),
             tank: tank::TankScene::new(float_targets),
         }

@@ -1,8 +1,10 @@
 //! The pool (`scene` = pool): the tiled pool's water simulated on a height field, the floating
 //! bodies coupled to it, the ambient waves over it, drawn ray-traced, flat or split by the
-//! renderer's pool passes. Its camera orbits the pool within `camera::POOL_LIMITS`.
+//! pool's passes (`render/`) on the renderer's shared resources. Its camera orbits the pool
+//! within `camera::POOL_LIMITS`.
 
 mod bodies;
+pub mod render;
 mod view;
 
 use glam::{Vec2, Vec3};
@@ -17,6 +19,7 @@ use crate::physics::Pose;
 use crate::render::{DebugTexture, RenderMode, Renderer};
 use crate::sim::{Drop, HeightField, WaveSettings};
 use crate::world::PoolShape;
+use render::PoolPasses;
 
 /// How near (pixels) to the split view's divider a press grabs it.
 pub const DIVIDER_GRAB_PX: f32 = 12.0;
@@ -43,13 +46,21 @@ pub struct PoolScene {
     gpu_ocean: Option<GpuOcean>,
     /// Whether the renderer holds the current ambient waves' spectrum image.
     spectrum_shown: bool,
+    /// The pool's pipelines, meshes and passes.
+    passes: PoolPasses,
 }
 
 impl PoolScene {
-    /// The pool of `shape` with `water` (as wide); the FFT ocean on the GPU where it renders
-    /// into `float_targets`.
-    pub fn new(shape: PoolShape, water: HeightField, float_targets: bool) -> Self {
+    /// The pool of `shape` with `water` (as wide), drawn by `renderer`; the FFT ocean on the
+    /// GPU where it renders into `float_targets`.
+    pub fn new(
+        (device, renderer): (&wgpu::Device, &Renderer),
+        shape: PoolShape,
+        water: HeightField,
+        float_targets: bool,
+    ) -> Self {
         Self {
+            passes: PoolPasses::new(device, renderer, &water),
             camera: OrbitCamera::default(),
             shape,
             applied_sim_size: 0.0,
@@ -79,6 +90,15 @@ impl PoolScene {
 
     pub fn water(&self) -> &HeightField {
         &self.water
+    }
+
+    /// The pool's passes.
+    pub fn passes(&self) -> &PoolPasses {
+        &self.passes
+    }
+
+    pub fn passes_mut(&mut self) -> &mut PoolPasses {
+        &mut self.passes
     }
 
     /// The ambient waves (heights in m at the demo's simulated time).
@@ -186,9 +206,10 @@ impl super::Scene for PoolScene {
         self.encode_ocean(renderer, &mut cx, sh.sim_time());
         mark(cx.encoder, Stage::AfterWaves);
         renderer.prepare(queue, cx.encoder, &view, &self.water);
-        renderer.encode_caustics(device, cx.encoder, &view, &self.water);
+        self.passes.prepare(renderer, device, queue, &view, &self.water);
+        self.passes.encode_caustics(renderer, device, cx.encoder, &view, &self.water);
         mark(cx.encoder, Stage::AfterMaps);
-        renderer.encode_pool(device, cx.encoder, cx.target, cx.size, &view, &self.water);
+        self.passes.encode_pool(renderer, &mut cx, &view, &self.water);
         mark(cx.encoder, Stage::AfterShading);
     }
 
@@ -209,7 +230,7 @@ impl super::Scene for PoolScene {
         size: (u32, u32),
     ) -> bool {
         let view = self.view(sh);
-        renderer.build_ahead(device, &view, size)
+        self.passes.build_ahead(renderer, device, &view, size)
     }
 
     fn stage_names(&self) -> [&'static str; 4] {

@@ -8,10 +8,9 @@ use std::ops::Range;
 
 use glam::{Vec3, Vec4Swizzles};
 
-use super::features::Features;
 use super::meshes::GridBand;
-use super::View;
 use crate::bodies::BodyId;
+use crate::render::{Features, View};
 use crate::sim::MAX_HEIGHT;
 
 /// Margin around an object's region of the water surface, as a fraction of the region's

@@ -3,13 +3,13 @@
 //! without a GPU, lavapipe) run both sides of every branch, so a uniform "is there a duck"
 //! test still costs the duck's ray tests; a constant written into the source lets the shader
 //! compiler drop them. The constants come from [`Features::wgsl`]; pipelines are built the
-//! first time a feature set is drawn and kept ([`Renderer`](super::Renderer) caches them).
+//! first time a feature set is drawn and kept ([`PoolPasses`](super::PoolPasses) caches them).
 
-use super::features::Features;
 use super::shaders;
-use super::DEPTH_FORMAT;
 use crate::bodies::BodyId;
 use crate::gpu;
+use crate::render::scene_parts::{mesh_pipeline, DepthUse, MeshPipeline};
+use crate::render::Features;
 
 /// The pipelines of the passes that read the scene's features: the caustics map and the
 /// water surface, pool, sphere and duck of the scene pass.
@@ -41,7 +41,7 @@ pub struct PipelineTargets<'a> {
 
 /// A variant's pipelines built one at a time: each compiles a shader, 20 to 60 ms of a
 /// browser's main thread on WebGL2 without a GPU, so a start-up that must not hold the thread
-/// for long builds one per task ([`super::Renderer::build_ahead`]).
+/// for long builds one per task ([`super::PoolPasses::build_ahead`]).
 pub struct VariantBuild {
     features: Features,
     prelude: String,
@@ -111,7 +111,7 @@ impl VariantBuild {
             let module = module("pool", shaders::POOL);
             self.pool = Some(scene("pool", &module, "vs_pool", "fs_pool", pool_attributes, 24, back));
         } else if self.deck.is_none() {
-            let module = module("deck", &[shaders::POOL, super::deck::WGSL].concat());
+            let module = module("deck", &[shaders::POOL, shaders::DECK].concat());
             self.deck = Some(scene("deck", &module, "vs_pool", "fs_deck", pool_attributes, 24, back));
         } else if self.bodies.len() < BodyId::all().count() {
             // The next kind of body in the features (the others get no pipeline).
@@ -261,70 +261,4 @@ fn caustics_pipelines(
             )
         })
         .collect()
-}
-
-pub struct MeshPipeline<'a> {
-    pub label: &'a str,
-    pub module: &'a wgpu::ShaderModule,
-    pub vertex_entry: &'a str,
-    pub fragment_entry: &'a str,
-    pub layouts: &'a [&'a wgpu::BindGroupLayout],
-    pub attributes: &'a [wgpu::VertexAttribute],
-    pub stride: u64,
-    pub cull: Option<wgpu::Face>,
-    /// The winding of front faces on screen (clockwise under a mirrored camera).
-    pub front_face: wgpu::FrontFace,
-    pub format: wgpu::TextureFormat,
-    pub blend: Option<wgpu::BlendState>,
-    pub write_mask: wgpu::ColorWrites,
-    pub depth: DepthUse,
-}
-
-/// What a pipeline does with the depth target ([`DEPTH_FORMAT`]).
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub enum DepthUse {
-    /// No depth target.
-    None,
-    /// Drawn where nearer than what is there, without changing the depth.
-    Test,
-    /// Drawn where nearer than what is there, and its depth kept.
-    TestAndWrite,
-}
-
-pub fn mesh_pipeline(device: &wgpu::Device, p: MeshPipeline<'_>) -> wgpu::RenderPipeline {
-    let layout = gpu::pipeline_layout(device, p.label, p.layouts);
-    let buffer = Some(wgpu::VertexBufferLayout {
-        array_stride: p.stride,
-        step_mode: wgpu::VertexStepMode::Vertex,
-        attributes: p.attributes,
-    });
-    // Without attributes, no vertex buffer: the shader makes its vertices from their index.
-    let buffers = if p.attributes.is_empty() { &[][..] } else { std::slice::from_ref(&buffer) };
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(p.label),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState {
-            module: p.module,
-            entry_point: Some(p.vertex_entry),
-            compilation_options: Default::default(),
-            buffers,
-        },
-        primitive: wgpu::PrimitiveState { cull_mode: p.cull, front_face: p.front_face, ..Default::default() },
-        depth_stencil: (p.depth != DepthUse::None).then(|| wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(p.depth == DepthUse::TestAndWrite),
-            depth_compare: Some(wgpu::CompareFunction::Less),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: wgpu::MultisampleState::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: p.module,
-            entry_point: Some(p.fragment_entry),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState { format: p.format, blend: p.blend, write_mask: p.write_mask })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
 }
