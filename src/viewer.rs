@@ -180,25 +180,7 @@ impl Viewer {
         ui.heading("wavepool");
         egui::ScrollArea::vertical().show(ui, |ui| {
             self.language_menu(ui);
-            // A lesson's starting state: its values and view, calm water (as the page's select).
-            let mut chosen: Option<&'static Preset> = None;
-            let words = &self.words;
-            egui::ComboBox::from_label(words.page("preset"))
-                .selected_text(words.page("preset-choose"))
-                .show_ui(ui, |ui| {
-                    for preset in PRESETS {
-                        let item = ui.selectable_label(false, words.preset_label(preset));
-                        if item.on_hover_text(words.preset_help(preset)).clicked() {
-                            chosen = Some(preset);
-                        }
-                    }
-                })
-                .response
-                .on_hover_text(words.page("preset.title"));
-            if let Some(preset) = chosen {
-                self.demo.apply_preset(preset);
-                self.demo.reset(&self.render_state.queue);
-            }
+            self.preset_menu(ui);
             let mut groups: Vec<&str> = Vec::new();
             for p in table() {
                 if !groups.contains(&p.group) {
@@ -249,44 +231,74 @@ impl Viewer {
                     }
                 }
             });
-            ui.separator();
-            let w = &self.words;
-            let (cpu, between) = (w.number(self.cpu_ms.into(), 1), w.number(self.interval_ms.into(), 1));
-            ui.label(w.page_with("viewer-frame", &[("cpu", cpu), ("between", between)]));
-            match self.timer.as_ref().and_then(|t| t.latest()) {
-                Some(ms) => {
-                    let names = self.demo.stage_names();
-                    let stages: Vec<String> =
-                        names.iter().zip(ms).map(|(n, v)| format!("{} {} ms", w.stage(n), w.number(v, 1))).collect();
-                    ui.label(w.page_with("viewer-gpu", &[("stages", stages.join(", "))]))
-                }
-                None if self.timer.is_none() => ui.label(w.page("viewer-gpu-none")),
-                None => ui.label(w.page("viewer-gpu-waiting")),
-            };
-            let pool = self.demo.render_modes_apply();
-            if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
-                let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
-                self.mode_costs.observe(mode, stages);
-                let spec = table()[ParamId::RenderMode as usize].spec;
-                let costs = self.mode_costs.summary_named(|mode| self.words.choice(spec, mode.value()));
-                ui.label(self.words.page_with("viewer-costs", &[("costs", costs)]));
-            }
-            let w = &self.words;
-            if let Some(note) = self.demo.flat_water_note() {
-                ui.colored_label(egui::Color32::from_rgb(230, 180, 60), w.page(note));
-            }
-            let (cells, seconds) = (self.demo.water().size().to_string(), w.number(self.demo.sim_time(), 1));
-            ui.label(w.page_with("viewer-water", &[("cells", cells), ("seconds", seconds)]));
-            ui.label(w.page_with("viewer-adapter", &[("name", self.render_state.adapter.get_info().name)]));
-            for (name, value, unit) in self.demo.readings() {
-                ui.label(format!(
-                    "{}: {} {unit}",
-                    w.page(&format!("reading-{}", name.replace(' ', "-"))),
-                    w.number(value.into(), 2)
-                ));
-            }
-            ui.small(w.page("page-intro"));
+            self.frame_status(ui);
         });
+    }
+
+    /// The lessons' presets: a lesson's starting state, its values and view, with calm water
+    /// (as the page's select).
+    fn preset_menu(&mut self, ui: &mut egui::Ui) {
+        let mut chosen: Option<&'static Preset> = None;
+        let words = &self.words;
+        egui::ComboBox::from_label(words.page("preset"))
+            .selected_text(words.page("preset-choose"))
+            .show_ui(ui, |ui| {
+                for preset in PRESETS {
+                    let item = ui.selectable_label(false, words.preset_label(preset));
+                    if item.on_hover_text(words.preset_help(preset)).clicked() {
+                        chosen = Some(preset);
+                    }
+                }
+            })
+            .response
+            .on_hover_text(words.page("preset.title"));
+        if let Some(preset) = chosen {
+            self.demo.apply_preset(preset);
+            self.demo.reset(&self.render_state.queue);
+        }
+    }
+
+    /// Under the panel's controls: the frame's times (CPU, between frames, the GPU's stages and
+    /// the render modes' costs), the flat water's note, the water, the adapter and the scene's
+    /// readings.
+    fn frame_status(&mut self, ui: &mut egui::Ui) {
+        ui.separator();
+        let w = &self.words;
+        let (cpu, between) = (w.number(self.cpu_ms.into(), 1), w.number(self.interval_ms.into(), 1));
+        ui.label(w.page_with("viewer-frame", &[("cpu", cpu), ("between", between)]));
+        match self.timer.as_ref().and_then(|t| t.latest()) {
+            Some(ms) => {
+                let names = self.demo.stage_names();
+                let stages: Vec<String> =
+                    names.iter().zip(ms).map(|(n, v)| format!("{} {} ms", w.stage(n), w.number(v, 1))).collect();
+                ui.label(w.page_with("viewer-gpu", &[("stages", stages.join(", "))]))
+            }
+            None if self.timer.is_none() => ui.label(w.page("viewer-gpu-none")),
+            None => ui.label(w.page("viewer-gpu-waiting")),
+        };
+        let pool = self.demo.render_modes_apply();
+        if let Some(stages) = self.timer.as_ref().and_then(|t| t.latest()).filter(|_| pool) {
+            let mode = self.demo.params.choice::<RenderMode>(ParamId::RenderMode);
+            self.mode_costs.observe(mode, stages);
+            let spec = table()[ParamId::RenderMode as usize].spec;
+            let costs = self.mode_costs.summary_named(|mode| self.words.choice(spec, mode.value()));
+            ui.label(self.words.page_with("viewer-costs", &[("costs", costs)]));
+        }
+        let w = &self.words;
+        if let Some(note) = self.demo.flat_water_note() {
+            ui.colored_label(egui::Color32::from_rgb(230, 180, 60), w.page(note));
+        }
+        let (cells, seconds) = (self.demo.water().size().to_string(), w.number(self.demo.sim_time(), 1));
+        ui.label(w.page_with("viewer-water", &[("cells", cells), ("seconds", seconds)]));
+        ui.label(w.page_with("viewer-adapter", &[("name", self.render_state.adapter.get_info().name)]));
+        for (name, value, unit) in self.demo.readings() {
+            ui.label(format!(
+                "{}: {} {unit}",
+                w.page(&format!("reading-{}", name.replace(' ', "-"))),
+                w.number(value.into(), 2)
+            ));
+        }
+        ui.small(w.page("page-intro"));
     }
 
     /// The panel's language: the catalogues' languages, each named in its own words.
