@@ -70,6 +70,9 @@ var<private> specular_spread: f32 = 1.0;
 // Mip level of the caustics lookup (caustics_at) for the pixel being shaded: at least
 // CAUSTICS_MIN_LOD, more where the pixel covers more of the floor (set by pool_colour_at_hit).
 var<private> caustics_lod: f32 = CAUSTICS_MIN_LOD;
+// Tile levels the water surface added for its normal's turning within the pixel (fs_surface):
+// the tiles' grout needs them, the caustics map is read without them (pool_colour_at_hit).
+var<private> tile_turning: f32 = 0.0;
 
 // The sun's and the sky's light (sky.rs: Preetham's sky, the sun through the air).
 fn sun_light() -> vec3<f32> { return scene.sun_light.rgb; }

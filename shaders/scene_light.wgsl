@@ -164,7 +164,7 @@ fn tile_lod(hit: vec3<f32>) -> f32 {
 // which cost lavapipe's default frame 0.9 ms.
 fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
-    let footprint = exp2(lod) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
+    let footprint = exp2(lod - tile_turning) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     let n = pool_normal(p);
     let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;

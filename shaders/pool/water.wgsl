@@ -67,6 +67,7 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     // normal turns fast across the pixel (ripples finer than the quad's differences see):
     // there the grout, one or two texels wide, would alias into dark specks.
     let turning = min(TILE_LOD_TURNING_MAX, TILE_LOD_PER_TURN * sqrt(dot(dnx, dnx) + dot(dny, dny)));
+    tile_turning = turning;
     let lod_air = tile_lod(in.world + air_dir * t_air) + turning;
     let lod_water = tile_lod(in.world + water_dir * t_water) + turning;
     let r = reflectance(dot(-view, n), eta);
