@@ -50,24 +50,31 @@ fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
 
 // Light the duck lets through along a segment, like sphere_visibility: per part, how close
 // the segment passes to its centre in the part's unit-ball space (duck_parts_light, written by
-// bodies/duck.rs: the product over the parts, written out). Unlike sphere_visibility it has no
-// early return far from the duck: on a software rasteriser, which runs every branch anyway,
-// the branch cost more than the parts. Its penumbra is the parts' own, whatever the distance
-// to the point lit (t_lit, unused).
+// bodies/duck.rs: the product over the parts, written out), its penumbra an eighth of the
+// part's size where the point lit touches it and SHADOW_SPREAD wider per metre between them
+// (t_lit: where along the line the point lit lies). Unlike sphere_visibility it has no early
+// return far from the duck: on a software rasteriser, which runs every branch anyway, the
+// branch cost more than the parts.
 fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let to_duck = transpose(duck_rotation());
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
-    return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max), near_duck(origin, dir, t_max));
+    let bound = scene.bodies[DUCK_SLOT + 4];
+    let t = clamp(dot(bound.xyz - origin, dir), 0.0, t_max);
+    let reach = bound.w + abs(t_lit - t) * SHADOW_SPREAD;
+    let near = bound.w > 0.0 && distance(origin + dir * t, bound.xyz) < reach;
+    return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max, t_lit), near);
 }
 
 // Light part i lets through along the segment o_duck + t d_duck, t in [0, t_max] (the duck's
-// frame): soft, by how close the segment passes to the part's centre in its unit-ball space.
-fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, i: i32) -> f32 {
+// frame, t in m along the segment): soft, by how close the segment passes to the part's centre
+// in its unit-ball space, over a penumbra that widens with the distance to the point lit.
+fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, t_lit: f32, i: i32) -> f32 {
     let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
     let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
     let d = d_duck / radii;
     let t = clamp(-dot(o, d) / dot(d, d), 0.0, t_max);
-    return smoothstep(0.85, 1.1, length(o + d * t));
+    let half = 0.125 + abs(t_lit - t) * SHADOW_SPREAD * 3.0 / (radii.x + radii.y + radii.z);
+    return smoothstep(0.975 - half, 0.975 + half, length(o + d * t));
 }
 
 // Signed distance (m) from the duck's traced parts, negative inside one (bodies_field): per

@@ -460,3 +460,54 @@ fn a_spheres_shadow_is_sharp_where_it_nearly_touches_the_floor_and_soft_when_it_
         "the floating sphere's shadow is not softer: {floating} px against {touching} px"
     );
 }
+
+/// The duck's shadow on the floor is sharp where the duck sits on the floor and soft when it
+/// floats a metre above it (each part's penumbra grows with the distance to the point it
+/// shades, as the sphere's does). Read off the caustics map (the debug view: the floor's light,
+/// no water in front) along the row through the shadow, the sun from the side, divided by the
+/// same row without the duck (the walls' shadow left out): the edges' widths from 10 % to 90 %
+/// of the light the duck takes away.
+#[test]
+fn the_ducks_shadow_is_sharp_where_it_sits_on_the_floor_and_soft_when_it_floats() {
+    let (w, h) = (320, 240);
+    let row_of = |objects: f32, y: f32| {
+        let mut demo = demo_with(objects, true);
+        demo.params.set(ParamId::Gravity, 0.0);
+        demo.params.set(ParamId::SunAzimuth, 90.0);
+        demo.params.set(ParamId::SunElevation, 60.0);
+        demo.params.set(ParamId::DebugView, 4.0);
+        demo.params.set(ParamId::DebugInset, 0.0);
+        let id = BodyId::named("duck").expect("the duck is a kind");
+        demo.set_body_pose(id, Pose::at(Vec3::new(0.0, y, 0.0)));
+        let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+        let row: Vec<f64> = ((w - h) / 2 + 8..(w + h) / 2 - 8).map(|x| frame.luma(x, h / 2)).collect();
+        (row, demo.duck().map(|p| p.position.y))
+    };
+    let (bare, _) = row_of(NONE, 0.0);
+    let edge_width = |y: f32| {
+        let (row, at) = row_of(DUCK, y);
+        // The share of the floor's light the duck leaves, where the floor is lit without it.
+        let share: Vec<f64> = row.iter().zip(&bare).map(|(l, b)| if *b > 10.0 { l / b } else { 1.0 }).collect();
+        let darkest = (0..share.len()).min_by(|&a, &b| share[a].total_cmp(&share[b])).unwrap();
+        let least = share[darkest];
+        let crossing = |step: isize, level: f64| {
+            let mut x = darkest as isize;
+            while x > 0 && x < share.len() as isize - 1 && share[x as usize] < least + level * (1.0 - least) {
+                x += step;
+            }
+            x
+        };
+        let left = (crossing(-1, 0.9) - crossing(-1, 0.1)).abs();
+        let right = (crossing(1, 0.9) - crossing(1, 0.1)).abs();
+        println!(
+            "duck at y = {:.2} m: its shadow {:.0} % deep, edges {left} and {right} px wide",
+            at.expect("the duck is in the pool"),
+            100.0 * (1.0 - least)
+        );
+        assert!(least < 0.5, "no shadow under the duck at y = {y}: {least}");
+        (left + right) as f32 / 2.0
+    };
+    let sitting = edge_width(-0.9);
+    let floating = edge_width(0.0);
+    assert!(floating > 1.6 * sitting, "the floating duck's shadow is not softer: {floating} px against {sitting} px");
+}

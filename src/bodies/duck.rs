@@ -50,9 +50,10 @@ pub const KIND: BodyKind = BodyKind {
 /// loop. A software rasteriser (SwiftShader) runs a loop's whole body for every vertex, at
 /// several times the cost of its arithmetic, and the caustics' vertices ask twice.
 fn parts_wgsl() -> String {
-    let light: Vec<String> = (0..TRACED_PARTS.len()).map(|i| format!("duck_part_light(o, d, t_max, {i})")).collect();
+    let light: Vec<String> =
+        (0..TRACED_PARTS.len()).map(|i| format!("duck_part_light(o, d, t_max, t_lit, {i})")).collect();
     format!(
-        "const DUCK_PARTS: i32 = {};\nfn duck_parts_light(o: vec3<f32>, d: vec3<f32>, t_max: f32) -> f32 {{\n    return {};\n}}\n",
+        "const DUCK_PARTS: i32 = {};\nfn duck_parts_light(o: vec3<f32>, d: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {{\n    return {};\n}}\n",
         TRACED_PARTS.len(),
         light.join(" * ")
     )
