@@ -60,7 +60,9 @@ fn duck_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
     let bound = scene.bodies[DUCK_SLOT + 4];
     let t = clamp(dot(bound.xyz - origin, dir), 0.0, t_max);
-    let reach = bound.w + abs(t_lit - t) * SHADOW_SPREAD;
+    // A part's penumbra widens by its longest radius over its mean one (up to 1.5) times
+    // SHADOW_SPREAD per metre, beyond the bound by a hair at contact.
+    let reach = bound.w + abs(t_lit - t) * SHADOW_SPREAD * 1.5 + 0.01;
     let near = bound.w > 0.0 && distance(origin + dir * t, bound.xyz) < reach;
     return select(1.0, duck_parts_light(o_duck, to_duck * dir, t_max, t_lit), near);
 }

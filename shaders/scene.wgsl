@@ -3,7 +3,7 @@
 // light, pool tiles), glaze (the tiles' glaze above the water), scene_bodies (the sphere and the duck), scene_optics (sky, highlight,
 // Fresnel, absorption) and scene_trace (rays through air or water, the displayed colour).
 // Compiled per feature set: HAS_<BODY> per kind of body, HAS_CAUSTICS, FRESNEL_MODEL, SPECULAR_MODEL and
-// SHOW_REFLECTANCE are constants written ahead of this file (render/variants.rs), so the code
+// SHOW_REFLECTANCE are constants written ahead of this file (render::Features::wgsl), so the code
 // of what is not in the pool, or of a model not chosen, compiles away.
 
 struct Scene {

@@ -462,7 +462,7 @@ fn a_spheres_shadow_is_sharp_where_it_nearly_touches_the_floor_and_soft_when_it_
 }
 
 /// The duck's shadow on the floor is sharp where the duck sits on the floor and soft when it
-/// floats a metre above it (each part's penumbra grows with the distance to the point it
+/// floats about 0.9 m above it (each part's penumbra grows with the distance to the point it
 /// shades, as the sphere's does). Read off the caustics map (the debug view: the floor's light,
 /// no water in front) along the row through the shadow, the sun from the side, divided by the
 /// same row without the duck (the walls' shadow left out): the edges' widths from 10 % to 90 %
@@ -509,5 +509,6 @@ fn the_ducks_shadow_is_sharp_where_it_sits_on_the_floor_and_soft_when_it_floats(
     };
     let sitting = edge_width(-0.9);
     let floating = edge_width(0.0);
+    assert!(sitting >= 1.0, "no shadow edge found under the duck on the floor");
     assert!(floating > 1.6 * sitting, "the floating duck's shadow is not softer: {floating} px against {sitting} px");
 }

@@ -227,7 +227,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     var out = finish(seen);
     // Near the bodies (their own variant, blended by its alpha) the water is not drawn inside
     // a hull, and at the waterline of one drawn as it is traced it covers only its share of
-    // the pixel, over the body drawn before, as in the pool (shaders/water.wgsl).
+    // the pixel, over the body drawn before, as in the pool (shaders/pool/water.wgsl).
     if MIRRORED_BODIES {
         out.a = water_share(in.world, sea.eye.xyz, v, world_footprint);
         if out.a < 0.0 {

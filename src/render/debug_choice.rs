@@ -1,7 +1,7 @@
 //! What the debug view shows: the `debug_view` parameter's options, the inner texture and
-//! where it goes (the pass that draws it is `debug_view.rs`).
+//! where it goes (the pool's passes draw it: `scenes/pool/render/debug_view.rs`).
 
-/// Which inner texture the debug view shows (see `shaders/debug_view.wgsl`), and where.
+/// Which inner texture the debug view shows (see `shaders/pool/debug_view.wgsl`), and where.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct DebugView {
     pub texture: DebugTexture,

@@ -62,13 +62,14 @@ pub struct RenderSettings {
     pub target_format: wgpu::TextureFormat,
     /// Side of the caustics map in texels.
     pub caustics_size: u32,
-    /// Quads per side of the water surface mesh. The fragment shader reads heights and
-    /// normals per pixel, so this only shapes the surface's outline and parallax.
+    /// Quads per side of the pool's water surface mesh (its passes' grid). The fragment shader
+    /// reads heights and normals per pixel, so this only shapes the surface's outline and
+    /// parallax.
     pub surface_grid: u32,
     /// Whether the device can render (and blend) into float textures; without, the caustics
     /// map is 8-bit ([`CAUSTICS_FORMAT_8BIT`]).
     pub float_targets: bool,
-    /// The box of the pool it draws (m).
+    /// The pool's box (m): the uniforms give it to every scene pass, the pool's passes draw it.
     pub pool: crate::world::PoolShape,
 }
 

@@ -107,7 +107,8 @@ impl Renderer {
         self.frame_uniforms = u;
     }
 
-    /// Writes this frame's uniforms (from the last [`Renderer::prepare`]) as seen by another
+    /// Writes this frame's uniforms (from the last [`Renderer::prepare`], so call it after the
+    /// scene's own `prepare` in the same frame) as seen by another
     /// camera into `buffer`: one that sees only what is above the water (the flat water's
     /// mirrored camera), so nothing is dimmed by water on the way (no absorption, no
     /// scattering).

@@ -19,7 +19,8 @@ struct Picture<'a> {
 
 impl PoolPasses {
     /// Draws sky, pool, sphere and water into the frame's target at the view's render scale,
-    /// the split view's divider and the debug view over them.
+    /// the split view's divider and the debug view over them. After [`PoolPasses::prepare`] in
+    /// the same frame (the mirrored camera's uniforms and groups).
     pub fn encode_pool(
         &mut self,
         renderer: &mut Renderer,
