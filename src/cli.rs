@@ -276,6 +276,8 @@ impl StartArgs {
         for (name, v) in &self.sets {
             demo.params.set_by_name(name, *v).expect("names checked while parsing");
         }
+        // The bodies start where these values put them (a sphere without gravity under the water).
+        demo.reset(&gpu.queue);
         if let Some(Err(why)) = self.sketch.as_deref().map(|text| demo.set_sketch(text)) {
             eprintln!("wavepool: --sketch ignored: {why}");
         }

@@ -56,6 +56,8 @@ fn dragging_the_sky_orbits_and_dragging_the_sphere_moves_it() {
     // The sphere alone, held still: the water is flat at the level its volume raises.
     demo.params.set(ParamId::Objects, 1.0);
     demo.params.set(ParamId::Gravity, 0.0);
+    // Where a pool without gravity starts it, under the water (the demo was made with gravity).
+    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     let calm = max_height(&demo);
     let yaw = demo.camera().yaw;

@@ -18,6 +18,8 @@ const H: u32 = 240;
 fn still_sphere(demo: &mut WaterDemo) {
     demo.params.set(ParamId::Objects, 1.0);
     demo.params.set(ParamId::Gravity, 0.0);
+    // Where a pool without gravity starts it (the demo was made with gravity on).
+    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
 }
 
 fn with_drops(seed: u64, count: u32) -> WaterDemo {
@@ -396,7 +398,8 @@ fn the_spheres_outline_and_waterline_are_blended_on_their_edges_and_nowhere_else
         // sides, and the blend there, though between the two, cannot be told from shading.
         demo.params.set(ParamId::SunAzimuth, 35.0);
         demo.params.set(ParamId::SunElevation, 55.0);
-        // A second: the sphere has risen from where it starts to float.
+        // A second: the sphere, released under the water, has risen to float.
+        demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
         let image = render(&mut demo, w, h, 60, 1.0 / 60.0);
         (image, waterline(&demo, Vec2::new(w as f32, h as f32)))
     };

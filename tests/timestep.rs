@@ -22,6 +22,9 @@ fn run_with(fps: f64, until: f64, objects: f32) -> (Vec<[f32; 4]>, [Vec3; 2]) {
     let mut demo =
         common::demo(DemoOptions { sim_size: 128, caustics_size: 256, surface_grid: 32, ..DemoOptions::default() });
     demo.params.set(ParamId::Objects, objects);
+    // The sphere released under the water, so that it rises and bobs (it starts at rest at its
+    // floating height).
+    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
     let target = OffscreenTarget::new(&g.device, 64, 48);
     // Drops at these simulated times (s): multiples of 1/30 s, reached exactly at every rate.
     let mut drops = vec![(0.0, 0.2, -0.3), (0.2, -0.5, 0.1), (0.5, 0.0, 0.6), (0.9, 0.4, 0.4)];

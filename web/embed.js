@@ -107,6 +107,8 @@ export async function mount(element, options = {}) {
     }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
     if (opts.camera) handle._core.setCamera(...opts.camera);
+    // The bodies start where these values put them (a sphere without gravity under the water).
+    handle._core.reset();
     if (opts.sketch) handle._core.setSketch(opts.sketch);
     handle._setWords(await words);
     handle._noticeReduced();
