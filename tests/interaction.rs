@@ -6,6 +6,7 @@
 mod common;
 
 use glam::{Vec2, Vec3};
+use wavepool::bodies::sphere;
 use wavepool::camera::Pick;
 use wavepool::demo::{BodyId, DemoOptions, Key};
 use wavepool::params::ParamId;
@@ -57,7 +58,7 @@ fn dragging_the_sky_orbits_and_dragging_the_sphere_moves_it() {
     demo.params.set(ParamId::Objects, 1.0);
     demo.params.set(ParamId::Gravity, 0.0);
     // Where a pool without gravity starts it, under the water (the demo was made with gravity).
-    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
+    demo.set_sphere_centre(sphere::CLASSIC_START);
     let _ = common::render(&mut demo, SIZE.0, SIZE.1, 1, 1.0 / 60.0);
     let calm = max_height(&demo);
     let yaw = demo.camera().yaw;

@@ -6,6 +6,7 @@ mod common;
 
 use common::{render, Area, Image};
 use glam::{Vec2, Vec3};
+use wavepool::bodies::sphere;
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::headless::{read_png, write_png};
 use wavepool::params::ParamId;
@@ -19,7 +20,7 @@ fn still_sphere(demo: &mut WaterDemo) {
     demo.params.set(ParamId::Objects, 1.0);
     demo.params.set(ParamId::Gravity, 0.0);
     // Where a pool without gravity starts it (the demo was made with gravity on).
-    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
+    demo.set_sphere_centre(sphere::CLASSIC_START);
 }
 
 fn with_drops(seed: u64, count: u32) -> WaterDemo {
@@ -399,7 +400,7 @@ fn the_spheres_outline_and_waterline_are_blended_on_their_edges_and_nowhere_else
         demo.params.set(ParamId::SunAzimuth, 35.0);
         demo.params.set(ParamId::SunElevation, 55.0);
         // A second: the sphere, released under the water, has risen to float.
-        demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
+        demo.set_sphere_centre(sphere::CLASSIC_START);
         let image = render(&mut demo, w, h, 60, 1.0 / 60.0);
         (image, waterline(&demo, Vec2::new(w as f32, h as f32)))
     };

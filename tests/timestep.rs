@@ -7,6 +7,7 @@
 mod common;
 
 use glam::Vec3;
+use wavepool::bodies::sphere;
 use wavepool::demo::{BodyId, DemoOptions, STEPS_PER_SECOND};
 use wavepool::headless::OffscreenTarget;
 use wavepool::params::ParamId;
@@ -24,7 +25,7 @@ fn run_with(fps: f64, until: f64, objects: f32) -> (Vec<[f32; 4]>, [Vec3; 2]) {
     demo.params.set(ParamId::Objects, objects);
     // The sphere released under the water, so that it rises and bobs (it starts at rest at its
     // floating height).
-    demo.set_sphere_centre(Vec3::new(-0.35, -0.45, 0.3));
+    demo.set_sphere_centre(sphere::CLASSIC_START);
     let target = OffscreenTarget::new(&g.device, 64, 48);
     // Drops at these simulated times (s): multiples of 1/30 s, reached exactly at every rate.
     let mut drops = vec![(0.0, 0.2, -0.3), (0.2, -0.5, 0.1), (0.5, 0.0, 0.6), (0.9, 0.4, 0.4)];
@@ -78,7 +79,7 @@ fn thirty_sixty_and_144_fps_give_the_same_water() {
 fn floating_objects_move_alike_at_30_60_and_144_fps() {
     let until = 3.0;
     let (water, bodies) = run_with(60.0, until, 3.0);
-    let start = [Vec3::new(-0.35, -0.45, 0.3), Vec3::ZERO];
+    let start = [sphere::CLASSIC_START, Vec3::ZERO];
     assert!((bodies[0] - start[0]).length() > 0.2, "the sphere should have risen: {}", bodies[0]);
     let level = water.iter().map(|c| c[0] as f64).sum::<f64>() / water.len() as f64;
     let rms =

@@ -3,9 +3,9 @@
 
 use glam::{Mat3, Vec3};
 
-use super::{BodyKind, BodyMesh, BodyView};
+use super::{ball_floating_height, BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
-use crate::physics::{Ellipsoid, Pose, Shape};
+use crate::physics::{Ellipsoid, Pose};
 use crate::util::unit_sphere;
 
 /// Where the ball starts (x, z in m; it starts at its floating height).
@@ -19,9 +19,8 @@ pub const KIND: BodyKind = BodyKind {
     density: |v| v("ball_density"),
     centre_of_mass: Vec3::ZERO,
     start: |v| {
-        let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(v("ball_radius")) }];
-        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: v("ball_density"), scale: 1.0 };
-        Pose::at(Vec3::new(START_XZ[0], shape.floating_height(0.0), START_XZ[1]))
+        let y = ball_floating_height(v("ball_radius"), v("ball_density"));
+        Pose::at(Vec3::new(START_XZ[0], y, START_XZ[1]))
     },
     // Wide: a light ball's own push on the water near it would otherwise lift and drop it
     // in turn, a frame late each time, until it leaps.

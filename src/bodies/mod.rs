@@ -185,6 +185,13 @@ impl Body {
 /// ambient waves, the sea's cascades): about the duck's and a small sphere's waterline.
 pub const AMBIENT_RING_RADIUS: f32 = 0.05;
 
+/// Height (m) of a round body's centre (`radius` m, `density` kg/m³) floating at rest on calm
+/// water at the rest level (`Shape::floating_height`): where the sphere and the ball start.
+pub fn ball_floating_height(radius: f32, density: f32) -> f32 {
+    let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(radius) }];
+    crate::physics::Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density, scale: 1.0 }.floating_height(0.0)
+}
+
 /// `PROBES_PER_BODY` points on a ring of `radius` (m) round `centre`: where the water is read
 /// for a body's buoyancy.
 pub fn ring(centre: glam::Vec2, radius: f32) -> impl Iterator<Item = glam::Vec2> {

@@ -2,19 +2,16 @@
 
 use glam::Vec3;
 
-use super::{BodyKind, BodyMesh, BodyView};
+use super::{ball_floating_height, BodyKind, BodyMesh, BodyView};
 use crate::param_spec::{slider, ParamSpec};
-use crate::physics::{Ellipsoid, Pose, Shape};
+use crate::physics::{Ellipsoid, Pose};
 use crate::util::unit_sphere;
 use crate::world::Sphere;
 
-/// Where the sphere starts (x, z in m). With gravity it starts at its floating height, at rest,
-/// as the other kinds do (released from under the water it would bob up and fill the first
-/// seconds with its rings); without, it stays where the classic puts it, under the water at
-/// [`CLASSIC_HEIGHT`].
-const START_XZ: [f32; 2] = [-0.35, 0.3];
-/// Height (m) of the sphere's centre where it starts without gravity.
-const CLASSIC_HEIGHT: f32 = -0.45;
+/// Where the classic puts the sphere's centre (m): under the water. The sphere starts there
+/// without gravity; with gravity, above it at its floating height, at rest, as the other kinds
+/// do (released from under the water it would bob up and fill the first seconds with its rings).
+pub const CLASSIC_START: Vec3 = Vec3::new(-0.35, -0.45, 0.3);
 
 pub const KIND: BodyKind = BodyKind {
     name: "sphere",
@@ -24,10 +21,9 @@ pub const KIND: BodyKind = BodyKind {
     density: |v| v("sphere_density"),
     centre_of_mass: Vec3::ZERO,
     start: |v| {
-        let hull = [Ellipsoid { centre: Vec3::ZERO, radii: Vec3::splat(v("sphere_radius")) }];
-        let shape = Shape { hull: &hull, centre_of_mass: Vec3::ZERO, density: v("sphere_density"), scale: 1.0 };
-        let y = if v("gravity") > 0.5 { shape.floating_height(0.0) } else { CLASSIC_HEIGHT };
-        Pose::at(Vec3::new(START_XZ[0], y, START_XZ[1]))
+        let floating = ball_floating_height(v("sphere_radius"), v("sphere_density"));
+        let y = if v("gravity") > 0.5 { floating } else { CLASSIC_START.y };
+        Pose::at(Vec3::new(CLASSIC_START.x, y, CLASSIC_START.z))
     },
     probe_ring: |v| v("sphere_radius") * 1.1 + 0.02,
     bump_radius: |v| v("sphere_radius"),
