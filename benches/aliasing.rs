@@ -177,7 +177,9 @@ fn draw(gpu: &HeadlessGpu, demo: &mut WaterDemo, (w, h): (u32, u32)) -> Vec<u8> 
     target.read_rgba(&gpu.device, &gpu.queue)
 }
 
-fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f32)]) {
+/// One view: its preset, its values, and the camera's pitch (degrees; negative: from under the
+/// water) where it is not the scene's own.
+fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f32)], pitch: Option<f32>) {
     let mut demo = WaterDemo::new(&gpu.device, &gpu.queue, OFFSCREEN_FORMAT, DemoOptions::default());
     if let Some(p) = preset {
         demo.apply_preset(presets::find(p).expect("a preset"));
@@ -187,6 +189,9 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
     }
     demo.params.set(ParamId::Quality, 1.0);
     demo.sync_scene();
+    if let Some(p) = pitch {
+        demo.camera_mut().pitch = p;
+    }
     let (over, _) = demo.drop_area();
     let (radius, strength) = (demo.params.get(ParamId::DropRadius), demo.params.get(ParamId::DropStrength));
     for d in random_drops(1, 12, over, radius, strength) {
@@ -236,9 +241,10 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
 fn main() {
     let gpu = HeadlessGpu::new().expect("a GPU adapter (lavapipe: apt-get install mesa-vulkan-drivers)");
     eprintln!("aliasing against {SUPERSAMPLE}x{SUPERSAMPLE} supersampling on {}", gpu.describe());
-    measure(&gpu, "default", None, &[]);
-    measure(&gpu, "default, the sun before 2026-11-28", None, &[("sun_azimuth", 35.0), ("sun_elevation", 55.0)]);
-    measure(&gpu, "classic", Some("classic"), &[]);
-    measure(&gpu, "sea", Some("sea"), &[]);
-    measure(&gpu, "storm", Some("storm"), &[]);
+    measure(&gpu, "default", None, &[], None);
+    measure(&gpu, "default, the sun before 2026-11-28", None, &[("sun_azimuth", 35.0), ("sun_elevation", 55.0)], None);
+    measure(&gpu, "classic", Some("classic"), &[], None);
+    measure(&gpu, "under the water (the cut-away, 25 degrees below)", None, &[("setting", 1.0)], Some(-25.0));
+    measure(&gpu, "sea", Some("sea"), &[], None);
+    measure(&gpu, "storm", Some("storm"), &[], None);
 }

@@ -16,9 +16,10 @@
 //! the stage's rounded corners are hidden before each screenshot, so only the picture counts.
 //! Each screenshot is of the viewport, cut to the canvas's rectangle.
 //!
-//! Three measurements per page, over the whole canvas:
-//! - `load`: the default view, 1 s after the page is running (ours: `data-ready`; the classic,
-//!   which has no ready signal: once its "Loading..." text is gone);
+//! Three measurements per page, over the whole canvas, each at a simulated time (what a machine
+//! drawing 60 frames a second shows then; see `LOAD_SIM`):
+//! - `load`: the default view 1 s into the page's water (ours: `stats().simTime`, with the drops
+//!   it starts with; the classic: its start, twenty drops on calm water, stepped 60 frames);
 //! - `ripples`: then four drops, each the page's own click drop (ours: `demo.addDrop(x, z)` at its
 //!   default radius and strength; the classic: `water.addDrop(x, z, 0.03, 0.01)`, what its mouse
 //!   makes), at the same pool points, and 1 s later;
@@ -31,6 +32,11 @@
 //!   `renderer.lightDir = (0, 1, 0)`, the sphere moved to (10, 10, 10) (out of view, shadow and
 //!   reflections; `oldCenter` too, so moving it makes no wave), and both water textures cleared
 //!   (height, velocity and normal 0: calm).
+//!
+//! The classic is paused and stepped by the bench (`CLASSIC_STEP_JS`): it steps once per frame
+//! drawn, and in software rendering here (about 4 frames a second) a wall-clock second holds a
+//! fifteenth of a second of its waves, younger rings than any student sees. Before 2026-11-29
+//! the bench waited in wall time for it and compared its young rings with our older ones.
 //!
 //! Run: `cargo bench --bench look` after building dist/ (`./scripts/serve` or
 //! `trunk build --release`; `WAVEPOOL_DIST` points elsewhere). Settings (environment):
@@ -63,14 +69,20 @@ const VIEWPORT: (u32, u32) = (800, 600);
 const CANVAS: (u32, u32) = (480, 600);
 /// Longest wait for a page to run (SwiftShader compiles slowly).
 const READY_TIMEOUT: Duration = Duration::from_secs(180);
-/// From running to the `load` screenshot; from the drops to the `ripples` one.
-const LOAD_WAIT: Duration = Duration::from_secs(1);
-const RIPPLE_WAIT: Duration = Duration::from_secs(1);
-/// Calm water before the caustics drop, and from that drop to the screenshot: the classic's
-/// in wall time; ours in simulated time, which a slow machine's frames (each at most a quarter
-/// of a second) take longer to reach, so the ring is the same size on any machine.
+/// Simulated time (s) from the start to the `load` screenshot, from the drops to the `ripples`
+/// one, and from the caustics drop to its screenshot, in both pages: what a machine drawing
+/// 60 frames a second shows then. Each page's simulation is stepped by its own clock: ours by
+/// simulated time (`stats().simTime`; a slow machine's frames take longer to reach it); the
+/// classic's by frames (two steps each, 60 a second; it waits for nothing), which the bench
+/// steps itself with the classic paused, as on a slow machine its wall-clock seconds would
+/// hold a tenth of the waves' travel and show younger rings than a student sees.
+const LOAD_SIM: f64 = 1.0;
+const RIPPLE_SIM: f64 = 1.0;
+const CAUSTIC_SIM: f64 = 0.5;
+/// Calm water before the caustics drop (ours: wall time).
 const CALM_WAIT: Duration = Duration::from_millis(500);
-const CAUSTIC_WAIT: Duration = Duration::from_millis(500);
+/// The classic's frames a simulated second (its `update` steps the water twice a frame).
+const CLASSIC_FPS: f64 = 60.0;
 /// Where the `ripples` drops land (pool coordinates, m; the pool spans -1..1 in both pages).
 const DROPS: [(f64, f64); 4] = [(0.0, 0.0), (0.45, 0.3), (-0.5, -0.25), (0.25, -0.55)];
 /// Our camera looking down (yaw, pitch, distance): pitch at its maximum, the eye 3.5 m above the
@@ -94,6 +106,41 @@ const PIN_POOL_JS: &str = "(() => {
   const watch = new MutationObserver(() => pin() && watch.disconnect());
   watch.observe(document, { childList: true, subtree: true });
 })();";
+
+/// Pauses the classic (its own space bar: nothing steps or draws), then steps its water and
+/// its sphere's displacement through `__FRAMES__` frames as its `update` does, its normals and
+/// caustics after them, and draws once (its own L-key path, which draws while paused, with the
+/// L key held off so the light stays its own). `__BEFORE__` runs first (drops).
+const CLASSIC_STEP_JS: &str = "paused = true;
+  __BEFORE__
+  for (let f = 0; f < __FRAMES__; f++) {
+    water.moveSphere(oldCenter, center, radius);
+    oldCenter = center;
+    water.stepSimulation();
+    water.stepSimulation();
+  }
+  water.updateNormals();
+  renderer.updateCaustics(water);
+  Object.defineProperty(GL.keys, 'L', { get() { return false; }, set(v) {}, configurable: true });
+  document.dispatchEvent(new KeyboardEvent('keydown', { keyCode: 76, which: 76 }));
+  return true;";
+
+/// The classic's start (its `onload`'s twenty drops, alternately up and down, at its click
+/// drop's radius) on calm water, at seeded places (a Park-Miller sequence) so every run
+/// measures the same water.
+const CLASSIC_START_JS: &str = "const calm = () => { gl.clearColor(0, 0, 0, 0); gl.clear(gl.COLOR_BUFFER_BIT); };
+  water.textureA.drawTo(calm);
+  water.textureB.drawTo(calm);
+  gl.clearColor(0, 0, 0, 1);
+  let seed = 2011;
+  const next = () => { seed = (seed * 16807) % 2147483647; return seed / 2147483647; };
+  for (let i = 0; i < 20; i++) water.addDrop(next() * 2 - 1, next() * 2 - 1, 0.03, (i & 1) ? 0.01 : -0.01);";
+
+/// The classic stepped through `seconds` of simulated time after `before` ran.
+fn classic_step_js(before: &str, seconds: f64) -> String {
+    let frames = (seconds * CLASSIC_FPS).round() as u32;
+    CLASSIC_STEP_JS.replace("__BEFORE__", before).replace("__FRAMES__", &frames.to_string())
+}
 
 /// Hides our overlay buttons and the stage's rounded corners (over the canvas); returns our
 /// page's own figures.
@@ -205,12 +252,12 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     let mut rows = Vec::new();
 
     let info = load_ours(browser, server, &base, backend).await;
-    tokio::time::sleep(LOAD_WAIT).await;
+    wait_sim(browser, "0", LOAD_SIM).await;
     rows.push(shoot(browser, &name, "load", &base, info, dir).await);
 
     let drops: Vec<String> = DROPS.iter().map(|(x, z)| format!("d.addDrop({x}, {z});")).collect();
-    browser.js(&format!("const d = window.demo; {} return true;", drops.concat())).await;
-    tokio::time::sleep(RIPPLE_WAIT).await;
+    browser.js(&format!("const d = window.demo; window.__dropAt = d.stats().simTime; {} return true;", drops.concat())).await;
+    wait_sim(browser, "window.__dropAt", RIPPLE_SIM).await;
     rows.push(shoot(browser, &name, "ripples", &base, Value::Null, dir).await);
 
     let (yaw, pitch, distance) = OUR_TOP_VIEW;
@@ -219,11 +266,16 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     browser.js("window.demo.reset(); return true;").await;
     tokio::time::sleep(CALM_WAIT).await;
     browser.js("window.__dropAt = window.demo.stats().simTime; window.demo.addDrop(0, 0); return true;").await;
-    let ring = format!("window.demo.stats().simTime - window.__dropAt >= {}", CAUSTIC_WAIT.as_secs_f64());
-    assert!(browser.wait_for(&ring, READY_TIMEOUT).await, "our page's water stopped");
+    wait_sim(browser, "window.__dropAt", CAUSTIC_SIM).await;
     let info = browser.js(TIDY_OURS_JS).await;
     rows.push(shoot(browser, &name, "caustics", &top, info, dir).await);
     rows
+}
+
+/// Waits until our page's simulated time is `seconds` past `since` (a JS expression).
+async fn wait_sim(browser: &Browser, since: &str, seconds: f64) {
+    let reached = format!("window.demo.stats().simTime - {since} >= {seconds}");
+    assert!(browser.wait_for(&reached, READY_TIMEOUT).await, "our page's water stopped");
 }
 
 /// Loads our page at `path`, waits until it runs on `backend`, tidies it (see `TIDY_OURS_JS`)
@@ -247,18 +299,15 @@ async fn classic(browser: &Browser, server: &StaticServer, dir: &Path) -> Vec<Ro
         browser.wait_for(running, READY_TIMEOUT).await,
         "the classic did not start (is WebGL with float textures there?)"
     );
-    tokio::time::sleep(LOAD_WAIT).await;
+    browser.js(&classic_step_js(CLASSIC_START_JS, LOAD_SIM)).await;
     rows.push(shoot(browser, "classic", "load", path, Value::Null, dir).await);
 
     let drops: Vec<String> = DROPS.iter().map(|(x, z)| format!("water.addDrop({x}, {z}, 0.03, 0.01);")).collect();
-    browser.js(&format!("{} return true;", drops.concat())).await;
-    tokio::time::sleep(RIPPLE_WAIT).await;
+    browser.js(&classic_step_js(&drops.concat(), RIPPLE_SIM)).await;
     rows.push(shoot(browser, "classic", "ripples", path, Value::Null, dir).await);
 
     let info = browser.js(CLASSIC_TOP_VIEW_JS).await;
-    tokio::time::sleep(CALM_WAIT).await;
-    browser.js("water.addDrop(0, 0, 0.03, 0.01); return true;").await;
-    tokio::time::sleep(CAUSTIC_WAIT).await;
+    browser.js(&classic_step_js("water.addDrop(0, 0, 0.03, 0.01);", CAUSTIC_SIM)).await;
     rows.push(shoot(browser, "classic", "caustics", path, info, dir).await);
     rows
 }

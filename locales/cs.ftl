@@ -120,6 +120,8 @@ param-drop_radius = Poloměr kapky
     .help = Poloměr kosinového hrbolu, který přidá kliknutí nebo tažení.
 param-drop_strength = Síla kapky
     .help = Výška hrbolu v jeho středu (záporná vodu stlačí dolů).
+param-start_drops = Kapky na začátku
+    .help = Kapky, které dopadnou do bazénu při otevření stránky, aby se jejich kruhy a kaustiky, které vrhají, ukázaly hned (0: voda začne klidná).
 
 ## Světlo
 

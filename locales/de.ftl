@@ -120,6 +120,8 @@ param-drop_radius = Tropfenradius
     .help = Radius des Kosinus-Buckels, den ein Klick oder Ziehen erzeugt.
 param-drop_strength = Tropfenstärke
     .help = Höhe des Buckels in seiner Mitte (negativ drückt das Wasser nach unten).
+param-start_drops = Tropfen zu Beginn
+    .help = Tropfen, die beim Öffnen der Seite ins Becken fallen, damit ihre Ringe und die Kaustiken, die sie werfen, sofort zu sehen sind (0: das Wasser beginnt ruhig).
 
 ## Licht
 

@@ -121,6 +121,8 @@ param-drop_radius = Drop radius
     .help = Radius of the cosine bump a click or drag adds.
 param-drop_strength = Drop strength
     .help = Height of the bump at its centre (negative pushes the water down).
+param-start_drops = Drops at start
+    .help = Drops that fall on the pool when the page opens, so its rings and the caustics they cast show at once (0: the water starts calm).
 
 ## Light
 

@@ -119,6 +119,8 @@ param-drop_radius = Radio de gota
     .help = Radio de la elevación en forma de coseno que añade un clic o un arrastre.
 param-drop_strength = Fuerza de gota
     .help = Altura de la elevación en su centro (un valor negativo hunde el agua).
+param-start_drops = Gotas al inicio
+    .help = Gotas que caen en la piscina al abrir la página, para que sus anillos y las cáusticas que proyectan se vean de inmediato (0: el agua empieza en calma).
 
 ## Luz
 

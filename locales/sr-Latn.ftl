@@ -120,6 +120,8 @@ param-drop_radius = Poluprečnik kapi
     .help = Poluprečnik kosinusne izbočine koju dodaje klik ili prevlačenje.
 param-drop_strength = Jačina kapi
     .help = Visina izbočine u njenom središtu (negativna potiskuje vodu naniže).
+param-start_drops = Kapi na početku
+    .help = Kapi koje padnu u bazen kada se stranica otvori, da se njihovi krugovi i kaustike koje bacaju vide odmah (0: voda počinje mirna).
 
 ## Svetlost
 

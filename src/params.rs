@@ -42,6 +42,7 @@ param_ids! {
     FoamDecay = "foam_decay",
     DropRadius = "drop_radius",
     DropStrength = "drop_strength",
+    StartDrops = "start_drops",
     SunAzimuth = "sun_azimuth",
     SunElevation = "sun_elevation",
     SunSize = "sun_size",

@@ -124,6 +124,9 @@ impl Viewer {
         if let Some(Err(why)) = options.sketch.as_deref().map(|text| demo.set_sketch(text)) {
             eprintln!("wavepool: --sketch ignored: {why}");
         }
+        if demo.params.get(ParamId::Paused) == 0.0 {
+            demo.add_start_drops();
+        }
         let words = Catalogue::load(&options.lang).unwrap_or_else(|e| {
             eprintln!("wavepool: {e}; the panel is in English");
             Catalogue::load("en").expect("English is the tables'")

@@ -481,6 +481,12 @@ impl WebDemo {
         }
     }
 
+    /// Drops the pool with the drops it starts with (the `start_drops` parameter).
+    #[wasm_bindgen(js_name = startDrops)]
+    pub fn start_drops(&mut self) {
+        self.demo.add_start_drops();
+    }
+
     /// Flattens the water and puts the sphere back.
     pub fn reset(&mut self) {
         self.demo.reset(&self.queue);

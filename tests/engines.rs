@@ -18,7 +18,7 @@ use serde_json::Value;
 use support::{canvas_rect_js, serial, Browser, Engine, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
 /// The demo page without objects (calm water until the drag), at a fixed scale.
-const CALM: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03";
+const CALM: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03&start_drops=0";
 
 /// Opens the page in `engine`, checks it is ready on `backend` with a picture, drags across the
 /// water and checks that ripples appear (in the simulation and on the screen), that the page

@@ -109,6 +109,9 @@ export async function mount(element, options = {}) {
     if (opts.camera) handle._core.setCamera(...opts.camera);
     // The bodies start where these values put them (a sphere without gravity under the water).
     handle._core.reset();
+    // The pool's first picture shows rings and their caustics (start_drops), unless it starts
+    // still (paused, or the visitor asked for reduced motion).
+    if (!handle.get("paused")) handle._core.startDrops();
     if (opts.sketch) handle._core.setSketch(opts.sketch);
     handle._setWords(await words);
     handle._noticeReduced();

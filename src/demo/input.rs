@@ -6,8 +6,12 @@ use glam::{Vec2, Vec3};
 use super::{BodyId, WaterDemo};
 use crate::camera::Pick;
 use crate::params::ParamId;
-use crate::sim::Drop;
+use crate::scenes::SceneKind;
+use crate::sim::{random_drops, Drop};
 use crate::world;
+
+/// Seed of the drops the pool starts with: every start shows the same first picture.
+pub const START_DROPS_SEED: u64 = 2011;
 
 /// Keys the core understands; shells map their key events to these.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -70,6 +74,24 @@ impl WaterDemo {
         scene.add_drop(Drop { x: x.clamp(-w, w), z: z.clamp(-w, w), radius: r * kr, strength: s * ks });
         for (id, value) in scene.take_param_edits() {
             self.params.set(id, value);
+        }
+    }
+
+    /// Drops the pool's water with the drops it starts with (`start_drops`, seeded, each at
+    /// the drop parameters' radius and strength, alternately raising and lowering the water,
+    /// as the classic's twenty at its start); the other scenes start as they are (the sea moves
+    /// of itself and the tank's lessons start still).
+    pub fn add_start_drops(&mut self) {
+        self.sync_scene();
+        if self.shown != SceneKind::Pool {
+            return;
+        }
+        let count = self.params.get(ParamId::StartDrops).round() as u32;
+        let (over, _) = self.drop_area();
+        let (radius, strength) = (self.params.get(ParamId::DropRadius), self.params.get(ParamId::DropStrength));
+        self.begin_stroke();
+        for d in random_drops(START_DROPS_SEED, count, over, radius, strength) {
+            self.add_drop(d.x, d.z, d.radius, d.strength);
         }
     }
 

@@ -53,6 +53,15 @@ pub const DROPS: &[ParamSpec] = &[
         default: 0.012,
         help: "Height of the bump at its centre (negative pushes the water down).",
     },
+    ParamSpec {
+        name: "start_drops",
+        label: "Drops at start",
+        group: "Drops",
+        unit: "",
+        control: slider(0.0, 40.0, 1.0),
+        default: 20.0,
+        help: "Drops that fall on the pool when the page opens, so its rings and the caustics they cast show at once (0: the water starts calm).",
+    },
 ];
 
 /// The grid's resolution and pausing. (The parameter table, `params::table`, lists them in this order.)
