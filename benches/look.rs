@@ -256,7 +256,9 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     rows.push(shoot(browser, &name, "load", &base, info, dir).await);
 
     let drops: Vec<String> = DROPS.iter().map(|(x, z)| format!("d.addDrop({x}, {z});")).collect();
-    browser.js(&format!("const d = window.demo; window.__dropAt = d.stats().simTime; {} return true;", drops.concat())).await;
+    browser
+        .js(&format!("const d = window.demo; window.__dropAt = d.stats().simTime; {} return true;", drops.concat()))
+        .await;
     wait_sim(browser, "window.__dropAt", RIPPLE_SIM).await;
     rows.push(shoot(browser, &name, "ripples", &base, Value::Null, dir).await);
 

@@ -157,7 +157,9 @@ async fn reset_returns_to_the_pages_own_start_and_enter_makes_a_drop() {
     let server = StaticServer::start();
     let browser = Browser::open(Graphics::WebGpu).await;
     browser
-        .goto(&server.url("/?objects=none&quality=1&wave_speed=0.8&camera=30,20,5&drop_radius=0.1&drop_strength=0.04&start_drops=0"))
+        .goto(&server.url(
+            "/?objects=none&quality=1&wave_speed=0.8&camera=30,20,5&drop_radius=0.1&drop_strength=0.04&start_drops=0",
+        ))
         .await;
     browser.wait_ready("#pool", READY).await;
     let start = browser.js("return { speed: window.demo.get('wave_speed'), camera: window.demo.camera() };").await;

@@ -96,7 +96,8 @@ async fn both_backends_show_the_same_scene() {
 /// draws about one frame a second at this size (see the README's figures).
 /// The pool without objects or drops at start, so the water is calm until clicked, and at a fixed resolution, so
 /// that only the click changes the picture (automatic resolution redraws it when it steps).
-const SMALL: &str = "test/sized.html?width=400&height=300&drop_radius=0.1&drop_strength=0.04&objects=none&quality=1&start_drops=0";
+const SMALL: &str =
+    "test/sized.html?width=400&height=300&drop_radius=0.1&drop_strength=0.04&objects=none&quality=1&start_drops=0";
 
 /// Page script: watches a 50x50 CSS-pixel square of the demo's canvas around (__X__, __Y__) in every
 /// animation frame, right after the demo has drawn it (same task, so both WebGPU and WebGL2
