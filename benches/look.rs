@@ -109,7 +109,7 @@ const PIN_POOL_JS: &str = "(() => {
 
 /// Pauses the classic (its own space bar: nothing steps or draws), then steps its water and
 /// its sphere's displacement through `__FRAMES__` frames as its `update` does, its normals and
-/// caustics after them, and draws once (its own L-key path, which draws while paused, with the
+/// caustics after them (the sphere's shadow where it is now), and draws once (its own L-key path, which draws while paused, with the
 /// L key held off so the light stays its own). `__BEFORE__` runs first (drops).
 const CLASSIC_STEP_JS: &str = "paused = true;
   __BEFORE__
@@ -120,6 +120,8 @@ const CLASSIC_STEP_JS: &str = "paused = true;
     water.stepSimulation();
   }
   water.updateNormals();
+  renderer.sphereCenter = center;
+  renderer.sphereRadius = radius;
   renderer.updateCaustics(water);
   Object.defineProperty(GL.keys, 'L', { get() { return false; }, set(v) {}, configurable: true });
   document.dispatchEvent(new KeyboardEvent('keydown', { keyCode: 76, which: 76 }));
