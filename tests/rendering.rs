@@ -455,7 +455,9 @@ fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
         "glaze: {brighter} pixels brighter (mean {:.1}/255, lowest row {lowest} of {h}), {darker} darker; deck changed {unchanged:.4}",
         gain / brighter.max(1) as f32 * 255.0
     );
-    assert!(brighter >= 400, "the glaze shows on only {brighter} pixels");
+    // 451 pixels with the dark grout before 2026-11-29, 381 with the pale grout (its blend
+    // with the tiles, brighter, sits higher on the tone curve, where the glaze adds less).
+    assert!(brighter >= 300, "the glaze shows on only {brighter} pixels");
     assert_eq!(darker, 0, "the glaze only adds light");
     assert_eq!(unchanged, 0.0, "the deck has no glaze");
     // The walls' dry band lies in the upper half of the opening.
