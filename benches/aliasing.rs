@@ -23,7 +23,6 @@ use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORM
 use wavepool::params::ParamId;
 use wavepool::presets;
 use wavepool::scenes::SceneKind;
-use wavepool::sim::random_drops;
 use wavepool::world::PoolShape;
 
 const SIZE: (u32, u32) = (800, 600);
@@ -192,11 +191,7 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
     if let Some(p) = pitch {
         demo.camera_mut().pitch = p;
     }
-    let (over, _) = demo.drop_area();
-    let (radius, strength) = (demo.params.get(ParamId::DropRadius), demo.params.get(ParamId::DropStrength));
-    for d in random_drops(1, 12, over, radius, strength) {
-        demo.add_drop(d.x, d.z, d.radius, d.strength);
-    }
+    demo.add_random_drops(1, 12);
     let target = OffscreenTarget::new(&gpu.device, SIZE.0, SIZE.1);
     for _ in 0..60 {
         demo.frame(&gpu.device, &gpu.queue, &target.view, target.size(), 1.0 / 60.0);

@@ -21,7 +21,6 @@ use wavepool::headless::{write_png, HeadlessGpu, OffscreenTarget, OFFSCREEN_FORM
 use wavepool::params::{self, ParamId, ParamSpec};
 use wavepool::presets::{self, Preset};
 use wavepool::sea::SEA_LIMITS;
-use wavepool::sim::random_drops;
 use wavepool::tank::TANK_LIMITS;
 use wavepool::timing::StageTimer;
 
@@ -302,13 +301,7 @@ fn render(o: &RenderArgs) -> Result<(), String> {
         demo.camera_mut().target = target;
     }
     demo.camera_mut().clamp();
-    let radius = demo.params.get(ParamId::DropRadius);
-    let strength = demo.params.get(ParamId::DropStrength);
-    // Over the scene's water (in the sea its patch, where a drop grows as the patch is wider).
-    let (over, _) = demo.drop_area();
-    for d in random_drops(o.seed, o.drops, over, radius, strength) {
-        demo.add_drop(d.x, d.z, d.radius, d.strength);
-    }
+    demo.add_random_drops(o.seed, o.drops);
     let (width, height) = (o.frame.width, o.frame.height);
     let target = OffscreenTarget::new(&gpu.device, width, height);
     for _ in 0..o.frames {

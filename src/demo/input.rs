@@ -87,10 +87,17 @@ impl WaterDemo {
             return;
         }
         let count = self.params.get(ParamId::StartDrops).round() as u32;
+        self.add_random_drops(START_DROPS_SEED, count);
+    }
+
+    /// `count` drops at places seeded by `seed` over the shown scene's water (in the sea its
+    /// patch, where a drop grows as the patch is wider), at the drop parameters' radius and
+    /// strength, alternately raising and lowering the water.
+    pub fn add_random_drops(&mut self, seed: u64, count: u32) {
         let (over, _) = self.drop_area();
         let (radius, strength) = (self.params.get(ParamId::DropRadius), self.params.get(ParamId::DropStrength));
         self.begin_stroke();
-        for d in random_drops(START_DROPS_SEED, count, over, radius, strength) {
+        for d in random_drops(seed, count, over, radius, strength) {
             self.add_drop(d.x, d.z, d.radius, d.strength);
         }
     }
