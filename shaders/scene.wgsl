@@ -14,7 +14,7 @@ struct Scene {
     refracted_sun: vec4<f32>,  // xyz unit direction sunlight travels after a flat surface (downwards)
     pool: vec4<f32>,           // x half width W (m), y depth D (m), z rim height R above rest (m),
                                // w the tiles' gloss (glaze.wgsl)
-    water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustics on (0/1), w light per unit
+    water: vec4<f32>,          // x grid cells per side N, y 1/N, z caustic contrast (a power), w light per unit
                                // stored in the caustics map (1 for float maps, more for 8-bit)
     output: vec4<f32>,         // x unused (the sRGB encoding is the constant ENCODE_SRGB);
                                // y debug view (0 none, see debug_view.wgsl), z the bodies'
@@ -67,7 +67,7 @@ struct Scene {
 // How far the sun's highlight is spread for the pixel being shaded (1: not at all; see
 // sun_specular); the water surface sets it from how much its normal varies within the pixel.
 var<private> specular_spread: f32 = 1.0;
-// Mip level of the caustics lookup (caustics_at) for the pixel being shaded: at least
+// Mip level of the caustics lookup (caustics_under) for the pixel being shaded: at least
 // CAUSTICS_MIN_LOD, more where the pixel covers more of the floor (set by pool_colour_at_hit).
 var<private> caustics_lod: f32 = CAUSTICS_MIN_LOD;
 // Tile levels the water surface added for its normal's turning within the pixel (fs_surface):

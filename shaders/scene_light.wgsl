@@ -14,20 +14,16 @@ fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
     return vec2<f32>(m.x * 0.5 + 0.5, 0.5 - m.y * 0.5);
 }
 
-// The caustics map at uv over the pixel's footprint on the floor (caustics_lod: at least
-// CAUSTICS_MIN_LOD, where lines focused into one texel are blended about two wide): one
-// trilinear fetch from its mip chain (render/caustics_mips.rs).
-fn caustics_at(uv: vec2<f32>) -> vec4<f32> {
-    return textureSampleLevel(caustics_map, clamp_sampler, uv, caustics_lod);
-}
-
-// The caustics map's light at underwater point p (uv: where its sunbeam entered): just under
-// the surface the waves' light has not yet gathered into lines, so the map (the light on the
-// floor) is read at a coarser level, its last at the surface, its footprint's from
-// CAUSTICS_SHARPEN_DEPTH down.
+// The caustics map's light at underwater point p (uv: where its sunbeam entered; 1 = a calm
+// surface's): just under the surface the waves' light has not yet gathered into lines, so the
+// map (the light on the floor) is read at a coarser level, its last at the surface, its
+// footprint's from CAUSTICS_SHARPEN_DEPTH down. Raised to a power that gives the lines back
+// the peaks the map's blur took (scene.water.z, caustic_contrast: render/caustics.rs) where
+// they have gathered, none at the surface.
 fn caustics_under(uv: vec2<f32>, p: vec3<f32>) -> vec4<f32> {
     let shallow = 1.0 - clamp(-p.y / CAUSTICS_SHARPEN_DEPTH, 0.0, 1.0);
-    return textureSampleLevel(caustics_map, clamp_sampler, uv, max(caustics_lod, shallow * CAUSTICS_LAST_LOD));
+    let light = textureSampleLevel(caustics_map, clamp_sampler, uv, max(caustics_lod, shallow * CAUSTICS_LAST_LOD));
+    return pow(max(light * scene.water.w, vec4<f32>(0.0)), vec4<f32>(mix(scene.water.z, 1.0, shallow)));
 }
 
 // 1 when the straight ray from the surface point p towards the sun clears the pool rim.
@@ -51,7 +47,7 @@ fn underwater_light(p: vec3<f32>, with_sphere_shadow: bool) -> f32 {
         return 0.0;
     }
     if (HAS_CAUSTICS) {
-        let c = caustics_under(caustics_uv(entry), p) * scene.water.w;
+        let c = caustics_under(caustics_uv(entry), p);
         return select(c.r, c.g, with_sphere_shadow);
     }
     // Caustics off: a calm surface, with the same rim and sphere shadows.
@@ -83,7 +79,7 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
         if (!all(abs(entry) <= vec2<f32>(half_width()))) {
             return vec3<f32>(0.0);
         }
-        let c = caustics_under(caustics_uv(entry), p) * scene.water.w;
+        let c = caustics_under(caustics_uv(entry), p);
         return select(vec3<f32>(c.a), c.rgb, with_sphere_shadow);
     }
     return vec3<f32>(underwater_light(p, with_sphere_shadow));

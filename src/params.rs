@@ -84,6 +84,7 @@ param_ids! {
     TankGraphZ = "tank_graph_z",
     Setting = "setting",
     Caustics = "caustics",
+    CausticContrast = "caustic_contrast",
     TileGloss = "tile_gloss",
     Ambient = "ambient",
     WindSpeed = "wind_speed",

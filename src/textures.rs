@@ -69,11 +69,12 @@ impl SrgbEncoder {
     }
 }
 
-/// Linear RGB of the tile texture at texel (x, y): pale blue-white glazed tiles, each a
-/// little different, a soft bevel at their edges and pale grey grout between them (dark grout,
-/// broken up by the ripples the floor is seen through, read as black specks and was most of
-/// what the frame's aliasing bench found: 2026-11-29); and the glaze's
-/// cover there (1 on a tile, 0 on the grout: `render::glaze`).
+/// Linear RGB of the tile texture at texel (x, y): light blue glazed tiles, each a little
+/// different, a soft bevel at their edges and grout a quarter darker between them; and the
+/// glaze's cover there (1 on a tile, 0 on the grout: `render::glaze`). Dark grout, broken up
+/// by the ripples the floor is seen through, read as black specks and was most of what the
+/// frame's aliasing bench found; pale blue-white tiles put the calm floor so high on the tone
+/// curve that the caustic lines had little room above it (both 2026-11-29).
 fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let tile = TILE_TEXTURE_SIZE / TILES_PER_METRE;
     let (tx, ty) = (x / tile, y / tile);
@@ -81,12 +82,12 @@ fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let edge = fx.min(fy).min(tile as f32 - fx).min(tile as f32 - fy);
     let grout_width = 2.0;
     if edge < grout_width {
-        return ([0.60, 0.66, 0.68].map(srgb_to_linear), 0.0);
+        return ([0.45, 0.57, 0.645].map(srgb_to_linear), 0.0);
     }
     let variation = (hash01(tx, ty) - 0.5) * 0.06;
     let bevel = 1.0 - 0.10 * (1.0 - ((edge - grout_width) / 3.0).min(1.0));
     let speckle = (hash01(x, y ^ 0x5bd1) - 0.5) * 0.015;
-    let base = [0.80, 0.89, 0.93];
+    let base = [0.60, 0.76, 0.86];
     (base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0))), 1.0)
 }
 
@@ -311,10 +312,11 @@ mod tests {
         let base = &mips[0];
         let grout = base[0];
         let tile_centre = base[((32 * TILE_TEXTURE_SIZE + 32) * 4) as usize];
-        // Light grout (real pools' is pale): visible, but under rippled water a broken grout
-        // line is a grey mark, not a black speck.
+        // Grout a little darker than the tiles: visible, but under rippled water a broken grout
+        // line is a faint mark, not a black speck.
         println!("tile centre {tile_centre}, grout {grout} (red, sRGB bytes)");
-        assert!(tile_centre > grout + 40, "tile {tile_centre} vs grout {grout}");
+        let ratio = tile_centre as f32 / grout as f32;
+        assert!((1.2..1.5).contains(&ratio), "tile {tile_centre} vs grout {grout}");
         // The last level is the whole texture's mean (box-filtered in linear light).
         let last = mips.last().unwrap()[0];
         let linear = |b: u8| srgb_to_linear(b as f32 / 255.0);

@@ -1,7 +1,7 @@
 //! The demo in every engine a student may have, and on every screen: Firefox ESR under a
 //! virtual display (WebGL2 with its default settings; WebGPU turned on, on its software
-//! compositor) and WebKitGTK (WebGL2) reach the first frame, show a picture, make ripples under
-//! a drag, draw the split view (flat water beside the ray tracer), report no error and do not
+//! compositor) and WebKitGTK (WebGL2) reach the first frame, show a picture, start with the
+//! pool's drops and calm down on Reset, make ripples under a drag, draw the split view (flat water beside the ray tracer), report no error and do not
 //! crash; the page fits 320, 380, 800 and 1280 px wide screens in Chromium and Firefox (no
 //! horizontal scroll, the pool within the first screen, touch targets of 24 px, the controls'
 //! groups across the panel). Needs `dist/`.
@@ -17,23 +17,25 @@ use std::time::Duration;
 use serde_json::Value;
 use support::{canvas_rect_js, serial, Browser, Engine, Graphics, Rect, StaticServer, MESSAGE_JS, READY};
 
-/// The demo page without objects (calm water until the drag), at a fixed scale.
-const CALM: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03&start_drops=0";
+/// The demo page without objects, at a fixed scale: its start drops, then calm water from Reset
+/// until the drag.
+const PAGE: &str = "/?objects=none&quality=1&drop_radius=0.06&drop_strength=0.03";
 
-/// Opens the page in `engine`, checks it is ready on `backend` with a picture, drags across the
-/// water and checks that ripples appear (in the simulation and on the screen), that the page
+/// Opens the page in `engine`, checks it is ready on `backend` with a picture, that it starts
+/// with the pool's drops on the screen and that Reset calms them, drags across the water and
+/// checks that ripples appear (in the simulation and on the screen), that the page
 /// reports no error and that the browser is still there 5 s later.
 async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     let _g = serial();
     let server = StaticServer::start();
     let browser = Browser::open_engine(engine).await;
-    browser.goto(&server.url(CALM)).await;
+    browser.goto(&server.url(PAGE)).await;
     if engine == Engine::WebKit && !becomes_ready(&browser).await {
         // JavaScriptCore has twice (of ~20 loads) stopped the page's first wasm calls with
         // "Out of bounds memory access"; embed.js now grows the memory before any demo runs.
         // Should it still happen, one reload is allowed, and said.
         println!("warning: WebKit stopped the first load ({}); loading again", browser.js(MESSAGE_JS).await);
-        browser.goto(&server.url(CALM)).await;
+        browser.goto(&server.url(PAGE)).await;
     }
     let took = browser.wait_ready("#pool", READY).await;
     let stats = browser.js("return window.demo.stats();").await;
@@ -44,12 +46,21 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
         assert_eq!(stats["canvasFormat"], preferred, "{engine:?}: canvas format");
     }
     let rect = Rect::from_js(&browser.js(&canvas_rect_js("#pool")).await);
+    // The start drops' rings, then Reset's calm water.
+    let dropped = browser.wait_for("window.demo.stats().maxAbsHeight > 1e-3", Duration::from_secs(20)).await;
+    let rings = browser.screenshot().await;
+    browser.js("window.demo.reset(); return true;").await;
+    browser.wait_frames(3).await;
     let idle = browser.screenshot().await;
+    let stats = browser.js("return window.demo.stats();").await;
+    let start_rings = rings.changed_fraction(&idle, rect, 12);
+    assert!(dropped, "{engine:?}: no start drops: {stats}");
+    assert!(start_rings > 0.05, "{engine:?}: Reset changed {:.1}% of the canvas", start_rings * 100.0);
+    assert!(stats["maxAbsHeight"].as_f64().unwrap() < 1e-4, "{engine:?}: water not calm after Reset: {stats}");
     browser.wait_frames(3).await;
     let before = browser.screenshot().await;
     let spread = before.luma_spread(rect);
     assert!(spread > 12.0, "{engine:?}: the canvas looks flat (luma spread {spread:.1})");
-    assert!(stats["maxAbsHeight"].as_f64().unwrap() < 1e-4, "{engine:?}: water not calm at start: {stats}");
 
     let point = |x: f64, z: f64| {
         let browser = &browser;
@@ -125,10 +136,12 @@ async fn a_drag_makes_ripples_in(engine: Engine, backend: &str) {
     let errors = browser.page_errors();
     assert!(errors.is_empty(), "{engine:?}: errors or a crash in the browser's output:\n{}", errors.join("\n"));
     println!(
-        "{} on {backend}: ready in {took:?}, luma spread {spread:.1}, {:.1}% of the dragged band changed ({:.1}% idle), \
+        "{} on {backend}: ready in {took:?}, the start drops' rings {:.1}% of the canvas, luma spread {spread:.1}, \
+         {:.1}% of the dragged band changed ({:.1}% idle), \
          maxAbsHeight {:.4} m, {:.1} frames/s, canvas {} ({}), adapter '{}'; split view: {:.1}% of the flat half \
          changed, {:.2}% of the ray-traced half",
         engine.name(),
+        start_rings * 100.0,
         changed * 100.0,
         still * 100.0,
         stats["maxAbsHeight"].as_f64().unwrap(),

@@ -1,7 +1,7 @@
 //! The caustics map with its mip chain: each level is the box average of the one above (one
 //! bilinear fetch at the centre of each 2x2 texels, `shaders/caustics_mip.wgsl`), so the scene
 //! reads the caustics over a pixel's footprint on the floor with one trilinear fetch
-//! (`caustics_at` in `shaders/scene.wgsl`) instead of several taps.
+//! (`caustics_under` in `shaders/scene_light.wgsl`) instead of several taps.
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
 
@@ -83,7 +83,7 @@ impl CausticsMips {
         }
     }
 
-    /// The constants `caustics_at` reads.
+    /// The constants `caustics_under` reads.
     pub fn wgsl_constants() -> String {
         format!(
             "const CAUSTICS_MIN_LOD: f32 = {CAUSTICS_MIN_LOD:?};\nconst CAUSTICS_SHARPEN_DEPTH: f32 = {CAUSTICS_SHARPEN_DEPTH:?};\nconst CAUSTICS_LAST_LOD: f32 = {:?};\n",

@@ -40,7 +40,7 @@ impl SceneTextures {
                 // Nearest mip level for the repeating tiles: the level is chosen per pixel
                 // already (tile_lod), and trilinear filtering costs software rasterisers twice
                 // the texel reads. Linear for the clamped maps: the caustics map is read
-                // between its levels (caustics_at), the others have one level.
+                // between its levels (caustics_under), the others have one level.
                 mipmap_filter: if address == wgpu::AddressMode::Repeat {
                     wgpu::MipmapFilterMode::Nearest
                 } else {

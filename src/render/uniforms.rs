@@ -71,7 +71,7 @@ impl Renderer {
             sun: [view.sun.x, view.sun.y, view.sun.z, 0.0],
             refracted_sun: refracted.extend(0.0).to_array(),
             pool: [self.settings.pool.half_width, self.settings.pool.depth, self.settings.pool.rim, view.tile_gloss],
-            water: [n, 1.0 / n, if view.caustics { 1.0 } else { 0.0 }, self.settings.caustics_format().1],
+            water: [n, 1.0 / n, view.caustic_contrast, self.settings.caustics_format().1],
             output: [
                 0.0,
                 view.debug.map_or(0.0, |d| d.texture as u32 as f32),

@@ -21,6 +21,9 @@ pub struct View {
     /// Each kind's body (in the order of `bodies::KINDS`) as drawn, if it is in the pool.
     pub bodies: [Option<BodyView>; KINDS.len()],
     pub caustics: bool,
+    /// The power the caustics map's light is raised to where it lights the scene
+    /// (`caustic_contrast`: 1 the map's own light).
+    pub caustic_contrast: f32,
     /// The optical models and their parameters (optics.rs).
     pub optics: Optics,
     /// The ambient waves to add to the simulated surface, at this frame's simulated time.

@@ -311,6 +311,7 @@ pub fn common_view(sh: Shared<'_>, camera: &OrbitCamera) -> View {
         sun: sun(p),
         bodies: Default::default(),
         caustics: false,
+        caustic_contrast: p.get(ParamId::CausticContrast),
         optics: Optics {
             fresnel: p.choice(ParamId::Fresnel),
             specular: p.choice(ParamId::Specular),
