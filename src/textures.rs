@@ -70,11 +70,11 @@ impl SrgbEncoder {
 }
 
 /// Linear RGB of the tile texture at texel (x, y): light blue glazed tiles, each a little
-/// different, a soft bevel at their edges and grout a quarter darker between them; and the
-/// glaze's cover there (1 on a tile, 0 on the grout: `render::glaze`). Dark grout, broken up
-/// by the ripples the floor is seen through, read as black specks and was most of what the
-/// frame's aliasing bench found; pale blue-white tiles put the calm floor so high on the tone
-/// curve that the caustic lines had little room above it (both 2026-11-29).
+/// different, a soft bevel at their edges and grout a quarter darker (in sRGB) between them;
+/// and the glaze's cover there (1 on a tile, 0 on the grout: `render::glaze`). Dark grout,
+/// broken up by the ripples the floor is seen through, read as black specks and was most of
+/// what the frame's aliasing bench found; pale blue-white tiles put the calm floor so high on
+/// the tone curve that the caustic lines had little room above it (both 2026-11-29).
 fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let tile = TILE_TEXTURE_SIZE / TILES_PER_METRE;
     let (tx, ty) = (x / tile, y / tile);

@@ -5,6 +5,7 @@
 //     ripples show), flat water is (0.5, 1, 0.5)
 //   3 velocity: signed colour map, full colour at 0.05 m/s
 //   4 caustics: the caustics map's light (with the sphere's shadow), 1 = calm-surface light at 40%
+//     (as the map holds it, before the scene raises it to caustic_contrast)
 //   6 spectrum: the ambient waves' amplitude per wavevector (kx right, kz down, 0 in the
 //     middle), black 1 um to white 1 cm on a log scale through blue and orange; grey rings at
 //     the 0.9 m and 0.2 m wavelengths the models' waves lie between

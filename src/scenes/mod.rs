@@ -311,7 +311,7 @@ pub fn common_view(sh: Shared<'_>, camera: &OrbitCamera) -> View {
         sun: sun(p),
         bodies: Default::default(),
         caustics: false,
-        caustic_contrast: p.get(ParamId::CausticContrast),
+        caustic_contrast: 1.0,
         optics: Optics {
             fresnel: p.choice(ParamId::Fresnel),
             specular: p.choice(ParamId::Specular),

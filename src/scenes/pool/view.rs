@@ -38,6 +38,7 @@ impl PoolScene {
         View {
             bodies: self.drawn_bodies(sh),
             caustics: p.flag(ParamId::Caustics),
+            caustic_contrast: p.get(ParamId::CausticContrast),
             ambient: {
                 let (waves, header) = self.ambient.uniform(sh.sim_time());
                 AmbientView { model: self.ambient.model, waves, header }
