@@ -75,6 +75,11 @@ impl SrgbEncoder {
 /// broken up by the ripples the floor is seen through, read as black specks and was most of
 /// what the frame's aliasing bench found; pale blue-white tiles put the calm floor so high on
 /// the tone curve that the caustic lines had little room above it (both 2026-11-29).
+/// The tiles' colour (sRGB) before each tile's variation and bevel.
+const TILE_SRGB: [f32; 3] = [0.60, 0.76, 0.86];
+/// The grout's colour as a share of the tiles' (sRGB).
+const GROUT_SHADE: f32 = 0.75;
+
 fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let tile = TILE_TEXTURE_SIZE / TILES_PER_METRE;
     let (tx, ty) = (x / tile, y / tile);
@@ -82,13 +87,12 @@ fn tile_texel(x: u32, y: u32) -> ([f32; 3], f32) {
     let edge = fx.min(fy).min(tile as f32 - fx).min(tile as f32 - fy);
     let grout_width = 2.0;
     if edge < grout_width {
-        return ([0.45, 0.57, 0.645].map(srgb_to_linear), 0.0);
+        return (TILE_SRGB.map(|c| srgb_to_linear(c * GROUT_SHADE)), 0.0);
     }
     let variation = (hash01(tx, ty) - 0.5) * 0.06;
     let bevel = 1.0 - 0.10 * (1.0 - ((edge - grout_width) / 3.0).min(1.0));
     let speckle = (hash01(x, y ^ 0x5bd1) - 0.5) * 0.015;
-    let base = [0.60, 0.76, 0.86];
-    (base.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0))), 1.0)
+    (TILE_SRGB.map(|c| srgb_to_linear(((c + variation + speckle) * bevel).clamp(0.0, 1.0))), 1.0)
 }
 
 /// The tile texture with its full mip chain (box-filtered in linear light), RGBA8 sRGB: alpha

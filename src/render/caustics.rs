@@ -68,12 +68,12 @@ impl Renderer {
 ///
 /// The contrast is a power the map's light is raised to where the scene is lit by it (calm
 /// water's 1 stays 1, a shadow's 0 stays 0; the map holds the rim's and the bodies' shadows, so
-/// their half-lit edges are raised too and the penumbras narrow a little). The sun's disc is half a degree, so a real caustic
-/// line a metre down is a few millimetres wide and many times calm water's light; the map,
-/// drawn from a grid of centimetre triangles and read over each pixel's footprint, spreads it
-/// over two or three texels at a fraction of that, and the tone curve's shoulder squeezes what
-/// is left. Squaring gives the lines back their punch: the default view's net reads as the net
-/// of a sunlit pool (judged blind against 1, 2026-11-29).
+/// their half-lit edges are raised too and the penumbras narrow a little). The sun's disc is
+/// half a degree, so a real caustic line a metre down is a few millimetres wide and many times
+/// calm water's light; the map, drawn from a grid of centimetre triangles and read over each
+/// pixel's footprint, spreads it over two or three texels at a fraction of that, and the tone
+/// curve's shoulder squeezes what is left. Squaring gives the lines back their punch: the
+/// default view's net reads as the net of a sunlit pool (judged blind against 1, 2026-11-29).
 pub const PARAMS: &[ParamSpec] = &[
     ParamSpec {
         name: "caustics",
