@@ -404,11 +404,13 @@ fn a_floating_spheres_side_under_the_waterline_is_not_streaked_by_caustics() {
     assert!(steps / mean < 0.059, "the band under the waterline is streaked: steps {:.3} of its mean", steps / mean);
 }
 
-/// The sphere's outline and the water at its waterline are blended on their edges (each pixel
-/// by the share of it the sphere or the water covers) and nothing else changes.
+/// The sphere's and the duck's outlines, the duck's creases (where its parts meet) and the water
+/// at their waterlines are blended on their edges (each pixel by the share of it the body, its
+/// part or the water covers) and nothing else changes.
 #[test]
-fn the_spheres_outline_and_waterline_are_blended_on_their_edges_and_nowhere_else() {
+fn the_bodies_outlines_creases_and_waterlines_are_blended_on_their_edges_and_nowhere_else() {
     let (w, h) = (640, 480);
+    let size = Vec2::new(w as f32, h as f32);
     let frame = |outlines: bool| {
         let mut demo = common::demo(DemoOptions::default());
         demo.set_body_outlines(outlines);
@@ -420,27 +422,37 @@ fn the_spheres_outline_and_waterline_are_blended_on_their_edges_and_nowhere_else
         // A second: the sphere, released under the water, has risen to float.
         demo.set_sphere_centre(sphere::CLASSIC_START);
         let image = render(&mut demo, w, h, 60, 1.0 / 60.0);
-        (image, waterline(&demo, Vec2::new(w as f32, h as f32)))
+        // The duck's bounding ball on the screen: centre and radius (px).
+        let duck = demo.body(wavepool::bodies::BodyId::named("duck").expect("a kind")).pose.position;
+        let right = demo.camera().view().inverse().col(0).truncate();
+        let bound = wavepool::bodies::duck::bounding_radius();
+        let [middle, side] =
+            [duck, duck + right * bound].map(|p| demo.camera().project(p, size).expect("the duck in view"));
+        (image, waterline(&demo, size), (middle, middle.distance(side)))
     };
-    let ((blended, waterline), (stepped, _)) = (frame(true), frame(false));
+    let ((blended, waterline, (duck, duck_radius)), (stepped, _, _)) = (frame(true), frame(false));
     let blended = blended.blended_against(&stepped);
     let changed = blended.len();
-    let (mut elsewhere, mut on_waterline) = (0, 0);
+    let (mut elsewhere, mut on_waterline, mut on_duck) = (0, 0, 0);
     for b in &blended {
         let p = Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5);
         let at_waterline = waterline.iter().any(|q| q.distance(p) <= 3.0);
         on_waterline += at_waterline as u32;
+        let at_duck = p.distance(duck) <= duck_radius;
+        on_duck += at_duck as u32;
         // The outline is where the shading steps; the waterline, against water that shows
-        // the wet sphere through it, may step less: there the blend need only lie between.
-        if !((b.contrast > 0.08 || at_waterline) && b.between) {
+        // the wet sphere through it, and the duck's creases, between its yellow parts, may
+        // step less: there the blend need only lie between.
+        if !((b.contrast > 0.08 || at_waterline || at_duck) && b.between) {
             elsewhere += 1;
         }
     }
     println!(
-        "{changed} pixels blended ({on_waterline} of them at the waterline), {elsewhere} off the edges or outside their colours"
+        "{changed} pixels blended ({on_waterline} of them at the sphere's waterline, {on_duck} on the duck), {elsewhere} off the edges or outside their colours"
     );
     assert!(changed >= 100, "only {changed} pixels of the outline were blended");
     assert!(on_waterline >= 60, "only {on_waterline} pixels of the waterline were blended");
+    assert!(on_duck >= 60, "only {on_duck} pixels of the duck's edges were blended");
     assert!(elsewhere * 50 <= changed, "{elsewhere} of {changed} blended pixels are not on the edge");
 }
 

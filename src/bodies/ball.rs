@@ -48,6 +48,11 @@ pub const KIND: BodyKind = BodyKind {
         let (vertices, indices) = unit_sphere(24, 48);
         BodyMesh { vertices: bytemuck::cast_slice(&vertices).to_vec(), indices }
     },
+    // Grown by a tenth (BALL_EDGE_GROWTH), coarse: its facets within 2 % of the sphere.
+    outline_mesh: || {
+        let (vertices, indices) = unit_sphere(8, 16);
+        BodyMesh { vertices: bytemuck::cast_slice(&vertices).to_vec(), indices }
+    },
     // A point on the unit sphere.
     vertex: &wgpu::vertex_attr_array![0 => Float32x3],
     vertex_stride: 12,

@@ -49,6 +49,9 @@ pub struct BodyKind {
     pub uniform: fn(Option<&BodyView>, &mut [[f32; 4]]),
     /// Its mesh, drawn with `vs_<name>` and `fs_<name>` of its WGSL.
     pub mesh: fn() -> BodyMesh,
+    /// The mesh its outline's pass (`edge`) grows to cover the pixels its outline crosses, with
+    /// the same vertex layout: coarser, as only its fragments near the outline do any work.
+    pub outline_mesh: fn() -> BodyMesh,
     /// The mesh's vertex layout and stride (bytes).
     pub vertex: &'static [wgpu::VertexAttribute],
     pub vertex_stride: u64,

@@ -119,6 +119,8 @@ pub struct Renderer {
     horizon: (glam::Vec3, [[f32; 4]; deck::HORIZON_TERMS]),
     /// Each kind of body's mesh, in the order of `bodies::KINDS`.
     body_meshes: Vec<Mesh>,
+    /// Each kind's mesh for its outline's pass (`BodyKind::outline_mesh`).
+    body_outline_meshes: Vec<Mesh>,
     depth: Option<DepthBuffer>,
     upscale: Upscale,
     /// The tiles' mean albedo (linear RGB), for the light the floor sends back up.
@@ -168,6 +170,13 @@ impl Renderer {
                 .iter()
                 .map(|kind| {
                     let mesh = (kind.mesh)();
+                    Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
+                })
+                .collect(),
+            body_outline_meshes: crate::bodies::KINDS
+                .iter()
+                .map(|kind| {
+                    let mesh = (kind.outline_mesh)();
                     Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
                 })
                 .collect(),

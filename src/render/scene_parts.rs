@@ -49,6 +49,11 @@ impl Renderer {
         &self.body_meshes
     }
 
+    /// Each kind of body's mesh for its outline's pass, in the order of `bodies::KINDS`.
+    pub fn body_outline_meshes(&self) -> &[Mesh] {
+        &self.body_outline_meshes
+    }
+
     /// The depth target for a frame of `size` pixels (made again when the size changes).
     pub fn scene_depth(&mut self, device: &wgpu::Device, size: (u32, u32)) -> &wgpu::TextureView {
         self.depth_view(device, size)

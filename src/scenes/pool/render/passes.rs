@@ -279,7 +279,7 @@ impl PoolPasses {
         for (k, pipeline) in self.variants[&features].edges.iter().enumerate() {
             if let (Some(pipeline), Some(_)) = (pipeline, &view.bodies[k]) {
                 pass.set_pipeline(pipeline);
-                renderer.body_meshes()[k].draw(pass);
+                renderer.body_outline_meshes()[k].draw(pass);
             }
         }
     }
