@@ -92,7 +92,7 @@ fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
 @vertex
 fn vs_ball_edge(@location(0) unit: vec3<f32>) -> BallOut {
     var out: BallOut;
-    out.world = ball_uniform().xyz + unit * ball_uniform().w * BALL_EDGE_GROWTH;
+    out.world = grown_rim(ball_uniform().xyz + unit * ball_uniform().w, unit, ball_uniform().w * (BALL_EDGE_GROWTH - 1.0));
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
     return out;
 }
@@ -101,7 +101,7 @@ fn vs_ball_edge(@location(0) unit: vec3<f32>) -> BallOut {
 fn fs_ball_edge(in: BallOut) -> @location(0) vec4<f32> {
     let edge = ball_edge(in.world, ball_uniform());
     if (edge.hidden) {
-        discard;
+        return vec4<f32>(0.0); // not discarded: see grown_rim
     }
     let p = edge.point;
     let n = normalize(p - ball_uniform().xyz);

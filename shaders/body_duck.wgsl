@@ -79,11 +79,20 @@ fn duck_part_light(o_duck: vec3<f32>, d_duck: vec3<f32>, t_max: f32, t_lit: f32,
     return smoothstep(0.975 - half, 0.975 + half, length(o + d * t));
 }
 
-// Signed distance (m) from the duck's traced parts, negative inside one (bodies_field): per
-// part, to first order, its unit-ball distance |o| - 1 over that distance's gradient in metres,
-// |o / radii| / |o| (exact on a sphere, within a hair of it near an ellipsoid's surface, where a
-// waterline's fade reads it); outside the bounding sphere, 1 m more than the distance from
-// that: far from any waterline.
+// Signed distance (m) from traced part i of a point `local` in the duck's frame, to first
+// order: its unit-ball distance |o| - 1 over that distance's gradient in metres, |o / radii| /
+// |o| (exact on a sphere, within a hair of it near an ellipsoid's surface, where a waterline's
+// fade and a crease's blend read it).
+fn duck_part_distance(local: vec3<f32>, i: i32) -> f32 {
+    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+    let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+    let r = length(o);
+    let gradient = length(o / radii) / max(r, 1.0e-6);
+    return select((r - 1.0) / gradient, -min(radii.x, min(radii.y, radii.z)), r < 1.0e-3);
+}
+
+// Signed distance (m) from the duck's traced parts, negative inside one (bodies_field); outside
+// the bounding sphere, 1 m more than the distance from that: far from any waterline.
 fn duck_field(p: vec3<f32>) -> f32 {
     let bound = scene.bodies[DUCK_SLOT + 4];
     let outside = distance(p, bound.xyz) - bound.w;
@@ -93,11 +102,7 @@ fn duck_field(p: vec3<f32>) -> f32 {
     let local = transpose(duck_rotation()) * (p - scene.bodies[DUCK_SLOT + 3].xyz);
     var d = NO_HIT;
     for (var i = 0; i < DUCK_PARTS; i++) {
-        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-        let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
-        let r = length(o);
-        let gradient = length(o / radii) / max(r, 1.0e-6);
-        d = min(d, select((r - 1.0) / gradient, -min(radii.x, min(radii.y, radii.z)), r < 1.0e-3));
+        d = min(d, duck_part_distance(local, i));
     }
     return d;
 }
@@ -144,113 +149,32 @@ fn duck_vertex(position: vec3<f32>, normal: vec3<f32>, colour: vec3<f32>, part: 
     return out;
 }
 
+// Where another traced part meets the one drawn (a crease), the two are blended by the share
+// of the pixel each covers: by the other part's distance from the point drawn against that
+// distance's change to the next pixel (the eyes, drawn on the head, keep their own colour).
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(duck_shade(in.world, normalize(in.normal), in.colour, view, lit_under(in.world), true), in.world);
-}
-
-// The duck's edges without stair-steps: its outline mesh (its traced parts, coarse), each part
-// grown by DUCK_EDGE_GROWTH (m, in the duck's frame) along its normals, is drawn after
-// everything else, and where a
-// part's edge crosses the pixel that part is blended over what was drawn, by the share of the
-// pixel it covers, from its own grown fragment (where grown parts overlap, once). Two edges:
-// - an outline: the pixel's ray passes the part's centre at m in its unit-ball space (1 on its
-//   outline), against m's change to the next pixel; the nearest such part in front of
-//   whatever the ray hits, coloured at its outline's point nearest the ray;
-// - a crease, where two parts meet: the part the ray enters second, by how far behind the
-//   first it enters against that distance's change to the next pixel.
-const DUCK_EDGE_GROWTH: f32 = 0.016;
-
-@vertex
-fn vs_duck_edge(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) colour: vec3<f32>, @location(3) part: u32) -> DuckOut {
-    return duck_vertex(position + normal * DUCK_EDGE_GROWTH, normal, colour, part);
-}
-
-// What a ray does near a part, in its unit-ball space: where it enters (m along the ray; where
-// it misses, where it passes nearest, so that the distance runs on smoothly past the outline)
-// and whether it does, how near it passes the centre (1: on the outline), and the point there.
-struct DuckPartRay {
-    enter: f32,
-    hits: bool,
-    miss: f32,
-    point: vec3<f32>,
-};
-
-fn duck_part_ray(o_duck: vec3<f32>, d_duck: vec3<f32>, i: i32) -> DuckPartRay {
-    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-    let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
-    let d = d_duck / radii;
-    let a = dot(d, d);
-    let b = dot(o, d);
-    let disc = b * b - a * (dot(o, o) - 1.0);
-    let enter = (-b - sqrt(max(disc, 0.0))) / a;
-    return DuckPartRay(enter, disc >= 0.0 && enter > 0.0, length(o - d * (b / a)), o + d * enter);
-}
-
-@fragment
-fn fs_duck_edge(in: DuckOut) -> @location(0) vec4<f32> {
-    let eye = scene.eye.xyz;
-    let dir = normalize(in.world - eye);
-    let to_duck = transpose(duck_rotation());
-    let o_duck = to_duck * (eye - scene.bodies[DUCK_SLOT + 3].xyz);
-    let d_duck = to_duck * dir;
-    // The two parts the ray enters first: where (m along it) and that distance's change to
-    // the next pixel across and down.
-    var first = vec4<f32>(NO_HIT, 0.0, 0.0, -1.0);
-    var second = first;
+    let under = lit_under(in.world);
+    let colour = duck_shade(in.world, normalize(in.normal), in.colour, view, under, true);
+    let local = transpose(duck_rotation()) * (in.world - scene.bodies[DUCK_SLOT + 3].xyz);
+    var other = -1;
+    var share = 0.0;
     for (var i = 0; i < DUCK_PARTS; i++) {
-        let r = duck_part_ray(o_duck, d_duck, i);
-        let entry = vec4<f32>(r.enter, dpdx(r.enter), dpdy(r.enter), f32(i));
-        if (r.hits && r.enter < first.x) {
-            second = first;
-            first = entry;
-        } else if (r.hits && r.enter < second.x) {
-            second = entry;
+        let d = duck_part_distance(local, i);
+        let covers = clamp(0.5 - d / max(fwidth(d), 1.0e-6), 0.0, 0.5);
+        if (u32(i) != in.part && covers > share) {
+            other = i;
+            share = covers;
         }
     }
-    // The nearest outline crossing the pixel in front of what the ray hits: the share of the
-    // pixel its part covers.
-    var part = -1;
-    var cover = 0.0;
-    var along = NO_HIT;
-    var inside = 1.0; // how near the centre the middle of the covered share passes (unit ball)
-    for (var i = 0; i < DUCK_PARTS; i++) {
-        let r = duck_part_ray(o_duck, d_duck, i);
-        let spread = max(fwidth(r.miss), 1.0e-6);
-        let share = clamp(0.5 - (r.miss - 1.0) / spread, 0.0, 1.0);
-        let in_front = f32(i) == first.w || r.enter < first.x;
-        if (share > 0.0 && share < 1.0 && in_front && r.enter > 0.0 && r.enter < along) {
-            part = i;
-            cover = share;
-            along = r.enter;
-            inside = clamp(1.0 - 0.5 * share * spread, 0.0, 1.0);
-        }
+    if (other < 0 || in.part >= u32(DUCK_PARTS)) {
+        return seen_directly(colour, in.world);
     }
-    // Else the crease where the second part the ray enters meets the first.
-    if (part < 0 && second.w >= 0.0) {
-        let change = abs(second.y - first.y) + abs(second.z - first.z);
-        cover = clamp(0.5 - (second.x - first.x) / max(change, 1.0e-6), 0.0, 1.0);
-        part = select(-1, i32(second.w), cover > 0.0);
-    }
-    if (part < 0 || u32(part) != in.part) {
-        discard;
-    }
-    // On an outline, coloured where the middle of its covered share sees the part (the outline
-    // itself faces away from the eye, where the coat mirrors most); on a crease where the ray enters.
-    let r = duck_part_ray(o_duck, d_duck, part);
-    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * part + 1].xyz;
-    let ahead = normalize(d_duck / radii);
-    let side = normalize(r.point - dot(r.point, ahead) * ahead);
-    let covered = side * inside - ahead * sqrt(1.0 - inside * inside);
-    let unit = select(normalize(r.point), covered, along < NO_HIT);
-    let p = duck_rotation() * (scene.bodies[DUCK_SLOT + 5 + 3 * part].xyz + unit * radii) + scene.bodies[DUCK_SLOT + 3].xyz;
-    // Across the water from the eye the water's own pass has the pixel.
-    if ((p.y < 0.0) != (eye.y < 0.0)) {
-        discard;
-    }
-    let n = normalize(duck_rotation() * (unit / radii));
-    let albedo = scene.bodies[DUCK_SLOT + 5 + 3 * part + 2].rgb;
-    let out = seen_directly(duck_shade(p, n, albedo, normalize(p - eye), lit_under(p), true), p);
-    return vec4<f32>(out.rgb, cover);
+    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * other + 1].xyz;
+    let o = (local - scene.bodies[DUCK_SLOT + 5 + 3 * other].xyz) / radii;
+    let n = normalize(duck_rotation() * (o / radii));
+    let albedo = scene.bodies[DUCK_SLOT + 5 + 3 * other + 2].rgb;
+    let met = duck_shade(in.world, n, albedo, view, under, true);
+    return seen_directly(mix(colour, met, share), in.world);
 }

@@ -74,7 +74,7 @@ fn fs_sphere(in: SphereOut) -> @location(0) vec4<f32> {
 @vertex
 fn vs_sphere_edge(@location(0) unit: vec3<f32>) -> SphereOut {
     var out: SphereOut;
-    out.world = sphere_uniform().xyz + unit * sphere_uniform().w * BALL_EDGE_GROWTH;
+    out.world = grown_rim(sphere_uniform().xyz + unit * sphere_uniform().w, unit, sphere_uniform().w * (BALL_EDGE_GROWTH - 1.0));
     out.clip = scene.view_proj * vec4<f32>(out.world, 1.0);
     return out;
 }
@@ -83,7 +83,7 @@ fn vs_sphere_edge(@location(0) unit: vec3<f32>) -> SphereOut {
 fn fs_sphere_edge(in: SphereOut) -> @location(0) vec4<f32> {
     let edge = ball_edge(in.world, sphere_uniform());
     if (edge.hidden) {
-        discard;
+        return vec4<f32>(0.0); // not discarded: see grown_rim
     }
     let p = edge.point;
     let out = seen_directly(sphere_colour(p, normalize(p - scene.eye.xyz), lit_under(p), true), p);

@@ -45,7 +45,7 @@ struct Coat {
 // from under it: there a coat would add a few hundredths of what it adds seen directly.
 fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool, coat: Coat) -> vec3<f32> {
     let wet = wetness(p, coat.wet_band);
-    let colour = object_colour(p, n, albedo * mix(1.0, coat.wet_albedo, wet), under);
+    let colour = object_colour(p, n, albedo * mix(1.0, coat.wet_albedo, wet), under, direct);
     if (!direct) {
         return colour;
     }
@@ -66,6 +66,17 @@ struct BallEdge {
 };
 
 const BALL_EDGE_GROWTH: f32 = 1.1;
+
+// A vertex of a body's outline mesh: the point `surface` (outward normal n) moved `by` (m)
+// along n, then pushed back from the eye as far as that brought it nearer. The grown mesh then
+// lies no nearer than the body, whose own mesh hides all of it but the rim, grown sideways: the
+// outline's pass shades only there (early depth testing skips the rest, its shader having no
+// discard).
+fn grown_rim(surface: vec3<f32>, n: vec3<f32>, by: f32) -> vec3<f32> {
+    let grown = surface + n * by;
+    let view = normalize(grown - scene.eye.xyz);
+    return grown + view * (by * max(dot(n, -view), 0.0));
+}
 
 // Call in uniform control flow (it takes a screen derivative). world: the grown mesh's point.
 fn ball_edge(world: vec3<f32>, ball: vec4<f32>) -> BallEdge {

@@ -22,8 +22,12 @@ fn caustics_uv(entry: vec2<f32>) -> vec2<f32> {
 // they have gathered, none at the surface.
 fn caustics_under(uv: vec2<f32>, p: vec3<f32>) -> vec4<f32> {
     let shallow = 1.0 - clamp(-p.y / CAUSTICS_SHARPEN_DEPTH, 0.0, 1.0);
-    let light = textureSampleLevel(caustics_map, clamp_sampler, uv, max(caustics_lod, shallow * CAUSTICS_LAST_LOD));
-    return pow(max(light * scene.water.w, vec4<f32>(0.0)), vec4<f32>(mix(scene.water.z, 1.0, shallow)));
+    let light = max(textureSampleLevel(caustics_map, clamp_sampler, uv, max(caustics_lod, shallow * CAUSTICS_LAST_LOD)) * scene.water.w, vec4<f32>(0.0));
+    // No power at all at a contrast of 1 (a branch every pixel takes alike).
+    if (scene.water.z == 1.0) {
+        return light;
+    }
+    return pow(light, vec4<f32>(mix(scene.water.z, 1.0, shallow)));
 }
 
 // 1 when the straight ray from the surface point p towards the sun clears the pool rim.
@@ -104,14 +108,41 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 
 // The light round an underwater point p facing n, besides the sun's own: from above, the sky's
 // through the surface; from below, the pool's tiles lit by the refracted sun and the sky
-// (scene.floor_bounce: the calm floor's light times their mean albedo), having crossed the water down to the
-// floor and back up to p, which tints it as the water is tinted. Each weighted by the share of
-// its hemisphere n faces (a cosine lobe), so an underside is lit by the floor, not black.
-fn light_under_water(p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
+// (scene.floor_bounce: the calm floor's light times their mean albedo) as far as the floor it
+// faces is lit (floor_seen, if `detailed`; else as calm water lights it), having crossed the water down to the floor and back up to p,
+// which tints it as the water is tinted. Each weighted by the share of its hemisphere n faces
+// (a cosine lobe), so an underside is lit by the floor, not black.
+fn light_under_water(p: vec3<f32>, n: vec3<f32>, detailed: bool) -> vec3<f32> {
     let crossed = depth() + max(p.y + depth(), 0.0);
-    let from_below = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
+    var from_below = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
+    if (detailed) {
+        from_below *= floor_seen(p, n);
+    }
     let up = 0.5 + 0.5 * n.y;
     return sky_light_at(true) * up + from_below * (1.0 - up);
+}
+
+// How lit (1: as calm water lights it) the floor is that an underwater point p facing n sees:
+// the caustics map at its coarsest level, the bodies' shadows included, four taps a quarter of
+// p's height above the floor apart round the floor under p moved half that height along n
+// (the floor's light reaches p from a patch about as wide as it is high, and most from the
+// side it faces); half of it, the rest as calm water lights the floor beyond. A body's
+// underside is then darker over its own shadow, lit at its rim by the net round it.
+fn floor_seen(p: vec3<f32>, n: vec3<f32>) -> f32 {
+    if (!HAS_CAUSTICS) {
+        return 1.0;
+    }
+    let height = max(p.y + depth(), 0.0);
+    let w = half_width();
+    let middle = p.xz + n.xz * (0.5 * height);
+    var light = 0.0;
+    for (var k = 0; k < 4; k++) {
+        let corner = vec2<f32>(f32(k & 1), f32(k >> 1u)) * 2.0 - 1.0;
+        let at = clamp(middle + corner * (0.25 * height), vec2<f32>(-w), vec2<f32>(w));
+        let entry = light_entry(vec3<f32>(at.x, -depth(), at.y));
+        light += textureSampleLevel(caustics_map, clamp_sampler, caustics_uv(entry), CAUSTICS_LAST_LOD).g;
+    }
+    return 0.5 + 0.125 * light * scene.water.w;
 }
 
 // Lit colour (linear RGB) of the pool's tiles at p with inward normal n and tile colour

@@ -456,6 +456,48 @@ fn the_bodies_outlines_creases_and_waterlines_are_blended_on_their_edges_and_now
     assert!(elsewhere * 50 <= changed, "{elsewhere} of {changed} blended pixels are not on the edge");
 }
 
+/// Seen from under the water, a floating sphere's underside is shaded by the floor it faces
+/// (darker over its own shadow, lit towards its rim by the caustic net round it), not an even
+/// fill: the spread of luma over the points of its lower half that face the eye.
+#[test]
+fn from_under_the_water_a_floating_spheres_underside_is_shaded_by_the_floor_it_faces() {
+    let (w, h) = (480, 360);
+    let mut demo = common::demo(DemoOptions::default());
+    for d in random_drops(1, 20, 1.0, 0.05, 0.015) {
+        demo.add_drop(d.x, d.z, d.radius, d.strength);
+    }
+    demo.params.set(ParamId::Setting, 1.0);
+    demo.camera_mut().pitch = -25.0;
+    let frame = render(&mut demo, w, h, 60, 1.0 / 60.0);
+    let centre = demo.body(wavepool::bodies::BodyId::named("sphere").expect("a kind")).pose.position;
+    let radius = demo.params.get(ParamId::SphereRadius);
+    let eye = demo.camera().eye();
+    let mut pixels: Vec<(u32, u32)> = (0..64 * 64)
+        .map(|k| (k % 64, k / 64))
+        .map(|(i, j)| {
+            let (down, around) =
+                (std::f32::consts::FRAC_PI_2 * (1.0 + i as f32 / 64.0), std::f32::consts::TAU * j as f32 / 64.0);
+            Vec3::new(down.sin() * around.cos(), down.cos(), down.sin() * around.sin())
+        })
+        .filter(|n| n.y < -0.4)
+        .map(|n| (n, centre + n * radius))
+        .filter(|(n, p)| n.dot((eye - *p).normalize()) > 0.5)
+        .filter_map(|(_, p)| demo.camera().project(p, Vec2::new(w as f32, h as f32)))
+        .map(|q| (q.x as u32, q.y as u32))
+        .filter(|&(x, y)| x < w && y < h)
+        .collect();
+    pixels.sort_unstable();
+    pixels.dedup();
+    let luma: Vec<f64> = pixels.iter().map(|&(x, y)| frame.luma(x, y)).collect();
+    let mean = luma.iter().sum::<f64>() / luma.len() as f64;
+    let spread = (luma.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / luma.len() as f64).sqrt();
+    println!("the underside from below: {} pixels, mean luma {mean:.1}, spread {spread:.2}", luma.len());
+    assert!(luma.len() >= 200, "only {} pixels of the underside in view", luma.len());
+    // 8.11 on 2026-11-29; 4.44 with the floor's light taken as even (the underside's own
+    // shading and the water's tint alone).
+    assert!(spread > 6.0, "the underside is lit evenly: luma spread {spread:.2}");
+}
+
 #[test]
 fn the_tiles_glaze_brightens_the_tiles_above_the_water_and_darkens_nothing() {
     let (w, h) = (640, 480);

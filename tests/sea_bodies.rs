@@ -351,3 +351,35 @@ fn the_seas_water_is_blended_at_a_spheres_waterline_and_nowhere_else() {
     // hull's part under the water behind them, lighter than any of their neighbours.
     assert!(astray * 10 <= changed, "{astray} of {changed} blended pixels are not at the waterline");
 }
+
+/// In the sea the duck's outline is blended too (its outline's pass, drawn after the sea), as is
+/// the water at its waterline: with the blending off for comparison, the pixels that change lie
+/// on the duck and between their neighbours' colours.
+#[test]
+fn the_seas_duck_is_blended_on_its_outline_and_waterline() {
+    let duck = BodyId::named("duck").expect("the duck");
+    let (w, h) = (320u32, 240u32);
+    let frame = |outlines: bool| {
+        let mut d = sea_with(duck.bit(), 20.0);
+        d.set_body_outlines(outlines);
+        let image = render(&mut d, w, h, 30, 1.0 / 60.0);
+        let centre = d.sea_body(duck).expect("the sea's bodies").pose.position;
+        let radius = wavepool::bodies::duck::bounding_radius() * patch_scale();
+        let size = glam::Vec2::new(w as f32, h as f32);
+        let middle = d.camera().project(centre, size).expect("the duck is in the frame");
+        let right = d.camera().view().inverse().col(0).truncate();
+        let edge = d.camera().project(centre + right * radius, size).expect("the duck is in the frame");
+        (image, middle, middle.distance(edge))
+    };
+    let ((blended, middle, radius), (stepped, _, _)) = (frame(true), frame(false));
+    let blended = blended.blended_against(&stepped);
+    let near = |b: &&common::picture::Blended| {
+        glam::Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5).distance(middle) <= radius + 2.0
+    };
+    let on_duck = blended.iter().filter(near).count();
+    let astray = blended.iter().filter(|b| !(b.between && near(b))).count();
+    println!("{} pixels blended, {on_duck} on the duck (radius {radius:.1} px), {astray} away from it or outside their neighbours' colours", blended.len());
+    // 235 on 2026-11-29; 54 with the waterline alone (no outline's pass in the sea).
+    assert!(on_duck >= 120, "only {on_duck} pixels of the duck's edges were blended");
+    assert!(astray * 10 <= blended.len(), "{astray} of {} blended pixels are astray", blended.len());
+}

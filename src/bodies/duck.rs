@@ -45,7 +45,7 @@ pub const KIND: BodyKind = BodyKind {
     // Position and normal in the duck's frame, linear colour, which part.
     vertex: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Uint32],
     vertex_stride: 40,
-    wgsl: crate::wgsl!("body_duck.wgsl"),
+    wgsl: concat!(crate::wgsl!("body_duck.wgsl"), crate::wgsl!("body_duck_edge.wgsl")),
     wgsl_constants: parts_wgsl,
     edge: true,
 };
@@ -143,24 +143,36 @@ pub struct DuckVertex {
 }
 
 /// The duck as triangles: every part a latitude-longitude ellipsoid, wound to face outwards,
-/// fine enough that its outline lies within a pixel of the traced one.
+/// its facets within [`DRAWN_FACETS`] of it (its outline within a pixel of the traced one).
 pub fn mesh() -> (Vec<DuckVertex>, Vec<u32>) {
-    ellipsoids(TRACED_PARTS.iter().chain(&EYES), 16, 24)
+    ellipsoids(TRACED_PARTS.iter().chain(&EYES), DRAWN_FACETS)
 }
 
-/// The mesh the outline's pass grows (`vs_duck_edge`): the traced parts only, coarse: a
-/// sixth of the drawn mesh's triangles, its facets within 3.4 % of a part's longest radius
-/// (5 mm for the body) of the part, inside the growth. On lavapipe the drawn mesh's 4,600
-/// triangles cost about 0.3 ms a pass whatever their fragments do.
+/// The mesh the outline's pass grows (`vs_duck_edge`): the traced parts only, its facets within
+/// [`OUTLINE_FACETS`] of them, inside the growth. On lavapipe a pass over 4,600 triangles costs
+/// about 0.3 ms whatever their fragments do.
 pub fn outline_mesh() -> (Vec<DuckVertex>, Vec<u32>) {
-    ellipsoids(TRACED_PARTS.iter(), 8, 12)
+    ellipsoids(TRACED_PARTS.iter(), OUTLINE_FACETS)
 }
 
-/// Latitude-longitude ellipsoids, `stacks` by `slices` quads each, wound to face outwards.
-fn ellipsoids<'a>(parts: impl Iterator<Item = &'a DuckPart>, stacks: u32, slices: u32) -> (Vec<DuckVertex>, Vec<u32>) {
+/// How far (m) the drawn mesh's facets may lie inside the parts: the body's at 24 slices, and
+/// each smaller part with as few as keep it as close (2,000 triangles in all; 4,600 when every
+/// part, the eyes too, had the body's).
+pub const DRAWN_FACETS: f32 = 0.0013;
+/// The same for the outline's mesh.
+pub const OUTLINE_FACETS: f32 = 0.005;
+
+/// Latitude-longitude ellipsoids wound to face outwards, each with the fewest slices round it
+/// that keep its facets within `facets` (m) of it at its longest radius, and two thirds as many
+/// stacks down it.
+fn ellipsoids<'a>(parts: impl Iterator<Item = &'a DuckPart>, facets: f32) -> (Vec<DuckVertex>, Vec<u32>) {
     let mut vertices = Vec::new();
     let mut indices = Vec::new();
     for (part, p) in parts.enumerate() {
+        // A chord of angle a lies r (1 - cos a/2) inside a circle of radius r.
+        let longest = p.shape.radii.max_element();
+        let slices = (std::f32::consts::PI / (1.0 - facets / longest).max(-1.0).acos()).ceil().max(6.0) as u32;
+        let stacks = (slices * 2).div_ceil(3);
         let base = vertices.len() as u32;
         for i in 0..=stacks {
             let theta = std::f32::consts::PI * i as f32 / stacks as f32;
@@ -224,6 +236,27 @@ mod tests {
             let face = (b - a).cross(c - a);
             assert!(face.length() < 1e-9 || face.dot(normal) > 0.0, "inward triangle {tri:?}");
         }
+    }
+
+    /// Every triangle's middle lies within one and a half times its mesh's facet allowance (a
+    /// chord's sag round the part and another, smaller, down it) of its part (to first order:
+    /// the part's unit-ball distance over its gradient), and the drawn mesh is small.
+    #[test]
+    fn the_meshes_facets_lie_within_their_allowance_of_the_parts() {
+        for ((vertices, indices), facets) in [(mesh(), DRAWN_FACETS), (outline_mesh(), OUTLINE_FACETS)] {
+            let mut deepest = 0.0f32;
+            for tri in indices.chunks(3) {
+                let part =
+                    &TRACED_PARTS.iter().chain(&EYES).nth(vertices[tri[0] as usize].part as usize).unwrap().shape;
+                let middle = tri.iter().map(|&i| Vec3::from(vertices[i as usize].position)).sum::<Vec3>() / 3.0;
+                let o = (middle - part.centre) / part.radii;
+                let inside = (1.0 - o.length()) * o.length() / (o / part.radii).length();
+                deepest = deepest.max(inside);
+            }
+            println!("{} triangles, the deepest middle {:.2} mm inside its part", indices.len() / 3, deepest * 1000.0);
+            assert!(deepest <= 1.5 * facets, "a facet {deepest} m inside its part (allowed {facets})");
+        }
+        assert!(mesh().1.len() / 3 < 2500, "the drawn mesh has {} triangles", mesh().1.len() / 3);
     }
 
     #[test]

@@ -12,35 +12,46 @@ use crate::render::View;
 
 pub(super) const WGSL: &str = crate::wgsl!("sea/bodies.wgsl");
 
-/// Per kind of `bodies::KINDS`, its mesh's pipeline if it is among `present` (bits of the kinds).
+/// A present kind's pipelines in the sea: its mesh's, and its outline's if it has one
+/// (`BodyKind::edge`), drawn after the sea and blended by the share of each pixel it covers.
+pub(super) struct BodyPipelines {
+    pub(super) mesh: wgpu::RenderPipeline,
+    pub(super) edge: Option<wgpu::RenderPipeline>,
+}
+
+/// Per kind of `bodies::KINDS`, its pipelines if it is among `present` (bits of the kinds).
 pub(super) fn body_pipelines(
     device: &wgpu::Device,
     module: &wgpu::ShaderModule,
     layouts: &[&wgpu::BindGroupLayout],
     format: wgpu::TextureFormat,
     present: u8,
-) -> Vec<Option<wgpu::RenderPipeline>> {
+) -> Vec<Option<BodyPipelines>> {
+    let pipeline = |kind: &crate::bodies::BodyKind, suffix: &str, outline: bool| {
+        let entries = [format!("vs_{}{suffix}", kind.name), format!("fs_{}{suffix}", kind.name)];
+        let p = MeshPipeline {
+            label: kind.name,
+            module,
+            vertex_entry: &entries[0],
+            fragment_entry: &entries[1],
+            layouts,
+            attributes: kind.vertex,
+            stride: kind.vertex_stride,
+            cull: Some(wgpu::Face::Back),
+            front_face: wgpu::FrontFace::Ccw,
+            format,
+            blend: outline.then_some(wgpu::BlendState::ALPHA_BLENDING),
+            write_mask: wgpu::ColorWrites::ALL,
+            depth: if outline { DepthUse::Test } else { DepthUse::TestAndWrite },
+        };
+        mesh_pipeline(device, p)
+    };
     BodyId::all()
         .map(|id| {
             let kind = id.kind();
-            let entries = [format!("vs_{}", kind.name), format!("fs_{}", kind.name)];
-            (present & id.bit() as u8 != 0).then(|| {
-                let p = MeshPipeline {
-                    label: kind.name,
-                    module,
-                    vertex_entry: &entries[0],
-                    fragment_entry: &entries[1],
-                    layouts,
-                    attributes: kind.vertex,
-                    stride: kind.vertex_stride,
-                    cull: Some(wgpu::Face::Back),
-                    front_face: wgpu::FrontFace::Ccw,
-                    format,
-                    blend: None,
-                    write_mask: wgpu::ColorWrites::ALL,
-                    depth: DepthUse::TestAndWrite,
-                };
-                mesh_pipeline(device, p)
+            (present & id.bit() as u8 != 0).then(|| BodyPipelines {
+                mesh: pipeline(kind, "", false),
+                edge: kind.edge.then(|| pipeline(kind, "_edge", true)),
             })
         })
         .collect()

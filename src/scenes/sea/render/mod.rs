@@ -90,8 +90,8 @@ pub struct SeaRenderer {
     features: Features,
     variant: SeaVariant,
     grid: wgpu::RenderPipeline,
-    /// Per kind of body, its mesh's pipeline if the kind is in the sea.
-    bodies: Vec<Option<wgpu::RenderPipeline>>,
+    /// Per kind of body, its pipelines if the kind is in the sea.
+    bodies: Vec<Option<bodies::BodyPipelines>>,
     /// The grid's cells near the bodies, which mirror them, when the variant does: away from
     /// the island and near it.
     near_bodies: Option<[wgpu::RenderPipeline; 2]>,
@@ -492,9 +492,9 @@ impl SeaRenderer {
         for (i, group) in groups.iter().enumerate() {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
-        for (pipeline, mesh) in self.bodies.iter().zip(renderer.body_meshes()) {
-            if let Some(pipeline) = pipeline {
-                pass.set_pipeline(pipeline);
+        for (pipelines, mesh) in self.bodies.iter().zip(renderer.body_meshes()) {
+            if let Some(p) = pipelines {
+                pass.set_pipeline(&p.mesh);
                 mesh.draw(&mut pass);
             }
         }
@@ -511,6 +511,15 @@ impl SeaRenderer {
             island.draw_land(&mut pass);
         }
         self.sky.draw(&mut pass, &groups);
+        // The bodies' outlines last, over the water and the sky behind them.
+        if renderer.body_outlines() {
+            for (pipelines, mesh) in self.bodies.iter().zip(renderer.body_outline_meshes()) {
+                if let Some(edge) = pipelines.as_ref().and_then(|p| p.edge.as_ref()) {
+                    pass.set_pipeline(edge);
+                    mesh.draw(&mut pass);
+                }
+            }
+        }
     }
 }
 
