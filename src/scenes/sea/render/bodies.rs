@@ -7,7 +7,7 @@
 use glam::Vec3;
 
 use crate::bodies::{BodyId, KINDS};
-use crate::render::scene_parts::{mesh_pipeline, DepthUse, MeshPipeline};
+use crate::render::scene_parts::{mesh_pipeline, DepthUse, Mesh, MeshPipeline};
 use crate::render::View;
 
 pub(super) const WGSL: &str = crate::wgsl!("sea/bodies.wgsl");
@@ -55,6 +55,16 @@ pub(super) fn body_pipelines(
             })
         })
         .collect()
+}
+
+/// Draws the outlines of the present kinds that have one, over what the pass drew before.
+pub(super) fn draw_outlines(pass: &mut wgpu::RenderPass<'_>, bodies: &[Option<BodyPipelines>], meshes: &[Mesh]) {
+    for (pipelines, mesh) in bodies.iter().zip(meshes) {
+        if let Some(edge) = pipelines.as_ref().and_then(|p| p.edge.as_ref()) {
+            pass.set_pipeline(edge);
+            mesh.draw(pass);
+        }
+    }
 }
 
 /// How far past a body's bounding ball (in its radii) the waves' slopes can carry its mirror

@@ -513,12 +513,7 @@ impl SeaRenderer {
         self.sky.draw(&mut pass, &groups);
         // The bodies' outlines last, over the water and the sky behind them.
         if renderer.body_outlines() {
-            for (pipelines, mesh) in self.bodies.iter().zip(renderer.body_outline_meshes()) {
-                if let Some(edge) = pipelines.as_ref().and_then(|p| p.edge.as_ref()) {
-                    pass.set_pipeline(edge);
-                    mesh.draw(&mut pass);
-                }
-            }
+            bodies::draw_outlines(&mut pass, &self.bodies, renderer.body_outline_meshes());
         }
     }
 }
