@@ -150,8 +150,11 @@ fn duck_vertex(position: vec3<f32>, normal: vec3<f32>, colour: vec3<f32>, part: 
 }
 
 // Where another traced part meets the one drawn (a crease), the two are blended by the share
-// of the pixel each covers: by the other part's distance from the point drawn against that
-// distance's change to the next pixel (the eyes, drawn on the head, keep their own colour).
+// of the pixel the other covers: its distance from the point drawn against that distance's
+// change to the next pixel (all of it where the drawn facet lies inside the other). Each is
+// shaded on its own: shading a mixed normal once kept the stair-steps where the coat's
+// highlight differs across the crease. The eyes, drawn on the head, keep their own colour;
+// scene.output.z 0 turns the blend off, as the outlines (for tests to compare with).
 @fragment
 fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     let view = normalize(in.world - scene.eye.xyz);
@@ -162,13 +165,13 @@ fn fs_duck(in: DuckOut) -> @location(0) vec4<f32> {
     var share = 0.0;
     for (var i = 0; i < DUCK_PARTS; i++) {
         let d = duck_part_distance(local, i);
-        let covers = clamp(0.5 - d / max(fwidth(d), 1.0e-6), 0.0, 0.5);
+        let covers = clamp(0.5 - d / max(fwidth(d), 1.0e-6), 0.0, 1.0);
         if (u32(i) != in.part && covers > share) {
             other = i;
             share = covers;
         }
     }
-    if (other < 0 || in.part >= u32(DUCK_PARTS)) {
+    if (other < 0 || in.part >= u32(DUCK_PARTS) || scene.output.z <= 0.0) {
         return seen_directly(colour, in.world);
     }
     let radii = scene.bodies[DUCK_SLOT + 5 + 3 * other + 1].xyz;

@@ -7,7 +7,8 @@
 // its outline); against m's change to the next pixel that gives the share of the pixel the
 // part covers. The nearest part whose outline crosses the pixel, in front of whatever part the
 // ray hits, is blended over what was drawn by its share, from its own grown part's fragment
-// (where grown parts overlap, once). Its creases are fs_duck's.
+// (where grown parts overlap, once). Its creases are fs_duck's. The eyes, drawn only, not
+// traced, keep their stair-steps (a few pixels), and the head's outline may blend over them.
 const DUCK_EDGE_GROWTH: f32 = 0.016;
 
 @vertex
@@ -87,7 +88,7 @@ fn fs_duck_edge(in: DuckOut) -> @location(0) vec4<f32> {
     let unit = side * inside - ahead * sqrt(1.0 - inside * inside);
     let p = duck_rotation() * (scene.bodies[DUCK_SLOT + 5 + 3 * part].xyz + unit * radii) + scene.bodies[DUCK_SLOT + 3].xyz;
     // Across the water from the eye the water's own pass has the pixel.
-    if ((p.y < 0.0) != (eye.y < 0.0)) {
+    if (across_water(p)) {
         return vec4<f32>(0.0);
     }
     let n = normalize(duck_rotation() * (unit / radii));

@@ -61,17 +61,19 @@ struct BallEdge {
     point: vec3<f32>,
     cover: f32,
     // Nothing to blend: deep enough inside that the ball's own mesh has the pixel, or on the
-    // far side of the water from the eye (the water's own edge hides it there).
+    // far side of the water from the eye (across_water: the water's own edge hides it there).
     hidden: bool,
 };
 
 const BALL_EDGE_GROWTH: f32 = 1.1;
 
 // A vertex of a body's outline mesh: the point `surface` (outward normal n) moved `by` (m)
-// along n, then pushed back from the eye as far as that brought it nearer. The grown mesh then
-// lies no nearer than the body, whose own mesh hides all of it but the rim, grown sideways: the
-// outline's pass shades only there (early depth testing skips the rest, its shader having no
-// discard).
+// along n, then pushed back from the eye as far as that brought it nearer. Where the body
+// faces the eye the grown mesh then lies behind the body's own mesh, which hides it: early
+// depth testing skips those fragments on a GPU and on lavapipe, the outline's shader having no
+// discard (SwiftShader tests depth after shading). Towards the outline the body curves away
+// and the grown mesh lies in front of it again, so a part's outline over another part is still
+// drawn. (Putting every vertex whose ray meets the body behind it hid more, but lost those.)
 fn grown_rim(surface: vec3<f32>, n: vec3<f32>, by: f32) -> vec3<f32> {
     let grown = surface + n * by;
     let view = normalize(grown - scene.eye.xyz);
@@ -89,6 +91,6 @@ fn ball_edge(world: vec3<f32>, ball: vec4<f32>) -> BallEdge {
     let outline = ball.xyz + ball.w * normalize(nearest - ball.xyz);
     let point = select(outline, eye + dir * t, t < NO_HIT);
     let cover = clamp(0.5 - (miss - ball.w) / footprint, 0.0, 1.0);
-    let across = (point.y < 0.0) != (eye.y < 0.0);
+    let across = across_water(point);
     return BallEdge(point, cover, miss < ball.w - footprint || across || cover <= 0.0);
 }

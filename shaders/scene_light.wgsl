@@ -109,13 +109,14 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 // The light round an underwater point p facing n, besides the sun's own: from above, the sky's
 // through the surface; from below, the pool's tiles lit by the refracted sun and the sky
 // (scene.floor_bounce: the calm floor's light times their mean albedo) as far as the floor it
-// faces is lit (floor_seen, if `detailed`; else as calm water lights it), having crossed the water down to the floor and back up to p,
-// which tints it as the water is tinted. Each weighted by the share of its hemisphere n faces
+// faces is lit (floor_seen, for a body `drawn` directly; else as calm water lights it),
+// having crossed the water down to the floor and back up to p, which tints it as the water is
+// tinted. Each weighted by the share of its hemisphere n faces
 // (a cosine lobe), so an underside is lit by the floor, not black.
-fn light_under_water(p: vec3<f32>, n: vec3<f32>, detailed: bool) -> vec3<f32> {
+fn light_under_water(p: vec3<f32>, n: vec3<f32>, drawn: bool) -> vec3<f32> {
     let crossed = depth() + max(p.y + depth(), 0.0);
     var from_below = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
-    if (detailed) {
+    if (drawn) {
         from_below *= floor_seen(p, n);
     }
     let up = 0.5 + 0.5 * n.y;
@@ -123,8 +124,8 @@ fn light_under_water(p: vec3<f32>, n: vec3<f32>, detailed: bool) -> vec3<f32> {
 }
 
 // How lit (1: as calm water lights it) the floor is that an underwater point p facing n sees:
-// the caustics map at its coarsest level, the bodies' shadows included, four taps a quarter of
-// p's height above the floor apart round the floor under p moved half that height along n
+// the caustics map at its coarsest level, the bodies' shadows included, four taps half p's
+// height above the floor apart round the floor under p moved half that height along n
 // (the floor's light reaches p from a patch about as wide as it is high, and most from the
 // side it faces); half of it, the rest as calm water lights the floor beyond. A body's
 // underside is then darker over its own shadow, lit at its rim by the net round it.

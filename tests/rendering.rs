@@ -452,7 +452,8 @@ fn the_bodies_outlines_creases_and_waterlines_are_blended_on_their_edges_and_now
     );
     assert!(changed >= 100, "only {changed} pixels of the outline were blended");
     assert!(on_waterline >= 60, "only {on_waterline} pixels of the waterline were blended");
-    assert!(on_duck >= 60, "only {on_duck} pixels of the duck's edges were blended");
+    // On the duck 291 on 2026-11-29; 58 with its waterline alone (no outline's pass, no creases).
+    assert!(on_duck >= 150, "only {on_duck} pixels of the duck's edges were blended");
     assert!(elsewhere * 50 <= changed, "{elsewhere} of {changed} blended pixels are not on the edge");
 }
 
@@ -483,8 +484,8 @@ fn from_under_the_water_a_floating_spheres_underside_is_shaded_by_the_floor_it_f
         .map(|n| (n, centre + n * radius))
         .filter(|(n, p)| n.dot((eye - *p).normalize()) > 0.5)
         .filter_map(|(_, p)| demo.camera().project(p, Vec2::new(w as f32, h as f32)))
+        .filter(|q| q.x >= 0.0 && q.y >= 0.0 && q.x < w as f32 && q.y < h as f32)
         .map(|q| (q.x as u32, q.y as u32))
-        .filter(|&(x, y)| x < w && y < h)
         .collect();
     pixels.sort_unstable();
     pixels.dedup();

@@ -318,8 +318,8 @@ fn a_body_over_the_shallows_shades_the_sand_under_it() {
 }
 
 /// In the sea, as in the pool, the water at a sphere's waterline covers only its share of each
-/// pixel: with that blending off for comparison, the pixels that change lie round the sphere
-/// and between their neighbours' colours.
+/// pixel, and its outline is blended: with that blending off for comparison, the pixels that
+/// change lie round the sphere and between their neighbours' colours.
 #[test]
 fn the_seas_water_is_blended_at_a_spheres_waterline_and_nowhere_else() {
     let sphere = BodyId::named("sphere").expect("the sphere");

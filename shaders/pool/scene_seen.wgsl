@@ -46,6 +46,12 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
     return out;
 }
 
+// Whether a body's point p lies across the water's rest level from the eye: there the water's
+// own pass draws it, seen through the surface (the bodies' outlines leave it).
+fn across_water(p: vec3<f32>) -> bool {
+    return (p.y < 0.0) != (scene.eye.y < 0.0);
+}
+
 // Whether a point p of a surface drawn directly (the pool's walls, a body) is lit as under the
 // water. With the deck the eye stays above the water, and what it sees directly is above the
 // surface (the water's own pass draws what lies under it): never, a constant, so software

@@ -18,6 +18,12 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     return albedo * (ambient + max(dot(n, scene.sun.xyz), 0.0) * sun_light());
 }
 
+// Never: the sea's grid, drawn after the bodies with its depth, hides their parts under the
+// waves, which move them far from the rest level (the bodies' outlines test depth too).
+fn across_water(p: vec3<f32>) -> bool {
+    return false;
+}
+
 // The colour at p as written to the target, through the haze between it and the eye.
 fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
     let to_point = p - sea.eye.xyz;
