@@ -18,9 +18,30 @@ fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
     return distance(origin + dir * t, bound.xyz) < bound.w;
 }
 
-// Nearest hit of a ray with the duck. Each part is a unit ball stretched by its semi-axes, so
-// the ray is taken into the duck's frame and divided by them: there the hit is a ray-sphere
-// test with the same t, and the normal is the unit-ball point divided by the semi-axes.
+// What a ray (in the duck's frame) does near traced part i, in the part's unit-ball space:
+// where it enters (m along the ray; where
+// it misses, where it passes nearest, so that the distance runs on smoothly past the outline)
+// and whether it does, how near it passes the centre (1: on the outline), and the point there.
+struct DuckPartRay {
+    enter: f32,
+    hits: bool,
+    miss: f32,
+    point: vec3<f32>,
+};
+
+fn duck_part_ray(o_duck: vec3<f32>, d_duck: vec3<f32>, i: i32) -> DuckPartRay {
+    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+    let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
+    let d = d_duck / radii;
+    let a = dot(d, d);
+    let b = dot(o, d);
+    let disc = b * b - a * (dot(o, o) - 1.0);
+    let enter = (-b - sqrt(max(disc, 0.0))) / a;
+    return DuckPartRay(enter, disc >= 0.0 && enter > 0.0, length(o - d * (b / a)), o + d * enter);
+}
+
+// Nearest hit of a ray with the duck: each part's duck_part_ray, its normal the unit-ball
+// point divided by the semi-axes.
 fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
     if (!near_duck(origin, dir, NO_HIT)) {
@@ -30,19 +51,11 @@ fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
     let d_duck = to_duck * dir;
     for (var i = 0; i < DUCK_PARTS; i++) {
-        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-        let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
-        let d = d_duck / radii;
-        let a = dot(d, d);
-        let b = dot(o, d);
-        let disc = b * b - a * (dot(o, o) - 1.0);
-        if (disc >= 0.0) {
-            let t = (-b - sqrt(disc)) / a;
-            if (t > 1.0e-4 && t < hit.t) {
-                hit.t = t;
-                hit.normal = normalize(duck_rotation() * ((o + d * t) / radii));
-                hit.albedo = scene.bodies[DUCK_SLOT + 5 + 3 * i + 2].rgb;
-            }
+        let r = duck_part_ray(o_duck, d_duck, i);
+        if (r.hits && r.enter > 1.0e-4 && r.enter < hit.t) {
+            hit.t = r.enter;
+            hit.normal = normalize(duck_rotation() * (r.point / scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz));
+            hit.albedo = scene.bodies[DUCK_SLOT + 5 + 3 * i + 2].rgb;
         }
     }
     return hit;

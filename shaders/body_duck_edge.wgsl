@@ -19,27 +19,6 @@ fn vs_duck_edge(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>
     return out;
 }
 
-// What a ray does near a part, in its unit-ball space: where it enters (m along the ray; where
-// it misses, where it passes nearest, so that the distance runs on smoothly past the outline)
-// and whether it does, how near it passes the centre (1: on the outline), and the point there.
-struct DuckPartRay {
-    enter: f32,
-    hits: bool,
-    miss: f32,
-    point: vec3<f32>,
-};
-
-fn duck_part_ray(o_duck: vec3<f32>, d_duck: vec3<f32>, i: i32) -> DuckPartRay {
-    let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
-    let o = (o_duck - scene.bodies[DUCK_SLOT + 5 + 3 * i].xyz) / radii;
-    let d = d_duck / radii;
-    let a = dot(d, d);
-    let b = dot(o, d);
-    let disc = b * b - a * (dot(o, o) - 1.0);
-    let enter = (-b - sqrt(max(disc, 0.0))) / a;
-    return DuckPartRay(enter, disc >= 0.0 && enter > 0.0, length(o - d * (b / a)), o + d * enter);
-}
-
 @fragment
 fn fs_duck_edge(in: DuckOut) -> @location(0) vec4<f32> {
     let eye = scene.eye.xyz;
