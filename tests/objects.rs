@@ -292,6 +292,59 @@ fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
     assert!(share > 0.08, "the coat mirrors no sky: {:.1} % of the duck's pixels", share * 100.0);
 }
 
+/// Above the water, a floating body's side that faces down is lit by the water under it, not
+/// by the sky: with the sun overhead (no sunlight there) the dry band of a high-floating sphere
+/// below its equator, seen from low over the water, takes the colour of the floor's light
+/// coming back up through the water, whose depth absorbs the red (red / blue 0.21 against 0.52
+/// lit by the sky's light, 2026-11-30).
+#[test]
+fn a_floating_spheres_side_facing_the_water_is_lit_by_the_water_not_the_sky() {
+    let (w, h) = (320u32, 240u32);
+    let mut demo = demo_with(SPHERE, true);
+    demo.params.set(ParamId::Gravity, 0.0);
+    demo.params.set(ParamId::SunElevation, 90.0);
+    demo.params.set(ParamId::SphereRadius, 0.25);
+    let centre = Vec3::new(0.0, 0.2, 0.0);
+    demo.set_sphere_centre(centre);
+    demo.camera_mut().yaw = 0.0;
+    demo.camera_mut().pitch = 6.0;
+    demo.camera_mut().distance = 1.6;
+    let frame = common::render(&mut demo, w, h, 2, 1.0 / 60.0);
+    let size = Vec2::new(w as f32, h as f32);
+    // Points on the sphere facing the eye sideways: the band between the water and the equator
+    // (normals 15-35° down) and, for scale, the band 15-35° up, which the sky lights.
+    let eye = demo.camera().eye();
+    let toward = Vec3::new(eye.x - centre.x, 0.0, eye.z - centre.z).normalize();
+    let side = Vec3::Y.cross(toward);
+    let band = |from: f32, to: f32| {
+        let mut rgb = [0.0f64; 3];
+        let mut n = 0;
+        for i in 0..=8 {
+            for j in 0..=6 {
+                let tilt = (from + (to - from) * i as f32 / 8.0).to_radians();
+                let turn = (-30.0 + 10.0 * j as f32).to_radians();
+                let normal = (toward * turn.cos() + side * turn.sin()) * tilt.cos() + Vec3::Y * tilt.sin();
+                let point = centre + normal * 0.25;
+                if let Some(px) = demo.camera().project(point, size) {
+                    let c = frame.unit_rgb(px.x.round() as u32, px.y.round() as u32);
+                    (0..3).for_each(|k| rgb[k] += c[k] as f64);
+                    n += 1;
+                }
+            }
+        }
+        rgb.map(|v| v / n.max(1) as f64)
+    };
+    let (below, above) = (band(-35.0, -15.0), band(15.0, 35.0));
+    let red_to_blue = below[0] / below[2].max(1.0e-3);
+    println!(
+        "sphere's band facing the water: rgb {:.3} {:.3} {:.3} (red / blue {red_to_blue:.3}); facing the sky: \
+         rgb {:.3} {:.3} {:.3}",
+        below[0], below[1], below[2], above[0], above[1], above[2]
+    );
+    assert!(above[2] > 0.3, "the sphere is not seen: {above:?}");
+    assert!(red_to_blue < 0.37, "the side facing the water is lit as by the sky: red / blue {red_to_blue:.3}");
+}
+
 /// The third kind of body, added as one entry of the table of kinds: dropped in, the beach
 /// ball pushes the water, comes to rest high at its own waterline, and is drawn in its red and
 /// orange gores with a shadow on the floor.

@@ -18,6 +18,11 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     return albedo * (ambient + max(dot(n, scene.sun.xyz), 0.0) * sun_light());
 }
 
+// The light coming up out of the sea, as object_colour takes it from below.
+fn light_from_water() -> vec3<f32> {
+    return deep_water();
+}
+
 // Never: the sea's grid, drawn after the bodies with its depth, hides their parts under the
 // waves, which move them far from the rest level (the bodies' outlines test depth too).
 fn across_water(p: vec3<f32>) -> bool {
