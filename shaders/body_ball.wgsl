@@ -38,7 +38,7 @@ fn ball_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     let u = ball_uniform();
     let t = intersect_sphere(origin, dir, u.xyz, u.w);
     let n = normalize(origin + dir * min(t, 1.0e3) - u.xyz);
-    return ObjectHit(t, n, ball_albedo(n));
+    return ObjectHit(t, n, ball_albedo(n), ray_sphere_gap(origin, dir, u.xyz, u.w));
 }
 
 // Signed distance (m) from the ball's surface, negative inside (bodies_field).

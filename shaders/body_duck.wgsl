@@ -19,9 +19,9 @@ fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
 }
 
 // What a ray (in the duck's frame) does near traced part i, in the part's unit-ball space:
-// where it enters (m along the ray; where
-// it misses, where it passes nearest, so that the distance runs on smoothly past the outline)
-// and whether it does, how near it passes the centre (1: on the outline), and the point there.
+// where it enters (m along the ray; where it misses, where it passes nearest, so that the
+// distance runs on smoothly past the outline) and whether it does, how near its part ahead of
+// the origin passes the centre (1: on the outline), and the point there.
 struct DuckPartRay {
     enter: f32,
     hits: bool,
@@ -37,21 +37,26 @@ fn duck_part_ray(o_duck: vec3<f32>, d_duck: vec3<f32>, i: i32) -> DuckPartRay {
     let b = dot(o, d);
     let disc = b * b - a * (dot(o, o) - 1.0);
     let enter = (-b - sqrt(max(disc, 0.0))) / a;
-    return DuckPartRay(enter, disc >= 0.0 && enter > 0.0, length(o - d * (b / a)), o + d * enter);
+    return DuckPartRay(enter, disc >= 0.0 && enter > 0.0, length(o - d * min(b / a, 0.0)), o + d * enter);
 }
 
 // Nearest hit of a ray with the duck: each part's duck_part_ray, its normal the unit-ball
-// point divided by the semi-axes.
+// point divided by the semi-axes. Its gap: outside the ball holding the duck that ball's,
+// inside it the least of the parts', each its unit-ball miss in its shortest semi-axes.
 fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
-    var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
-    if (!near_duck(origin, dir, NO_HIT)) {
+    let bound = scene.bodies[DUCK_SLOT + 4];
+    var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), ray_sphere_gap(origin, dir, bound.xyz, bound.w));
+    if (hit.gap >= 0.0) {
         return hit;
     }
     let to_duck = transpose(duck_rotation());
     let o_duck = to_duck * (origin - scene.bodies[DUCK_SLOT + 3].xyz);
     let d_duck = to_duck * dir;
+    hit.gap = NO_HIT;
     for (var i = 0; i < DUCK_PARTS; i++) {
         let r = duck_part_ray(o_duck, d_duck, i);
+        let radii = scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz;
+        hit.gap = min(hit.gap, (r.miss - 1.0) * min(radii.x, min(radii.y, radii.z)));
         if (r.hits && r.enter > 1.0e-4 && r.enter < hit.t) {
             hit.t = r.enter;
             hit.normal = normalize(duck_rotation() * (r.point / scene.bodies[DUCK_SLOT + 5 + 3 * i + 1].xyz));

@@ -19,7 +19,8 @@ fn sphere_uniform() -> vec4<f32> {
 // The sphere's hit for hit_bodies (its colour finds the normal itself).
 fn sphere_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     let u = sphere_uniform();
-    return ObjectHit(intersect_sphere(origin, dir, u.xyz, u.w), vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));
+    let t = intersect_sphere(origin, dir, u.xyz, u.w);
+    return ObjectHit(t, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), ray_sphere_gap(origin, dir, u.xyz, u.w));
 }
 
 // Signed distance (m) from the sphere's surface, negative inside (bodies_field).

@@ -19,6 +19,14 @@ fn intersect_box(origin: vec3<f32>, dir: vec3<f32>, box_min: vec3<f32>, box_max:
     return vec2<f32>(t_near, t_far);
 }
 
+// How far (m) the ray origin + t unit dir, t >= 0, passes outside a sphere: its nearest
+// approach to the centre less the radius, negative where it passes inside (NO_HIT for a
+// radius of 0: no sphere). It runs on smoothly across the outline (an edge's blend reads it).
+fn ray_sphere_gap(origin: vec3<f32>, dir: vec3<f32>, centre: vec3<f32>, radius: f32) -> f32 {
+    let t = max(dot(centre - origin, dir), 0.0);
+    return select(NO_HIT, distance(origin + dir * t, centre) - radius, radius > 0.0);
+}
+
 // Nearest positive distance along a ray to a sphere's surface, or NO_HIT.
 fn intersect_sphere(origin: vec3<f32>, dir: vec3<f32>, centre: vec3<f32>, radius: f32) -> f32 {
     let oc = origin - centre;

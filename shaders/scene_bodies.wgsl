@@ -4,11 +4,14 @@
 // in body_<kind>.wgsl; the code that asks every kind present (hit_bodies, body_colour,
 // objects_visibility, bodies_occlusion) is written by bodies::wgsl from the table of kinds.
 
-// What a ray hits on an object: distance (NO_HIT for nothing), outward normal, colour.
+// What a ray hits on an object: distance (NO_HIT for nothing), outward normal, colour, and
+// how far (m) the ray passes outside the object (negative: inside its outline; it runs on
+// smoothly across the outline, so that its change to the next pixel gives an edge's blend).
 struct ObjectHit {
     t: f32,
     normal: vec3<f32>,
     albedo: vec3<f32>,
+    gap: f32,
 };
 
 // How wet a body's surface at p is: 1 at the water's rest level and under it, 0 from `band`

@@ -211,10 +211,11 @@ impl Daylight {
 /// depend on the azimuth).
 pub const EXPOSURE_REFERENCE_ELEVATION: f32 = 55.0;
 
-/// Where the sun is: by default high and behind the camera, a little to its left, so that the
-/// rim shades only thin strips of the floor and the caustics show over most of it and on the
-/// walls, and the floating bodies are lit from one side (a blind judgement of four directions
-/// at load, 2026-11-30, chose this one; the shadow bands of -40° / 65° were the worst).
+/// Where the sun is: by default high and behind the camera's left shoulder, so that the rim
+/// shades only thin strips of the floor and the caustics show over most of it, and from under
+/// the water on both walls. A higher sun shades less of the floor but leaves the right wall
+/// dark from below: judged blind (2026-11-30) against -40° / 65° and -20° / 72°, this one was
+/// best from above and close behind -40° / 65° (its wide band of shadow) from below.
 /// (The parameter table, `params::table`, lists them in this order.)
 pub const SUN_PARAMS: &[ParamSpec] = &[
     ParamSpec {
@@ -223,7 +224,7 @@ pub const SUN_PARAMS: &[ParamSpec] = &[
         group: "Light",
         unit: "°",
         control: slider(-180.0, 180.0, 1.0),
-        default: -20.0,
+        default: -30.0,
         help: "Compass direction of the sun around the pool.",
     },
     ParamSpec {
@@ -232,7 +233,7 @@ pub const SUN_PARAMS: &[ParamSpec] = &[
         group: "Light",
         unit: "°",
         control: slider(10.0, 90.0, 1.0),
-        default: 72.0,
+        default: 68.0,
         help: "Height of the sun above the horizon.",
     },
 ];

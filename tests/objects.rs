@@ -295,7 +295,7 @@ fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
 /// Above the water, a floating body's side that faces down is lit by the water under it, not
 /// by the sky: with the sun overhead (no sunlight there) the dry band of a high-floating sphere
 /// below its equator, seen from low over the water, takes the colour of the floor's light
-/// coming back up through the water, whose depth absorbs the red (red / blue 0.21 against 0.52
+/// coming back up through the water, whose depth absorbs the red (red / blue 0.22 against 0.52
 /// lit by the sky's light, 2026-11-30).
 #[test]
 fn a_floating_spheres_side_facing_the_water_is_lit_by_the_water_not_the_sky() {

@@ -352,11 +352,12 @@ fn the_seas_water_is_blended_at_a_spheres_waterline_and_nowhere_else() {
     assert!(astray * 10 <= changed, "{astray} of {changed} blended pixels are not at the waterline");
 }
 
-/// In the sea the duck's outline is blended too (its outline's pass, drawn after the sea), as is
-/// the water at its waterline: with the blending off for comparison, the pixels that change lie
-/// on the duck and between their neighbours' colours.
+/// In the sea the duck's outline is blended too (its outline's pass, drawn after the sea), as
+/// are the water at its waterline and the edge of its mirror image (four rays per pixel of
+/// the water that mirrors it): with the blending off for comparison, the pixels that change
+/// lie on the duck or its image and between their neighbours' colours.
 #[test]
-fn the_seas_duck_is_blended_on_its_outline_and_waterline() {
+fn the_seas_duck_is_blended_on_its_outline_waterline_and_mirror_image() {
     let duck = BodyId::named("duck").expect("the duck");
     let (w, h) = (320u32, 240u32);
     let frame = |outlines: bool| {
@@ -367,19 +368,30 @@ fn the_seas_duck_is_blended_on_its_outline_and_waterline() {
         let radius = wavepool::bodies::duck::bounding_radius() * patch_scale();
         let size = glam::Vec2::new(w as f32, h as f32);
         let middle = d.camera().project(centre, size).expect("the duck is in the frame");
+        let waterline = d.camera().project(centre * glam::Vec3::new(1.0, 0.0, 1.0), size).expect("its waterline too");
+        let image_middle = d.camera().project(centre * glam::Vec3::new(1.0, -1.0, 1.0), size).expect("its image too");
         let right = d.camera().view().inverse().col(0).truncate();
         let edge = d.camera().project(centre + right * radius, size).expect("the duck is in the frame");
-        (image, middle, middle.distance(edge))
+        (image, middle, image_middle, waterline.y, middle.distance(edge))
     };
-    let ((blended, middle, radius), (stepped, _, _)) = (frame(true), frame(false));
+    let ((blended, middle, image_middle, waterline, radius), (stepped, ..)) = (frame(true), frame(false));
     let blended = blended.blended_against(&stepped);
-    let near = |b: &&common::picture::Blended| {
-        glam::Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5).distance(middle) <= radius + 2.0
+    let at = |b: &common::picture::Blended, c: glam::Vec2| {
+        glam::Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5).distance(c) <= radius + 2.0
     };
-    let on_duck = blended.iter().filter(near).count();
-    let astray = blended.iter().filter(|b| !(b.between && near(b))).count();
-    println!("{} pixels blended, {on_duck} on the duck (radius {radius:.1} px), {astray} away from it or outside their neighbours' colours", blended.len());
-    // 235 on 2026-11-29; 54 with the waterline alone (no outline's pass in the sea).
+    // The image lies below the waterline's row (a few pixels for the waterline's own blend).
+    let below = |b: &common::picture::Blended| b.y as f32 > waterline + 3.0;
+    let on_duck = blended.iter().filter(|b| at(b, middle) && !below(b)).count();
+    let on_image = blended.iter().filter(|b| at(b, image_middle) && below(b)).count();
+    let astray = blended.iter().filter(|b| !(b.between && (at(b, middle) || at(b, image_middle)))).count();
+    println!(
+        "{} pixels blended, {on_duck} on the duck (radius {radius:.1} px), {on_image} more on its mirror image, \
+         {astray} away from both or outside their neighbours' colours",
+        blended.len()
+    );
+    // 2026-11-30: 240 on the duck (54 with the waterline alone, no outline's pass in the sea);
+    // 257 on the image (45 with one ray per pixel: the waterline's blend below its row).
     assert!(on_duck >= 120, "only {on_duck} pixels of the duck's edges were blended");
+    assert!(on_image >= 150, "only {on_image} pixels of the mirror image's edge were blended");
     assert!(astray * 10 <= blended.len(), "{astray} of {} blended pixels are astray", blended.len());
 }

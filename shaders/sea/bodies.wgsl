@@ -37,15 +37,40 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
 }
 
 // What the water at p mirrors of the bodies along the reflected ray r (turned up, as
-// sea_colour's): the body the ray hits, lit as seen in a mirror, or else `behind` (the
-// island's image, or nothing).
+// sea_colour's): the body the ray hits, lit as seen in a mirror, over `behind` (the island's
+// image, or nothing) by the share of the pixel it covers. The ray's gap past the bodies
+// against that gap's change to the next pixel gives the share, as an outline's pass does;
+// just past the outline the colour is the body's a quarter of a pixel inside it, the ray
+// turned that far along the gap's fall. So the image's edge is blended, not stair-stepped,
+// and where the waves turn the ray fast from pixel to pixel it blurs as much. scene.output.z
+// 0: all or nothing (the outlines off, for tests to compare with). Call in uniform control
+// flow (screen derivatives).
 fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
-    let up = vec3<f32>(r.x, abs(r.y), r.z);
-    let hit = hit_bodies(p, up);
-    if (hit.t >= NO_HIT) {
+    var dir = vec3<f32>(r.x, abs(r.y), r.z);
+    let across = dpdx(dir);
+    let down = dpdy(dir);
+    var hit = hit_bodies(p, dir);
+    let fall = vec2<f32>(dpdx(hit.gap), dpdy(hit.gap));
+    let spread = max(abs(fall.x) + abs(fall.y), 1.0e-6);
+    var share = clamp(0.5 - hit.gap / spread, 0.0, 1.0);
+    if (scene.output.z <= 0.0) {
+        share = select(0.0, 1.0, hit.t < NO_HIT);
+    }
+    if (share <= 0.0) {
         return behind;
     }
-    return vec4<f32>(body_colour(hit, p + up * hit.t, up, false), 1.0);
+    if (hit.t >= NO_HIT) {
+        // In pixels along the gap's fall: to the outline and a quarter of a pixel on.
+        let to_body = -fall * ((hit.gap + 0.25 * length(fall)) / max(dot(fall, fall), 1.0e-12));
+        dir = normalize(dir + across * to_body.x + down * to_body.y);
+        hit = hit_bodies(p, dir);
+        if (hit.t >= NO_HIT) {
+            return behind;
+        }
+    }
+    let seen = body_colour(hit, p + dir * hit.t, dir, false);
+    let alpha = share + behind.a * (1.0 - share);
+    return vec4<f32>((seen * share + behind.rgb * behind.a * (1.0 - share)) / alpha, alpha);
 }
 
 // The share of the sun's light on the floor `depth` m under the surface point p (seen along

@@ -55,7 +55,8 @@ pub struct BodyKind {
     /// The mesh's vertex layout and stride (bytes).
     pub vertex: &'static [wgpu::VertexAttribute],
     pub vertex_stride: u64,
-    /// Its WGSL: `<name>_hit`, `<name>_light` (what it lets through along a segment),
+    /// Its WGSL: `<name>_hit` (an `ObjectHit`, with how far the ray passes outside it: its
+    /// `gap`, m, smooth across its outline), `<name>_light` (what it lets through along a segment),
     /// `<name>_shade` (its colour at a point; `direct`: seen directly, not in a traced ray),
     /// `<name>_occlusion`, `<name>_field` (signed distance from its hull, m: negative inside; for a hull of several parts a bound of it) and the mesh's `vs_<name>`, `fs_<name>`; it reads its
     /// uniform at `<NAME>_SLOT`.
@@ -263,7 +264,8 @@ fn water_share(p: vec3<f32>, eye: vec3<f32>, dir: vec3<f32>, footprint: f32) -> 
 
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
 /// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
-/// the code that asks every kind present: the nearest hit (`hit_bodies`), its colour
+/// the code that asks every kind present: the nearest hit (`hit_bodies`, with the least of
+/// the kinds' gaps), its colour
 /// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
 /// they take from a point (`bodies_occlusion`) and the signed distance from the nearest hull
 /// (`bodies_field`: x any kind's, the water's surface is not drawn inside one; y of the kinds
@@ -287,11 +289,11 @@ pub fn wgsl(present: u32) -> String {
     let each = |line: &dyn Fn(&str, &str) -> String| -> String {
         KINDS.iter().map(|k| line(k.name, &k.name.to_uppercase())).collect()
     };
-    out += "\nstruct BodyHit {\n    t: f32,\n    kind: i32,\n    normal: vec3<f32>,\n    albedo: vec3<f32>,\n};\n";
+    out += "\nstruct BodyHit {\n    t: f32,\n    kind: i32,\n    normal: vec3<f32>,\n    albedo: vec3<f32>,\n    gap: f32,\n};\n";
     out += &format!(
-        "fn hit_bodies(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0));\n{}    return best;\n}}\n",
+        "fn hit_bodies(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), NO_HIT);\n{}    return best;\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo);\n        }}\n    }}\n"
+            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        let gap = min(best.gap, h.gap);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo, gap);\n        }}\n        best.gap = gap;\n    }}\n"
         ))
     );
     out += &format!(
