@@ -20,8 +20,8 @@ fn near_duck(origin: vec3<f32>, dir: vec3<f32>, t_max: f32) -> bool {
 
 // What a ray (in the duck's frame) does near traced part i, in the part's unit-ball space:
 // where it enters (m along the ray; where it misses, where it passes nearest, so that the
-// distance runs on smoothly past the outline) and whether it does, how near its part ahead of
-// the origin passes the centre (1: on the outline), and the point there.
+// distance runs on smoothly past the outline) and whether it does, how near the ray (its
+// t >= 0 half) passes the centre (1: on the outline), and the point there.
 struct DuckPartRay {
     enter: f32,
     hits: bool,
@@ -41,12 +41,16 @@ fn duck_part_ray(o_duck: vec3<f32>, d_duck: vec3<f32>, i: i32) -> DuckPartRay {
 }
 
 // Nearest hit of a ray with the duck: each part's duck_part_ray, its normal the unit-ball
-// point divided by the semi-axes. Its gap: outside the ball holding the duck that ball's,
-// inside it the least of the parts', each its unit-ball miss in its shortest semi-axes.
+// point divided by the semi-axes. Its gap (m): far outside the ball holding the duck that
+// ball's; nearer, the least of the parts', each its unit-ball miss times its shortest
+// semi-axis (a bound, under the gap in metres, whose slope differs from part to part; the
+// blends that read it divide it by its own change to the next pixel). The parts are traced
+// from a quarter of the ball's radius outside it, so that the gap runs on smoothly where a
+// blend reads it.
 fn duck_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
     let bound = scene.bodies[DUCK_SLOT + 4];
     var hit = ObjectHit(NO_HIT, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), ray_sphere_gap(origin, dir, bound.xyz, bound.w));
-    if (hit.gap >= 0.0) {
+    if (hit.gap >= 0.25 * bound.w) {
         return hit;
     }
     let to_duck = transpose(duck_rotation());

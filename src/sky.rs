@@ -176,7 +176,7 @@ impl Daylight {
     /// reference sun's ([`EXPOSURE_REFERENCE_ELEVATION`]). So a low sun's scene is exposed as
     /// well as a high one's (the presets add their own stops on top), and a sun moved overhead
     /// in a preset exposed for the evening does not burn the picture out. 0 at 55°, +1.4 at
-    /// 20°, -0.1 at the default 65°, -0.3 at 82°.
+    /// 20°, -0.1 at 65°, -0.3 at 82°.
     pub fn adapted_exposure(&self) -> f32 {
         static REFERENCE_LIGHT: OnceLock<f32> = OnceLock::new();
         let reference_light = *REFERENCE_LIGHT

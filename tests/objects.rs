@@ -295,7 +295,7 @@ fn the_ducks_coat_mirrors_the_sky_where_it_is_seen_at_a_grazing_angle() {
 /// Above the water, a floating body's side that faces down is lit by the water under it, not
 /// by the sky: with the sun overhead (no sunlight there) the dry band of a high-floating sphere
 /// below its equator, seen from low over the water, takes the colour of the floor's light
-/// coming back up through the water, whose depth absorbs the red (red / blue 0.22 against 0.52
+/// coming back up through the water, whose depth absorbs the red (red / blue 0.24 against 0.52
 /// lit by the sky's light, 2026-11-30).
 #[test]
 fn a_floating_spheres_side_facing_the_water_is_lit_by_the_water_not_the_sky() {
@@ -342,6 +342,8 @@ fn a_floating_spheres_side_facing_the_water_is_lit_by_the_water_not_the_sky() {
         below[0], below[1], below[2], above[0], above[1], above[2]
     );
     assert!(above[2] > 0.3, "the sphere is not seen: {above:?}");
+    // The side facing the sky stays near white (0.85 on 2026-11-30).
+    assert!(above[0] / above[2] > 0.7, "the side facing the sky is lit as by the water: {above:?}");
     assert!(red_to_blue < 0.37, "the side facing the water is lit as by the sky: red / blue {red_to_blue:.3}");
 }
 

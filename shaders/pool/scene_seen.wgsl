@@ -5,7 +5,7 @@
 
 // Lit colour of an object (sphere or duck) at surface point p with outward normal n: diffuse
 // sunlight (through the caustics under water), ambient from the sky above and, on the
-// side facing down, from the water below (light_from_water), darkened where the floor and walls
+// side facing down, from the water below (light_from_water, and the sky it mirrors), darkened where the floor and walls
 // are close (ambient occlusion). under: whether p
 // is under the water's rest level; a traced ray's hits are on its own side, and passing that
 // side as a constant compiles the other side's light away (software rasterisers run every
@@ -21,7 +21,8 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0);
         let up = 0.5 + 0.5 * n.y;
-        from_around = from_around * up + light_from_water() * (1.0 - up);
+        let below = light_from_water() + sky_light() * WATER_HEMISPHERE_REFLECTANCE;
+        from_around = from_around * up + below * (1.0 - up);
     }
     // Occlusion by the floor and walls falls off with distance from each plane.
     let w = half_width();
@@ -32,16 +33,17 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     return albedo * (ambient + direct * sun_light());
 }
 
-// The light a surface just above the water sees coming up out of it: the calm floor's,
-// back up through the whole depth twice (light_under_water's at the rest level) and out
-// through the surface (a few hundredths mirrored back), and the sky the water mirrors (about
-// as much, on average over the hemisphere). Bluer and dimmer than the sky's.
 // Water's reflectance averaged over a hemisphere of even light (Fresnel, index 1.33).
 const WATER_HEMISPHERE_REFLECTANCE: f32 = 0.066;
+// The share of even light from below that leaves the water: 1 / n² of it falls inside the
+// critical angle (the rest is reflected back whole), and of that 1 - 0.066 passes.
+const WATER_ESCAPE: f32 = 0.53;
 
+// The light a surface just above the water sees coming up out of it: the calm floor's, down
+// to the floor and back up (light_under_water's at the rest level), the share that leaves the
+// water. Bluer and dimmer than the sky's. (The sky the water mirrors is object_colour's.)
 fn light_from_water() -> vec3<f32> {
-    let up = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * (2.0 * depth()));
-    return up * (1.0 - WATER_HEMISPHERE_REFLECTANCE) + sky_light() * WATER_HEMISPHERE_REFLECTANCE;
+    return scene.floor_bounce.rgb * exp(-scene.absorption.xyz * (2.0 * depth())) * WATER_ESCAPE;
 }
 
 // A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to

@@ -14,11 +14,11 @@ fn lit_under(p: vec3<f32>) -> bool {
 // the deep water's on the lower, and the sun's on the side facing it (under, drawn: lit alike).
 fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, drawn: bool) -> vec3<f32> {
     let up = 0.5 + 0.5 * n.y;
-    let ambient = sky_light() * up + deep_water() * (1.0 - up);
+    let ambient = sky_light() * up + light_from_water() * (1.0 - up);
     return albedo * (ambient + max(dot(n, scene.sun.xyz), 0.0) * sun_light());
 }
 
-// The light coming up out of the sea, as object_colour takes it from below.
+// The light coming up out of the sea (its deep water's), lighting a body from below.
 fn light_from_water() -> vec3<f32> {
     return deep_water();
 }
@@ -47,8 +47,11 @@ fn seen_directly(colour: vec3<f32>, p: vec3<f32>) -> vec4<f32> {
 // flow (screen derivatives).
 fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
     var dir = vec3<f32>(r.x, abs(r.y), r.z);
+    var origin = p;
     let across = dpdx(dir);
     let down = dpdy(dir);
+    let across_p = dpdx(p);
+    let down_p = dpdy(p);
     var hit = hit_bodies(p, dir);
     let fall = vec2<f32>(dpdx(hit.gap), dpdy(hit.gap));
     let spread = max(abs(fall.x) + abs(fall.y), 1.0e-6);
@@ -60,15 +63,18 @@ fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
         return behind;
     }
     if (hit.t >= NO_HIT) {
-        // In pixels along the gap's fall: to the outline and a quarter of a pixel on.
+        // In pixels along the gap's fall: to the outline and a quarter of a pixel on, the
+        // point on the water moved with the ray (the gap's change is both's). Missing still
+        // (where the waves bend the rays too fast for the first-order step) leaves the sky.
         let to_body = -fall * ((hit.gap + 0.25 * length(fall)) / max(dot(fall, fall), 1.0e-12));
         dir = normalize(dir + across * to_body.x + down * to_body.y);
-        hit = hit_bodies(p, dir);
+        origin = p + across_p * to_body.x + down_p * to_body.y;
+        hit = hit_bodies(origin, dir);
         if (hit.t >= NO_HIT) {
             return behind;
         }
     }
-    let seen = body_colour(hit, p + dir * hit.t, dir, false);
+    let seen = body_colour(hit, origin + dir * hit.t, dir, false);
     let alpha = share + behind.a * (1.0 - share);
     return vec4<f32>((seen * share + behind.rgb * behind.a * (1.0 - share)) / alpha, alpha);
 }

@@ -293,7 +293,7 @@ pub fn wgsl(present: u32) -> String {
     out += &format!(
         "fn hit_bodies(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), NO_HIT);\n{}    return best;\n}}\n",
         each(&|name, upper| format!(
-            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        let gap = min(best.gap, h.gap);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo, gap);\n        }}\n        best.gap = gap;\n    }}\n"
+            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        let gap = min(best.gap, h.gap);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo, 0.0);\n        }}\n        best.gap = gap;\n    }}\n"
         ))
     );
     out += &format!(
