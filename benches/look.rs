@@ -16,7 +16,7 @@
 //! the stage's rounded corners are hidden before each screenshot, so only the picture counts.
 //! Each screenshot is of the viewport, cut to the canvas's rectangle.
 //!
-//! Three measurements per page, over the whole canvas, each at a simulated time (what a machine
+//! Four measurements per page, over the whole canvas, each at a simulated time (what a machine
 //! drawing 60 frames a second shows then; see `LOAD_SIM`):
 //! - `load`: the default view 1 s into the page's water (ours: `stats().simTime`, with the drops
 //!   it starts with; the classic: its start, twenty drops on calm water, stepped 60 frames);
@@ -32,6 +32,10 @@
 //!   `renderer.lightDir = (0, 1, 0)`, the sphere moved to (10, 10, 10) (out of view, shadow and
 //!   reflections; `oldCenter` too, so moving it makes no wave), and both water textures cleared
 //!   (height, velocity and normal 0: calm).
+//! - `under`: the `ripples` water seen from under it, the camera 20° below the level looking
+//!   up (`UNDER_PITCH`): ours reloaded in the cut-away setting (`setting=cutaway`, its default
+//!   yaw and distance) and taken through the same start and drops; the classic in place, its
+//!   `angleX` turned to 20 (measured before its `caustics` view, which calms its water).
 //!
 //! The classic is paused and stepped by the bench (`CLASSIC_STEP_JS`): it steps once per frame
 //! drawn, and in software rendering here (about 4 frames a second) a wall-clock second holds a
@@ -90,7 +94,11 @@ const DROPS: [(f64, f64); 4] = [(0.0, 0.0), (0.45, 0.3), (-0.5, -0.25), (0.25, -
 const OUR_TOP_VIEW: (f64, f64, f64) = (0.0, 89.0, 3.8);
 /// The floor rectangle of the caustic contrast: this share of the canvas's shorter side, centred.
 const FLOOR_SQUARE: f64 = 0.4;
-const MEASUREMENTS: [&str; 3] = ["load", "ripples", "caustics"];
+const MEASUREMENTS: [&str; 4] = ["load", "ripples", "caustics", "under"];
+/// The `under` view's pitch (degrees): the camera this far below the level, looking up at the
+/// water from under it (ours in the cut-away setting, at its default yaw and distance; the
+/// classic's `angleX` the same, negated, at its own).
+const UNDER_PITCH: f64 = -20.0;
 
 /// Pins our page's `#pool` to the classic canvas's place and size before the demo mounts (run
 /// by Chromium before each document's own scripts; the classic is left alone).
@@ -273,6 +281,15 @@ async fn ours(browser: &Browser, server: &StaticServer, backend: &str, dir: &Pat
     wait_sim(browser, "window.__dropAt", CAUSTIC_SIM).await;
     let info = browser.js(TIDY_OURS_JS).await;
     rows.push(shoot(browser, &name, "caustics", &top, info, dir).await);
+
+    let under = format!("{base}&setting=cutaway&camera=-25,{UNDER_PITCH},3");
+    let info = load_ours(browser, server, &under, backend).await;
+    wait_sim(browser, "0", LOAD_SIM).await;
+    browser
+        .js(&format!("const d = window.demo; window.__dropAt = d.stats().simTime; {} return true;", drops.concat()))
+        .await;
+    wait_sim(browser, "window.__dropAt", RIPPLE_SIM).await;
+    rows.push(shoot(browser, &name, "under", &under, info, dir).await);
     rows
 }
 
@@ -310,6 +327,10 @@ async fn classic(browser: &Browser, server: &StaticServer, dir: &Path) -> Vec<Ro
     browser.js(&classic_step_js(&drops.concat(), RIPPLE_SIM)).await;
     rows.push(shoot(browser, "classic", "ripples", path, Value::Null, dir).await);
 
+    // From under the water, the ripples' state (it draws once, stepping nothing).
+    browser.js(&classic_step_js(&format!("angleX = {};", -UNDER_PITCH), 0.0)).await;
+    rows.push(shoot(browser, "classic", "under", path, Value::Null, dir).await);
+
     let info = browser.js(CLASSIC_TOP_VIEW_JS).await;
     browser.js(&classic_step_js("water.addDrop(0, 0, 0.03, 0.01);", CAUSTIC_SIM)).await;
     rows.push(shoot(browser, "classic", "caustics", path, info, dir).await);
@@ -344,7 +365,7 @@ async fn shoot(browser: &Browser, page: &str, measurement: &'static str, url: &s
     let mut floor_in_view = None;
     if measurement == "caustics" {
         stats = stats.with_caustic_contrast(&img, picture::Rect::centred_square(width, height, FLOOR_SQUARE));
-    } else {
+    } else if measurement != "under" {
         let corners = browser.js(if page == "classic" { CLASSIC_POOL_CORNERS_JS } else { OUR_POOL_CORNERS_JS }).await;
         // The classic draws no near walls: its floor shows whole, through them or the water.
         floor_in_view = floor_contrast_in_view(&img, &corners, rect, page != "classic");

@@ -2,6 +2,12 @@
 
 const PI: f32 = 3.14159265;
 
+// The share of the light round a surface facing n that comes from the upper hemisphere (a
+// cosine lobe about n: all of it facing up, half facing sideways, none facing down).
+fn upward_share(n: vec3<f32>) -> f32 {
+    return 0.5 + 0.5 * n.y;
+}
+
 fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
     let lo = c / 12.92;
     let hi = pow((c + 0.055) / 1.055, vec3<f32>(2.4));

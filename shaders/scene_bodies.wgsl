@@ -26,13 +26,13 @@ fn wetness(p: vec3<f32>, band: f32) -> f32 {
 // its peak (the sky's disk is a mirror's sun; the lobe is the sun blurred by a coat that is
 // not one). A wet surface (wetness 1) mirrors up to twice as much, never more than all. Below
 // the horizon the coat mirrors the water the body floats on: the sky mirrored again by
-// Schlick's Fresnel for water (r0 = 0.02), over the light coming up out of it (each scene's
+// Schlick's Fresnel for water (WATER_R0, 0.02), over the light coming up out of it (each scene's
 // light_from_water), not the sky's ground.
 fn clear_coat(n: vec3<f32>, dir: vec3<f32>, wet: f32, gloss: f32, shine: f32) -> vec3<f32> {
     let fresnel = 0.04 + 0.96 * pow(1.0 - max(dot(-dir, n), 0.0), 5.0);
     let r = reflect(dir, n);
     let highlight = sun_light() * shine * pow(max(dot(r, scene.sun.xyz), 0.0), gloss);
-    let water = select(1.0, 0.02 + 0.98 * pow(1.0 - abs(r.y), 5.0), r.y < 0.0);
+    let water = select(1.0, WATER_R0 + (1.0 - WATER_R0) * pow(1.0 - abs(r.y), 5.0), r.y < 0.0);
     let mirrored = sky_colour(vec3<f32>(r.x, abs(r.y), r.z)) * water + light_from_water() * (1.0 - water);
     return min(fresnel * (1.0 + wet), 1.0) * (mirrored + highlight);
 }

@@ -114,13 +114,19 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
 // tinted. Each weighted by the share of its hemisphere n faces
 // (a cosine lobe), so an underside is lit by the floor, not black.
 fn light_under_water(p: vec3<f32>, n: vec3<f32>, drawn: bool) -> vec3<f32> {
-    let crossed = depth() + max(p.y + depth(), 0.0);
-    var from_below = scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
+    var from_below = light_up_from_floor(p.y);
     if (drawn) {
         from_below *= floor_seen(p, n);
     }
-    let up = 0.5 + 0.5 * n.y;
+    let up = upward_share(n);
     return sky_light_at(true) * up + from_below * (1.0 - up);
+}
+
+// The calm floor's light (scene.floor_bounce) reaching height y (m; under the rest level) from
+// below, tinted by the water it crossed: down to the floor and back up to y.
+fn light_up_from_floor(y: f32) -> vec3<f32> {
+    let crossed = depth() + max(y + depth(), 0.0);
+    return scene.floor_bounce.rgb * exp(-scene.absorption.xyz * crossed);
 }
 
 // How lit (1: as calm water lights it) the floor is that an underwater point p facing n sees:

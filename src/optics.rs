@@ -48,6 +48,39 @@ pub fn schlick_r0() -> f32 {
     r * r
 }
 
+/// Water's reflectance for light arriving evenly from the air's whole hemisphere (each
+/// direction weighted by its cosine, as an overcast sky or a diffuse surface lights it): the
+/// exact curve averaged, 2 ∫ R(θ) cos θ sin θ dθ (about 0.066 at n = 1.333).
+pub fn hemisphere_reflectance() -> f32 {
+    let steps = 2048;
+    let dt = std::f32::consts::FRAC_PI_2 / steps as f32;
+    (0..steps)
+        .map(|i| {
+            let t = (i as f32 + 0.5) * dt;
+            2.0 * fresnel_exact(t.cos(), 1.0 / IOR_WATER) * t.cos() * t.sin() * dt
+        })
+        .sum()
+}
+
+/// The share of light arriving evenly at the surface from under the water (cosine-weighted)
+/// that leaves it: only the 1 / n² inside the critical angle can, and of that what the surface
+/// passes, the same share as from the air (reciprocity): (1 − [`hemisphere_reflectance`]) / n²,
+/// about 0.53.
+pub fn escape_share() -> f32 {
+    (1.0 - hemisphere_reflectance()) / (IOR_WATER * IOR_WATER)
+}
+
+/// The WGSL constants of water's surface the scene shaders share (r0 for Schlick's curve, the
+/// two hemisphere averages above).
+pub fn water_surface_wgsl() -> String {
+    format!(
+        "const WATER_R0: f32 = {:?};\nconst WATER_HEMISPHERE_REFLECTANCE: f32 = {:?};\nconst WATER_ESCAPE: f32 = {:?};\n",
+        schlick_r0(),
+        hemisphere_reflectance(),
+        escape_share()
+    )
+}
+
 /// The exact reflectance for unpolarised light. `cos_i`: cosine of the incidence angle;
 /// `eta`: n_from / n_to. Total internal reflection gives 1. Same arithmetic as the shader's
 /// `fresnel` (f32).
@@ -334,6 +367,27 @@ mod tests {
             let past = (critical + 0.01).cos();
             assert_eq!(reflectance(model, past, IOR_WATER, &table), 1.0, "{model:?} under total internal reflection");
         }
+    }
+
+    #[test]
+    fn waters_hemisphere_reflectance_and_the_light_that_escapes_from_below_match_a_direct_count() {
+        // The escape share counted directly: cosine-weighted directions under the water, each
+        // passing 1 − R(θ) from water to air (0 past the critical angle).
+        let steps = 4096;
+        let dt = std::f32::consts::FRAC_PI_2 / steps as f32;
+        let escaped: f32 = (0..steps)
+            .map(|i| {
+                let t = (i as f32 + 0.5) * dt;
+                2.0 * (1.0 - fresnel_exact(t.cos(), IOR_WATER)) * t.cos() * t.sin() * dt
+            })
+            .sum();
+        let (r, e) = (hemisphere_reflectance(), escape_share());
+        println!(
+            "hemisphere reflectance {r:.4}, escape share {e:.4} (counted from below {escaped:.4}), r0 {:.4}",
+            schlick_r0()
+        );
+        assert!((0.06..0.07).contains(&r), "water's hemisphere reflectance {r}");
+        assert!((e - escaped).abs() < 2e-3, "reciprocity: {e} against {escaped}");
     }
 
     #[test]

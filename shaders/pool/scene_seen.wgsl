@@ -20,7 +20,7 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
         from_around = light_under_water(p, n, drawn);
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0);
-        let up = 0.5 + 0.5 * n.y;
+        let up = upward_share(n);
         let below = light_from_water() + sky_light() * WATER_HEMISPHERE_REFLECTANCE;
         from_around = from_around * up + below * (1.0 - up);
     }
@@ -33,17 +33,12 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     return albedo * (ambient + direct * sun_light());
 }
 
-// Water's reflectance averaged over a hemisphere of even light (Fresnel, index 1.33).
-const WATER_HEMISPHERE_REFLECTANCE: f32 = 0.066;
-// The share of even light from below that leaves the water: 1 / n² of it falls inside the
-// critical angle (the rest is reflected back whole), and of that 1 - 0.066 passes.
-const WATER_ESCAPE: f32 = 0.53;
-
-// The light a surface just above the water sees coming up out of it: the calm floor's, down
-// to the floor and back up (light_under_water's at the rest level), the share that leaves the
-// water. Bluer and dimmer than the sky's. (The sky the water mirrors is object_colour's.)
+// The light a surface just above the water sees coming up out of it: the calm floor's at the
+// rest level (light_up_from_floor), the share that leaves the water (WATER_ESCAPE, from
+// optics.rs, as WATER_HEMISPHERE_REFLECTANCE: about 0.53 and 0.066). Bluer and dimmer than the
+// sky's. (The sky the water mirrors is object_colour's.)
 fn light_from_water() -> vec3<f32> {
-    return scene.floor_bounce.rgb * exp(-scene.absorption.xyz * (2.0 * depth())) * WATER_ESCAPE;
+    return light_up_from_floor(0.0) * WATER_ESCAPE;
 }
 
 // A surface point p seen directly (pool, sphere, duck), of lit colour `colour`, as written to

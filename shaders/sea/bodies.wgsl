@@ -13,7 +13,7 @@ fn lit_under(p: vec3<f32>) -> bool {
 // Lit colour at p (outward normal n): the sky's light on the upper hemisphere of the normal,
 // the deep water's on the lower, and the sun's on the side facing it (under, drawn: lit alike).
 fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, drawn: bool) -> vec3<f32> {
-    let up = 0.5 + 0.5 * n.y;
+    let up = upward_share(n);
     let ambient = sky_light() * up + light_from_water() * (1.0 - up);
     return albedo * (ambient + max(dot(n, scene.sun.xyz), 0.0) * sun_light());
 }

@@ -40,7 +40,7 @@ fn land_albedo(h: f32, rise: f32) -> vec3<f32> {
 
 // Sunlight and skylight on ground facing n (the sky's light by how much of the sky it sees).
 fn light_on_ground(n: vec3<f32>) -> vec3<f32> {
-    return sun_light() * max(dot(n, scene.sun.xyz), 0.0) + sky_light() * (0.5 + 0.5 * n.y);
+    return sun_light() * max(dot(n, scene.sun.xyz), 0.0) + sky_light() * upward_share(n);
 }
 
 // Sunlight on the floor `depth` m under rest point p, focused by the waves (caustics, with the
@@ -80,7 +80,7 @@ fn seen_through_water(v: vec3<f32>, n: vec3<f32>, depth: f32, ground: vec3<f32>,
     let fade = 1.0 - smoothstep(0.6 * SEE_DEPTH, SEE_DEPTH, depth); // SEE_DEPTH: island.rs
     let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * max(path, 0.0)) * fade;
     let g = ground_normal(ground);
-    let light = sun_light() * max(dot(g, scene.sun.xyz), 0.0) * focus + sky_light() * (0.5 + 0.5 * g.y);
+    let light = sun_light() * max(dot(g, scene.sun.xyz), 0.0) * focus + sky_light() * upward_share(g);
     return mix(deep_water(), SAND * light, through);
 }
 

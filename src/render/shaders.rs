@@ -32,7 +32,7 @@ pub fn scene_prelude_in(features: Features, target: wgpu::TextureFormat, seen: &
         "const IOR_WATER: f32 = {:?};\nconst ENCODE_SRGB: bool = {};\n",
         crate::world::IOR_WATER,
         !target.is_srgb()
-    );
+    ) + &crate::optics::water_surface_wgsl();
     [
         features.wgsl(),
         numbers,
