@@ -166,20 +166,8 @@ impl Renderer {
             caustics,
             horizon: (glam::Vec3::ZERO, deck::horizon_fit(sky_cube.daylight())),
             sky_cube,
-            body_meshes: crate::bodies::KINDS
-                .iter()
-                .map(|kind| {
-                    let mesh = (kind.mesh)();
-                    Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
-                })
-                .collect(),
-            body_outline_meshes: crate::bodies::KINDS
-                .iter()
-                .map(|kind| {
-                    let mesh = (kind.outline_mesh)();
-                    Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
-                })
-                .collect(),
+            body_meshes: kinds_meshes(device, |kind| (kind.mesh)()),
+            body_outline_meshes: kinds_meshes(device, |kind| (kind.outline_mesh)()),
             depth: None,
             upscale: Upscale::new(device, settings.target_format),
             floor_albedo: crate::textures::tile_mean_albedo(tile_mips),
@@ -199,4 +187,18 @@ impl Renderer {
     pub fn body_outlines(&self) -> bool {
         self.body_outlines
     }
+}
+
+/// One mesh per kind of body, in the order of `bodies::KINDS`, each made by `make`.
+fn kinds_meshes(
+    device: &wgpu::Device,
+    make: impl Fn(&crate::bodies::BodyKind) -> crate::bodies::BodyMesh,
+) -> Vec<Mesh> {
+    crate::bodies::KINDS
+        .iter()
+        .map(|kind| {
+            let mesh = make(kind);
+            Mesh::new(device, kind.name, &mesh.vertices, &mesh.indices)
+        })
+        .collect()
 }
