@@ -140,7 +140,7 @@ param-setting-cutaway = řez
 param-caustics = Kaustiky
     .help = Světlo soustředěné vlnami na dno, stěny a kouli.
 param-caustic_contrast = Kontrast kaustik
-    .help = Jak výrazně kaustické čáry vystupují: soustředěné světlo umocněné tímto exponentem. 1 je světlo, které simulované vlny soustředí, jak ho drží mapa kaustik (rozmazané přes její texely, takže čáry jsou širší a slabší, než by je nakreslilo slunce); 3 jim vrací jas sítě ve slunném bazénu a ztmaví mezery mezi čarami.
+    .help = Jak výrazně kaustické čáry vystupují: soustředěné světlo umocněné tímto exponentem. 1 je světlo, které simulované vlny soustředí, jak ho drží mapa kaustik (rozmazané přes její texely, takže čáry jsou širší a slabší, než by je nakreslilo slunce); 2 jim vrací jas sítě ve slunném bazénu.
 param-tile_gloss = Lesk dlaždic
     .help = Jak moc glazura dlaždic zrcadlí: 1 keramická glazura (obloha a odlesk slunce na dlaždicích nad vodou, nejvíc na jejich zaoblených hranách), 0 matné dlaždice.
 

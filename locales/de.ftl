@@ -140,7 +140,7 @@ param-setting-cutaway = Schnitt
 param-caustics = Kaustiken
     .help = Licht, das die Wellen auf Boden, Wände und Kugel bündeln.
 param-caustic_contrast = Kaustik-Kontrast
-    .help = Wie stark die Kaustiklinien hervortreten: das gebündelte Licht hoch diese Zahl. 1 ist das Licht, das die simulierten Wellen bündeln, so wie die Kaustikkarte es speichert (über ihre Texel verwischt, die Linien also breiter und matter, als die Sonne sie zeichnen würde); 3 gibt ihnen die Helligkeit des Netzes in einem sonnigen Becken zurück, mit dunkleren Lücken zwischen den Linien.
+    .help = Wie stark die Kaustiklinien hervortreten: das gebündelte Licht hoch diese Zahl. 1 ist das Licht, das die simulierten Wellen bündeln, so wie die Kaustikkarte es speichert (über ihre Texel verwischt, die Linien also breiter und matter, als die Sonne sie zeichnen würde); 2 gibt ihnen die Helligkeit des Netzes in einem sonnigen Becken zurück.
 param-tile_gloss = Fliesenglanz
     .help = Wie stark die Glasur der Fliesen spiegelt: 1 eine Keramikglasur (der Himmel und das Glanzlicht der Sonne auf den Fliesen über dem Wasser, am stärksten an ihren abgerundeten Kanten), 0 matte Fliesen.
 

@@ -141,7 +141,7 @@ param-setting-cutaway = cutaway
 param-caustics = Caustics
     .help = Light focused by the waves onto the floor, walls and sphere.
 param-caustic_contrast = Caustic contrast
-    .help = How much the caustic lines stand out: the focused light raised to this power. 1 is the light the simulated waves focus, as the caustics map holds it (blurred over its texels, so the lines are wider and dimmer than the sun would draw them); 3 gives them back the brightness of a sunlit pool's net, with darker gaps between the lines.
+    .help = How much the caustic lines stand out: the focused light raised to this power. 1 is the light the simulated waves focus, as the caustics map holds it (blurred over its texels, so the lines are wider and dimmer than the sun would draw them); 2 gives them back the brightness of a sunlit pool's net.
 param-tile_gloss = Tile gloss
     .help = How much the tiles' glaze mirrors: 1 a ceramic glaze (the sky and the sun's highlight on the tiles above the water, most at their rounded edges), 0 matte tiles.
 

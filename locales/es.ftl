@@ -139,7 +139,7 @@ param-setting-cutaway = en corte
 param-caustics = Cáusticas
     .help = Luz que las ondas concentran sobre el fondo, las paredes y la esfera.
 param-caustic_contrast = Contraste de las cáusticas
-    .help = Cuánto destacan las líneas cáusticas: la luz concentrada elevada a esta potencia. 1 es la luz que concentran las ondas simuladas, tal como la guarda el mapa de cáusticas (difuminada sobre sus téxeles, así que las líneas son más anchas y tenues de lo que las dibujaría el sol); 3 les devuelve el brillo de la red de una piscina al sol, con huecos más oscuros entre las líneas.
+    .help = Cuánto destacan las líneas cáusticas: la luz concentrada elevada a esta potencia. 1 es la luz que concentran las ondas simuladas, tal como la guarda el mapa de cáusticas (difuminada sobre sus téxeles, así que las líneas son más anchas y tenues de lo que las dibujaría el sol); 2 les devuelve el brillo de la red de una piscina al sol.
 param-tile_gloss = Brillo de los azulejos
     .help = Cuánto refleja el esmalte de los azulejos: 1, un esmalte cerámico (el cielo y el destello del sol en los azulejos por encima del agua, sobre todo en sus bordes redondeados); 0, azulejos mates.
 

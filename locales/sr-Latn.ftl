@@ -140,7 +140,7 @@ param-setting-cutaway = presek
 param-caustics = Kaustike
     .help = Svetlost koju talasi fokusiraju na dno, zidove i kuglu.
 param-caustic_contrast = Kontrast kaustika
-    .help = Koliko se kaustične linije ističu: fokusirana svetlost podignuta na ovaj stepen. 1 je svetlost koju simulirani talasi fokusiraju, kako je drži mapa kaustika (razmazana preko njenih teksela, pa su linije šire i bledije nego što bi ih sunce nacrtalo); 3 im vraća sjaj mreže u bazenu na suncu, sa tamnijim razmacima između linija.
+    .help = Koliko se kaustične linije ističu: fokusirana svetlost podignuta na ovaj stepen. 1 je svetlost koju simulirani talasi fokusiraju, kako je drži mapa kaustika (razmazana preko njenih teksela, pa su linije šire i bledije nego što bi ih sunce nacrtalo); 2 im vraća sjaj mreže u bazenu na suncu.
 param-tile_gloss = Sjaj pločica
     .help = Koliko glazura pločica odslikava okolinu: 1 keramička glazura (nebo i sunčev odsjaj na pločicama iznad vode, najviše na njihovim zaobljenim ivicama), 0 mat pločice.
 
