@@ -106,20 +106,40 @@ fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
     return select(wall, p.xz, abs(n.y) > 0.5);
 }
 
-// The light round an underwater point p facing n, besides the sun's own: from above, the sky's
-// through the surface; from below, the pool's tiles lit by the refracted sun and the sky
+// The light round an underwater point p facing n, besides the sun's own, by the parts of n's
+// hemisphere (cosine-weighted) that look out each way: through Snell's window, the sky's
+// (sky_light_at(true) facing up); down, the pool's tiles lit by the refracted sun and the sky
 // (scene.floor_bounce: the calm floor's light times their mean albedo) as far as the floor it
-// faces is lit (floor_seen, for a body `drawn` directly; else as calm water lights it),
-// having crossed the water down to the floor and back up to p, which tints it as the water is
-// tinted. Each weighted by the share of its hemisphere n faces
-// (a cosine lobe), so an underside is lit by the floor, not black.
+// faces is lit (floor_seen, for a body `drawn` directly; else as calm water lights it), having
+// crossed the water down to the floor and back up to p, which tints it as the water is tinted;
+// up but past the window, the surface mirroring the pool's far side: that light again, across
+// the pool's width more water. So a side or an underside is lit by the pool, not black, and a
+// body under the water takes the water's colour.
 fn light_under_water(p: vec3<f32>, n: vec3<f32>, drawn: bool) -> vec3<f32> {
-    var from_below = light_up_from_floor(p.y);
+    var from_pool = light_up_from_floor(p.y);
     if (drawn) {
-        from_below *= floor_seen(p, n);
+        from_pool *= floor_seen(p, n);
     }
+    let mirrored = from_pool * exp(-scene.absorption.xyz * (2.0 * half_width()));
     let up = upward_share(n);
-    return sky_light_at(true) * up + from_below * (1.0 - up);
+    let window = snell_window_share(n);
+    return sky_light_at(true) * (window / SNELL_WINDOW_SIN2) + mirrored * (up - window) + from_pool * (1.0 - up);
+}
+
+// optics::snell_window_share, the same arithmetic: the cosine-weighted share of the hemisphere
+// round n that looks out through Snell's window (a cone of the critical angle about straight
+// up, sin² SNELL_WINDOW_SIN2), its part behind n's horizon left out.
+fn snell_window_share(n: vec3<f32>) -> f32 {
+    let s2 = SNELL_WINDOW_SIN2;
+    let c = clamp(n.y, -1.0, 1.0);
+    if (c * c > s2) {
+        return s2 * max(c, 0.0);
+    }
+    let s = sqrt(max(1.0 - c * c, 1.0e-6));
+    let x = sqrt(1.0 / s2 - 1.0);
+    let y = -x * c / s;
+    let sy = s * sqrt(max(1.0 - y * y, 0.0));
+    return max(((c * acos(clamp(y, -1.0, 1.0)) - x * sy) * s2 + atan(sy / x)) / PI, 0.0);
 }
 
 // The calm floor's light (scene.floor_bounce) reaching height y (m; under the rest level) from

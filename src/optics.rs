@@ -70,14 +70,41 @@ pub fn escape_share() -> f32 {
     (1.0 - hemisphere_reflectance()) / (IOR_WATER * IOR_WATER)
 }
 
+/// sin² of the critical angle, 1 / n²: under the water the whole sky is seen in a cone of that
+/// half-angle about straight up (Snell's window).
+pub fn snell_window_sin2() -> f32 {
+    1.0 / (IOR_WATER * IOR_WATER)
+}
+
+/// The share of the light round a surface under the water, facing `cos_up` (the cosine of its
+/// normal's angle from straight up), that comes through Snell's window: the window's projected
+/// solid angle over π, its part behind the surface's horizon left out (Snyder's form factor of a
+/// spherical cap seen from a tilted plane). sin² of the critical angle facing up (0.5625), 0.11
+/// facing sideways, 0 facing down; the rest of its hemisphere sees the pool, mirrored by the
+/// surface past the window or directly. The shader's `snell_window_share` is the same arithmetic.
+pub fn snell_window_share(cos_up: f32) -> f32 {
+    let s2 = snell_window_sin2();
+    let c = cos_up.clamp(-1.0, 1.0);
+    if c * c > s2 {
+        return s2 * c.max(0.0);
+    }
+    let s = (1.0 - c * c).max(1.0e-6).sqrt();
+    let x = (1.0 / s2 - 1.0).sqrt();
+    let y = -x * c / s;
+    let sy = s * (1.0 - y * y).max(0.0).sqrt();
+    (((c * y.clamp(-1.0, 1.0).acos() - x * sy) * s2 + (sy / x).atan()) / std::f32::consts::PI).max(0.0)
+}
+
 /// The WGSL constants of water's surface the scene shaders share (r0 for Schlick's curve, the
-/// two hemisphere averages above).
+/// two hemisphere averages above, Snell's window's sin²).
 pub fn water_surface_wgsl() -> String {
     format!(
-        "const WATER_R0: f32 = {:?};\nconst WATER_HEMISPHERE_REFLECTANCE: f32 = {:?};\nconst WATER_ESCAPE: f32 = {:?};\n",
+        "const WATER_R0: f32 = {:?};\nconst WATER_HEMISPHERE_REFLECTANCE: f32 = {:?};\nconst WATER_ESCAPE: f32 = {:?};\n\
+         const SNELL_WINDOW_SIN2: f32 = {:?};\n",
         schlick_r0(),
         hemisphere_reflectance(),
-        escape_share()
+        escape_share(),
+        snell_window_sin2()
     )
 }
 
@@ -388,6 +415,39 @@ mod tests {
         );
         assert!((0.06..0.07).contains(&r), "water's hemisphere reflectance {r}");
         assert!((e - escaped).abs() < 2e-3, "reciprocity: {e} against {escaped}");
+    }
+
+    #[test]
+    fn the_light_through_snells_window_matches_a_count_of_directions_at_every_tilt() {
+        // Cosine-weighted directions round a normal tilted from straight up, counted on a grid
+        // of the normal's hemisphere: the share whose direction lies within the critical angle
+        // of straight up.
+        let critical_cos = (1.0 - snell_window_sin2()).sqrt();
+        let (rings, slices) = (512, 1024);
+        for deg in [0, 30, 41, 60, 90, 120, 139, 150, 180] {
+            let tilt = (deg as f32).to_radians();
+            let (st, ct) = tilt.sin_cos();
+            let mut counted = 0.0f64;
+            for i in 0..rings {
+                // Equal steps of sin² of the angle from the normal: each ring carries the same
+                // cosine-weighted share.
+                let s2 = (i as f64 + 0.5) / rings as f64;
+                let (sin_a, cos_a) = (s2.sqrt(), (1.0 - s2).sqrt());
+                for j in 0..slices {
+                    let phi = (j as f64 + 0.5) / slices as f64 * std::f64::consts::TAU;
+                    // The direction in the normal's frame, its height turned by the tilt.
+                    let up = cos_a * ct as f64 + sin_a * phi.cos() * st as f64;
+                    if up > critical_cos as f64 {
+                        counted += 1.0;
+                    }
+                }
+            }
+            let counted = (counted / (rings * slices) as f64) as f32;
+            let share = snell_window_share(tilt.cos());
+            println!("normal {deg:3}° from up: through the window {share:.4} (counted {counted:.4})");
+            assert!((share - counted).abs() < 2e-3, "{deg}°: {share} against {counted}");
+        }
+        assert!((snell_window_share(1.0) - 0.5625).abs() < 1e-3);
     }
 
     #[test]

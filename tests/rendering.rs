@@ -81,8 +81,9 @@ fn sky_region_has_the_sky_colour() {
 
 /// In the cut-away setting with the eye under the water's level, what lies round the box is
 /// the water, not the sky: the frame's corners past the box have lost their red to the water
-/// (the sky's keep half of theirs) and are brighter looking up than looking down. The same
-/// view from above the water shows the sky there.
+/// (the sky's keep half of theirs) and are brighter looking up than looking down; and the
+/// water's surface fades into it at the sides left open, with no edge. The same view from
+/// above the water shows the sky there.
 #[test]
 fn under_the_water_the_cut_away_box_is_surrounded_by_water_not_sky() {
     let (top, bottom) = (Area(0.0, 0.0, 0.08, 0.08), Area(0.0, 0.92, 0.08, 1.0));
@@ -95,6 +96,12 @@ fn under_the_water_the_cut_away_box_is_surrounded_by_water_not_sky() {
         let (up, down) = (frame.mean_colour(top), frame.mean_colour(bottom));
         println!("pitch {pitch}°: top-left corner rgb {up:.3?}, bottom-left {down:.3?}");
         corners.push((up, down));
+        if pitch < 0.0 {
+            let step = open_side_step(&demo, &frame);
+            println!("from below, the colour step from the surface's open edge to the water past it: {step:.1} / 255");
+            // 6.6 on 2026-11-30; 47.1 with the surface drawn to its edge.
+            assert!(step < 15.0, "the surface ends in an edge at the open sides: a step of {step:.1}");
+        }
     }
     let (up, down) = corners[0];
     for [r, g, b] in [up, down] {
@@ -104,6 +111,35 @@ fn under_the_water_the_cut_away_box_is_surrounded_by_water_not_sky() {
     assert!(luma(up) > 1.3 * luma(down), "looking up is not brighter than looking down: {up:?} {down:?}");
     let [r, g, b] = corners[1].0;
     assert!(r > 0.3 * b && b > r, "above the water the top corner is not the sky: {r} {g} {b}");
+}
+
+/// The mean colour difference (0-255, the largest channel's) between the surface 1 cm inside a
+/// side the cut-away leaves open (its wall facing away from the eye) and the water 0.1 m past
+/// it, at the rest level, over 17 points along each such side in the frame.
+fn open_side_step(demo: &WaterDemo, frame: &Image) -> f64 {
+    let eye = demo.camera().eye();
+    let size = Vec2::new(frame.width as f32, frame.height as f32);
+    let w = 1.0;
+    let mut steps = Vec::new();
+    for (axis, sign) in [(0, -1.0), (0, 1.0), (2, -1.0), (2, 1.0)] {
+        if eye[axis] * sign <= w {
+            continue;
+        }
+        for k in 0..17 {
+            let along = -0.8 + 1.6 * k as f32 / 16.0;
+            let at = |out: f32| {
+                let mut p = Vec3::new(along, 0.0, along);
+                p[axis] = sign * (w + out);
+                demo.camera().project(p, size).filter(|q| q.x >= 0.0 && q.y >= 0.0 && q.x < size.x && q.y < size.y)
+            };
+            if let (Some(edge), Some(past)) = (at(-0.01), at(0.1)) {
+                let (a, b) = (frame.rgb(edge.x as u32, edge.y as u32), frame.rgb(past.x as u32, past.y as u32));
+                steps.push((0..3).map(|c| (a[c] - b[c]).abs()).fold(0.0, f64::max));
+            }
+        }
+    }
+    assert!(steps.len() >= 8, "only {} points of the open sides in view", steps.len());
+    steps.iter().sum::<f64>() / steps.len() as f64
 }
 
 #[test]
@@ -371,10 +407,12 @@ fn waterline(demo: &WaterDemo, size: Vec2) -> Vec<Vec2> {
 
 /// Seen through rippled water, the sphere's side just under its waterline is lit evenly, not
 /// streaked: the light there has not yet gathered into caustic lines (they sharpen over the
-/// first 0.25 m down). Measured on the band 3 to 6 pixels under the middle of the waterline as
-/// drawn after drops: the mean luma step from one column of the band to the next, over the band's mean.
+/// first 0.25 m down); and it takes the water's colour: facing sideways it sees the sky only
+/// through Snell's window, the rest the pool. Measured on the band 3 to 6 pixels under the
+/// middle of the waterline as drawn after drops: the mean luma step from one column of the band
+/// to the next, over the band's mean; its red over its blue.
 #[test]
-fn a_floating_spheres_side_under_the_waterline_is_not_streaked_by_caustics() {
+fn a_floating_spheres_side_under_the_waterline_takes_the_waters_colour_and_is_not_streaked_by_caustics() {
     let (w, h) = (640, 480);
     let mut demo = with_drops(3, 12);
     demo.params.set(ParamId::Gravity, 9.81);
@@ -384,24 +422,36 @@ fn a_floating_spheres_side_under_the_waterline_is_not_streaked_by_caustics() {
     let line = waterline(&demo, Vec2::new(w as f32, h as f32));
     let (left, right) = line.iter().fold((f32::MAX, f32::MIN), |(l, r), p| (l.min(p.x), r.max(p.x)));
     let (mid, half) = ((left + right) / 2.0, 0.35 * (right - left));
-    let mut band: Vec<(f32, f64)> = line
+    let mut band: Vec<(f32, f64, (u32, u32))> = line
         .into_iter()
         .filter(|p| (p.x - mid).abs() < half && p.x >= 0.0 && p.x < w as f32 && p.y + 8.0 < h as f32)
-        .map(|p| (p.x, (3..7).map(|dy| frame.luma(p.x as u32, p.y as u32 + dy)).sum::<f64>() / 4.0))
+        .map(|p| {
+            (p.x, (3..7).map(|dy| frame.luma(p.x as u32, p.y as u32 + dy)).sum::<f64>() / 4.0, (p.x as u32, p.y as u32))
+        })
         .collect();
     band.sort_by(|a, b| a.0.total_cmp(&b.0));
     band.dedup_by(|a, b| a.0 as u32 == b.0 as u32);
     let mean = band.iter().map(|b| b.1).sum::<f64>() / band.len() as f64;
     let steps = band.windows(2).map(|p| (p[1].1 - p[0].1).abs()).sum::<f64>() / (band.len() - 1) as f64;
+    let (mut red, mut blue) = (0.0, 0.0);
+    for &(_, _, (x, y)) in &band {
+        for dy in 3..7 {
+            let c = frame.rgb(x, y + dy);
+            (red, blue) = (red + c[0], blue + c[2]);
+        }
+    }
     println!(
-        "under the waterline: {} columns, mean luma {mean:.1}, mean step {steps:.2} ({:.3} of the mean)",
+        "under the waterline: {} columns, mean luma {mean:.1}, mean step {steps:.2} ({:.3} of the mean), red / blue {:.3}",
         band.len(),
-        steps / mean
+        steps / mean,
+        red / blue
     );
     assert!(band.len() >= 40, "the waterline is not in the frame");
     // 0.039 as drawn; with the floor's caustic lines read right under the surface (a sharpening
     // depth of 1 mm) 0.124 (2026-11-29).
     assert!(steps / mean < 0.059, "the band under the waterline is streaked: steps {:.3} of its mean", steps / mean);
+    // 0.345 on 2026-11-30; 0.419 lit by the sky over the whole upper half of its hemisphere.
+    assert!(red / blue < 0.38, "the band under the waterline is as grey as above it: red / blue {:.3}", red / blue);
 }
 
 /// The sphere's and the duck's outlines, the duck's creases (where its parts meet) and the water
@@ -492,10 +542,19 @@ fn from_under_the_water_a_floating_spheres_underside_is_shaded_by_the_floor_it_f
     let luma: Vec<f64> = pixels.iter().map(|&(x, y)| frame.luma(x, y)).collect();
     let mean = luma.iter().sum::<f64>() / luma.len() as f64;
     let spread = (luma.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / luma.len() as f64).sqrt();
-    println!("the underside from below: {} pixels, mean luma {mean:.1}, spread {spread:.2}", luma.len());
+    let colour = pixels.iter().fold([0.0; 3], |sum, &(x, y)| {
+        let c = frame.rgb(x, y);
+        [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]]
+    });
+    let red_to_blue = colour[0] / colour[2];
+    println!(
+        "the underside from below: {} pixels, mean luma {mean:.1}, spread {spread:.2}, red / blue {red_to_blue:.3}",
+        luma.len()
+    );
     assert!(luma.len() >= 200, "only {} pixels of the underside in view", luma.len());
     // 8.11 on 2026-11-29; 4.44 with the floor's light taken as even (the underside's own
-    // shading and the water's tint alone).
+    // shading and the water's tint alone). 7.51 before and 6.78 after 2026-11-30's light
+    // through Snell's window (the rim sees less sky); red / blue 0.033 then 0.025.
     assert!(spread > 6.0, "the underside is lit evenly: luma spread {spread:.2}");
 }
 

@@ -72,3 +72,17 @@ fn across_water(p: vec3<f32>) -> bool {
 fn lit_under(p: vec3<f32>) -> bool {
     return (!HAS_DECK || CLIP_SIDE != 0) && p.y < 0.0;
 }
+
+// What an eye in open water sees along dir where nothing is in the way: the sky's light that
+// came down through the surface, dimmed by the water it crossed (Beer–Lambert) over a path that is
+// short looking up and long looking down, plus what the water scatters (if it does). The
+// cut-away's cross-section then reads as a view from under the water, not a box in the sky.
+fn water_backdrop(dir: vec3<f32>) -> vec3<f32> {
+    let path = mix(BACKDROP_PATH_DOWN, BACKDROP_PATH_UP, smoothstep(-0.6, 1.0, dir.y));
+    let alpha = exp(-scene.absorption.xyz * path);
+    var colour = sky_light_at(true) * alpha;
+    if (HAS_SCATTERING) {
+        colour += (1.0 - alpha) * scene.scatter.xyz;
+    }
+    return colour;
+}

@@ -101,6 +101,9 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
     }
     if (!from_above) {
         colour = through_water(colour, scene.eye.xyz, in.world);
+        if (!HAS_DECK && CLIP_SIDE == 0) {
+            colour = mix(colour, water_backdrop(view), open_side_fade(in.world));
+        }
     }
     // Water inside a body (the surface's coarse triangles rise through a hull near its
     // waterline) is not drawn: the body's own pixel, drawn before, stays (its traced rays
@@ -117,6 +120,18 @@ fn fs_surface(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0
         }
     }
     return out;
+}
+
+// Seen from under the water in the cut-away, how far (1 at the edge, 0 from CUT_EDGE_FADE in)
+// the surface at p has faded into the open water (water_backdrop) beyond a side left open: one
+// whose wall faces away from the eye, culled.
+fn open_side_fade(p: vec3<f32>) -> f32 {
+    let w = half_width();
+    let eye = scene.eye.xyz;
+    let open = vec4<bool>((eye.x < -w), (eye.x > w), (eye.z < -w), (eye.z > w));
+    let to_side = vec4<f32>(p.x + w, w - p.x, p.z + w, w - p.z);
+    let nearest = min(min(select(1.0e3, to_side.x, open.x), select(1.0e3, to_side.y, open.y)), min(select(1.0e3, to_side.z, open.z), select(1.0e3, to_side.w, open.w)));
+    return 1.0 - smoothstep(0.0, CUT_EDGE_FADE, nearest);
 }
 
 // Seen from below, the water's mirror (the pool reflected, all of it past the critical angle)

@@ -23,10 +23,14 @@ pub const HAZE_DISTANCE: f32 = 60.0;
 pub const EYE_CLEARANCE: f32 = 0.15;
 
 /// In the cut-away setting with the eye under the water's level the background is open water
-/// (`water_backdrop`, sky.wgsl): the light from the surface seen through this much water (m)
+/// (`water_backdrop`, pool/scene_seen.wgsl): the light from the surface seen through this much water (m)
 /// looking straight up, and through this much looking down, blended between.
 const BACKDROP_PATH_UP: f32 = 3.0;
 const BACKDROP_PATH_DOWN: f32 = 12.0;
+/// Seen from under it, the water's surface fades into that open water over this much (m) before
+/// a side the cut-away leaves open: the water goes on there, and the surface's edge, its
+/// vertices riding the waves, does not stand out as a ragged line.
+const CUT_EDGE_FADE: f32 = 0.2;
 
 /// Height of the direction the haze's colour is taken in, per unit across (a hair above the
 /// horizon, where the cube's texels look).
@@ -40,7 +44,7 @@ pub fn wgsl_constants() -> String {
         "const COPING_WIDTH: f32 = {COPING_WIDTH:?};\nconst SLAB_SIZE: f32 = {SLAB_SIZE:?};\n\
          const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\nconst HORIZON_TERMS: u32 = {HORIZON_TERMS};\n\
          const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\nconst BACKDROP_PATH_UP: f32 = {BACKDROP_PATH_UP:?};\n\
-         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\n"
+         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\nconst CUT_EDGE_FADE: f32 = {CUT_EDGE_FADE:?};\n"
     )
 }
 
