@@ -27,6 +27,14 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     if (HAS_GLAZE) {
         lod = tile_lod(in.world);
     }
+    if (HAS_CAUSTICS) {
+        // The caustics map read at the level of the pixel's footprint on it: a wall seen
+        // from the side (the cut-away's, from under the water) squeezes the map's lines,
+        // stretched down it by the steep sunbeam, to under a pixel.
+        let texels = caustics_uv(light_entry(in.world)) * f32(textureDimensions(caustics_map).x);
+        let footprint = max(length(dpdx(texels)), length(dpdy(texels)));
+        caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
+    }
     let under = lit_under(in.world);
     // The objects' shadow above the water (under it the caustics map holds it), for the tile's
     // colour and its glaze.
