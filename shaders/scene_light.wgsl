@@ -120,10 +120,16 @@ fn light_under_water(p: vec3<f32>, n: vec3<f32>, drawn: bool) -> vec3<f32> {
     if (drawn) {
         from_pool *= floor_seen(p, n);
     }
-    let mirrored = from_pool * exp(-scene.absorption.xyz * (2.0 * half_width()));
+    let mirrored = mirrored_pool(from_pool);
     let up = upward_share(n);
     let window = snell_window_share(n);
     return sky_light_at(true) * (window / SNELL_WINDOW_SIN2) + mirrored * (up - window) + from_pool * (1.0 - up);
+}
+
+// The pool's light `from_pool` (light_up_from_floor's) as the surface mirrors it round Snell's
+// window: from its far side, across the pool's width more water.
+fn mirrored_pool(from_pool: vec3<f32>) -> vec3<f32> {
+    return from_pool * exp(-scene.absorption.xyz * (2.0 * half_width()));
 }
 
 // optics::snell_window_share, the same arithmetic: the cosine-weighted share of the hemisphere
@@ -183,8 +189,7 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
         let direct_rgb = max(dot(n, -scene.refracted_sun.xyz), 0.0) * underwater_light_rgb(p, true);
-        let ambient = sky_light_at(true) * (1.0 - 0.9 * bodies_occlusion(p, n));
-        return albedo * (ambient + direct_rgb * sun_light());
+        return albedo * (pool_ambient(p, n, true) + direct_rgb * sun_light());
     }
     var direct: f32;
     if (under) {
@@ -192,8 +197,18 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
     } else {
         direct = max(dot(n, scene.sun.xyz), 0.0) * sun_through;
     }
-    let ambient = sky_light_at(under) * (1.0 - 0.9 * bodies_occlusion(p, n));
-    return albedo * (ambient + direct * sun_light());
+    return albedo * (pool_ambient(p, n, under) + direct * sun_light());
+}
+
+// The light round the pool's face at p (inward normal n) besides the sun's, less what the
+// bodies near it hide: the sky's; under the water the floor's also from round Snell's window,
+// where the surface mirrors the pool (mirrored_pool), which lights a shadow on it.
+fn pool_ambient(p: vec3<f32>, n: vec3<f32>, under: bool) -> vec3<f32> {
+    var around = sky_light_at(under);
+    if (under && n.y > 0.5) {
+        around += mirrored_pool(light_up_from_floor(p.y)) * (1.0 - SNELL_WINDOW_SIN2);
+    }
+    return around * (1.0 - 0.9 * bodies_occlusion(p, n));
 }
 
 // Distance (m) along a ray from inside the pool box to where it leaves it (the tile it
