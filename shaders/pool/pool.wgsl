@@ -35,6 +35,9 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
         let footprint = max(length(dpdx(texels)), length(dpdy(texels)));
         caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
     }
+    // How much of the pixel a wall covers above its bottom edge (for the view from under the
+    // floor's level, below).
+    let above_bottom = clamp((in.world.y + depth()) / max(fwidth(in.world.y), 1.0e-6), 0.0, 1.0);
     let under = lit_under(in.world);
     // The objects' shadow above the water (under it the caustics map holds it), for the tile's
     // colour and its glaze.
@@ -46,6 +49,23 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     if (HAS_GLAZE && !under) {
         colour += tile_glaze(in.world, n, texel.a, lod, sun_through);
     }
+    if (!HAS_DECK && CLIP_SIDE == 0 && scene.eye.y < 0.0) {
+        return seen_from_open_water(colour, in.world, above_bottom);
+    }
     // Seen directly from above the deck, the pool is above the water: nothing dims the edge.
     return seen_directly(with_deck_edge(colour, edge), in.world);
+}
+
+// The cut-away seen from under the water, the eye in the open water round the box: what lies
+// above the water's level is seen through the open water's surface, past its critical angle
+// (the pool's rim stood over the surface's faded edge in pale slivers), so not at all; and
+// with the eye under the floor's level the walls' bottom edge, against the open water, is
+// blended into it by the share of the pixel the wall covers (`cover`), not a staircase.
+fn seen_from_open_water(colour: vec3<f32>, p: vec3<f32>, cover: f32) -> vec4<f32> {
+    if (p.y > 0.0) {
+        discard;
+    }
+    let seen = through_water(colour, scene.eye.xyz, p);
+    let behind = water_backdrop(normalize(p - scene.eye.xyz));
+    return finish(mix(behind, seen, select(1.0, cover, scene.eye.y < -depth())));
 }
