@@ -122,8 +122,7 @@ struct SeaOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) world: vec3<f32>,
     @location(1) rest: vec2<f32>,
-    // With whitecaps, the longer cascades' carry gradient at the vertex (add_gradient); the
-    // finest ones', shorter than the grid's cells, each pixel reads itself.
+    // The carry gradient of the cascades that break into whitecaps (add_gradient).
     @location(2) carry_gradient: vec3<f32>,
 }
 
@@ -144,7 +143,7 @@ fn vs_sea(@builtin(vertex_index) index: u32) -> SeaOut {
     let footprint = sea.cells.z * (dist * dist + sea.eye.y * sea.eye.y) / max(sea.eye.y, 0.1);
     let waves = waves_at(rest, footprint);
     var out: SeaOut;
-    out.carry_gradient = waves.long_gradient;
+    out.carry_gradient = waves.breaking_gradient;
     let moved = rest - sea.waves.x * waves.carry;
     out.world = vec3<f32>(moved.x, waves.height + ripples_at(rest, footprint).x, moved.y);
     out.rest = rest;
@@ -160,15 +159,10 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     var slope = vec2<f32>(0.0);
     var removed = 0.0;
     var finest = vec2<f32>(0.0); // the last cascade's slope in its frame (shallows_caustics)
-    var carry_gradient = in.carry_gradient; // with whitecaps, for the pixel's own Jacobian
     for (var c = 0; c < CASCADES; c++) {
         let w = slope_weight(c, footprint);
         let local = to_cascade(c, in.rest);
         let surface = cascade_texel(sea_surface, c, local, sea.cascades[c].z);
-        if WHITECAPS && c >= PIXEL_GRADIENT_FROM {
-            let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
-            carry_gradient = add_gradient(carry_gradient, c, cascade_weight(c, footprint), displacement, surface);
-        }
         let s = surface.yz;
         finest = s;
         slope += w * from_cascade(c, s);
@@ -182,17 +176,14 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     let dn = dot(dpdx(n), dpdx(n)) + dot(dpdy(n), dpdy(n));
     specular_spread = 1.0 / (1.0 + scene.optics.x * (0.5 * removed + dn / 24.0));
     var under = deep_water();
-    // The whitecaps from the pixel's own Jacobian: the grid's vertices' Jacobian, interpolated,
-    // would cut them into slivers along its triangles.
     var foam = 0.0;
     if WHITECAPS {
-        let l = sea.waves.x * carry_gradient;
-        foam = whitecap_foam((1.0 - l.x) * (1.0 - l.z) - l.y * l.y, in.rest, footprint);
+        var cover = whitecap_cover(squeezed(in.carry_gradient));
+        if WHITECAP_MAP {
+            cover = max(cover, kept_whitecaps(in.rest));
+        }
+        foam = foam_lace(cover * sea.foam.x, in.rest, footprint);
     }
-    if WHITECAP_MAP {
-        foam = max(foam, kept_whitecaps(in.rest));
-    }
-    foam *= sea.foam.x;
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
     let v = to_point / dist;
@@ -219,7 +210,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         let ripple = finest.x / sqrt(max(sea.cascades[CASCADES - 1].w, 1.0e-8));
         foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), ripple) * sea.foam.y);
     }
-    let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_sea(), foam);
+    let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_foam(n), foam);
     var seen = through_haze(colour, v, dist);
     if GRID_LINES {
         seen = mix(seen, GRID_LINE_COLOUR * light_on_sea(), 0.6 * grid_line(in.rest));

@@ -57,47 +57,37 @@ fn add_gradient(t: vec3<f32>, c: i32, w: f32, displacement: vec4<f32>, surface: 
     return t + w * turned;
 }
 
-// Whitecaps: where the choppy waves squeeze the water to under WHITECAP_JACOBIAN of its area
-// at rest the crests are about to break; white from a little above it.
-fn whitecap(jacobian: f32) -> f32 {
-    return 1.0 - smoothstep(WHITECAP_JACOBIAN, WHITECAP_JACOBIAN + WHITECAP_SOFTNESS, jacobian);
-}
-
-// The whitecaps at rest point p (m) seen at a footprint of `footprint` m, where the water is
-// squeezed to `squeezed` of its area: whiter the further it folds, its thin edge broken into
-// lace by a pattern anchored to the water (its finer octave, about 0.4 m, faded to its mean
-// where a pixel covers it, so it does not sparkle in the distance).
-fn whitecap_foam(squeezed: f32, p: vec2<f32>, footprint: f32) -> f32 {
-    let amount = 1.0 - smoothstep(WHITECAP_JACOBIAN - WHITECAP_SOFTNESS, WHITECAP_JACOBIAN + 2.0 * WHITECAP_SOFTNESS, squeezed);
-    if amount <= 0.0 {
-        return 0.0;
-    }
-    let fine = mix(value_noise(vec3<f32>(p * 2.5, 0.0)), 0.5, smoothstep(0.1, 0.4, footprint));
-    let lace = smoothstep(0.3, 0.7, 0.55 * fine + 0.45 * value_noise(vec3<f32>(p * 0.7, 5.3)));
-    // Thin foam is lace over the water; where the crest folds most it is solid.
-    return amount * mix(lace, 1.0, amount);
+// How much of the water at a point squeezed to `squeezed` of its area the breaking crest
+// covers with foam (0-1): none above WHITECAP_JACOBIAN + 2 WHITECAP_SOFTNESS, all where it
+// folds to WHITECAP_JACOBIAN - WHITECAP_SOFTNESS.
+fn whitecap_cover(squeezed: f32) -> f32 {
+    return 1.0 - smoothstep(WHITECAP_JACOBIAN - WHITECAP_SOFTNESS, WHITECAP_JACOBIAN + 2.0 * WHITECAP_SOFTNESS, squeezed);
 }
 
 // The cascades at rest point p (m) seen at a footprint of `footprint` m: the height (m), the
-// sideways carry D (m; the water moves by -lambda D) and the Jacobian of the choppy map.
+// sideways carry D (m; the water moves by -lambda D) and the carry's gradient (add_gradient)
+// of the cascades that break into whitecaps.
 struct WavesAt {
     height: f32,
     carry: vec2<f32>,
-    jacobian: f32,
-    // The carry's gradient (add_gradient) of the cascades before PIXEL_GRADIENT_FROM.
-    long_gradient: vec3<f32>,
+    breaking_gradient: vec3<f32>,
 }
 
-// The first cascade whose carry gradient a pixel of the sea reads itself for its whitecaps:
-// the finest, whose texels (about 0.25 m) are shorter than the grid's cells; the longer ones'
-// are the grid vertices' (WavesAt::long_gradient), interpolated.
-const PIXEL_GRADIENT_FROM: i32 = CASCADES - 1;
+// The cascades whose folding crests break into whitecaps: all but the finest, whose folds
+// (its waves a few metres long) drew slivers of foam down the faces of the storm's waves.
+const BREAKING_CASCADES: i32 = CASCADES - 1;
+
+// The area (share of its area at rest) the choppy map squeezes the water to, from the carry's
+// gradient (xx, xz, zz).
+fn squeezed(gradient: vec3<f32>) -> f32 {
+    let l = sea.waves.x * gradient;
+    return (1.0 - l.x) * (1.0 - l.z) - l.y * l.y;
+}
 
 fn waves_at(rest: vec2<f32>, footprint: f32) -> WavesAt {
     var height = 0.0;
     var carry = vec2<f32>(0.0);
     var gradient = vec3<f32>(0.0);
-    var long_gradient = vec3<f32>(0.0);
     for (var c = 0; c < CASCADES; c++) {
         let w = cascade_weight(c, footprint);
         let local = to_cascade(c, rest);
@@ -105,13 +95,11 @@ fn waves_at(rest: vec2<f32>, footprint: f32) -> WavesAt {
         let displacement = cascade_texel(sea_displacement, c, local, sea.cascades[c].z);
         height += w * surface.x;
         carry += w * from_cascade(c, displacement.xy);
-        gradient = add_gradient(gradient, c, w, displacement, surface);
-        if c == PIXEL_GRADIENT_FROM - 1 {
-            long_gradient = gradient;
+        if c < BREAKING_CASCADES {
+            gradient = add_gradient(gradient, c, w, displacement, surface);
         }
     }
-    let l = sea.waves.x * gradient;
-    return WavesAt(height, carry, (1.0 - l.x) * (1.0 - l.z) - l.y * l.y, long_gradient);
+    return WavesAt(height, carry, gradient);
 }
 
 // The grid's cells outlined (the debug view): how near rest point p lies to a cell's edge (1 on
