@@ -52,7 +52,7 @@ fn foam_lace(cover: f32, p: vec2<f32>, footprint: f32) -> f32 {
     let patches = value_noise(vec3<f32>(q / 6.0, 3.7));
     let lace = 0.35 * bubbles + 0.2 * grain + 0.25 * large + 0.2 * patches;
     let threshold = 1.0 - cover;
-    let soft = 0.06 + 0.1 * min(seen, 1.0);
+    let soft = 0.05 + 0.6 * min(seen, 1.0);
     return smoothstep(threshold - soft, threshold + soft, lace);
 }
 

@@ -244,7 +244,7 @@ fn a_click_on_the_sea_makes_ripples_that_run_out_at_the_speed_of_shallow_water()
 
 /// Issue 46: the storm's foam is a lace of bubbles over its breaking crests, not cut-out
 /// slivers or grey smears: its outline closed by a 5-pixel square (holes and gaps narrower than
-/// that filled) holds a fifth more pixels than the foam itself (27 % on 2026-11-30). The
+/// that filled) holds a fifth more pixels than the foam itself (29 % on 2026-11-30). The
 /// whitecaps drawn solid where the water folded (slivers down the waves' faces from the finest
 /// cascade's folds, grey smears where they were kept) filled 11 % more.
 #[test]
