@@ -337,10 +337,11 @@ pub struct SeaVariant {
 pub const WHITECAP_ALBEDO: f32 = 0.75;
 /// The whitecaps are kept over time on a map of the sea round the origin (the clicks' patch):
 /// its half width (m) and texels a side (2 m each), and the time (s) their foam takes to fade
-/// to 1/e.
+/// to 1/e: long enough that a broken crest leaves a trail of lace thinning behind it (1 s left
+/// the storm's water bare between breaking crests, judged too sparse for a gale, 2026-11-30).
 pub const WHITECAP_MAP_HALF_WIDTH: f32 = 128.0;
 pub const WHITECAP_MAP_TEXELS: u32 = 128;
-pub const WHITECAP_LIFETIME: f32 = 1.0;
+pub const WHITECAP_LIFETIME: f32 = 2.5;
 
 /// The sea's WGSL constants for `variant` (`ISLAND`, `GRID_LINES`, `WHITECAPS`, `WHITECAP_MAP`,
 /// `SHALLOW_CAUSTICS`, `MIRRORED_BODIES`).
