@@ -35,8 +35,8 @@ fn foam_cells(p: vec2<f32>) -> f32 {
 // of `footprint` m. Thick foam is solid; as it thins, holes open in it where its lace is
 // thinnest (bubbles of two sizes, FOAM_CELL and three times it, in patches of a few metres),
 // so that its edge and its fading trail break into lace rather than a cut-out shape or a grey
-// smear. Each size of the lace fades to its mean where a pixel's footprint covers it, so the
-// far foam shows as white patches, neither sparkling nor grey.
+// smear. Each size of the lace fades to its mean as a pixel's footprint grows to about half
+// of it, so the far foam shows as white patches, neither sparkling nor grey.
 const FOAM_CELL: f32 = 0.5;
 const FOAM_CELLS_MEAN: f32 = 0.58; // foam_cells' mean over the plane
 fn foam_lace(cover: f32, p: vec2<f32>, footprint: f32) -> f32 {
@@ -46,9 +46,9 @@ fn foam_lace(cover: f32, p: vec2<f32>, footprint: f32) -> f32 {
     let q = p / FOAM_CELL;
     let seen = footprint / FOAM_CELL; // the pixel's footprint in cells
     let swirl = vec2<f32>(value_noise(vec3<f32>(q * 0.4, 1.0)), value_noise(vec3<f32>(q * 0.4, 7.0))) - 0.5;
-    let bubbles = mix(foam_cells(q + 1.5 * swirl), FOAM_CELLS_MEAN, smoothstep(0.25, 1.0, seen));
-    let grain = mix(value_noise(vec3<f32>(q * 1.7, 2.0)), 0.5, smoothstep(0.15, 0.6, seen));
-    let large = mix(foam_cells(q / 3.0 + 17.0), FOAM_CELLS_MEAN, smoothstep(0.75, 3.0, seen));
+    let bubbles = mix(foam_cells(q + 1.5 * swirl), FOAM_CELLS_MEAN, smoothstep(0.15, 0.7, seen));
+    let grain = mix(value_noise(vec3<f32>(q * 1.7, 2.0)), 0.5, smoothstep(0.1, 0.4, seen));
+    let large = mix(foam_cells(q / 3.0 + 17.0), FOAM_CELLS_MEAN, smoothstep(0.5, 2.0, seen));
     let patches = value_noise(vec3<f32>(q / 6.0, 3.7));
     let lace = 0.35 * bubbles + 0.2 * grain + 0.25 * large + 0.2 * patches;
     let threshold = 1.0 - cover;
