@@ -355,7 +355,8 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
 
 /// Presets, share links and the embed page: `preset=calm` gives the preset's values and view
 /// and the page's own options override it; the Preset select starts over from another; a share
-/// link made after changes restores the parameters and the camera in a new load; the embed
+/// link made after changes restores the parameters and the camera in a new load, and a preset
+/// with its scene named too gives its view; the embed
 /// code's page (`embed.html`) fills its frame and posts `wavepool:ready` and its height.
 #[tokio::test]
 async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
@@ -388,6 +389,14 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
     browser.wait_ready("#pool", READY).await;
     let restored = browser.js(state).await;
     assert_eq!(restored, changed, "the share link did not restore the demo");
+
+    // A scene named beside a preset: the preset's view in that scene's ranges (it was clamped
+    // to the pool's, chosen until the page's own options came).
+    browser.goto(&server.url("/?scene=sea&preset=storm&quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let storm = browser.js("return window.demo.camera().map((v) => Math.round(v * 10) / 10);").await;
+    println!("scene=sea&preset=storm: camera {storm}");
+    assert_eq!(storm, json!([-30, 12, 80]), "the storm's view with the scene named too");
 
     let code = browser.js("return window.demo.embedCode();").await.as_str().expect("embed code").to_owned();
     let src = code.split("src=\"").nth(1).and_then(|rest| rest.split('"').next()).expect("an iframe src");

@@ -100,13 +100,15 @@ export async function mount(element, options = {}) {
     // play, unless the page asked for `paused` itself.
     if (!("paused" in opts.params) && matchMedia("(prefers-reduced-motion: reduce)").matches) opts.params.paused = 1;
     handle._defaultCamera = handle._core.camera();
-    // A preset's values first; the page's own options override them.
+    // A preset's values first; the page's own options override them. The camera last, once the
+    // scene it looks at is chosen (its ranges are the scene's: `scene=sea&preset=storm` put the
+    // storm's camera in the pool's ranges before the sea was chosen).
     if (opts.preset) {
       for (const [name, value] of opts.preset.values) if (!(name in opts.params)) handle.set(name, value);
-      if (opts.preset.camera && !opts.camera) handle._core.setCamera(...opts.preset.camera);
     }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
-    if (opts.camera) handle._core.setCamera(...opts.camera);
+    const camera = opts.camera || opts.preset?.camera;
+    if (camera) handle._core.setCamera(...camera);
     // The bodies start where these values put them (a sphere without gravity under the water).
     handle._core.reset();
     // The pool's first picture shows rings and their caustics (start_drops), unless it starts
