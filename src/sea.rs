@@ -320,8 +320,8 @@ pub struct SeaVariant {
     pub island: Option<island::Place>,
     /// The grid's cells outlined.
     pub grid_lines: bool,
-    /// Whitecaps: the waves can break (`SeaWaves::may_break`), so each pixel reads the
-    /// cascades' Jacobian (its carry's gradient) to find them.
+    /// Whitecaps: the waves can break (`SeaWaves::may_break`), so the grid's vertices pass the
+    /// breaking cascades' carry gradient for each pixel to find its foam's cover.
     pub whitecaps: bool,
     /// The whitecaps kept over time (where the device renders into float textures).
     pub whitecap_map: bool,

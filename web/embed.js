@@ -102,12 +102,15 @@ export async function mount(element, options = {}) {
     handle._defaultCamera = handle._core.camera();
     // A preset's values first; the page's own options override them. The camera last, once the
     // scene it looks at is chosen (its ranges are the scene's: `scene=sea&preset=storm` put the
-    // storm's camera in the pool's ranges before the sea was chosen).
+    // storm's camera in the pool's ranges before the sea was chosen); a preset's view only in
+    // its own scene (`preset=calm&scene=sea` opens the sea on the sea's view).
     if (opts.preset) {
       for (const [name, value] of opts.preset.values) if (!(name in opts.params)) handle.set(name, value);
     }
     for (const [name, value] of Object.entries(opts.params)) handle.set(name, value);
-    const camera = opts.camera || opts.preset?.camera;
+    const presetScene = opts.preset?.values.find(([name]) => name === "scene")?.[1] ?? 0;
+    const presetView = opts.preset?.camera && handle.get("scene") === presetScene ? opts.preset.camera : null;
+    const camera = opts.camera || presetView;
     if (camera) handle._core.setCamera(...camera);
     // The bodies start where these values put them (a sphere without gravity under the water).
     handle._core.reset();

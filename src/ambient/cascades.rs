@@ -80,7 +80,8 @@ pub const SEA_FETCH: f32 = 50_000.0;
 /// Whitecaps where the choppy surface's Jacobian determinant falls below this: the water is
 /// squeezed to this share of its area at rest, about to fold over and break.
 pub const WHITECAP_JACOBIAN: f32 = 0.3;
-/// The foam fades out over this much above [`WHITECAP_JACOBIAN`].
+/// The foam's cover fades in over this much below [`WHITECAP_JACOBIAN`] and out over twice
+/// this above it (`whitecap_cover` in shaders/sea/waves.wgsl).
 pub const WHITECAP_SOFTNESS: f32 = 0.15;
 // `may_break`'s bound holds for a norm up to 1/√2, which the foam's edge must lie within.
 const _: () = assert!(WHITECAP_JACOBIAN + WHITECAP_SOFTNESS >= 0.25);

@@ -244,9 +244,9 @@ fn a_click_on_the_sea_makes_ripples_that_run_out_at_the_speed_of_shallow_water()
 
 /// Issue 46: the storm's foam is a lace of bubbles over its breaking crests, not cut-out
 /// slivers or grey smears: its outline closed by a 5-pixel square (holes and gaps narrower than
-/// that filled) holds a sixth more pixels than the foam itself (22 % on 2026-11-30). The
-/// whitecaps drawn solid where the water folded (slivers down the waves' faces from the finest
-/// cascade's folds, grey smears where they were kept) filled 10 % more.
+/// that filled) is more than 16 % holes, not foam (22 % on 2026-11-30). Of the whitecaps drawn
+/// solid where the water folded (slivers down the waves' faces from the finest cascade's folds,
+/// grey smears where they were kept) it was 10 %.
 #[test]
 fn whitecaps_break_on_a_storm_as_lace_and_not_on_a_calm_sea() {
     let mut shares = Vec::new();

@@ -1,8 +1,8 @@
 //! The sea's whitecaps kept over time (`shaders/sea/foam.wgsl`): a map of foam over the sea
 //! plane round the origin (the clicks' patch, the camera's target), [`WHITECAP_MAP_TEXELS`] a
 //! side. Each frame one pass writes the other of its two textures: every texel the larger of
-//! its foam faded by the frame's fixed steps (e^(-steps dt / lifetime)) and the foam the waves'
-//! Jacobian makes there now. The sea reads it (group 3, binding 1) beside the foam of the
+//! its foam's cover faded by the frame's fixed steps (e^(-steps dt / lifetime)) and the cover
+//! the breaking crests make there now. The sea reads it (group 3, binding 1) beside the foam of the
 //! moment, so a broken crest leaves a trail that fades. Past the map only the moment's shows.
 
 use crate::gpu::{self, FullscreenPass, FullscreenTarget};
