@@ -390,14 +390,6 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
     let restored = browser.js(state).await;
     assert_eq!(restored, changed, "the share link did not restore the demo");
 
-    // A scene named beside a preset: the preset's view in that scene's ranges (it was clamped
-    // to the pool's, chosen until the page's own options came).
-    browser.goto(&server.url("/?scene=sea&preset=storm&quality=0.5")).await;
-    browser.wait_ready("#pool", READY).await;
-    let storm = browser.js("return window.demo.camera().map((v) => Math.round(v * 10) / 10);").await;
-    println!("scene=sea&preset=storm: camera {storm}");
-    assert_eq!(storm, json!([-30, 12, 80]), "the storm's view with the scene named too");
-
     let code = browser.js("return window.demo.embedCode();").await.as_str().expect("embed code").to_owned();
     let src = code.split("src=\"").nth(1).and_then(|rest| rest.split('"').next()).expect("an iframe src");
     println!("embed code: {code}");
@@ -427,6 +419,13 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
         inside["canvas"].as_f64().unwrap() >= 0.95 * inside["frame"].as_f64().unwrap(),
         "the pool does not fill the frame"
     );
+    // A scene named beside a preset: the preset's view in that scene's ranges (it was clamped
+    // to the pool's, chosen until the page's own options came).
+    browser.goto(&server.url("/?scene=sea&preset=storm&quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let storm = browser.js("return window.demo.camera().map((v) => Math.round(v * 10) / 10);").await;
+    println!("scene=sea&preset=storm: camera {storm}");
+    assert_eq!(storm, json!([-30, 12, 80]), "the storm's view with the scene named too");
     browser.close().await;
 }
 
