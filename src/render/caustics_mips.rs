@@ -11,11 +11,14 @@ pub const CAUSTICS_MIPS: u32 = 4;
 /// focused into one texel are about two wide and do not flicker from pixel to pixel.
 pub const CAUSTICS_MIN_LOD: f32 = 0.7;
 /// Depth (m) over which the caustics sharpen under the surface: the map holds the light on the
-/// floor, where the waves' lenses have focused it; just under the surface the light has not
-/// yet gathered into lines, so a point there reads the map's coarsest level, and the level
-/// falls to the finest at this depth (a ripple a few centimetres long focuses about 0.1 m
-/// down).
-pub const CAUSTICS_SHARPEN_DEPTH: f32 = 0.25;
+/// floor, where the waves' lenses have focused it; nearer the surface the light has gathered
+/// less (while the slopes are small, a wave's focusing grows in proportion to the depth), so a
+/// point just under it reads the map's coarsest level, and the level falls to the finest at
+/// this depth. At 0.25 m (where a ripple a few centimetres long focuses) the walls showed the
+/// floor's sharp net up to the surface, long streaks from top to bottom; the start's waves are
+/// longer and gather deeper. 0.6 m fades the streaks upwards (the sparkle share from under the
+/// water 0.41 % -> 0.33 %, natively, 2026-11-30).
+pub const CAUSTICS_SHARPEN_DEPTH: f32 = 0.6;
 
 /// The caustics map (`size` texels at level 0) and the passes that fill its lower levels.
 pub struct CausticsMips {
