@@ -8,7 +8,7 @@ pub mod island;
 
 use glam::Vec3;
 
-use crate::ambient::cascades::{CASCADE_COUNT, WHITECAP_JACOBIAN, WHITECAP_SOFTNESS};
+use crate::ambient::cascades::{BREAKING_CASCADES, CASCADE_COUNT, WHITECAP_EDGE, WHITECAP_JACOBIAN, WHITECAP_SOFTNESS};
 use crate::ambient::{AmbientModel, AmbientSettings, Spectrum};
 use crate::camera::{CameraLimits, OrbitCamera};
 use crate::param_spec::{slider, Control, ParamSpec};
@@ -366,8 +366,8 @@ pub fn wgsl_constants(variant: SeaVariant) -> String {
         + &island
         + &format!(
             "const GRID_FAR: f32 = {GRID_FAR:?};\nconst SEA_LATTICE: i32 = {SEA_LATTICE};\n\
-         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst PATCH_SPONGE: f32 = {sponge:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\n\
-         const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\n\
+         const PATCH_HALF_WIDTH: f32 = {PATCH_HALF_WIDTH:?};\nconst PATCH_SPONGE: f32 = {sponge:?};\nconst WHITECAP_JACOBIAN: f32 = {WHITECAP_JACOBIAN:?};\nconst WHITECAP_SOFTNESS: f32 = {WHITECAP_SOFTNESS:?};\nconst WHITECAP_EDGE: f32 = {WHITECAP_EDGE:?};\n\
+         const WHITECAP_ALBEDO: f32 = {WHITECAP_ALBEDO:?};\nconst CASCADES: i32 = {CASCADE_COUNT};\nconst BREAKING_CASCADES: i32 = {BREAKING_CASCADES};\n\
          const DEEP_WATER_ALBEDO: vec3<f32> = vec3<f32>({r:?}, {g:?}, {b:?});\n"
         )
 }

@@ -58,10 +58,10 @@ fn add_gradient(t: vec3<f32>, c: i32, w: f32, displacement: vec4<f32>, surface: 
 }
 
 // How much of the water at a point squeezed to `squeezed` of its area the breaking crest
-// covers with foam (0-1): none above WHITECAP_JACOBIAN + 2 WHITECAP_SOFTNESS, all where it
-// folds to WHITECAP_JACOBIAN - WHITECAP_SOFTNESS.
+// covers with foam (0-1): none above WHITECAP_EDGE, all where it folds to WHITECAP_JACOBIAN -
+// WHITECAP_SOFTNESS.
 fn whitecap_cover(squeezed: f32) -> f32 {
-    return 1.0 - smoothstep(WHITECAP_JACOBIAN - WHITECAP_SOFTNESS, WHITECAP_JACOBIAN + 2.0 * WHITECAP_SOFTNESS, squeezed);
+    return 1.0 - smoothstep(WHITECAP_JACOBIAN - WHITECAP_SOFTNESS, WHITECAP_EDGE, squeezed);
 }
 
 // The cascades at rest point p (m) seen at a footprint of `footprint` m: the height (m), the
@@ -72,10 +72,6 @@ struct WavesAt {
     carry: vec2<f32>,
     breaking_gradient: vec3<f32>,
 }
-
-// The cascades whose folding crests break into whitecaps: all but the finest, whose folds
-// (its waves a few metres long) drew slivers of foam down the faces of the storm's waves.
-const BREAKING_CASCADES: i32 = CASCADES - 1;
 
 // The area (share of its area at rest) the choppy map squeezes the water to, from the carry's
 // gradient (xx, xz, zz).

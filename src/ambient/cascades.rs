@@ -70,6 +70,10 @@ const CASCADES: [CascadeSpec; 5] = [
 ];
 /// How many cascades the sea sums.
 pub const CASCADE_COUNT: usize = CASCADES.len();
+/// The cascades whose folding crests break into whitecaps: the first this many, all but the
+/// finest, whose folds (on waves a few metres long) drew slivers of foam down the faces of the
+/// storm's waves.
+pub const BREAKING_CASCADES: usize = CASCADE_COUNT - 1;
 /// Side of each cascade's tile (m).
 pub const CASCADE_TILES: [f32; 5] =
     [CASCADES[0].tile, CASCADES[1].tile, CASCADES[2].tile, CASCADES[3].tile, CASCADES[4].tile];
@@ -83,8 +87,15 @@ pub const WHITECAP_JACOBIAN: f32 = 0.3;
 /// The foam's cover fades in over this much below [`WHITECAP_JACOBIAN`] and out over twice
 /// this above it (`whitecap_cover` in shaders/sea/waves.wgsl).
 pub const WHITECAP_SOFTNESS: f32 = 0.15;
-// `may_break`'s bound holds for a norm up to 1/√2, which the foam's edge must lie within.
-const _: () = assert!(WHITECAP_JACOBIAN + WHITECAP_SOFTNESS >= 0.25);
+/// The Jacobian above which the water carries no whitecap foam at all: the cover's outer edge.
+pub const WHITECAP_EDGE: f32 = WHITECAP_JACOBIAN + 2.0 * WHITECAP_SOFTNESS;
+/// The Jacobian below which whitecaps are seen: the cover is a quarter there (0.26), and the
+/// lace of a thinner cover shows as a few specks. A sea that never folds this far draws no
+/// whitecaps ([`SeaWaves::may_break`]): gated at the outer edge, the default sea (8 m/s) took
+/// the whitecaps' shading, 15 % of lavapipe's frame, and drew not one pixel of foam in 5 s.
+pub const WHITECAP_SEEN: f32 = WHITECAP_JACOBIAN + WHITECAP_SOFTNESS;
+// `may_break`'s bound holds for a norm up to 1/√2, which the gate must lie within.
+const _: () = assert!(WHITECAP_SEEN >= 0.25 && WHITECAP_SEEN < WHITECAP_EDGE);
 
 /// A lattice of `n`² texels over a tile 2 `half_tile` wide (texel (i, j) centred at
 /// −W + (i + ½)Δ, the tile repeating), bilinear at (u, v) in its frame (m).
@@ -242,17 +253,19 @@ impl SeaWaves {
 
     /// Whether the choppy waves can break anywhere: the Jacobian det(I − M) of the map
     /// x₀ ↦ x₀ − λ D (M symmetric, Frobenius norm s) is at least (1 − s/√2)² while s ≤ 1/√2
-    /// (then at least 1/4; past it (1 − s²)/2), so whitecaps (below [`WHITECAP_JACOBIAN`]
-    /// and [`WHITECAP_SOFTNESS`] over, at least 1/4) need s past about a half. M is the
+    /// (then at least 1/4; past it (1 − s²)/2), so whitecaps (seen below [`WHITECAP_SEEN`], at
+    /// least 1/4) need s past √2 (1 − √WHITECAP_SEEN), about a half. M is the
     /// cascades' λ ∂D/∂x₀ summed; taking them as independent, s seldom passes 3.5 times its
     /// rms, from the lattices at one time (`layers`, as [`SeaWaves::layers`] gives them: the
-    /// sea's statistics do not change with time).
+    /// sea's statistics do not change with time). Only the [`BREAKING_CASCADES`] count, as in
+    /// the shader's cover.
     pub fn may_break(&self, layers: &[Vec<[f32; 4]>; 2]) -> bool {
         let [surface, displacement] = layers;
         let lattice = surface.len() / self.cascades.len().max(1);
         let mean_square: f64 = self
             .cascades
             .iter()
+            .take(BREAKING_CASCADES)
             .enumerate()
             .map(|(i, c)| {
                 let lambda = c.ocean.choppiness as f64;
@@ -263,7 +276,7 @@ impl SeaWaves {
                 texels.sum::<f64>() / lattice as f64
             })
             .sum();
-        let edge = std::f64::consts::SQRT_2 * (1.0 - ((WHITECAP_JACOBIAN + WHITECAP_SOFTNESS) as f64).sqrt());
+        let edge = std::f64::consts::SQRT_2 * (1.0 - (WHITECAP_SEEN as f64).sqrt());
         3.5 * mean_square.sqrt() > edge
     }
 
