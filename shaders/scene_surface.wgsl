@@ -62,7 +62,7 @@ fn foam_at(xz: vec2<f32>) -> f32 {
 // seen from above, a shadow seen from below.
 fn with_foam(colour: vec3<f32>, p: vec3<f32>, from_above: bool) -> vec3<f32> {
     let amount = foam_at(p.xz);
-    let bubbles = 0.6 * value_noise(vec3<f32>(p.xz * 90.0, 0.0)) + 0.4 * value_noise(vec3<f32>(p.xz * 23.0, 3.7));
+    let bubbles = 0.6 * value_noise_2d(p.xz * 90.0, 0.0) + 0.4 * value_noise_2d(p.xz * 23.0, 3.7);
     let coverage = smoothstep(bubbles - 0.1, bubbles + 0.1, 1.4 * amount);
     let lit = FOAM_ALBEDO * (sky_light() + max(scene.sun.y, 0.0) * sun_light());
     return select(colour * (1.0 - 0.8 * coverage), mix(colour, lit, coverage), from_above);

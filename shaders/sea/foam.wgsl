@@ -31,18 +31,6 @@ fn foam_cells(p: vec2<f32>) -> f32 {
     return 1.0 - clamp((nearest.y - nearest.x) * 1.6, 0.0, 1.0);
 }
 
-// Value noise over the plane (0-1, a unit between its lattice points), one pattern per seed.
-fn foam_noise(p: vec2<f32>, seed: f32) -> f32 {
-    let i = floor(p);
-    let f = fract(p);
-    let u = f * f * (3.0 - 2.0 * f);
-    let a = hash31(vec3<f32>(i, seed));
-    let b = hash31(vec3<f32>(i + vec2<f32>(1.0, 0.0), seed));
-    let c = hash31(vec3<f32>(i + vec2<f32>(0.0, 1.0), seed));
-    let d = hash31(vec3<f32>(i + vec2<f32>(1.0, 1.0), seed));
-    return mix(mix(a, b, u.x), mix(c, d, u.x), u.y);
-}
-
 // How white the water is at rest point p (m) under foam of cover `cover`, seen at a footprint
 // of `footprint` m. Thick foam is solid; as it thins, holes open in it where its lace is
 // thinnest (bubbles of two sizes, FOAM_CELL and three times it, in patches of a few metres),
@@ -61,15 +49,15 @@ fn foam_lace(cover: f32, p: vec2<f32>, footprint: f32) -> f32 {
     var bubbles = FOAM_CELLS_MEAN;
     var grain = 0.5;
     if seen < 0.7 {
-        let swirl = vec2<f32>(foam_noise(q * 0.4, 1.0), foam_noise(q * 0.4, 7.0)) - 0.5;
+        let swirl = vec2<f32>(value_noise_2d(q * 0.4, 1.0), value_noise_2d(q * 0.4, 7.0)) - 0.5;
         bubbles = mix(foam_cells(q + 1.5 * swirl), FOAM_CELLS_MEAN, smoothstep(0.15, 0.7, seen));
-        grain = mix(foam_noise(q * 1.7, 2.0), 0.5, smoothstep(0.1, 0.4, seen));
+        grain = mix(value_noise_2d(q * 1.7, 2.0), 0.5, smoothstep(0.1, 0.4, seen));
     }
     var large = FOAM_CELLS_MEAN;
     if seen < 2.0 {
         large = mix(foam_cells(q / 3.0 + 17.0), FOAM_CELLS_MEAN, smoothstep(0.5, 2.0, seen));
     }
-    let patches = foam_noise(q / 6.0, 3.7);
+    let patches = value_noise_2d(q / 6.0, 3.7);
     let lace = 0.35 * bubbles + 0.2 * grain + 0.25 * large + 0.2 * patches;
     let threshold = 1.0 - cover;
     let soft = 0.05 + 0.6 * min(seen, 1.0);
