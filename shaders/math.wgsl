@@ -20,7 +20,7 @@ fn linear_to_srgb(c: vec3<f32>) -> vec3<f32> {
     return select(hi, lo, c <= vec3<f32>(0.0031308));
 }
 
-// Cheap hash and value noise for procedural textures (sky clouds).
+// Cheap hash and value noise for procedural textures (the sky's clouds, foam).
 fn hash31(p: vec3<f32>) -> f32 {
     var q = fract(p * 0.1031);
     q += dot(q, q.zyx + 31.32);
@@ -46,8 +46,9 @@ fn value_noise(p: vec3<f32>) -> f32 {
     return mix(mix(x00, x10, u.y), mix(x01, x11, u.y), u.z);
 }
 
-// Value noise over the plane (0-1, a unit between its lattice points), one pattern per seed:
-// value_noise's four hashes where it would take eight.
+// Value noise over the plane (0-1, a unit between its lattice points), one pattern per seed,
+// with four hashes: value_noise at a fixed third coordinate takes eight (and gives the same
+// pattern only for a whole-number seed).
 fn value_noise_2d(p: vec2<f32>, seed: f32) -> f32 {
     let i = floor(p);
     let f = fract(p);

@@ -457,7 +457,7 @@ fn waterline(demo: &WaterDemo, size: Vec2) -> Vec<Vec2> {
 
 /// Seen through rippled water, the sphere's side just under its waterline is lit evenly, not
 /// streaked: the light there has not yet gathered into caustic lines (they sharpen over the
-/// first 0.25 m down); and it takes the water's colour: facing sideways it sees the sky only
+/// first `CAUSTICS_SHARPEN_DEPTH`, 0.6 m, down); and it takes the water's colour: facing sideways it sees the sky only
 /// through Snell's window, the rest the pool. Measured on the band 3 to 6 pixels under the
 /// middle of the waterline as drawn after drops: the mean luma step from one column of the band
 /// to the next, over the band's mean; its red over its blue.

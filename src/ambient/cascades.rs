@@ -89,12 +89,14 @@ pub const WHITECAP_JACOBIAN: f32 = 0.3;
 pub const WHITECAP_SOFTNESS: f32 = 0.15;
 /// The Jacobian above which the water carries no whitecap foam at all: the cover's outer edge.
 pub const WHITECAP_EDGE: f32 = WHITECAP_JACOBIAN + 2.0 * WHITECAP_SOFTNESS;
-/// The Jacobian below which whitecaps are seen: the cover is a quarter there (0.26), and the
-/// lace of a thinner cover shows as a few specks. A sea that never folds this far draws no
-/// whitecaps ([`SeaWaves::may_break`]): gated at the outer edge, the default sea (8 m/s) took
-/// the whitecaps' shading, 15 % of lavapipe's frame, and drew not one pixel of foam in 5 s.
+/// The Jacobian below which whitecaps are seen: the cover is about a quarter there (0.26 with
+/// these constants), and the lace of a thinner cover shows as a few specks. A sea that never
+/// folds this far draws no whitecaps ([`SeaWaves::may_break`]): gated at the outer edge, the
+/// default sea (8 m/s) took the whitecaps' shading, about a sixth more of lavapipe's (+14 to
+/// +22 % in three rounds), and drew not one pixel of foam in 5 s.
 pub const WHITECAP_SEEN: f32 = WHITECAP_JACOBIAN + WHITECAP_SOFTNESS;
-// `may_break`'s bound holds for a norm up to 1/√2, which the gate must lie within.
+// `may_break`'s bound holds for a norm up to 1/√2, which the gate must lie within; and the
+// gate lies inside the cover (past its outer edge there is nothing to see).
 const _: () = assert!(WHITECAP_SEEN >= 0.25 && WHITECAP_SEEN < WHITECAP_EDGE);
 
 /// A lattice of `n`² texels over a tile 2 `half_tile` wide (texel (i, j) centred at
@@ -190,8 +192,9 @@ impl SeaWaves {
 
     /// The Jacobian determinant of the horizontal map x₀ ↦ x₀ − λ D(x₀) at world rest point
     /// (x, z), time `t`: 1 where the water keeps its area, below 1 where the choppy waves
-    /// squeeze it (their crests), ≤ 0 where it folds over. D and its derivatives are the
-    /// cascades' summed; λ is their choppiness.
+    /// squeeze it (their crests), ≤ 0 where it folds over. D and its derivatives are all five
+    /// cascades' summed (the whitecaps' cover takes only the [`BREAKING_CASCADES`]); λ is their
+    /// choppiness.
     pub fn jacobian(&self, x: f32, z: f32, t: f64) -> f32 {
         // λ ∂D/∂x₀ summed over the cascades in the world's frame: xx, xz, zz.
         let mut d = [0.0f32; 3];

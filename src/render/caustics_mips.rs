@@ -17,7 +17,7 @@ pub const CAUSTICS_MIN_LOD: f32 = 0.7;
 /// this depth. At 0.25 m (where a ripple a few centimetres long focuses) the walls showed the
 /// floor's sharp net up to the surface, long streaks from top to bottom; the start's waves are
 /// longer and gather deeper. 0.6 m fades the streaks upwards (the sparkle share from under the
-/// water 0.41 % -> 0.33 %, natively, 2026-11-30).
+/// water 0.41 % -> 0.35 %, natively, 2026-11-30).
 pub const CAUSTICS_SHARPEN_DEPTH: f32 = 0.6;
 
 /// The caustics map (`size` texels at level 0) and the passes that fill its lower levels.
