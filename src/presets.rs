@@ -328,4 +328,20 @@ mod tests {
         }
         assert!(find("CALM").is_some() && find("nothing").is_none());
     }
+
+    /// The whitecaps' variant costs a sixth of lavapipe's shading: the sea of the `sea` and
+    /// `shore` presets (the default's wind), which never folds far enough to show foam, must
+    /// not take it; the storm's waves must.
+    #[test]
+    fn only_the_storms_sea_takes_the_whitecaps() {
+        use crate::ambient::cascades::SeaWaves;
+        for (name, expected) in [("sea", false), ("shore", false), ("storm", true)] {
+            let (mut params, mut camera) = (Params::default(), OrbitCamera::default());
+            find(name).unwrap().apply(&mut params, &mut camera);
+            let waves = SeaWaves::new(&crate::scenes::sea::sea_settings(&params).waves(), crate::sea::SEA_LATTICE);
+            let breaks = waves.may_break(&waves.layers(0.0));
+            println!("{name}: may break {breaks}");
+            assert_eq!(breaks, expected, "{name}");
+        }
+    }
 }
