@@ -11,7 +11,11 @@
 //! the rest of the pool's water (the opening's square at the rest level, projected) and
 //! elsewhere. With them the water's contrast: the 95th over the 50th percentile of luma over
 //! the pool's water, where the floor's caustics show (the pool's views; the default view also
-//! under the sun it had before 2026-11-28, for comparison in the same run).
+//! under the sun it had before 2026-11-28, for comparison in the same run). And the sparkle
+//! share (tests/support/picture.rs) of the frame and of the reference: a frame filtered as
+//! the reference is sparkles as much; one far under it is blurred past it (a filter's change
+//! that lowers the sparkle but moves the frame further from the reference took detail the
+//! reference keeps).
 // Tests read results back and wait for the GPU (clippy.toml: not in the frame path).
 #![allow(clippy::disallowed_methods)]
 
@@ -24,6 +28,9 @@ use wavepool::params::ParamId;
 use wavepool::presets;
 use wavepool::scenes::SceneKind;
 use wavepool::world::PoolShape;
+
+#[path = "../tests/support/picture.rs"]
+mod picture;
 
 const SIZE: (u32, u32) = (800, 600);
 /// The reference is drawn this many times larger on each side.
@@ -217,6 +224,10 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
         let _ = write_png(std::path::Path::new(&format!("{dir}/{name}-reference.png")), SIZE.0, SIZE.1, &reference_png);
     }
     let r = |v: f64| (v * 100.0).round() / 100.0;
+    let sparkle = |rgba: &[u8]| {
+        let img = picture::Image::new(SIZE.0, SIZE.1, rgba.to_vec());
+        (picture::sparkle_share(&img, picture::Rect { x: 0, y: 0, w: SIZE.0, h: SIZE.1 }) * 1.0e5).round() / 1.0e3
+    };
     println!(
         "{}",
         json!({
@@ -227,6 +238,7 @@ fn measure(gpu: &HeadlessGpu, name: &str, preset: Option<&str>, sets: &[(&str, f
             "elsewhere": { "mean": r(rest.0), "p99": r(rest.1) },
             "water_contrast_p95_p50": (p95 / median * 1000.0).round() / 1000.0,
             "water_luma_median": r(median),
+            "sparkle_percent": { "frame": sparkle(&first), "reference": sparkle(&reference_png) },
             "flicker_at_rest_pixels": flicker,
             "changed_after_the_large_frame_pixels": moved,
         })
