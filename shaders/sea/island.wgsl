@@ -16,6 +16,12 @@ const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);
 const WET_SAND: vec3<f32> = vec3<f32>(0.30, 0.24, 0.15);
 const GRASS: vec3<f32> = vec3<f32>(0.09, 0.16, 0.04);
 const ROCK: vec3<f32> = vec3<f32>(0.30, 0.28, 0.25);
+const DRY_GRASS: vec3<f32> = vec3<f32>(0.20, 0.19, 0.07);
+// The land's detail finer than its map (2.5 m a texel): the largest size of its noise (m),
+// and how many octaves, each half the size before (the last 6 cm).
+const LAND_DETAIL_SIZE: f32 = 16.0;
+const LAND_DETAIL_OCTAVES: i32 = 9;
+
 fn on_island_map(p: vec2<f32>) -> bool {
     return all(abs(p - ISLAND_CENTRE) < vec2<f32>(ISLAND_MAP_HALF_WIDTH));
 }
@@ -30,12 +36,42 @@ fn ground_normal(ground: vec3<f32>) -> vec3<f32> {
     return normalize(vec3<f32>(-ground.y, 1.0, -ground.z));
 }
 
-// The land's albedo at height h (m) with slope `rise` (rise over run): wet sand at the water,
-// then dry sand, grass, and rock on steep ground.
-fn land_albedo(h: f32, rise: f32) -> vec3<f32> {
-    let sand = mix(WET_SAND, SAND, smoothstep(0.0, 0.6, h));
-    let land = mix(sand, GRASS, smoothstep(BEACH_TOP - 0.5, BEACH_TOP + 0.5, h));
-    return mix(land, ROCK, smoothstep(ROCK_SLOPE - 0.2, ROCK_SLOPE + 0.2, rise));
+// Value noise over the ground at p (x, z; m) in octaves from LAND_DETAIL_SIZE down, each
+// weighted 0.8 of the one before (a grain is seen beside the patches) and left out once the
+// pixel's footprint (m) reaches half its size, so that no octave finer than a pixel sparkles
+// (and far land costs a few): about -1..1.
+fn land_detail(p: vec2<f32>, footprint: f32, seed: f32) -> f32 {
+    var sum = 0.0;
+    var q = p;
+    var size = LAND_DETAIL_SIZE;
+    var weight = 0.45;
+    for (var i = 0; i < LAND_DETAIL_OCTAVES; i++) {
+        let fade = 1.0 - smoothstep(0.25 * size, 0.5 * size, footprint);
+        if (fade <= 0.0) {
+            break;
+        }
+        // Each octave turned (0.6, 0.8: about 53°) from the one before, so that their
+        // lattices do not line up into a grid.
+        q = vec2<f32>(0.6 * q.x - 0.8 * q.y, 0.8 * q.x + 0.6 * q.y);
+        sum += weight * fade * (2.0 * value_noise_2d(q / size, seed + f32(i)) - 1.0);
+        size *= 0.5;
+        weight *= 0.8;
+    }
+    return sum;
+}
+
+// The land's albedo at point p (m) with slope `rise` (rise over run), footprint as
+// land_detail's: wet sand at the water, then dry sand, grass, and rock on steep ground; the
+// lines between them bent and each mottled by the detail the map is too coarse for (sand
+// a little, grass with dry patches, rock more).
+fn land_albedo(p: vec3<f32>, rise: f32, footprint: f32) -> vec3<f32> {
+    let d = land_detail(p.xz, footprint, 0.0);
+    let h = p.y + 0.8 * d;
+    let sand = mix(WET_SAND, SAND, smoothstep(0.0, 0.6, h)) * (1.0 + 0.35 * d);
+    let grass = mix(GRASS, DRY_GRASS, smoothstep(-0.2, 0.4, land_detail(p.xz, footprint, 20.0))) * (1.0 + 0.5 * d);
+    let land = mix(sand, grass, smoothstep(BEACH_TOP - 0.5, BEACH_TOP + 0.5, h));
+    let rock = ROCK * (1.0 + 0.6 * d);
+    return mix(land, rock, smoothstep(ROCK_SLOPE - 0.2, ROCK_SLOPE + 0.2, rise + 0.2 * d));
 }
 
 // Sunlight and skylight on ground facing n (the sky's light by how much of the sky it sees).
@@ -110,10 +146,15 @@ fn land_vertex(index: u32) -> vec3<f32> {
     return vec3<f32>(p.x, ground_at(p).x, p.y);
 }
 
-// The land's colour at a point of it, lit, before the haze.
-fn land_colour(world: vec3<f32>) -> vec3<f32> {
+// The land's colour at a point of it, lit, before the haze; footprint: the pixel's on it (m).
+fn land_colour(world: vec3<f32>, footprint: f32) -> vec3<f32> {
     let ground = ground_at(world.xz);
-    return land_albedo(world.y, length(ground.yz)) * light_on_ground(ground_normal(ground));
+    return land_albedo(world, length(ground.yz), footprint) * light_on_ground(ground_normal(ground));
+}
+
+// The pixel's footprint (m) on the land at `world`; call in uniform control flow.
+fn land_footprint(world: vec3<f32>) -> f32 {
+    return max(length(dpdx(world)), length(dpdy(world)));
 }
 
 @vertex
@@ -128,7 +169,7 @@ fn vs_island(@builtin(vertex_index) index: u32) -> IslandOut {
 fn fs_island(in: IslandOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
-    return finish(through_air(land_colour(in.world), to_point / dist, dist));
+    return finish(through_air(land_colour(in.world, land_footprint(in.world)), to_point / dist, dist));
 }
 
 // The land upside down under the sea plane, seen by the same camera: what a level sea mirrors.
@@ -144,12 +185,13 @@ fn vs_island_mirrored(@builtin(vertex_index) index: u32) -> IslandOut {
 // through the haze (the eye's way to the land's mirror image).
 @fragment
 fn fs_island_mirrored(in: IslandOut) -> @location(0) vec4<f32> {
+    let footprint = land_footprint(in.world);
     if in.world.y < 0.0 {
         discard;
     }
     let to_image = in.world * vec3<f32>(1.0, -1.0, 1.0) - sea.eye.xyz;
     let dist = length(to_image);
-    let colour = through_haze(land_colour(in.world), to_image / dist, dist);
+    let colour = through_haze(land_colour(in.world, footprint), to_image / dist, dist);
     return vec4<f32>(sqrt(colour / MIRROR_RANGE), 1.0);
 }
 
