@@ -152,6 +152,28 @@ fn land_colour(world: vec3<f32>, footprint: f32) -> vec3<f32> {
     return land_albedo(world, length(ground.yz), footprint) * light_on_ground(ground_normal(ground));
 }
 
+// The swash: how far (m, in height) above the waves at its place the sand is still covered by
+// the shore's foam running up it, fading to none.
+const SWASH_HEIGHT: f32 = 0.2;
+
+// The land's colour at `world` (lit, before the haze) where the waves run up it: the shore's
+// foam (if drawn) over the sand within SWASH_HEIGHT of the sea's surface there, so that where
+// the sea's grid cuts into the land the foam on either side meets, not sand against a
+// cut-out of foam along the land's quads. Only land that low pays for the waves' lookup.
+fn with_swash(colour: vec3<f32>, world: vec3<f32>, footprint: f32) -> vec3<f32> {
+    if (sea.foam.y <= 0.0 || world.y > sea.foam.z + SWASH_HEIGHT) {
+        return colour;
+    }
+    var waves = 0.0; // the sea's height there: waves_at's, without the carry it also reads
+    for (var c = 0; c < CASCADES; c++) {
+        let surface = cascade_texel(sea_surface, c, to_cascade(c, world.xz), sea.cascades[c].z);
+        waves += cascade_weight(c, footprint) * surface.x;
+    }
+    let above = world.y - waves;
+    let cover = (1.0 - smoothstep(0.0, SWASH_HEIGHT, above)) * sea.foam.y;
+    return mix(colour, WHITECAP_ALBEDO * light_on_foam(vec3<f32>(0.0, 1.0, 0.0)), cover);
+}
+
 // The pixel's footprint (m) on the land at `world`; call in uniform control flow.
 fn land_footprint(world: vec3<f32>) -> f32 {
     return max(length(dpdx(world)), length(dpdy(world)));
@@ -169,7 +191,9 @@ fn vs_island(@builtin(vertex_index) index: u32) -> IslandOut {
 fn fs_island(in: IslandOut) -> @location(0) vec4<f32> {
     let to_point = in.world - sea.eye.xyz;
     let dist = length(to_point);
-    return finish(through_air(land_colour(in.world, land_footprint(in.world)), to_point / dist, dist));
+    let footprint = land_footprint(in.world);
+    let colour = with_swash(land_colour(in.world, footprint), in.world, footprint);
+    return finish(through_air(colour, to_point / dist, dist));
 }
 
 // The land upside down under the sea plane, seen by the same camera: what a level sea mirrors.
