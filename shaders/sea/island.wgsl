@@ -1,9 +1,9 @@
 // The island in the open sea (sea/island.rs makes its heightmap). Its land is a grid over the
-// map lifted to the ground's height, sand by the water, grass above, rock where it is steep,
-// lit by the sun and the sky and seen through the haze. Under the water the sea reads the same
-// map: light reaching the floor and coming back is dimmed by Beer-Lambert along its path
-// (exp(-a L) per channel), so the shallows take the floor's colour, turning to the deep sea's
-// own light with depth; where the water is shallowest it foams on the crests.
+// map lifted to the ground's height, coloured as land.wgsl says, seen through the haze. Under
+// the water the sea reads the same map: light reaching the floor and coming back is dimmed by
+// Beer-Lambert along its path (exp(-a L) per channel), so the shallows take the floor's
+// colour, turning to the deep sea's own light with depth; where the water is shallowest it
+// foams on the crests.
 
 // Height (m), dh/dx, dh/dz of the ground, ISLAND_MAP_TEXELS a side over the map's square.
 @group(2) @binding(3) var island_map: texture_2d<f32>;
@@ -12,15 +12,8 @@
 @group(3) @binding(0) var mirror_map: texture_2d<f32>; // (binding 1: shaders/sea/foam.wgsl)
 
 
-const SAND: vec3<f32> = vec3<f32>(0.50, 0.42, 0.28);
-const WET_SAND: vec3<f32> = vec3<f32>(0.30, 0.24, 0.15);
-const GRASS: vec3<f32> = vec3<f32>(0.09, 0.16, 0.04);
-const ROCK: vec3<f32> = vec3<f32>(0.30, 0.28, 0.25);
-const DRY_GRASS: vec3<f32> = vec3<f32>(0.20, 0.19, 0.07);
-// The land's detail finer than its map (2.5 m a texel): the largest size of its noise (m),
-// and how many octaves, each half the size before (the last 6 cm).
-const LAND_DETAIL_SIZE: f32 = 16.0;
-const LAND_DETAIL_OCTAVES: i32 = 9;
+// The land's colours and its detail are shaders/sea/land.wgsl's (SAND also lights the floor
+// seen through the shallows here).
 
 fn on_island_map(p: vec2<f32>) -> bool {
     return all(abs(p - ISLAND_CENTRE) < vec2<f32>(ISLAND_MAP_HALF_WIDTH));
@@ -34,49 +27,6 @@ fn ground_at(p: vec2<f32>) -> vec3<f32> {
 
 fn ground_normal(ground: vec3<f32>) -> vec3<f32> {
     return normalize(vec3<f32>(-ground.y, 1.0, -ground.z));
-}
-
-// Value noise over the ground at p (x, z; m) in octaves from LAND_DETAIL_SIZE down, each
-// weighted 0.8 of the one before (a grain is seen beside the patches) and left out once the
-// pixel's footprint (m) reaches half its size, so that no octave finer than a pixel sparkles
-// (and far land costs a few): about -1..1.
-fn land_detail(p: vec2<f32>, footprint: f32, seed: f32) -> f32 {
-    var sum = 0.0;
-    var q = p;
-    var size = LAND_DETAIL_SIZE;
-    var weight = 0.45;
-    for (var i = 0; i < LAND_DETAIL_OCTAVES; i++) {
-        let fade = 1.0 - smoothstep(0.25 * size, 0.5 * size, footprint);
-        if (fade <= 0.0) {
-            break;
-        }
-        // Each octave turned (0.6, 0.8: about 53°) from the one before, so that their
-        // lattices do not line up into a grid.
-        q = vec2<f32>(0.6 * q.x - 0.8 * q.y, 0.8 * q.x + 0.6 * q.y);
-        sum += weight * fade * (2.0 * value_noise_2d(q / size, seed + f32(i)) - 1.0);
-        size *= 0.5;
-        weight *= 0.8;
-    }
-    return sum;
-}
-
-// The land's albedo at point p (m) with slope `rise` (rise over run), footprint as
-// land_detail's: wet sand at the water, then dry sand, grass, and rock on steep ground; the
-// lines between them bent and each mottled by the detail the map is too coarse for (sand
-// a little, grass with dry patches, rock more).
-fn land_albedo(p: vec3<f32>, rise: f32, footprint: f32) -> vec3<f32> {
-    let d = land_detail(p.xz, footprint, 0.0);
-    let h = p.y + 0.8 * d;
-    let sand = mix(WET_SAND, SAND, smoothstep(0.0, 0.6, h)) * (1.0 + 0.35 * d);
-    let grass = mix(GRASS, DRY_GRASS, smoothstep(-0.2, 0.4, land_detail(p.xz, footprint, 20.0))) * (1.0 + 0.5 * d);
-    let land = mix(sand, grass, smoothstep(BEACH_TOP - 0.5, BEACH_TOP + 0.5, h));
-    let rock = ROCK * (1.0 + 0.6 * d);
-    return mix(land, rock, smoothstep(ROCK_SLOPE - 0.2, ROCK_SLOPE + 0.2, rise + 0.2 * d));
-}
-
-// Sunlight and skylight on ground facing n (the sky's light by how much of the sky it sees).
-fn light_on_ground(n: vec3<f32>) -> vec3<f32> {
-    return sun_light() * max(dot(n, scene.sun.xyz), 0.0) + sky_light() * upward_share(n);
 }
 
 // Sunlight on the floor `depth` m under rest point p, focused by the waves (caustics, with the
@@ -144,39 +94,6 @@ fn land_vertex(index: u32) -> vec3<f32> {
     let g = vec2<f32>(f32(index % (LAND_GRID + 1u)), f32(index / (LAND_GRID + 1u))) / f32(LAND_GRID);
     let p = ISLAND_CENTRE + (g * 2.0 - 1.0) * ISLAND_MAP_HALF_WIDTH;
     return vec3<f32>(p.x, ground_at(p).x, p.y);
-}
-
-// The land's colour at a point of it, lit, before the haze; footprint: the pixel's on it (m).
-fn land_colour(world: vec3<f32>, footprint: f32) -> vec3<f32> {
-    let ground = ground_at(world.xz);
-    return land_albedo(world, length(ground.yz), footprint) * light_on_ground(ground_normal(ground));
-}
-
-// The swash: how far (m, in height) above the waves at its place the sand is still covered by
-// the shore's foam running up it, fading to none.
-const SWASH_HEIGHT: f32 = 0.2;
-
-// The land's colour at `world` (lit, before the haze) where the waves run up it: the shore's
-// foam (if drawn) over the sand within SWASH_HEIGHT of the sea's surface there, so that where
-// the sea's grid cuts into the land the foam on either side meets, not sand against a
-// cut-out of foam along the land's quads. Only land that low pays for the waves' lookup.
-fn with_swash(colour: vec3<f32>, world: vec3<f32>, footprint: f32) -> vec3<f32> {
-    if (sea.foam.y <= 0.0 || world.y > sea.foam.z + SWASH_HEIGHT) {
-        return colour;
-    }
-    var waves = 0.0; // the sea's height there: waves_at's, without the carry it also reads
-    for (var c = 0; c < CASCADES; c++) {
-        let surface = cascade_texel(sea_surface, c, to_cascade(c, world.xz), sea.cascades[c].z);
-        waves += cascade_weight(c, footprint) * surface.x;
-    }
-    let above = world.y - waves;
-    let cover = (1.0 - smoothstep(0.0, SWASH_HEIGHT, above)) * sea.foam.y;
-    return mix(colour, WHITECAP_ALBEDO * light_on_foam(vec3<f32>(0.0, 1.0, 0.0)), cover);
-}
-
-// The pixel's footprint (m) on the land at `world`; call in uniform control flow.
-fn land_footprint(world: vec3<f32>) -> f32 {
-    return max(length(dpdx(world)), length(dpdy(world)));
 }
 
 @vertex

@@ -98,6 +98,16 @@ fn waves_at(rest: vec2<f32>, footprint: f32) -> WavesAt {
     return WavesAt(height, carry, gradient);
 }
 
+// The sea's height (m) over rest point `rest`: waves_at's, one fetch a cascade.
+fn waves_height(rest: vec2<f32>, footprint: f32) -> f32 {
+    var height = 0.0;
+    for (var c = 0; c < CASCADES; c++) {
+        let surface = cascade_texel(sea_surface, c, to_cascade(c, rest), sea.cascades[c].z);
+        height += cascade_weight(c, footprint) * surface.x;
+    }
+    return height;
+}
+
 // The grid's cells outlined (the debug view): how near rest point p lies to a cell's edge (1 on
 // it, 0 a pixel away), in the cell coordinates found by taking its ray back onto the screen.
 const GRID_LINE_COLOUR: vec3<f32> = vec3<f32>(0.9, 0.7, 0.15);

@@ -1,4 +1,5 @@
-//! The island in the sea: foam in its shallows, its mirror image, the caustics on its floor.
+//! The island in the sea: foam in its shallows and up its sand, its mirror image, the caustics
+//! on its floor, its land's detail close up.
 
 use super::*;
 
@@ -56,7 +57,8 @@ fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
     }
     let share = |a: usize, b: usize| 100.0 * a as f64 / b.max(1) as f64;
     let (mut foamed, mut foamed_shallow, mut deep, mut deep_foamed, mut edge, mut edge_foamed) = (0, 0, 0, 0, 0, 0);
-    // The sand the waves run up (ground up to 1.5 m above the rest level) and the land above it.
+    // The sand the waves run up (ground up to 1.5 m above the rest level) and the land above
+    // the highest crests (1.2 m) and the swash (SWASH_HEIGHT, 0.2 m), with a margin.
     let (mut swash, mut swash_foamed, mut high, mut high_foamed) = (0, 0, 0, 0);
     for (x, y) in Area::ALL.pixels(&frames[0]) {
         let Some(depth) = rest_point(&d, SIZE, x, y).map(depth_at) else { continue };
@@ -70,11 +72,11 @@ fn the_shore_foams_in_the_shallows_and_nowhere_in_deep_water() {
         edge_foamed += usize::from(whiter && depth > 0.0 && depth < 0.5);
         swash += usize::from(depth < 0.0 && depth > -1.5);
         swash_foamed += usize::from(whiter && depth < 0.0 && depth > -1.5);
-        high += usize::from(depth < -4.0);
-        high_foamed += usize::from(whiter && depth < -4.0);
+        high += usize::from(depth < -2.0);
+        high_foamed += usize::from(whiter && depth < -2.0);
     }
     println!(
-        "the swash: {:.1} % of the sand up to 1.5 m foamed, {high_foamed} of {high} pixels of land above 4 m",
+        "the swash: {:.1} % of the sand up to 1.5 m foamed, {high_foamed} of {high} pixels of land above 2 m",
         share(swash_foamed, swash)
     );
     println!(
@@ -223,44 +225,43 @@ fn a_click_in_the_shallows_lights_the_sand_under_it_with_the_ripples_caustics() 
 }
 
 #[test]
-fn the_beach_close_up_shows_grain_finer_than_its_map_without_sparkle() {
-    // Looking down 40° from 12 m at the beach 6 m up from the waterline (the island's map has
-    // a texel every 2.5 m: alone it gives the sand a smooth shade there).
+fn the_beach_close_up_shows_detail_finer_than_its_map() {
+    // Looking down 40° from 12 m at the land 6 m in from the coast, about 1 m above the sea
+    // (the island's map has a texel every 2.5 m: shaded from it alone the land is smooth there).
     let coast = out_from_the_island(|p| island::height(p, island::Place::Offshore) < 0.0);
     let beach = coast + (Vec2::from(island::CENTRE) - coast).normalize() * 6.0;
     let mut d = sea_over(beach, (40.0, 12.0), false, |_| {});
     let frame = render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0);
-    // The land's pixels: where the eye's ray has gone under the ground before the sea plane.
-    let land =
-        |x: u32, y: u32| rest_point(&d, SIZE, x, y).is_some_and(|p| island::height(p, island::Place::Offshore) > 0.3);
+    const LAND_ABOVE: f32 = 1.5;
+    // Measured (2026-11-30): shaded from the map alone the rms below is 0.19; with the detail
+    // (land.wgsl's land_detail) 1.83.
+    const GRAIN_AT_LEAST: f64 = 0.8;
+    // The land's pixels: where the eye's ray has gone under the ground before the sea plane,
+    // with the ground there above the highest crests (1.2 m), so that no wave is among them.
+    let land: Vec<bool> = (0..SIZE.0 * SIZE.1)
+        .map(|i| {
+            let p = rest_point(&d, SIZE, i % SIZE.0, i / SIZE.0);
+            p.is_some_and(|p| island::height(p, island::Place::Offshore) > LAND_ABOVE)
+        })
+        .collect();
     // Over land pixels whose 11x11 neighbourhood is land: luma less its neighbourhood's mean
-    // (the detail finer than 11 pixels, about a quarter of a metre here; a slope's even shade
-    // cancels in the mean), and the sparkle share.
+    // (the detail finer than 11 pixels, half a metre or so here; a slope's even shade cancels
+    // in the mean).
     const R: u32 = 5;
     let side = 2 * R + 1;
-    let (mut residuals, mut sparkles) = (Vec::new(), 0usize);
+    let mut residuals = Vec::new();
     for y in R..SIZE.1 - R {
         for x in R..SIZE.0 - R {
-            let around: Vec<(u32, u32)> = (0..side * side).map(|i| (x + i % side - R, y + i / side - R)).collect();
-            if !around.iter().all(|&(u, v)| land(u, v)) {
+            let around = (0..side * side).map(|i| (x + i % side - R, y + i / side - R));
+            if !around.clone().all(|(u, v)| land[(v * SIZE.0 + u) as usize]) {
                 continue;
             }
-            let mean = around.iter().map(|&(u, v)| frame.luma(u, v)).sum::<f64>() / (side * side) as f64;
+            let mean = around.map(|(u, v)| frame.luma(u, v)).sum::<f64>() / (side * side) as f64;
             residuals.push(frame.luma(x, y) - mean);
-            let mut near: Vec<f64> = (0..9).map(|i| frame.luma(x + i % 3 - 1, y + i / 3 - 1)).collect();
-            near.sort_by(f64::total_cmp);
-            sparkles += usize::from((frame.luma(x, y) - near[4]).abs() > picture::SPARKLE_THRESHOLD);
         }
     }
-    let n = residuals.len().max(1) as f64;
-    let grain = (residuals.iter().map(|r| r * r).sum::<f64>() / n).sqrt();
-    let sparkle = 100.0 * sparkles as f64 / n;
-    println!(
-        "{} land pixels: luma off its 11x11 mean, rms {grain:.2} (of 255); sparkle {sparkle:.3} %",
-        residuals.len()
-    );
-    assert!(residuals.len() > 5000, "the beach is not in view");
-    // Shaded from the map alone (no detail) the rms was 1.15; with it 2.14 (2026-11-30).
-    assert!(grain > 1.6, "the beach is as smooth as its map");
-    assert!(sparkle < 0.1, "the beach's grain sparkles");
+    let grain = (residuals.iter().map(|r| r * r).sum::<f64>() / residuals.len().max(1) as f64).sqrt();
+    println!("{} land pixels: luma off its 11x11 mean, rms {grain:.2} (of 255)", residuals.len());
+    assert!(residuals.len() > 5000, "the land is not in view");
+    assert!(grain > GRAIN_AT_LEAST, "the land is as smooth as its map");
 }

@@ -1,6 +1,6 @@
 //! Figures of a picture for issue 27 (our picture against Evan Wallace's classic WebGL Water):
 //! pure functions on an RGBA8 image and a rectangle of it, no browser and no GPU. Used by the
-//! look benchmark (benches/look.rs); tested in tests/picture_stats.rs (`cargo test --test
+//! look benchmark (benches/look.rs) and the aliasing one (benches/aliasing.rs); tested in tests/picture_stats.rs (`cargo test --test
 //! picture_stats`), not here: the benchmark compiles this file with `cfg(test)` but without
 //! its test functions, so a test module here would warn there.
 //!

@@ -33,6 +33,7 @@ const MAX_GRID_MARGIN: f32 = 1.5;
 
 const WGSL: &str = crate::wgsl!("sea/sea.wgsl");
 const ISLAND_WGSL: &str = crate::wgsl!("sea/island.wgsl");
+const LAND_WGSL: &str = crate::wgsl!("sea/land.wgsl");
 const FOAM_WGSL: &str = crate::wgsl!("sea/foam.wgsl");
 const WAVES_WGSL: &str = crate::wgsl!("sea/waves.wgsl");
 
@@ -148,7 +149,8 @@ impl SeaRenderer {
         let [water_layout, textures_layout] = renderer.scene_layouts();
         let layouts = [water_layout, textures_layout, &layout, &frame_layout];
         let module = |island, bodies| {
-            let parts = [gpu::wgsl::FULLSCREEN, &prelude(island, bodies), WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
+            let parts =
+                [gpu::wgsl::FULLSCREEN, &prelude(island, bodies), WAVES_WGSL, WGSL, ISLAND_WGSL, LAND_WGSL, FOAM_WGSL];
             gpu::shader(device, "sea", &parts)
         };
         let (with_frame, without_frame) = (&layouts[..], &layouts[..3]);
@@ -177,7 +179,7 @@ impl SeaRenderer {
             let near = if variant.island.is_some() { near_bodies(true) } else { away.clone() };
             [away, near]
         });
-        let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, FOAM_WGSL];
+        let parts = [&prelude(false, false) as &str, WAVES_WGSL, WGSL, ISLAND_WGSL, LAND_WGSL, FOAM_WGSL];
         let whitecaps = variant.whitecap_map.then(|| WhitecapMaps::new(device, &parts, &layouts));
         let sky = FullscreenTarget { format, blend: None, depth: Some(DEPTH_FORMAT) };
         let sky = FullscreenPass::new(device, "sea sky", &parts, "fs_sea_sky", &layouts, sky);
