@@ -122,6 +122,9 @@ fn vs_island_mirrored(@builtin(vertex_index) index: u32) -> IslandOut {
     return out;
 }
 
+// The finest of the land's detail (m of footprint, land_detail) the mirror pass draws.
+const MIRROR_DETAIL: f32 = 2.0;
+
 // Only what stands above the water is mirrored; its light comes the whole way from the land
 // through the haze (the eye's way to the land's mirror image).
 @fragment
@@ -132,7 +135,8 @@ fn fs_island_mirrored(in: IslandOut) -> @location(0) vec4<f32> {
     }
     let to_image = in.world * vec3<f32>(1.0, -1.0, 1.0) - sea.eye.xyz;
     let dist = length(to_image);
-    let colour = through_haze(land_colour(in.world, footprint), to_image / dist, dist);
+    // The mirror is read blurred, at half size: its land's detail no finer than MIRROR_DETAIL.
+    let colour = through_haze(land_colour(in.world, max(footprint, MIRROR_DETAIL)), to_image / dist, dist);
     return vec4<f32>(sqrt(colour / MIRROR_RANGE), 1.0);
 }
 

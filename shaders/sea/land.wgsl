@@ -13,7 +13,10 @@ const ROCK: vec3<f32> = vec3<f32>(0.30, 0.28, 0.25);
 // size of the one before (the last 6 cm).
 const LAND_DETAIL_SIZE: f32 = 16.0;
 const LAND_DETAIL_OCTAVES: i32 = 9;
-// The grass's dry patches: a second noise, its seeds clear of the first's (0 to OCTAVES - 1).
+// The grass's dry patches: one octave of noise this size (m), its seed clear of land_detail's
+// (0 to OCTAVES - 1). (A second land_detail cost SwiftShader's WebGPU a fifth of the shore's
+// frame: it runs a loop's whole body for every pixel.)
+const GRASS_PATCH_SIZE: f32 = 6.0;
 const GRASS_PATCH_SEED: f32 = 20.0;
 
 // Value noise over the ground at p (x, z; m) in octaves from LAND_DETAIL_SIZE down, each
@@ -48,7 +51,7 @@ fn land_albedo(p: vec3<f32>, rise: f32, footprint: f32) -> vec3<f32> {
     let d = land_detail(p.xz, footprint, 0.0);
     let h = p.y + 0.8 * d;
     let sand = mix(WET_SAND, SAND, smoothstep(0.0, 0.6, h)) * (1.0 + 0.35 * d);
-    let dry = smoothstep(-0.2, 0.4, land_detail(p.xz, footprint, GRASS_PATCH_SEED));
+    let dry = smoothstep(0.4, 0.7, value_noise_2d(p.xz / GRASS_PATCH_SIZE, GRASS_PATCH_SEED));
     let grass = mix(GRASS, DRY_GRASS, dry) * (1.0 + 0.5 * d);
     let land = mix(sand, grass, smoothstep(BEACH_TOP - 0.5, BEACH_TOP + 0.5, h));
     let rock = ROCK * (1.0 + 0.6 * d);
