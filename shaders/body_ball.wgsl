@@ -23,15 +23,41 @@ fn ball_turn() -> mat3x3<f32> {
     return mat3x3<f32>(scene.bodies[BALL_SLOT + 1].xyz, scene.bodies[BALL_SLOT + 2].xyz, scene.bodies[BALL_SLOT + 3].xyz);
 }
 
-// The plastic's colour at outward normal n (world): its gore around the ball's own axis, or
-// the white cap near a pole.
-fn ball_albedo(n: vec3<f32>) -> vec3<f32> {
+// Where outward normal n (world) points on the ball: x how far round its own axis, in gores
+// (0..6, 0 the seam between the last gore and the first), y up that axis (-1..1; the white
+// caps beyond ±BALL_CAP_EDGE).
+const BALL_CAP_EDGE: f32 = 0.9;
+
+fn ball_place(n: vec3<f32>) -> vec2<f32> {
     let local = transpose(ball_turn()) * n;
-    if (abs(local.y) > 0.9) {
+    return vec2<f32>((atan2(local.z, local.x) / (2.0 * PI) + 0.5) * 6.0, local.y);
+}
+
+// The plastic's colour at outward normal n: its gore, or the white cap near a pole.
+fn ball_albedo(n: vec3<f32>) -> vec3<f32> {
+    let at = ball_place(n);
+    if (abs(at.y) > BALL_CAP_EDGE) {
         return BALL_CAP;
     }
-    let gore = i32(floor((atan2(local.z, local.x) / (2.0 * PI) + 0.5) * 6.0)) % 6;
-    return BALL_GORES[gore];
+    return BALL_GORES[i32(floor(at.x)) % 6];
+}
+
+// The plastic's colour over the pixel drawing normal n: each seam between two gores, and the
+// caps' edge, blended by the share of the pixel on either side (a ramp one pixel's change
+// wide), so that the seams show no stair-steps, as the outline shows none. The pixel's width
+// round the axis is read from two places of the seam at 0 (= 6), one of them always free of
+// the jump there. Call in uniform control flow (it takes screen derivatives); scene.output.z
+// 0 draws each pixel in one colour (the outlines off, for tests to compare with).
+fn ball_albedo_in_pixel(n: vec3<f32>) -> vec3<f32> {
+    let at = ball_place(n);
+    let turned = fract(at.x / 6.0 + 0.5) * 6.0;
+    let width = max(min(fwidth(at.x), fwidth(turned)), 1.0e-4);
+    let seam = round(at.x);
+    let k = i32(seam) + 6;
+    let past = clamp(0.5 + (at.x - seam) / width, 0.0, 1.0);
+    let gore = mix(BALL_GORES[(k - 1) % 6], BALL_GORES[k % 6], past);
+    let cap = clamp(0.5 + (abs(at.y) - BALL_CAP_EDGE) / max(fwidth(at.y), 1.0e-4), 0.0, 1.0);
+    return select(ball_albedo(n), mix(gore, BALL_CAP, cap), scene.output.z > 0.0);
 }
 
 fn ball_hit(origin: vec3<f32>, dir: vec3<f32>) -> ObjectHit {
@@ -47,9 +73,16 @@ fn ball_field(p: vec3<f32>) -> f32 {
     return distance(p, u.xyz) - u.w;
 }
 
+// Light the ball lets through along a segment: each of its two walls of thin vinyl passes
+// BALL_WALL_TRANSMITTANCE of the sun's light, diffused, so that its shadow is lighter than an
+// opaque body's. A floating ball's shadow is traced in two segments, above the water and under
+// it (caustics.wgsl), each through one wall: together about 0.3, as a white film of PVC a
+// tenth of a millimetre thick passes twice.
+const BALL_WALL_TRANSMITTANCE: f32 = 0.55;
+
 fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let u = ball_uniform();
-    return sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w);
+    return mix(BALL_WALL_TRANSMITTANCE, 1.0, sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w));
 }
 
 // Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within
@@ -85,7 +118,7 @@ fn vs_ball(@location(0) unit: vec3<f32>) -> BallOut {
 fn fs_ball(in: BallOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world - ball_uniform().xyz);
     let view = normalize(in.world - scene.eye.xyz);
-    return seen_directly(ball_shade(in.world, n, ball_albedo(n), view, lit_under(in.world), true), in.world);
+    return seen_directly(ball_shade(in.world, n, ball_albedo_in_pixel(n), view, lit_under(in.world), true), in.world);
 }
 
 // The ball's outline, blended over what lies behind (ball_edge).
@@ -100,11 +133,12 @@ fn vs_ball_edge(@location(0) unit: vec3<f32>) -> BallOut {
 @fragment
 fn fs_ball_edge(in: BallOut) -> @location(0) vec4<f32> {
     let edge = ball_edge(in.world, ball_uniform());
+    let n = normalize(edge.point - ball_uniform().xyz);
+    let albedo = ball_albedo_in_pixel(n);
     if (edge.hidden) {
         return vec4<f32>(0.0); // not discarded: see grown_rim
     }
     let p = edge.point;
-    let n = normalize(p - ball_uniform().xyz);
-    let out = seen_directly(ball_shade(p, n, ball_albedo(n), normalize(p - scene.eye.xyz), lit_under(p), true), p);
+    let out = seen_directly(ball_shade(p, n, albedo, normalize(p - scene.eye.xyz), lit_under(p), true), p);
     return vec4<f32>(out.rgb, edge.cover);
 }

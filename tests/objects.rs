@@ -349,7 +349,7 @@ fn a_floating_spheres_side_facing_the_water_is_lit_by_the_water_not_the_sky() {
 
 /// The third kind of body, added as one entry of the table of kinds: dropped in, the beach
 /// ball pushes the water, comes to rest high at its own waterline, and is drawn in its red and
-/// orange gores with a shadow on the floor.
+/// orange gores, their seams blended, with a shadow on the floor that its thin vinyl lightens.
 #[test]
 fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() {
     let ball = BodyId::named("ball").expect("the ball is a kind of body");
@@ -377,10 +377,15 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     assert!(y > 0.4 * radius, "a beach ball floats high, its centre {y} m above the water");
 
     let (w, h) = (320u32, 240u32);
-    let shot =
-        |objects: f32| top_view(objects, w, h, |demo| demo.set_body_pose(ball, Pose::at(Vec3::new(0.2, y, 0.0))));
-    let (demo, with) = shot(BALL);
-    let (_, without) = shot(NONE);
+    let shot = |objects: f32, blends: bool| {
+        top_view(objects, w, h, |demo| {
+            demo.set_body_pose(ball, Pose::at(Vec3::new(0.2, y, 0.0)));
+            demo.set_body_outlines(blends);
+        })
+    };
+    let (demo, with) = shot(BALL, true);
+    let (_, without) = shot(NONE, true);
+    let (_, stepped) = shot(BALL, false);
     let size = Vec2::new(w as f32, h as f32);
     let ball_px = demo.camera().project(demo.body(ball).pose.position, size).unwrap();
     let gores = |frame: &common::Image| {
@@ -400,9 +405,24 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     let rect = common::Area::around(shadow_px.x, shadow_px.y, &with, 0.015);
     let (shadow, lit) = (with.luma_stats(rect).0, without.luma_stats(rect).0);
     let (seen, unseen) = (gores(&with), gores(&without));
-    println!("ball at pixel {ball_px}: {seen} red or orange pixels (none: {unseen}); floor luma {shadow:.3} with it, {lit:.3} without");
+    // The seams between its gores, blended by the share of each pixel on either side: pixels
+    // well inside its outline that the blend changes, each to a luma between its neighbours'.
+    let edge = demo.camera().project(demo.body(ball).pose.position + Vec3::X * radius, size).unwrap();
+    let inner = 0.85 * ball_px.distance(edge);
+    let blended = with.blended_against(&stepped);
+    let on_seams: Vec<_> =
+        blended.iter().filter(|b| Vec2::new(b.x as f32 + 0.5, b.y as f32 + 0.5).distance(ball_px) < inner).collect();
+    let between = on_seams.iter().filter(|b| b.between).count();
+    println!(
+        "ball at pixel {ball_px}: {seen} red or orange pixels (none: {unseen}); floor luma {shadow:.3} with it, {lit:.3} \
+         without; {} pixels of its seams blended, {between} of them between their neighbours",
+        on_seams.len()
+    );
     assert!(seen > 60 && unseen == 0, "ball not seen: {seen} / {unseen}");
     assert!(shadow < 0.8 * lit, "no shadow on the floor: {shadow} vs {lit}");
+    assert!(shadow > 0.45 * lit, "the ball's thin vinyl lets no light through: {shadow} vs {lit}");
+    assert!(on_seams.len() >= 40, "the seams between the gores are not blended: {} pixels", on_seams.len());
+    assert!(between * 20 >= on_seams.len() * 19, "the seams' blend is not between their two colours");
 }
 
 #[test]
