@@ -27,6 +27,11 @@ pub const EYE_CLEARANCE: f32 = 0.15;
 /// looking straight up, and through this much looking down, blended between.
 const BACKDROP_PATH_UP: f32 = 3.0;
 const BACKDROP_PATH_DOWN: f32 = 12.0;
+/// The sun's light the open water scatters towards the eye, at the peak of its forward lobe (a
+/// Henyey–Greenstein phase function with asymmetry `BACKDROP_GLOW_G`, its 1/4π included): the
+/// water glows towards the refracted sun and darkens away from it, as open water does.
+const BACKDROP_GLOW: f32 = 0.2;
+const BACKDROP_GLOW_G: f32 = 0.8;
 /// Seen from under it, the water's surface fades into that open water over this much (m) before
 /// a side the cut-away leaves open: the water goes on there, and the surface's edge, its
 /// vertices riding the waves, does not stand out as a ragged line.
@@ -44,7 +49,8 @@ pub fn wgsl_constants() -> String {
         "const COPING_WIDTH: f32 = {COPING_WIDTH:?};\nconst SLAB_SIZE: f32 = {SLAB_SIZE:?};\n\
          const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\nconst HORIZON_TERMS: u32 = {HORIZON_TERMS};\n\
          const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\nconst BACKDROP_PATH_UP: f32 = {BACKDROP_PATH_UP:?};\n\
-         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\nconst CUT_EDGE_FADE: f32 = {CUT_EDGE_FADE:?};\n"
+         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\nconst CUT_EDGE_FADE: f32 = {CUT_EDGE_FADE:?};\n\
+         const BACKDROP_GLOW: f32 = {BACKDROP_GLOW:?};\nconst BACKDROP_GLOW_G: f32 = {BACKDROP_GLOW_G:?};\n"
     )
 }
 
