@@ -355,8 +355,8 @@ async fn the_single_file_opens_from_disk_and_in_a_sandboxed_frame_without_networ
 
 /// Presets, share links and the embed page: `preset=calm` gives the preset's values and view
 /// and the page's own options override it; the Preset select starts over from another; a share
-/// link made after changes restores the parameters and the camera in a new load, and a preset
-/// with its scene named too gives its view; the embed
+/// link made after changes restores the parameters and the camera in a new load, a preset
+/// with its scene named too gives its view, and a pool's preset in the sea the sea's; the embed
 /// code's page (`embed.html`) fills its frame and posts `wavepool:ready` and its height.
 #[tokio::test]
 async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
@@ -426,6 +426,15 @@ async fn presets_share_links_and_the_embed_page_restore_what_they_hold() {
     let storm = browser.js("return window.demo.camera().map((v) => Math.round(v * 10) / 10);").await;
     println!("scene=sea&preset=storm: camera {storm}");
     assert_eq!(storm, json!([-30, 12, 80]), "the storm's view with the scene named too");
+    // A pool's preset in the sea: its values, but the sea's own view (the preset's is the pool's).
+    browser.goto(&server.url("/?scene=sea&preset=calm&quality=0.5")).await;
+    browser.wait_ready("#pool", READY).await;
+    let calm_sea = browser.js(state).await;
+    println!("scene=sea&preset=calm: {calm_sea}");
+    let camera: Vec<f64> = calm_sea["camera"].as_array().expect("a camera").iter().filter_map(Value::as_f64).collect();
+    let view = wavepool::sea::DEFAULT_VIEW.map(|v| (v as f64 * 10.0).round() / 10.0);
+    assert_eq!(camera, view, "the sea's own view under a pool's preset");
+    assert_eq!(calm_sea["damping"].as_f64(), Some(2.0), "the preset's values in the sea");
     browser.close().await;
 }
 
