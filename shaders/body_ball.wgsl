@@ -77,7 +77,8 @@ fn ball_field(p: vec3<f32>) -> f32 {
 // BALL_WALL_TRANSMITTANCE of the sun's light, diffused, so that its shadow is lighter than an
 // opaque body's. A floating ball's shadow is traced in two segments, above the water and under
 // it (caustics.wgsl), each through one wall: together about 0.3, as a white film of PVC a
-// tenth of a millimetre thick passes twice.
+// tenth of a millimetre thick passes twice (the caustics' contrast power then deepens it as it
+// deepens every shadow in the map).
 const BALL_WALL_TRANSMITTANCE: f32 = 0.55;
 
 fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
