@@ -397,3 +397,53 @@ fn the_seas_duck_is_blended_on_its_outline_waterline_and_mirror_image() {
     assert!(on_image >= 230, "only {on_image} pixels of the mirror image's edge were blended");
     assert!(astray * 10 <= blended.len(), "{astray} of {} blended pixels are astray", blended.len());
 }
+
+/// A sphere floats low (most of it under the water), and the sea's water shows that part through
+/// its surface (its refracted rays traced to it, `hit_bodies_below`), not only its cap above the
+/// water on dark water: just under its waterline, in the middle of its outline, the water is
+/// lighter than the same water with no sphere in the sea.
+#[test]
+fn the_seas_water_shows_a_floating_spheres_part_under_it() {
+    let sphere = BodyId::named("sphere").expect("the sphere");
+    let (w, h) = (320u32, 240u32);
+    let size = glam::Vec2::new(w as f32, h as f32);
+    // Heavy enough to float nine tenths under, seen from 35° up: a small cap over a wide body.
+    let look = |objects: u32| {
+        let mut d = sea_with(objects, 30.0);
+        d.params.set(ParamId::SphereDensity, 900.0);
+        d.camera_mut().pitch = 35.0;
+        d
+    };
+    let mut with = look(sphere.bit());
+    let seen = render(&mut with, w, h, 30, 1.0 / 60.0);
+    let centre = with.sea_body(sphere).expect("the sea's bodies").pose.position;
+    let radius = with.params.get(ParamId::SphereRadius) * patch_scale();
+    // The waterline's point nearest the eye, and the outline's lowest point, on the screen.
+    let towards_eye = ((with.camera().eye() - centre) * Vec3::new(1.0, 0.0, 1.0)).normalize();
+    let waterline = (radius * radius - centre.y * centre.y).max(0.0).sqrt();
+    let front = Vec3::new(centre.x, 0.0, centre.z) + towards_eye * waterline;
+    let up = with.camera().view().inverse().col(1).truncate();
+    let project = |p: Vec3| with.camera().project(p, size).expect("the sphere is in the frame");
+    let (front, bottom, middle) = (project(front), project(centre - up * radius), project(centre));
+    let half = 0.4 * (bottom.y - middle.y);
+    let band = Area(
+        (middle.x - half) / size.x,
+        (front.y + 2.0) / size.y,
+        (middle.x + half) / size.x,
+        (front.y + 0.5 * (bottom.y - front.y)) / size.y,
+    );
+    let mut without = look(0);
+    let water = render(&mut without, w, h, 30, 1.0 / 60.0);
+    seen.dump("sea-sphere-below");
+    let (lit, dark) = (seen.luma_stats(band).0, water.luma_stats(band).0);
+    println!(
+        "sphere {:.2} m under its centre's level: under its waterline (rows {:.0}-{:.0}, columns {:.0}-{:.0}) luma {lit:.3}, the water without it {dark:.3}",
+        -centre.y,
+        front.y,
+        bottom.y,
+        middle.x - half,
+        middle.x + half
+    );
+    assert!(centre.y < 0.0, "the sphere floats high: its centre {:.2} m above the water", centre.y);
+    assert!(lit > dark + 0.1, "the sphere's part under the water is not seen: luma {lit:.3} against {dark:.3}");
+}

@@ -3,19 +3,34 @@
 // lit by the sun and by the sky above it, and from below by the little light the deep water
 // sends back up; it is seen through the haze like the sea around it. Its part under the water
 // is hidden by the sea's surface, drawn after it, so it is always lit as above the water. The
-// water mirrors the bodies (MIRRORED_BODIES): its reflected rays are traced to them; where the
-// shallows reach the patch (ISLAND_AT_PATCH) they shade the floor.
+// water mirrors the bodies and shows their parts under it (MIRRORED_BODIES): its reflected and
+// refracted rays are traced to them; where the shallows reach the patch (ISLAND_AT_PATCH) they
+// shade the floor.
 
 fn lit_under(p: vec3<f32>) -> bool {
     return false;
 }
 
 // Lit colour at p (outward normal n): the sky's light on the upper hemisphere of the normal,
-// the deep water's on the lower, and the sun's on the side facing it (under, drawn: lit alike).
+// the deep water's on the lower, and the sun's on the side facing it (drawn: lit alike). Under
+// the water (a part the water's refracted rays meet: refracted_bodies) the sky's light comes
+// straight through the surface only to the normals facing up (Snell's window, about up²); round
+// them it is the light the water scatters sideways, which has crossed about UNDERWATER_SIDE_PATH
+// (m) of it; and the sun's is bent into the water.
+const UNDERWATER_SIDE_PATH: f32 = 3.0;
+
 fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, drawn: bool) -> vec3<f32> {
     let up = upward_share(n);
-    let ambient = sky_light() * up + light_from_water() * (1.0 - up);
-    return albedo * (ambient + max(dot(n, scene.sun.xyz), 0.0) * sun_light());
+    var sun = scene.sun.xyz;
+    var ambient = sky_light() * up + light_from_water() * (1.0 - up);
+    if (under) {
+        sun = -refract(-scene.sun.xyz, vec3<f32>(0.0, 1.0, 0.0), IOR_AIR / IOR_WATER);
+        let window = up * up;
+        let through = sky_light() * UNDERWATER_SKY;
+        let sideways = through * exp(-SEA_ABSORPTION * UNDERWATER_SIDE_PATH);
+        ambient = through * window + sideways * (up - window) + light_from_water() * (1.0 - up);
+    }
+    return albedo * (ambient + max(dot(n, sun), 0.0) * sun_light());
 }
 
 // The light coming up out of the sea (its deep water's), lighting a body from below.
@@ -77,6 +92,29 @@ fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
     let seen = body_colour(hit, origin + dir * hit.t, dir, false);
     let alpha = share + behind.a * (1.0 - share);
     return vec4<f32>((seen * share + behind.rgb * behind.a * (1.0 - share)) / alpha, alpha);
+}
+
+// What the water at p, seen along unit v through normal n, shows of the bodies' parts under
+// it (of the kinds floating low: hit_bodies_below): the refracted ray traced to them, the part
+// it meets lit under the water and dimmed along the light's way down to it and the view's way
+// back (as seen_through_water dims the shallows' floor), over `under` (the light out of the
+// water there) by the share of the pixel it covers, its gap blended as mirrored_bodies blends
+// (scene.output.z 0: all or nothing). Call in uniform control flow (screen derivatives).
+fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>) -> vec3<f32> {
+    let down = refract(v, n, IOR_AIR / IOR_WATER);
+    let hit = hit_bodies_below(p, down);
+    let fall = vec2<f32>(dpdx(hit.gap), dpdy(hit.gap));
+    var share = clamp(0.5 - hit.gap / max(abs(fall.x) + abs(fall.y), 1.0e-6), 0.0, 1.0);
+    if (scene.output.z <= 0.0) {
+        share = 1.0;
+    }
+    if (hit.t >= NO_HIT) {
+        return under;
+    }
+    let point = p + down * hit.t;
+    let path = hit.t + max(p.y - point.y, 0.0) / max(scene.sun.y, 0.2);
+    let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * path);
+    return mix(under, body_colour(hit, point, down, true), through * share);
 }
 
 // The share of the sun's light on the floor `depth` m under the surface point p (seen along

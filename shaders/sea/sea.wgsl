@@ -210,6 +210,9 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         let ripple = finest.x / sqrt(max(sea.cascades[CASCADES - 1].w, 1.0e-8));
         foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), ripple) * sea.foam.y);
     }
+    if MIRRORED_BODIES && HAS_BODIES_BELOW {
+        under = refracted_bodies(in.world, v, n, under);
+    }
     let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_foam(n), foam);
     var seen = through_haze(colour, v, dist);
     if GRID_LINES {

@@ -59,6 +59,7 @@ pub const KIND: BodyKind = BodyKind {
     wgsl: crate::wgsl!("body_ball.wgsl"),
     wgsl_constants: String::new,
     edge: true,
+    seen_below: false,
 };
 
 /// The ball's size and density. (The parameter table, `params::table`, lists them in this order.)

@@ -48,6 +48,7 @@ pub const KIND: BodyKind = BodyKind {
     wgsl: concat!(crate::wgsl!("body_duck.wgsl"), crate::wgsl!("body_duck_edge.wgsl")),
     wgsl_constants: parts_wgsl,
     edge: true,
+    seen_below: false,
 };
 
 /// `duck_parts_light`: the light through every traced part, their product written out with no

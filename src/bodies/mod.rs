@@ -67,6 +67,10 @@ pub struct BodyKind {
     /// Whether its WGSL has `vs_<name>_edge` and `fs_<name>_edge`: its outline drawn again
     /// after everything else, blended by the share of each pixel it covers (anti-aliasing).
     pub edge: bool,
+    /// Whether its part under the water reaches out past its part above (it floats low): the
+    /// open sea's water shows that part through its surface (`hit_bodies_below`). A body
+    /// floating high hides it under itself, and tracing it would cost without showing.
+    pub seen_below: bool,
 }
 
 /// A body as the renderer draws it: where (its pose; the sphere's kept inside the pool), its
@@ -290,12 +294,24 @@ pub fn wgsl(present: u32) -> String {
         KINDS.iter().map(|k| line(k.name, &k.name.to_uppercase())).collect()
     };
     out += "\nstruct BodyHit {\n    t: f32,\n    kind: i32,\n    normal: vec3<f32>,\n    albedo: vec3<f32>,\n    gap: f32,\n};\n";
+    // The nearest hit of every kind present, and of those of them seen below the water.
     out += &format!(
-        "fn hit_bodies(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), NO_HIT);\n{}    return best;\n}}\n",
-        each(&|name, upper| format!(
-            "    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        let gap = min(best.gap, h.gap);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo, 0.0);\n        }}\n        best.gap = gap;\n    }}\n"
-        ))
+        "const HAS_BODIES_BELOW: bool = {};\n",
+        KINDS.iter().enumerate().any(|(i, k)| k.seen_below && present & (1 << i) != 0)
     );
+    for (function, only_below) in [("hit_bodies", false), ("hit_bodies_below", true)] {
+        let kinds: String = KINDS
+            .iter()
+            .filter(|k| k.seen_below || !only_below)
+            .map(|k| {
+                let (name, upper) = (k.name, k.name.to_uppercase());
+                format!("    if (HAS_{upper}) {{\n        let h = {name}_hit(origin, dir);\n        let gap = min(best.gap, h.gap);\n        if (h.t < best.t) {{\n            best = BodyHit(h.t, {upper}_KIND, h.normal, h.albedo, 0.0);\n        }}\n        best.gap = gap;\n    }}\n")
+            })
+            .collect();
+        out += &format!(
+            "fn {function}(origin: vec3<f32>, dir: vec3<f32>) -> BodyHit {{\n    var best = BodyHit(NO_HIT, -1, vec3<f32>(0.0, 1.0, 0.0), vec3<f32>(0.0), NO_HIT);\n{kinds}    return best;\n}}\n"
+        );
+    }
     out += &format!(
         "fn body_colour(hit: BodyHit, p: vec3<f32>, dir: vec3<f32>, under: bool) -> vec3<f32> {{\n{}    return vec3<f32>(0.0);\n}}\n",
         each(&|name, upper| format!(

@@ -54,6 +54,7 @@ pub const KIND: BodyKind = BodyKind {
     wgsl: crate::wgsl!("body_sphere.wgsl"),
     wgsl_constants: String::new,
     edge: true,
+    seen_below: true,
 };
 
 /// A ball of `radius` as drawn for a body at `pose`: kept inside the classic pool's box, where
