@@ -87,22 +87,16 @@ fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 
 }
 
 // Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within
-// BALL_WET_BAND above the rest level (under, direct: see coated_colour); and lit from inside:
-// the sun's light through the wall facing it fills the ball, bounces round its inside and
-// leaves through the wall seen (BALL_WALL_TRANSMITTANCE each time), tinted by it, so its
-// shadowed side glows as a beach ball's does against the sun. Of the sun's light on the ball's
-// cross-section (πr²), spread over its inside (4πr²) and raised by the bounces off its walls
-// (their reflectance about 0.6: 1 / (1 - 0.6)), BALL_CAVITY_GAIN reaches each point of a wall.
+// BALL_WET_BAND above the rest level (under, direct: see coated_colour), and lit from inside
+// through its walls (light_from_inside).
 const BALL_GLOSS: f32 = 80.0;
 const BALL_SHINE: f32 = 15.0;
 const BALL_WET_ALBEDO: f32 = 0.75;
 const BALL_WET_BAND: f32 = 0.03;
-const BALL_CAVITY_GAIN: f32 = 0.6;
 
 fn ball_shade(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, under: bool, direct: bool) -> vec3<f32> {
-    let coated = coated_colour(p, n, albedo, dir, under, direct, Coat(BALL_WET_BAND, BALL_WET_ALBEDO, BALL_GLOSS, BALL_SHINE));
-    let through = BALL_WALL_TRANSMITTANCE * BALL_WALL_TRANSMITTANCE * BALL_CAVITY_GAIN;
-    return coated + albedo * sun_light() * through;
+    let coat = Coat(BALL_WET_BAND, BALL_WET_ALBEDO, BALL_GLOSS, BALL_SHINE);
+    return coated_colour(p, n, albedo, dir, under, direct, coat) + light_from_inside(albedo, BALL_WALL_TRANSMITTANCE);
 }
 
 // The ambient light the ball takes from a point with normal n (sphere_occlusion_of).

@@ -60,6 +60,18 @@ fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, 
     return colour + select(clear_coat(n, dir, wet, coat.gloss, coat.shine), vec3<f32>(0.0), under);
 }
 
+// The light a hollow body of thin plastic gives out from inside at a point of albedo `albedo`:
+// the sun's light through the wall facing it (`wall`: the share one wall passes) fills it,
+// bounces round its inside and leaves through the wall there, tinted by it, so its shadowed
+// side glows as a beach ball's does against the sun. Of the sun's light on the body's
+// cross-section (πr² for a ball), spread over its inside (4πr²) and raised by the bounces off
+// its walls (their reflectance about 0.6: 1 / (1 - 0.6)), HOLLOW_GAIN reaches each point.
+const HOLLOW_GAIN: f32 = 0.6;
+
+fn light_from_inside(albedo: vec3<f32>, wall: f32) -> vec3<f32> {
+    return albedo * sun_light() * (wall * wall * HOLLOW_GAIN);
+}
+
 // A ball's silhouette without stair-steps: its mesh grown by BALL_EDGE_GROWTH is drawn again
 // after everything else, each pixel blended by the share of it the ball covers (a ramp one
 // pixel footprint wide, centred on the outline), as the deck's edge is. The pixel's ray passes
