@@ -51,7 +51,8 @@ fn ball_albedo(n: vec3<f32>) -> vec3<f32> {
 fn ball_albedo_in_pixel(n: vec3<f32>) -> vec3<f32> {
     let at = ball_place(n);
     let turned = fract(at.x / 6.0 + 0.5) * 6.0;
-    let width = max(min(fwidth(at.x), fwidth(turned)), 1.0e-4);
+    // At most a gore wide: wider, the ramps of two seams would meet at the gore's middle.
+    let width = clamp(min(fwidth(at.x), fwidth(turned)), 1.0e-4, 1.0);
     let seam = round(at.x);
     let k = i32(seam) + 6;
     let past = clamp(0.5 + (at.x - seam) / width, 0.0, 1.0);
@@ -73,17 +74,20 @@ fn ball_field(p: vec3<f32>) -> f32 {
     return distance(p, u.xyz) - u.w;
 }
 
-// Light the ball lets through along a segment: each of its two walls of thin vinyl passes
-// BALL_WALL_TRANSMITTANCE of the sun's light, diffused, so that its shadow is lighter than an
-// opaque body's. A floating ball's shadow is traced in two segments, above the water and under
-// it (caustics.wgsl), each through one wall: together about 0.3, as a white film of PVC a
-// tenth of a millimetre thick passes twice (the caustics' contrast power then deepens it as it
+// Light the ball lets through along a segment: each wall of thin vinyl it crosses passes
+// BALL_WALL_TRANSMITTANCE of the sun's light, diffused (a white film of PVC a tenth of a
+// millimetre thick), so that its shadow is lighter than an opaque body's. A segment starting or
+// ending inside the ball crosses one wall, any other that passes through it two: the floating
+// ball's shadow traced from the water's surface down and up (caustics.wgsl) crosses its bottom
+// and its top, about 0.3 in all (which the caustics' contrast power then deepens, as it
 // deepens every shadow in the map).
 const BALL_WALL_TRANSMITTANCE: f32 = 0.55;
 
 fn ball_light(origin: vec3<f32>, dir: vec3<f32>, t_max: f32, t_lit: f32) -> f32 {
     let u = ball_uniform();
-    return mix(BALL_WALL_TRANSMITTANCE, 1.0, sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w));
+    let inside = f32(distance(origin, u.xyz) < u.w) + f32(distance(origin + dir * t_max, u.xyz) < u.w);
+    let walls = max(2.0 - inside, 0.0);
+    return mix(pow(BALL_WALL_TRANSMITTANCE, walls), 1.0, sphere_visibility(origin, dir, t_max, t_lit, u.xyz, u.w));
 }
 
 // Diffuse vinyl under a glossy coat (clear_coat) above the water, wet and darker within

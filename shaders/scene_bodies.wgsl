@@ -65,8 +65,10 @@ fn coated_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, dir: vec3<f32>, 
 // bounces round its inside and leaves through the wall there, tinted by it, so its shadowed
 // side glows as a beach ball's does against the sun. Of the sun's light on the body's
 // cross-section (πr² for a ball), spread over its inside (4πr²) and raised by the bounces off
-// its walls (their reflectance about 0.6: 1 / (1 - 0.6)), HOLLOW_GAIN reaches each point.
-const HOLLOW_GAIN: f32 = 0.6;
+// its walls (1 / (1 - HOLLOW_WALL_REFLECTANCE): a film passing 0.55 and absorbing little
+// reflects the rest), HOLLOW_GAIN reaches each point of a wall.
+const HOLLOW_WALL_REFLECTANCE: f32 = 0.45;
+const HOLLOW_GAIN: f32 = 0.25 / (1.0 - HOLLOW_WALL_REFLECTANCE);
 
 fn light_from_inside(albedo: vec3<f32>, wall: f32) -> vec3<f32> {
     return albedo * sun_light() * (wall * wall * HOLLOW_GAIN);

@@ -425,41 +425,6 @@ fn a_dropped_beach_ball_pushes_water_floats_high_and_is_drawn_with_its_shadow() 
     assert!(between * 20 >= on_seams.len() * 19, "the seams' blend is not between their two colours");
 }
 
-/// The beach ball's thin vinyl lets the sun's light into it and out through its other side:
-/// from under the water (the cut-away, 20° below the level) its shadowed underside shows its
-/// gores' colours, the red one red, not black (on 2026-11-30 331 red pixels and none near
-/// black; lit from outside only, none red and 297 near black).
-#[test]
-fn from_under_the_water_the_beach_balls_underside_glows_in_its_colours() {
-    let ball = BodyId::named("ball").expect("the ball is a kind of body");
-    let mut demo = demo_with(BALL, true);
-    demo.params.set(ParamId::Setting, 1.0);
-    let start = demo.body(ball).pose.position;
-    (demo.camera_mut().yaw, demo.camera_mut().pitch, demo.camera_mut().distance) = (-85.0, -20.0, 1.5);
-    demo.camera_mut().target = Vec3::new(start.x, 0.0, start.z);
-    let (w, h) = (240u32, 180u32);
-    let frame = common::render(&mut demo, w, h, 30, 1.0 / 60.0);
-    let size = Vec2::new(w as f32, h as f32);
-    let centre = demo.body(ball).pose.position;
-    let middle = demo.camera().project(centre, size).expect("the ball in view");
-    let right = demo.camera().view().inverse().col(0).truncate();
-    let radius = middle.distance(demo.camera().project(centre + right * 0.2, size).expect("its side in view"));
-    let (mut red, mut dark) = (0, 0);
-    for y in 0..h {
-        for x in 0..w {
-            if Vec2::new(x as f32 + 0.5, y as f32 + 0.5).distance(middle) > 1.2 * radius {
-                continue;
-            }
-            let [r, g, b] = frame.unit_rgb(x, y);
-            // The water round it is blue and green; the red gore lit from outside only, black.
-            red += (r > 0.08 && r > 1.5 * g && r > 1.4 * b) as u32;
-            dark += (r.max(g).max(b) < 0.05) as u32;
-        }
-    }
-    println!("the ball from below at pixel {middle} ({radius:.0} px): {red} red pixels, {dark} near black");
-    assert!(red >= 15, "the ball's red gore does not show from below: {red} red pixels, {dark} near black");
-}
-
 #[test]
 fn the_bodies_float_on_current_heights_without_waiting_on_the_gpu() {
     // (That the frame path never blocks on the GPU is a lint: clippy.toml's disallowed methods.)

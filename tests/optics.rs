@@ -2,12 +2,13 @@
 //! Fresnel model's reflectance at every sampled pixel of calm water, seen from above and from
 //! under the surface (where total internal reflection must stay); the sun's highlight wider
 //! with Blinn–Phong than with Phong at the same shininess and narrower as shininess grows; the
-//! sun's disk growing with its size parameter.
+//! sun's disk growing with its size parameter; the light through a beach ball's thin vinyl.
 
 mod common;
 
 use common::{render, Image};
 use glam::{Vec2, Vec3};
+use wavepool::bodies::BodyId;
 use wavepool::demo::{DemoOptions, WaterDemo};
 use wavepool::optics::{fresnel_table, reflectance, FresnelModel};
 use wavepool::params::{spec, ParamId};
@@ -420,4 +421,43 @@ fn dispersion_moves_the_red_caustics_farther_along_the_light_than_the_blue() {
     );
     assert!(red_weight > 5.0 && blue_weight > 5.0, "dispersion added no red or blue");
     assert!(along > 2.0, "the red caustics are not downwind of the blue ({along} px)");
+}
+
+/// The beach ball's thin vinyl lets the sun's light into it and out through its other side:
+/// from under the water (the cut-away, 20° below the level) its shadowed underside shows its
+/// gores' colours, the red one red, not black (on 2026-11-30 330 red or orange pixels and none
+/// near black; lit from outside only, none and 305 near black).
+#[test]
+fn from_under_the_water_the_beach_balls_underside_glows_in_its_colours() {
+    let ball = BodyId::named("ball").expect("the ball is a kind of body");
+    let mut demo = common::demo(DemoOptions { sim_size: 128, ..DemoOptions::default() });
+    demo.params.set(ParamId::Objects, ball.bit() as f32);
+    demo.params.set(ParamId::Setting, 1.0);
+    let start = demo.body(ball).pose.position;
+    (demo.camera_mut().yaw, demo.camera_mut().pitch, demo.camera_mut().distance) = (-85.0, -20.0, 1.5);
+    demo.camera_mut().target = Vec3::new(start.x, 0.0, start.z);
+    let (w, h) = (240u32, 180u32);
+    let frame = common::render(&mut demo, w, h, 30, 1.0 / 60.0);
+    let size = Vec2::new(w as f32, h as f32);
+    let centre = demo.body(ball).pose.position;
+    let middle = demo.camera().project(centre, size).expect("the ball in view");
+    let right = demo.camera().view().inverse().col(0).truncate();
+    let ball_radius = demo.params.get_by_name("ball_radius").expect("the ball's radius");
+    let radius = middle.distance(demo.camera().project(centre + right * ball_radius, size).expect("its side in view"));
+    let (mut warm, mut dark) = (0, 0);
+    for y in 0..h {
+        for x in 0..w {
+            if Vec2::new(x as f32 + 0.5, y as f32 + 0.5).distance(middle) > 1.2 * radius {
+                continue;
+            }
+            let [r, g, b] = frame.unit_rgb(x, y);
+            // The water round it is blue and green; its red (and orange) gore lit from outside
+            // only, black.
+            warm += (r > 0.06 && r > 1.8 * g && r > 1.2 * b) as u32;
+            dark += (r.max(g).max(b) < 0.05) as u32;
+        }
+    }
+    println!("the ball from below at pixel {middle} ({radius:.0} px): {warm} red or orange pixels, {dark} near black");
+    assert!(warm >= 15, "the ball's red gore does not show from below: {warm} red pixels, {dark} near black");
+    assert!(dark <= 20, "the ball's underside is black from below: {dark} pixels");
 }

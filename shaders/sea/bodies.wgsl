@@ -1,11 +1,11 @@
 // The floating bodies in the open sea (scenes/sea/render/bodies.rs): the sea's answers to what every
 // body's mesh asks of the scene it is in, in place of the pool's (scene_seen.wgsl). A body is
 // lit by the sun and by the sky above it, and from below by the little light the deep water
-// sends back up; it is seen through the haze like the sea around it. Its part under the water
-// is hidden by the sea's surface, drawn after it, so it is always lit as above the water. The
-// water mirrors the bodies and shows their parts under it (MIRRORED_BODIES): its reflected and
-// refracted rays are traced to them; where the shallows reach the patch (ISLAND_AT_PATCH) they
-// shade the floor.
+// sends back up; it is seen through the haze like the sea around it. Its mesh's part under the
+// water is hidden by the sea's surface, drawn after it, so the mesh is lit as above the water.
+// The water mirrors the bodies and shows their parts under it (MIRRORED_BODIES): its reflected
+// and refracted rays are traced to them, the refracted ones lit as under the water; where the
+// shallows reach the patch (ISLAND_AT_PATCH) they shade the floor.
 
 fn lit_under(p: vec3<f32>) -> bool {
     return false;
@@ -95,12 +95,14 @@ fn mirrored_bodies(p: vec3<f32>, r: vec3<f32>, behind: vec4<f32>) -> vec4<f32> {
 }
 
 // What the water at p, seen along unit v through normal n, shows of the bodies' parts under
-// it (of the kinds floating low: hit_bodies_below): the refracted ray traced to them, the part
-// it meets lit under the water and dimmed along the light's way down to it and the view's way
-// back (as seen_through_water dims the shallows' floor), over `under` (the light out of the
-// water there) by the share of the pixel it covers, its gap blended as mirrored_bodies blends
-// (scene.output.z 0: all or nothing). Call in uniform control flow (screen derivatives).
-fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>) -> vec3<f32> {
+// it (of the kinds floating low: hit_bodies_below) nearer than a floor `floor_depth` m under p:
+// the refracted ray traced to them, the part it meets lit under the water and dimmed along the
+// light's way down to it and the view's way back (as seen_through_water dims the shallows'
+// floor), over `under` (the light out of the water there) by the share of the pixel it covers:
+// its gap against the gap's change to the next pixel on the inside of its outline (outside
+// it, unlike mirrored_bodies, no second ray: the water). scene.output.z 0: all or nothing.
+// Call in uniform control flow (screen derivatives).
+fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>, floor_depth: f32) -> vec3<f32> {
     let down = refract(v, n, IOR_AIR / IOR_WATER);
     let hit = hit_bodies_below(p, down);
     let fall = vec2<f32>(dpdx(hit.gap), dpdy(hit.gap));
@@ -108,11 +110,13 @@ fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>) 
     if (scene.output.z <= 0.0) {
         share = 1.0;
     }
-    if (hit.t >= NO_HIT) {
+    if (hit.t >= min(NO_HIT, floor_depth / max(-down.y, 0.2))) {
         return under;
     }
     let point = p + down * hit.t;
-    let path = hit.t + max(p.y - point.y, 0.0) / max(scene.sun.y, 0.2);
+    // The sun's light comes down bent into the water (object_colour's `sun` under it).
+    let sun_down = -refract(-scene.sun.xyz, vec3<f32>(0.0, 1.0, 0.0), IOR_AIR / IOR_WATER).y;
+    let path = hit.t + max(p.y - point.y, 0.0) / sun_down;
     let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * path);
     return mix(under, body_colour(hit, point, down, true), through * share);
 }

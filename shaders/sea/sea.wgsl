@@ -194,9 +194,11 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
     if MIRRORED_BODIES {
         mirrored = mirrored_bodies(in.world, reflect(v, n), mirrored);
     }
+    var floor_depth = NO_HIT; // m under the surface, where the island's floor is in sight
     if ISLAND && on_island_map(in.world.xz) {
         let ground = ground_at(in.world.xz);
         let depth = in.world.y - ground.x;
+        floor_depth = depth;
         if depth < SEE_DEPTH {
             var focus = 1.0;
             if SHALLOW_CAUSTICS {
@@ -211,7 +213,7 @@ fn fs_sea(in: SeaOut) -> @location(0) vec4<f32> {
         foam = max(foam, shore_foam(depth, in.world.y / max(sea.foam.z, 0.1), ripple) * sea.foam.y);
     }
     if MIRRORED_BODIES && HAS_BODIES_BELOW {
-        under = refracted_bodies(in.world, v, n, under);
+        under = refracted_bodies(in.world, v, n, under, floor_depth);
     }
     let colour = mix(sea_colour(v, n, sqrt(removed), under, mirrored), WHITECAP_ALBEDO * light_on_foam(n), foam);
     var seen = through_haze(colour, v, dist);

@@ -269,7 +269,7 @@ fn water_share(p: vec3<f32>, eye: vec3<f32>, dir: vec3<f32>, footprint: f32) -> 
 /// The bodies' WGSL for a scene pass showing the kinds in `present` (bits of [`KINDS`]): per
 /// kind `HAS_<NAME>` (false compiles its tracing away), its uniform slot and its code; then
 /// the code that asks every kind present: the nearest hit (`hit_bodies`, with the least of
-/// the kinds' gaps), its colour
+/// the kinds' gaps; `hit_bodies_below`, of the kinds `seen_below`, with `HAS_BODIES_BELOW`), its colour
 /// (`body_colour`), the light they let through (`objects_visibility`) and the ambient light
 /// they take from a point (`bodies_occlusion`) and the signed distance from the nearest hull
 /// (`bodies_field`: x any kind's, the water's surface is not drawn inside one; y of the kinds

@@ -27,9 +27,11 @@ pub const EYE_CLEARANCE: f32 = 0.15;
 /// looking straight up, and through this much looking down, blended between.
 const BACKDROP_PATH_UP: f32 = 3.0;
 const BACKDROP_PATH_DOWN: f32 = 12.0;
-/// The sun's light the open water scatters towards the eye, at the peak of its forward lobe (a
-/// Henyey–Greenstein phase function with asymmetry `BACKDROP_GLOW_G`, its 1/4π included): the
-/// water glows towards the refracted sun and darkens away from it, as open water does.
+/// The sun's light the open water scatters towards the eye: this times the sun's light times a
+/// Henyey–Greenstein lobe with asymmetry `BACKDROP_GLOW_G` written without its 1/4π,
+/// (1 − g²) / (1 + g² − 2g cos θ)^1.5, which is 45 looking at the refracted sun, 1.0 at 45°
+/// from it, 0.2 at right angles and 0.06 looking away: the water glows towards the sun and
+/// darkens away from it, as open water does.
 const BACKDROP_GLOW: f32 = 0.2;
 const BACKDROP_GLOW_G: f32 = 0.8;
 /// Seen from under it, the water's surface fades into that open water over this much (m) before
