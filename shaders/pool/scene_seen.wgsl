@@ -81,11 +81,6 @@ fn water_backdrop(dir: vec3<f32>) -> vec3<f32> {
     let path = mix(BACKDROP_PATH_DOWN, BACKDROP_PATH_UP, smoothstep(-0.6, 1.0, dir.y));
     let alpha = exp(-scene.absorption.xyz * path);
     var colour = sky_light_at(true) * alpha;
-    // The sun's light scattered forwards by the water: a Henyey–Greenstein lobe (its 1/4π in
-    // BACKDROP_GLOW, deck.rs) round the refracted sun, the light dimmed by the water it crossed.
-    let g = BACKDROP_GLOW_G;
-    let lobe = (1.0 - g * g) / pow(1.0 + g * g - 2.0 * g * dot(dir, -scene.refracted_sun.xyz), 1.5);
-    colour += sun_light() * exp(-scene.absorption.xyz * BACKDROP_PATH_UP) * (BACKDROP_GLOW * lobe);
     if (HAS_SCATTERING) {
         colour += (1.0 - alpha) * scene.scatter.xyz;
     }

@@ -27,13 +27,6 @@ pub const EYE_CLEARANCE: f32 = 0.15;
 /// looking straight up, and through this much looking down, blended between.
 const BACKDROP_PATH_UP: f32 = 3.0;
 const BACKDROP_PATH_DOWN: f32 = 12.0;
-/// The sun's light the open water scatters towards the eye: this times the sun's light times a
-/// Henyey–Greenstein lobe with asymmetry `BACKDROP_GLOW_G` written without its 1/4π,
-/// (1 − g²) / (1 + g² − 2g cos θ)^1.5, which is 45 looking at the refracted sun, 1.0 at 45°
-/// from it, 0.2 at right angles and 0.06 looking away: the water glows towards the sun and
-/// darkens away from it, as open water does.
-const BACKDROP_GLOW: f32 = 0.2;
-const BACKDROP_GLOW_G: f32 = 0.8;
 /// Seen from under it, the water's surface fades into that open water over this much (m) before
 /// a side the cut-away leaves open: the water goes on there, and the surface's edge, its
 /// vertices riding the waves, does not stand out as a ragged line.
@@ -51,8 +44,7 @@ pub fn wgsl_constants() -> String {
         "const COPING_WIDTH: f32 = {COPING_WIDTH:?};\nconst SLAB_SIZE: f32 = {SLAB_SIZE:?};\n\
          const HAZE_DISTANCE: f32 = {HAZE_DISTANCE:?};\nconst HORIZON_TERMS: u32 = {HORIZON_TERMS};\n\
          const HORIZON_LIFT: f32 = {HORIZON_LIFT:?};\nconst BACKDROP_PATH_UP: f32 = {BACKDROP_PATH_UP:?};\n\
-         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\nconst CUT_EDGE_FADE: f32 = {CUT_EDGE_FADE:?};\n\
-         const BACKDROP_GLOW: f32 = {BACKDROP_GLOW:?};\nconst BACKDROP_GLOW_G: f32 = {BACKDROP_GLOW_G:?};\n"
+         const BACKDROP_PATH_DOWN: f32 = {BACKDROP_PATH_DOWN:?};\nconst CUT_EDGE_FADE: f32 = {CUT_EDGE_FADE:?};\n"
     )
 }
 
