@@ -11,11 +11,6 @@ fn lit_under(p: vec3<f32>) -> bool {
     return false;
 }
 
-// The way to the sun from under a level sea: its direction bent into the water.
-fn sun_in_water() -> vec3<f32> {
-    return -refract(-scene.sun.xyz, vec3<f32>(0.0, 1.0, 0.0), IOR_AIR / IOR_WATER);
-}
-
 // Lit colour at p (outward normal n): the sky's light on the upper hemisphere of the normal,
 // the deep water's on the lower, and the sun's on the side facing it (drawn: lit alike). Under
 // the water (a part the water's refracted rays meet: refracted_bodies) the sky's light comes
@@ -29,7 +24,7 @@ fn object_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, dra
     var sun = scene.sun.xyz;
     var ambient = sky_light() * up + light_from_water() * (1.0 - up);
     if (under) {
-        sun = sun_in_water();
+        sun = -scene.refracted_sun.xyz;
         let window = up * up;
         let through = sky_light() * UNDERWATER_SKY;
         let sideways = through * exp(-SEA_ABSORPTION * UNDERWATER_SIDE_PATH);
@@ -119,8 +114,8 @@ fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>, 
         return under;
     }
     let point = p + down * hit.t;
-    // The sun's light comes down bent into the water (sun_in_water).
-    let sun_down = sun_in_water().y;
+    // The sun's light comes down bent into the water (scene.refracted_sun, as in the pool).
+    let sun_down = -scene.refracted_sun.y;
     let path = hit.t + max(p.y - point.y, 0.0) / sun_down;
     let through = exp(-(SEA_ABSORPTION + SEA_SCATTERING) * path);
     return mix(under, body_colour(hit, point, down, true), through * share);
@@ -132,6 +127,6 @@ fn refracted_bodies(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, under: vec3<f32>, 
 fn bodies_shade_on_floor(p: vec3<f32>, v: vec3<f32>, n: vec3<f32>, depth: f32) -> f32 {
     let down = refract(v, n, IOR_AIR / IOR_WATER);
     let floor = p + down * (depth / max(-down.y, 0.2));
-    let to_sun = sun_in_water();
+    let to_sun = -scene.refracted_sun.xyz;
     return objects_visibility(floor, to_sun, FAR_AWAY, 0.0);
 }
