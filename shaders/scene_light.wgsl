@@ -89,23 +89,6 @@ fn underwater_light_rgb(p: vec3<f32>, with_sphere_shadow: bool) -> vec3<f32> {
     return vec3<f32>(underwater_light(p, with_sphere_shadow));
 }
 
-// Inward normal of the pool face nearest to p (floor or one of the four walls).
-// Written with select rather than branches: it runs per pixel for two rays.
-fn pool_normal(p: vec3<f32>) -> vec3<f32> {
-    let w = half_width();
-    let dx = w - abs(p.x);
-    let dz = w - abs(p.z);
-    let dy = p.y + depth();
-    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
-    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
-}
-
-// Texture coordinates (m) of the tiles at p on the face with inward normal n.
-fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
-    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
-    return select(wall, p.xz, abs(n.y) > 0.5);
-}
-
 // The light round an underwater point p facing n, besides the sun's own, by the parts of n's
 // hemisphere (cosine-weighted) that look out each way: through Snell's window, the sky's
 // (sky_light_at(true) facing up); down, the pool's tiles lit by the refracted sun and the sky
@@ -207,8 +190,9 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
 // where the surface mirrors the pool (mirrored_pool), which lights a shadow on it.
 fn pool_ambient(p: vec3<f32>, n: vec3<f32>, under: bool) -> vec3<f32> {
     var around = sky_light_at(under);
-    if (under && n.y > 0.5) {
-        around += mirrored_pool(light_up_from_floor(p.y)) * (1.0 - SNELL_WINDOW_SIN2);
+    if (under) {
+        // The floor's share, turning off round a cove (coved_normal) as its normal turns.
+        around += mirrored_pool(light_up_from_floor(p.y)) * ((1.0 - SNELL_WINDOW_SIN2) * clamp(2.0 * n.y - 0.5, 0.0, 1.0));
     }
     return around * (1.0 - 0.9 * bodies_occlusion(p, n));
 }
@@ -237,7 +221,6 @@ fn pool_colour_at_hit(p: vec3<f32>, lod: f32, under: bool) -> vec3<f32> {
     // The tiles' footprint (2^lod texels of a map of a metre) in caustics texels.
     let footprint = exp2(lod - tile_turning) / f32(textureDimensions(tile_texture).x) * f32(textureDimensions(caustics_map).x) / (2.0 * half_width());
     caustics_lod = max(CAUSTICS_MIN_LOD, log2(max(footprint, 1.0e-3)));
-    let n = pool_normal(p);
-    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, n), lod).rgb;
-    return pool_colour(p, n, albedo, under, 1.0);
+    let albedo = textureSampleLevel(tile_texture, repeat_sampler, tile_uv(p, pool_normal(p)), lod).rgb;
+    return pool_colour(p, coved_normal(p), albedo, under, 1.0);
 }

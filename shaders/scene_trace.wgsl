@@ -1,5 +1,5 @@
-// Tracing rays through water and air to what they hit, and the colour as displayed (tone
-// curve, sRGB).
+// Tracing rays through water and air to what they hit (the pool's faces: their normals, tile
+// coordinates and coved corners), and the colour as displayed (tone curve, sRGB).
 
 // What a ray starting in the water sees: a body or the pool's inside, dimmed by the
 // water it crossed (Beer–Lambert); what it hits is lit as under the water. t_exit: pool_exit_distance of the ray; lod: tile mip
@@ -16,6 +16,36 @@ fn trace_water(origin: vec3<f32>, dir: vec3<f32>, t_exit: f32, lod: f32) -> vec3
         colour = pool_colour_at_hit(hit, lod, true);
     }
     return through_water(colour, origin, origin + dir * t);
+}
+
+// Inward normal of the pool face nearest to p (floor or one of the four walls).
+// Written with select rather than branches: it runs per pixel for two rays.
+fn pool_normal(p: vec3<f32>) -> vec3<f32> {
+    let w = half_width();
+    let dx = w - abs(p.x);
+    let dz = w - abs(p.z);
+    let dy = p.y + depth();
+    let wall = select(vec3<f32>(0.0, 0.0, -sign(p.z)), vec3<f32>(-sign(p.x), 0.0, 0.0), dx < dz);
+    return select(wall, vec3<f32>(0.0, 1.0, 0.0), dy <= dx && dy <= dz);
+}
+
+// Texture coordinates (m) of the tiles at p on the face with inward normal n.
+fn tile_uv(p: vec3<f32>, n: vec3<f32>) -> vec2<f32> {
+    let wall = select(vec2<f32>(p.x, -p.y), vec2<f32>(p.z, -p.y), abs(n.x) > 0.5);
+    return select(wall, p.xz, abs(n.y) > 0.5);
+}
+
+// The normal the pool's inside is lit by at p, on one of its faces: its corners are coved,
+// the tiles turning from one face to the next on a quarter circle of POOL_COVE_RADIUS (m), so
+// within that of a corner the normal turns from one face's to the other's, each face's share
+// growing as p nears it. Seen through the water, a floor's edge against a wall in shade then
+// darkens over a few pixels instead of stepping from lit to dark at a pixel's edge.
+fn coved_normal(p: vec3<f32>) -> vec3<f32> {
+    let r = POOL_COVE_RADIUS;
+    let w = half_width();
+    let near = max(vec3<f32>(r) - vec3<f32>(w - abs(p.x), p.y + depth(), w - abs(p.z)), vec3<f32>(0.0));
+    let n = vec3<f32>(-sign(p.x), 1.0, -sign(p.z)) * near;
+    return select(pool_normal(p), normalize(n), dot(n, n) > 1.0e-10);
 }
 
 // A ray leaving the surface into the air, folded back up if it still points down (a

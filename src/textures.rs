@@ -9,6 +9,10 @@ use crate::util::hash01;
 
 /// Tiles per metre along each axis (12.5 cm tiles).
 pub const TILES_PER_METRE: u32 = 8;
+/// Radius (m) of the cove the tiles turn the pool's inside corners on (a cove tile, as real
+/// pools have between floor and wall): within it of a corner the tiles are lit by a normal
+/// turning from one face's to the other's (`coved_normal`, shaders/scene_trace.wgsl).
+pub const POOL_COVE_RADIUS: f32 = 0.04;
 /// Side of the tile texture in texels; it covers 1 m x 1 m and repeats.
 pub const TILE_TEXTURE_SIZE: u32 = 512;
 /// Side of each sky cube face in texels.

@@ -2,7 +2,8 @@
 //! Fresnel model's reflectance at every sampled pixel of calm water, seen from above and from
 //! under the surface (where total internal reflection must stay); the sun's highlight wider
 //! with Blinn–Phong than with Phong at the same shininess and narrower as shininess grows; the
-//! sun's disk growing with its size parameter; the light through a beach ball's thin vinyl.
+//! sun's disk growing with its size parameter; the light through a beach ball's thin vinyl; the
+//! floor's edge against a wall in shade, seen through the water, shaded round the pool's cove.
 
 mod common;
 
@@ -460,4 +461,79 @@ fn from_under_the_water_the_beach_balls_underside_glows_in_its_colours() {
     println!("the ball from below at pixel {middle} ({radius:.0} px): {warm} red or orange pixels, {dark} near black");
     assert!(warm >= 15, "the ball's red gore does not show from below: {warm} red pixels, {dark} near black");
     assert!(dark <= 20, "the ball's underside is black from below: {dark} pixels");
+}
+
+/// Refracts unit `d` through a surface of unit normal `n` (facing against `d`), `eta` the ratio
+/// of the indices, as WGSL's `refract`.
+fn refract(d: Vec3, n: Vec3, eta: f32) -> Vec3 {
+    let k = 1.0 - eta * eta * (1.0 - d.dot(n).powi(2));
+    eta * d - (eta * d.dot(n) + k.max(0.0).sqrt()) * n
+}
+
+/// Which of the pool's faces (0 the floor, 1-4 the walls x-, x+, z-, z+) the ray of pixel
+/// (x, y) meets through calm water, and that face's inward normal; None past the water.
+fn face_through_calm_water(demo: &WaterDemo, x: u32, y: u32, size: Vec2) -> Option<(usize, Vec3)> {
+    let ray = demo.camera().ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+    let t = -ray.origin.y / ray.dir.y;
+    let s = ray.origin + ray.dir * t;
+    if t.is_nan() || t <= 0.0 || s.x.abs() >= HALF_WIDTH || s.z.abs() >= HALF_WIDTH {
+        return None;
+    }
+    let d = refract(ray.dir, Vec3::Y, 1.0 / IOR_WATER);
+    let depth = PoolShape::CLASSIC.depth;
+    let faces = [
+        ((-depth - s.y) / d.y, Vec3::Y),
+        ((-HALF_WIDTH - s.x) / d.x, Vec3::X),
+        ((HALF_WIDTH - s.x) / d.x, Vec3::NEG_X),
+        ((-HALF_WIDTH - s.z) / d.z, Vec3::Z),
+        ((HALF_WIDTH - s.z) / d.z, Vec3::NEG_Z),
+    ];
+    (0..5).filter(|&i| faces[i].0 > 0.0).min_by(|&a, &b| faces[a].0.total_cmp(&faces[b].0)).map(|i| (i, faces[i].1))
+}
+
+/// The pool's inside corners are coved: seen through calm water from above, the lit floor's
+/// edge against a wall the sun barely reaches darkens over a few pixels, not in one step at
+/// the pixel where the traced rays pass from the floor to the wall. Per column crossing such
+/// an edge: the largest change from one pixel to the next within four of it, over the whole
+/// change from the floor three pixels away to the wall four away (a hard step: about 1). On
+/// 2026-12-01 at 320x240: 113 of 196 columns under 0.6, the median 0.58; with no cove 3 of
+/// 196, the median 0.99.
+#[test]
+fn through_the_water_the_floors_edge_darkens_into_a_wall_in_shade_over_pixels_not_a_step() {
+    let mut demo = empty_pool();
+    demo.params.set(ParamId::Setting, 0.0);
+    let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
+    let size = Vec2::new(W as f32, H as f32);
+    let sun =
+        wavepool::world::sun_direction(demo.params.get(ParamId::SunAzimuth), demo.params.get(ParamId::SunElevation));
+    let into_water = refract(-sun, Vec3::Y, 1.0 / IOR_WATER);
+    let (mut columns, mut soft, mut steepest) = (0, 0, Vec::new());
+    for x in 0..W {
+        let faces: Vec<Option<(usize, Vec3)>> = (0..H).map(|y| face_through_calm_water(&demo, x, y, size)).collect();
+        for y in 8..H - 8 {
+            let (Some((above, wall)), Some((0, _))) = (faces[y as usize - 1], faces[y as usize]) else { continue };
+            // A wall over the floor (far side) that the sun meets at a slant: in shade beside it.
+            if above == 0 || wall.dot(-into_water) > 0.5 {
+                continue;
+            }
+            let luma = |y: u32| frame.luma(x, y);
+            let (wall_luma, floor_luma) = (luma(y - 4), luma(y + 3));
+            if floor_luma - wall_luma < 20.0 {
+                continue;
+            }
+            let step = (y - 4..y + 4).map(|k| (luma(k + 1) - luma(k)).abs()).fold(0.0, f64::max);
+            let share = step / (floor_luma - wall_luma);
+            columns += 1;
+            soft += u32::from(share < 0.6);
+            steepest.push(share);
+        }
+    }
+    steepest.sort_by(f64::total_cmp);
+    let median = steepest.get(steepest.len() / 2).copied().unwrap_or(f64::NAN);
+    println!("the floor's edge against a wall in shade: {columns} columns, {soft} with no step over 0.6 of the change; median largest step {median:.2} of it");
+    assert!(columns >= 40, "too few columns cross the floor's edge: {columns}");
+    assert!(
+        soft as f64 >= 0.4 * columns as f64 && median < 0.8,
+        "the floor's edge steps from lit to dark: {soft} of {columns} columns soft, the median step {median:.2}"
+    );
 }

@@ -45,7 +45,10 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
     if (!under) {
         sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0, 0.0);
     }
-    var colour = pool_colour(in.world, n, texel.rgb, under, sun_through);
+    // The coves face up into the pool: from under the floor's level (the cut-away's open water)
+    // the floor's slab hides them, and the walls are seen flat to their bottom edge.
+    let lit_normal = select(n, coved_normal(in.world), scene.eye.y > -depth());
+    var colour = pool_colour(in.world, lit_normal, texel.rgb, under, sun_through);
     if (HAS_GLAZE && !under) {
         colour += tile_glaze(in.world, n, texel.a, lod, sun_through);
     }

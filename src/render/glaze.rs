@@ -17,13 +17,14 @@ pub const GLAZE_ROUNDING: f32 = 0.3;
 /// Slope of the face at the tile's very edge (1: 45°).
 pub const GLAZE_EDGE_SLOPE: f32 = 1.2;
 
-/// The glaze's numbers for the scene's WGSL.
+/// The glaze's numbers for the scene's WGSL, and the tiles' (their size, their coves).
 pub fn wgsl_constants() -> String {
     format!(
         "const GLAZE_IOR: f32 = {GLAZE_IOR:?};\nconst GLAZE_SHININESS: f32 = {GLAZE_SHININESS:?};\n\
          const GLAZE_ROUNDING: f32 = {GLAZE_ROUNDING:?};\nconst GLAZE_EDGE_SLOPE: f32 = {GLAZE_EDGE_SLOPE:?};\n\
-         const TILES_PER_METRE: f32 = {:?};\n",
-        crate::textures::TILES_PER_METRE as f32
+         const TILES_PER_METRE: f32 = {:?};\nconst POOL_COVE_RADIUS: f32 = {:?};\n",
+        crate::textures::TILES_PER_METRE as f32,
+        crate::textures::POOL_COVE_RADIUS
     )
 }
 
