@@ -50,6 +50,23 @@ def base85(data):
     return "".join(out)
 
 
+def compact_js(js):
+    """`js` without its lines' indentation and trailing spaces and without blank lines (a fifth
+    of wasm-bindgen's module is indentation), which no JS statement depends on; lines inside a
+    template literal, where they are the string's text, are kept as they are."""
+    out, in_template = [], False
+    for line in js.split("\n"):
+        opens_or_closes = len(re.findall(r"(?<!\\)`", line)) % 2 == 1
+        if in_template:
+            out.append(line)
+        elif opens_or_closes:
+            out.append(line.lstrip())
+        elif line.strip():
+            out.append(line.strip())
+        in_template ^= opens_or_closes
+    return "\n".join(out)
+
+
 def fail(message):
     sys.exit(f"standalone.py: {message}")
 
@@ -160,10 +177,7 @@ def main():
     module = "\n".join(
         [
             inline,
-            "const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";",
-            *own_modules,
-            embed,
-            page_script,
+            *map(compact_js, ["const WAVEPOOL_CORE = " + core_as_closure(read("wavepool.js")) + ";", *own_modules, embed, page_script]),
         ]
     ).replace("</script", "<\\/script")
     html = f"""<!doctype html>
