@@ -8,6 +8,7 @@ use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
 use crate::gpu;
+use crate::render::scene_parts::DepthUse;
 use crate::render::DEPTH_FORMAT;
 use crate::sea::island;
 
@@ -36,10 +37,13 @@ pub fn wgsl_constants() -> String {
 /// in the sea.
 pub(super) struct IslandDrawing {
     _map: wgpu::Texture,
-    /// The sea's grid with the shallows and the mirror, the land, and the land mirrored.
+    /// The sea's grid with the shallows and the mirror, the land and its outline, and the land
+    /// mirrored and its outline (shaders/sea/island_edge.wgsl).
     shallows: wgpu::RenderPipeline,
     land: wgpu::RenderPipeline,
+    edge: wgpu::RenderPipeline,
     mirrored: wgpu::RenderPipeline,
+    mirrored_edge: wgpu::RenderPipeline,
     /// The land's index buffer and its length.
     mesh: (wgpu::Buffer, u32),
     /// Boxes (least and most corner, m) round what the sea can show of the island: the water
@@ -101,23 +105,27 @@ impl IslandDrawing {
             contents: bytemuck::cast_slice(&indices),
             usage: wgpu::BufferUsages::INDEX,
         });
-        let shallows = mesh_pipeline(device, p, "sea shallows", ["vs_sea", "fs_sea"], (p.format, None, None));
-        let land =
-            mesh_pipeline(device, p, "island", ["vs_island", "fs_island"], (p.format, Some(wgpu::Face::Back), None));
+        let (back, front, write) = (Some(wgpu::Face::Back), Some(wgpu::Face::Front), DepthUse::TestAndWrite);
+        let shallows = mesh_pipeline(device, p, "sea shallows", ["vs_sea", "fs_sea"], (p.format, None, None, write));
+        let land = mesh_pipeline(device, p, "island", ["vs_island", "fs_island"], (p.format, back, None, write));
+        // The outline's blend over what is drawn (the mirror's texels are premultiplied).
+        let (over, over_mirror) =
+            (Some(wgpu::BlendState::ALPHA_BLENDING), Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING));
+        let entries = ["vs_island_edge", "fs_island_edge"];
+        let edge = mesh_pipeline(device, p, "island edge", entries, (p.format, back, over, DepthUse::Test));
         let into_mirror = IslandPipelines { layouts: [p.layouts[1]; 2], ..*p };
         let entries = ["vs_island_mirrored", "fs_island_mirrored"];
-        let mirrored = mesh_pipeline(
-            device,
-            &into_mirror,
-            "island mirrored",
-            entries,
-            (MIRROR_FORMAT, Some(wgpu::Face::Front), None),
-        );
+        let mirrored =
+            mesh_pipeline(device, &into_mirror, "island mirrored", entries, (MIRROR_FORMAT, front, None, write));
+        let entries = ["vs_island_edge_mirrored", "fs_island_edge_mirrored"];
+        let mirror_format = (MIRROR_FORMAT, front, over_mirror, DepthUse::Test);
+        let mirrored_edge = mesh_pipeline(device, &into_mirror, "island edge mirrored", entries, mirror_format);
         let (least, most, _) = island::extent_above(-island::SEE_DEPTH, place);
         let water = (Vec3::new(least[0], 0.0, least[1]), Vec3::new(most[0], 0.0, most[1]));
         let (least, most, top) = island::extent_above(0.0, place);
         let image = (Vec3::new(least[0], -top, least[1]), Vec3::new(most[0], 0.0, most[1]));
-        Self { _map: map, shallows, land, mirrored, mesh: (buffer, indices.len() as u32), shown: [water, image] }
+        let mesh = (buffer, indices.len() as u32);
+        Self { _map: map, shallows, land, edge, mirrored, mirrored_edge, mesh, shown: [water, image] }
     }
 
     /// Sets the pipeline drawing the sea's grid with the shallows and the mirror.
@@ -132,7 +140,13 @@ impl IslandDrawing {
         self.draw_mesh(pass);
     }
 
-    /// Draws the land mirrored into `mirror`, with the sea's groups 0-2.
+    /// Draws the land's outline blended over what the pass drew (after the sky).
+    pub(super) fn draw_edge(&self, pass: &mut wgpu::RenderPass<'_>) {
+        pass.set_pipeline(&self.edge);
+        self.draw_mesh(pass);
+    }
+
+    /// Draws the land mirrored into `mirror`, and its outline, with the sea's groups 0-2.
     pub(super) fn draw_mirrored(
         &self,
         encoder: &mut wgpu::CommandEncoder,
@@ -151,6 +165,8 @@ impl IslandDrawing {
             pass.set_bind_group(i as u32, Some(*group), &[]);
         }
         pass.set_pipeline(&self.mirrored);
+        self.draw_mesh(&mut pass);
+        pass.set_pipeline(&self.mirrored_edge);
         self.draw_mesh(&mut pass);
     }
 
@@ -222,14 +238,15 @@ pub(super) fn cells_showing(
 }
 
 /// A pipeline drawing triangles from `entries` (vertex, fragment) of the sea's module into
-/// `format`, with depth, no vertex buffers (their vertices come from the index); `cull`: the
-/// side of the triangles left out (the land's back faces; mirrored, their fronts).
+/// `format`, with depth (`depth`: tested, and written or not), no vertex buffers (their
+/// vertices come from the index); `cull`: the side of the triangles left out (the land's back
+/// faces; mirrored, their fronts).
 pub(super) fn mesh_pipeline(
     device: &wgpu::Device,
     p: &IslandPipelines<'_>,
     label: &str,
     entries: [&str; 2],
-    (format, cull, blend): (wgpu::TextureFormat, Option<wgpu::Face>, Option<wgpu::BlendState>),
+    (format, cull, blend, depth): (wgpu::TextureFormat, Option<wgpu::Face>, Option<wgpu::BlendState>, DepthUse),
 ) -> wgpu::RenderPipeline {
     let [vertex_entry, fragment_entry] = entries;
     crate::render::scene_parts::mesh_pipeline(
@@ -247,7 +264,7 @@ pub(super) fn mesh_pipeline(
             format,
             blend,
             write_mask: wgpu::ColorWrites::ALL,
-            depth: crate::render::scene_parts::DepthUse::TestAndWrite,
+            depth,
         },
     )
 }

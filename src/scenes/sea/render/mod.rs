@@ -16,7 +16,7 @@ mod lattices;
 
 use crate::camera::OrbitCamera;
 use crate::gpu::{self, FrameContext, FullscreenPass, FullscreenTarget};
-use crate::render::scene_parts::{begin_scene_pass, scene_prelude_in, water_bind_groups, DEPTH_FORMAT};
+use crate::render::scene_parts::{begin_scene_pass, scene_prelude_in, water_bind_groups, DepthUse, DEPTH_FORMAT};
 use crate::render::{Features, Renderer, View};
 use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS};
 use crate::sim::HeightField;
@@ -33,6 +33,7 @@ const MAX_GRID_MARGIN: f32 = 1.5;
 
 const WGSL: &str = crate::wgsl!("sea/sea.wgsl");
 const ISLAND_WGSL: &str = crate::wgsl!("sea/island.wgsl");
+const ISLAND_EDGE_WGSL: &str = crate::wgsl!("sea/island_edge.wgsl");
 const LAND_WGSL: &str = crate::wgsl!("sea/land.wgsl");
 const FOAM_WGSL: &str = crate::wgsl!("sea/foam.wgsl");
 const WAVES_WGSL: &str = crate::wgsl!("sea/waves.wgsl");
@@ -149,14 +150,28 @@ impl SeaRenderer {
         let [water_layout, textures_layout] = renderer.scene_layouts();
         let layouts = [water_layout, textures_layout, &layout, &frame_layout];
         let module = |island, bodies| {
-            let parts =
-                [gpu::wgsl::FULLSCREEN, &prelude(island, bodies), WAVES_WGSL, WGSL, ISLAND_WGSL, LAND_WGSL, FOAM_WGSL];
+            let parts = [
+                gpu::wgsl::FULLSCREEN,
+                &prelude(island, bodies),
+                WAVES_WGSL,
+                WGSL,
+                ISLAND_WGSL,
+                ISLAND_EDGE_WGSL,
+                LAND_WGSL,
+                FOAM_WGSL,
+            ];
             gpu::shader(device, "sea", &parts)
         };
         let (with_frame, without_frame) = (&layouts[..], &layouts[..3]);
         let plain = module(false, false);
         let grid = IslandPipelines { layouts: [with_frame, without_frame], module: &plain, format };
-        let grid = mesh_pipeline(device, &grid, "sea grid", ["vs_sea", "fs_sea"], (format, None, None));
+        let grid = mesh_pipeline(
+            device,
+            &grid,
+            "sea grid",
+            ["vs_sea", "fs_sea"],
+            (format, None, None, DepthUse::TestAndWrite),
+        );
         let bodies = bodies::body_pipelines(device, &plain, with_frame, format, features.bodies);
         // The island's pipelines read the shallows and the mirror (ISLAND); the rows of the
         // grid that can show them are drawn with its own (see `IslandDrawing::rows_near`).
@@ -172,7 +187,13 @@ impl SeaRenderer {
             let pipelines = IslandPipelines { layouts: [with_frame, without_frame], module: &module, format };
             // Blended: the water's share of a pixel at a body's waterline is its alpha.
             let blend = Some(wgpu::BlendState::ALPHA_BLENDING);
-            mesh_pipeline(device, &pipelines, "sea near bodies", ["vs_sea", "fs_sea"], (format, None, blend))
+            mesh_pipeline(
+                device,
+                &pipelines,
+                "sea near bodies",
+                ["vs_sea", "fs_sea"],
+                (format, None, blend, DepthUse::TestAndWrite),
+            )
         };
         let near_bodies = variant.mirrored_bodies.then(|| {
             let away = near_bodies(false);
@@ -513,6 +534,9 @@ impl SeaRenderer {
             island.draw_land(&mut pass);
         }
         self.sky.draw(&mut pass, &groups);
+        if let Some(island) = &self.island_drawing {
+            island.draw_edge(&mut pass);
+        }
         // The bodies' outlines last, over the water and the sky behind them.
         if renderer.body_outlines() {
             bodies::draw_outlines(&mut pass, &self.bodies, renderer.body_outline_meshes());
