@@ -64,6 +64,8 @@ def compact_js(js):
         elif line.strip():
             out.append(line.strip())
         in_template ^= opens_or_closes
+    if in_template:
+        fail("a template literal opened and never closed: compact_js counts backticks per line (a lone one in a string or comment would mislead it)")
     return "\n".join(out)
 
 

@@ -502,10 +502,16 @@ fn face_through_calm_water(demo: &WaterDemo, x: u32, y: u32, size: Vec2) -> Opti
 fn through_the_water_the_floors_edge_darkens_into_a_wall_in_shade_over_pixels_not_a_step() {
     let mut demo = empty_pool();
     demo.params.set(ParamId::Setting, 0.0);
+    // The view and the sun of 2026-12-01's defaults, held here so that the corner stays in view
+    // and a wall at a slant to the sun stays beside the floor's lit edge.
+    let (azimuth, elevation) = (-30.0, 68.0);
+    demo.params.set(ParamId::SunAzimuth, azimuth);
+    demo.params.set(ParamId::SunElevation, elevation);
+    (demo.camera_mut().yaw, demo.camera_mut().pitch, demo.camera_mut().distance) = (-25.0, 34.0, 3.0);
+    demo.camera_mut().target = Vec3::new(0.0, -0.3, 0.0);
     let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
     let size = Vec2::new(W as f32, H as f32);
-    let sun =
-        wavepool::world::sun_direction(demo.params.get(ParamId::SunAzimuth), demo.params.get(ParamId::SunElevation));
+    let sun = wavepool::world::sun_direction(azimuth, elevation);
     let into_water = refract(-sun, Vec3::Y, 1.0 / IOR_WATER);
     let (mut columns, mut soft, mut steepest) = (0, 0, Vec::new());
     for x in 0..W {

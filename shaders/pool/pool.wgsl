@@ -46,8 +46,9 @@ fn fs_pool(in: PoolOut) -> @location(0) vec4<f32> {
         sun_through = objects_visibility(in.world, scene.sun.xyz, 10.0, 0.0);
     }
     // The coves face up into the pool: from under the floor's level (the cut-away's open water)
-    // the floor's slab hides them, and the walls are seen flat to their bottom edge.
-    let lit_normal = select(n, coved_normal(in.world), scene.eye.y > -depth());
+    // the floor's slab hides them, and the walls are seen flat to their bottom edge. (The flat
+    // water's mirror texture, CLIP_SIDE, is drawn from the eye's mirror image: coved as seen.)
+    let lit_normal = select(n, coved_normal(in.world), CLIP_SIDE != 0 || scene.eye.y > -depth());
     var colour = pool_colour(in.world, lit_normal, texel.rgb, under, sun_through);
     if (HAS_GLAZE && !under) {
         colour += tile_glaze(in.world, n, texel.a, lod, sun_through);

@@ -276,15 +276,15 @@ fn the_beach_close_up_shows_detail_finer_than_its_map() {
 #[test]
 fn the_islands_outline_against_the_sky_is_blended_not_stepped() {
     let mut frames = Vec::new();
-    let mut d = demo(DemoOptions::default());
+    let mut row = 0;
     for shown in [1.0, 0.0] {
-        d = demo(DemoOptions::default());
+        let mut d = demo(DemoOptions::default());
         d.apply_preset(wavepool::presets::find("sea").expect("the sea preset"));
         d.params.set(ParamId::SeaIsland, shown);
         d.sync_scene();
         frames.push(render(&mut d, SIZE.0, SIZE.1, 2, 1.0 / 60.0));
+        row = horizon_row(&d, SIZE.1).floor() as u32;
     }
-    let row = horizon_row(&d, SIZE.1).floor() as u32;
     let (mut columns, mut blended) = (0, 0);
     for x in 0..SIZE.0 {
         let Some(y) = (0..row.saturating_sub(4)).find(|&y| (frames[0].luma(x, y) - frames[1].luma(x, y)).abs() > 4.0)

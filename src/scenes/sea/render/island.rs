@@ -16,6 +16,8 @@ use crate::sea::island;
 /// shade as a gamma would, on every backend), coverage in alpha.
 const MIRROR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 pub const MIRROR_RANGE: f32 = 16.0;
+/// The mirror's texels a side per the frame's pixels: it is drawn at half the frame's size.
+pub const MIRROR_SCALE: u32 = 2;
 /// How far (a fraction of the screen per unit of slope) the waves move the mirror's image, and
 /// how far up and down its three taps spread per unit of the unresolved rms slope (a tenth of
 /// the angle that turns a ray by: three taps further apart show as ghosts).
@@ -28,8 +30,9 @@ const ROUGHEST: f32 = 0.5;
 /// The island's WGSL constants for the renderer.
 pub fn wgsl_constants() -> String {
     format!(
-        "const MIRROR_RANGE: f32 = {MIRROR_RANGE:?};\nconst MIRROR_WOBBLE: f32 = {MIRROR_WOBBLE:?};\n\
-         const MIRROR_BLUR: f32 = {MIRROR_BLUR:?};\n"
+        "const MIRROR_RANGE: f32 = {MIRROR_RANGE:?};\nconst MIRROR_SCALE: f32 = {:?};\nconst MIRROR_WOBBLE: f32 = {MIRROR_WOBBLE:?};\n\
+         const MIRROR_BLUR: f32 = {MIRROR_BLUR:?};\n",
+        MIRROR_SCALE as f32
     )
 }
 

@@ -21,7 +21,7 @@ use crate::render::{Features, Renderer, View};
 use crate::sea::{SeaVariant, FOG_HEIGHT, GRID_CELL_PX, GRID_FAR, GRID_MAX_CELLS};
 use crate::sim::HeightField;
 use foam::{no_map, WhitecapMaps};
-use island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget};
+use island::{cells_showing, island_map, mesh_pipeline, IslandDrawing, IslandPipelines, MirrorTarget, MIRROR_SCALE};
 use lattices::LatticeMaps;
 pub use lattices::SeaLattices;
 
@@ -488,7 +488,7 @@ impl SeaRenderer {
         mark: &mut dyn FnMut(&mut wgpu::CommandEncoder, bool),
     ) {
         let FrameContext { device, queue, encoder, target, size } = cx;
-        let mirror_size = (size.0.div_ceil(2), size.1.div_ceil(2));
+        let mirror_size = (size.0.div_ceil(MIRROR_SCALE), size.1.div_ceil(MIRROR_SCALE));
         if self.island_drawing.is_some() && self.mirror.size() != mirror_size {
             self.mirror = MirrorTarget::new(device, mirror_size);
             let whitecaps = self.whitecaps.as_ref();
