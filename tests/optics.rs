@@ -463,13 +463,6 @@ fn from_under_the_water_the_beach_balls_underside_glows_in_its_colours() {
     assert!(dark <= 20, "the ball's underside is black from below: {dark} pixels");
 }
 
-/// Refracts unit `d` through a surface of unit normal `n` (facing against `d`), `eta` the ratio
-/// of the indices, as WGSL's `refract`.
-fn refract(d: Vec3, n: Vec3, eta: f32) -> Vec3 {
-    let k = 1.0 - eta * eta * (1.0 - d.dot(n).powi(2));
-    eta * d - (eta * d.dot(n) + k.max(0.0).sqrt()) * n
-}
-
 /// Which of the pool's faces (0 the floor, 1-4 the walls x-, x+, z-, z+) the ray of pixel
 /// (x, y) meets through calm water, and that face's inward normal; None past the water.
 fn face_through_calm_water(demo: &WaterDemo, x: u32, y: u32, size: Vec2) -> Option<(usize, Vec3)> {
@@ -479,7 +472,7 @@ fn face_through_calm_water(demo: &WaterDemo, x: u32, y: u32, size: Vec2) -> Opti
     if t.is_nan() || t <= 0.0 || s.x.abs() >= HALF_WIDTH || s.z.abs() >= HALF_WIDTH {
         return None;
     }
-    let d = refract(ray.dir, Vec3::Y, 1.0 / IOR_WATER);
+    let d = wavepool::world::refract(ray.dir, Vec3::Y, 1.0 / IOR_WATER)?;
     let depth = PoolShape::CLASSIC.depth;
     let faces = [
         ((-depth - s.y) / d.y, Vec3::Y),
@@ -512,7 +505,7 @@ fn through_the_water_the_floors_edge_darkens_into_a_wall_in_shade_over_pixels_no
     let frame = render(&mut demo, W, H, 2, 1.0 / 60.0);
     let size = Vec2::new(W as f32, H as f32);
     let sun = wavepool::world::sun_direction(azimuth, elevation);
-    let into_water = refract(-sun, Vec3::Y, 1.0 / IOR_WATER);
+    let into_water = wavepool::world::refracted_sun(sun);
     let (mut columns, mut soft, mut steepest) = (0, 0, Vec::new());
     for x in 0..W {
         let faces: Vec<Option<(usize, Vec3)>> = (0..H).map(|y| face_through_calm_water(&demo, x, y, size)).collect();
