@@ -168,8 +168,10 @@ fn floor_seen(p: vec3<f32>, n: vec3<f32>) -> f32 {
 // sun arrives refracted, through the caustics; above it, directly (under: whether p is under
 // it, as object_colour's), times sun_through: the light the objects let through towards the
 // sun above the water (1 where their shadows are left out; under it the caustics map holds them).
-// The walls under the water take the sky's light only, not the floor's (light_under_water):
-// lit by the floor too they read flatter and their caustics faded (judged blind, 2026-11-29).
+// The walls under the water take the floor's light by its view factor (pool_ambient), not
+// half of it as a body's side does (light_under_water): at half they read flat and their
+// caustics faded (judged blind, 2026-11-29); by the view factor they won in all four views
+// judged (2026-12-01), the sun overhead most clearly, where only the floor lights them.
 fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_through: f32) -> vec3<f32> {
     if (HAS_DISPERSION && under) {
         // Each colour through its own caustics.
@@ -193,6 +195,12 @@ fn pool_ambient(p: vec3<f32>, n: vec3<f32>, under: bool) -> vec3<f32> {
     if (under) {
         // The floor's share, turning off round a cove (coved_normal) as its normal turns.
         around += mirrored_pool(light_up_from_floor(p.y)) * ((1.0 - SNELL_WINDOW_SIN2) * clamp(2.0 * n.y - 0.5, 0.0, 1.0));
+        // A wall's: the lit floor fills the view factor of a strip the pool's width wide
+        // from height h over it, (1 - h / sqrt(h² + width²)) / 2.
+        let h = max(p.y + depth(), 0.0);
+        let width = 2.0 * half_width();
+        let floor_view = 0.5 * (1.0 - h / sqrt(h * h + width * width));
+        around += light_up_from_floor(p.y) * (floor_view * clamp(1.0 - 2.0 * n.y, 0.0, 1.0));
     }
     return around * (1.0 - 0.9 * bodies_occlusion(p, n));
 }

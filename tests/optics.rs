@@ -162,9 +162,9 @@ fn linear(v: f32) -> f32 {
 /// A sampled pixel of the wall and the metres of water in front of it.
 type WallPixel = ((u32, u32), f32);
 
-/// Under water, looking straight at the far wall 1.5 m away, with `set` parameters: the frame
-/// and the wall's sampled pixels.
-fn facing_a_wall(set: &[(ParamId, f32)]) -> (Image, Vec<WallPixel>) {
+/// Under water, looking straight at the far wall from `away` metres, with `set` parameters: the
+/// frame, the wall's sampled pixels and the camera.
+fn facing_a_wall(away: f32, set: &[(ParamId, f32)]) -> (Image, Vec<WallPixel>, wavepool::camera::OrbitCamera) {
     let mut demo = empty_pool();
     demo.params.set(ParamId::Caustics, 0.0);
     // The sun the formulas were checked under (35°, 55°): behind the camera's left shoulder
@@ -175,7 +175,7 @@ fn facing_a_wall(set: &[(ParamId, f32)]) -> (Image, Vec<WallPixel>) {
     for &(id, v) in set {
         demo.params.set(id, v);
     }
-    demo.camera_mut().target = Vec3::new(0.0, -0.5, 0.0);
+    demo.camera_mut().target = Vec3::new(0.0, -0.5, away - HALF_WIDTH - 0.5);
     demo.camera_mut().pitch = 0.0;
     demo.camera_mut().yaw = 0.0;
     demo.camera_mut().distance = 0.5;
@@ -192,59 +192,89 @@ fn facing_a_wall(set: &[(ParamId, f32)]) -> (Image, Vec<WallPixel>) {
             }
         }
     }
-    (frame, wall)
+    (frame, wall, *demo.camera())
 }
 
+/// In-scattering adds (1 - e^(-a d)) times the scattered light to a wall pixel seen through d
+/// metres of water, and Beer-Lambert takes e^(-a d) of the wall's light on the way: the red
+/// absorption's effect on a wall point measured between two distances, 1.5 and 0.7 m, so that
+/// what the light lost on its way to the wall (through the water too) cancels.
 #[test]
 fn the_water_absorbs_by_beer_lambert_and_in_scattering_fills_in_what_it_takes() {
     let default_absorption =
         [ParamId::AbsorptionRed, ParamId::AbsorptionGreen, ParamId::AbsorptionBlue].map(|id| spec(id).default);
-    let (plain, wall) = facing_a_wall(&[]);
+    let (far, near) = (1.5, 0.7);
+    let (plain, wall, far_camera) = facing_a_wall(far, &[]);
     assert!(wall.len() > 50, "{} wall pixels", wall.len());
     // Bright enough that the tint's halving of green (0.024 here) is well past the tolerance.
     let scatter = [0.2, 0.4, 0.4];
     let with = |view_colour: f32| {
-        facing_a_wall(&[
-            (ParamId::ScatterRed, scatter[0]),
-            (ParamId::ScatterGreen, scatter[1]),
-            (ParamId::ScatterBlue, scatter[2]),
-            (ParamId::ViewColour, view_colour),
-        ])
+        facing_a_wall(
+            far,
+            &[
+                (ParamId::ScatterRed, scatter[0]),
+                (ParamId::ScatterGreen, scatter[1]),
+                (ParamId::ScatterBlue, scatter[2]),
+                (ParamId::ViewColour, view_colour),
+            ],
+        )
         .0
     };
     let (scattering, tinted) = (with(0.0), with(1.0));
     // Less red absorbed than by default: brighter red, read off the tone curve's toe more finely.
-    let (redder, _) = facing_a_wall(&[(ParamId::AbsorptionRed, 0.6)]);
-    // Per channel, the largest departure from the formulas over the wall's pixels (linear light).
-    let (mut off_scatter, mut off_tint, mut off_ratio) = ([0.0f32; 3], [0.0f32; 3], 0.0f32);
+    let redder = [(ParamId::AbsorptionRed, 0.6)];
+    let (redder_far, _, _) = facing_a_wall(far, &redder);
+    let (plain_near, _, near_camera) = facing_a_wall(near, &[]);
+    let (redder_near, _, _) = facing_a_wall(near, &redder);
+    // Per channel, the mean and the largest departure from the formulas over the wall's pixels
+    // (linear light): one 8-bit step of a bright pixel is about 0.005 of it, so a pixel may be
+    // off by two, while a mistake in the formula moves the mean.
+    let (mut off_scatter, mut off_tint) = ([(0.0f32, 0.0f32); 3], [(0.0f32, 0.0f32); 3]);
     let (mut green_added, mut green_added_tinted) = (0.0f32, 0.0f32);
+    let mut ratios = Vec::new();
+    let size = Vec2::new(W as f32, H as f32);
     for &((x, y), d) in &wall {
-        let (p, s, t, r) =
-            (plain.unit_rgb(x, y), scattering.unit_rgb(x, y), tinted.unit_rgb(x, y), redder.unit_rgb(x, y));
+        let (p, s, t) = (plain.unit_rgb(x, y), scattering.unit_rgb(x, y), tinted.unit_rgb(x, y));
         for k in 0..3 {
             let filled = 1.0 - (-default_absorption[k] * d).exp();
             let tint = [1.0, 0.5, 1.0][k]; // a horizontal path: optics::GRAZING_TINT
-            off_scatter[k] = off_scatter[k].max((linear(s[k]) - linear(p[k]) - filled * scatter[k]).abs());
-            off_tint[k] = off_tint[k].max((linear(t[k]) - linear(p[k]) - filled * scatter[k] * tint).abs());
+            let e = linear(s[k]) - linear(p[k]) - filled * scatter[k];
+            off_scatter[k] = (off_scatter[k].0 + e / wall.len() as f32, off_scatter[k].1.max(e.abs()));
+            let e = linear(t[k]) - linear(p[k]) - filled * scatter[k] * tint;
+            off_tint[k] = (off_tint[k].0 + e / wall.len() as f32, off_tint[k].1.max(e.abs()));
         }
         green_added += linear(s[1]) - linear(p[1]);
         green_added_tinted += linear(t[1]) - linear(p[1]);
-        let expected_ratio = (-(0.6 - default_absorption[0]) * d).exp();
-        off_ratio = off_ratio.max((linear(r[0]) / linear(p[0]) / expected_ratio - 1.0).abs());
+        // The same wall point from nearer: the ratio of its two red ratios is e^(-Δa Δd).
+        let ray = far_camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5), size);
+        let point = ray.origin + ray.dir * d;
+        let Some(q) = near_camera.project(point, size) else { continue };
+        let (xn, yn) = (q.x as u32, q.y as u32);
+        let d_near = (point - near_camera.eye()).length();
+        let measured = (linear(redder_far.unit_rgb(x, y)[0]) / linear(plain.unit_rgb(x, y)[0]))
+            / (linear(redder_near.unit_rgb(xn, yn)[0]) / linear(plain_near.unit_rgb(xn, yn)[0]));
+        ratios.push(measured / (-(0.6 - default_absorption[0]) * (d - d_near)).exp());
     }
+    ratios.sort_by(f32::total_cmp);
+    let median_ratio = ratios[ratios.len() / 2];
     let centre = plain.unit_rgb(W / 2, H / 2);
     println!(
-        "{} wall pixels 1.5 m away (centre {centre:?}): in-scattering off its formula by at most {off_scatter:.4?} (linear), \
-         tinted by view angle {off_tint:.4?} (green added {:.4} untinted, {:.4} tinted, mean); red absorbed at 0.6 /m \
-         instead of the default: ratio off by {:.1} %",
+        "{} wall pixels {far} m away (centre {centre:?}): in-scattering off its formula by {off_scatter:.4?} \
+         (linear; mean, most), tinted by view angle {off_tint:.4?} (green added {:.4} untinted, {:.4} tinted, mean); \
+         red absorbed at 0.6 /m instead of the default, seen from {far} and {near} m: {} points, their ratio \
+         {:.3} of Beer-Lambert's e^(0.6 x 0.8) = {:.3} (median)",
         wall.len(),
         green_added / wall.len() as f32,
         green_added_tinted / wall.len() as f32,
-        off_ratio * 100.0
+        ratios.len(),
+        median_ratio,
+        ((default_absorption[0] - 0.6) * (far - near)).exp(),
     );
-    assert!(off_scatter.iter().all(|&e| e < 0.01), "in-scattering: {off_scatter:?}");
-    assert!(off_tint.iter().all(|&e| e < 0.01), "view-angle tint: {off_tint:?}");
-    assert!(off_ratio < 0.1, "Beer-Lambert in red (0.6 /m): {:.1} % off", off_ratio * 100.0);
+    let within = |off: [(f32, f32); 3]| off.iter().all(|&(mean, most)| mean.abs() < 0.004 && most < 0.02);
+    assert!(within(off_scatter), "in-scattering: {off_scatter:?}");
+    assert!(within(off_tint), "view-angle tint: {off_tint:?}");
+    assert!(ratios.len() * 2 > wall.len(), "{} of {} wall points seen from nearer", ratios.len(), wall.len());
+    assert!((median_ratio - 1.0).abs() < 0.1, "Beer-Lambert in red (0.6 /m): {median_ratio:.3} of the formula");
     assert!(green_added_tinted < 0.6 * green_added, "the tint left green at {green_added_tinted} of {green_added}");
 }
 
