@@ -6,8 +6,7 @@ struct Sim {
     grid: vec4<f32>,        // x N, y 1/N, z cell size dx (m), w pool half width W (m)
     step: vec4<f32>,        // x dt (s), y c^2 dt / dx^2 (1/s), z velocity damping per step exp(-k dt),
                             // w sponge damping rate at the walls (1/s; 0: reflecting walls)
-    bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s), z sponge width (m),
-                            // w share of the velocity's biharmonic taken each update (short ripples' damping)
+    bounds: vec4<f32>,      // x largest |height| (m), y largest |velocity| (m/s), z sponge width (m)
     drops_info: vec4<f32>,  // x number of drops, y uniform height correction (m) keeping volume
     drops: array<vec4<f32>, MAX_DROPS>, // per drop: centre x, z (m), radius (m), strength (m)
     bodies: vec4<f32>,      // x number of hull moves, y rest level the mean is held at (m),

@@ -42,33 +42,20 @@ pub struct CpuHeightField {
     foam: Option<Foam>,
 }
 
-/// One cell's update, as in `shaders/sim_update.wgsl` (same operations in the same order):
-/// `neighbours` the sum of the four heights beside the cell, `biharmonic` the 13-point
-/// biharmonic of the velocity there.
+/// One cell's update, as in `shaders/sim_update.wgsl` (same operations in the same order).
 #[inline(always)]
-fn update_cell(h: f32, v: f32, neighbours: f32, biharmonic: f32, plan: &StepPlan, absorb: f32) -> (f32, f32) {
+fn update_cell(h: f32, v: f32, neighbours: f32, plan: &StepPlan, absorb: f32) -> (f32, f32) {
     let laplacian = neighbours - 4.0 * h;
-    let v = bounded(
-        (v + plan.coupling * laplacian - plan.ripple_diffusion * biharmonic) * plan.velocity_decay * absorb,
-        plan.max_velocity,
-    );
+    let v = bounded((v + plan.coupling * laplacian) * plan.velocity_decay * absorb, plan.max_velocity);
     let level = plan.rest_level;
     let h = bounded((h - level + plan.dt * v) * absorb, plan.max_height) + level;
     (h, v)
 }
 
-/// The 13-point biharmonic of `v` (weights 20 at the cell, -8 beside it, 2 at the diagonals, 1
-/// two cells away), summed as `shaders/sim_update.wgsl` sums it, from the cell's value, the
-/// sums of the four beside it, of the four diagonals and of the four two cells away.
-#[inline(always)]
-fn biharmonic(v: f32, beside: f32, diagonals: f32, twos: f32) -> f32 {
-    20.0 * v - 8.0 * beside + 2.0 * diagonals + twos
-}
-
 impl CpuHeightField {
     /// A calm heightfield; `size` must be a power of two (as on the GPU).
     pub fn new(size: u32, half_width: f32) -> Self {
-        assert!(size.is_power_of_two() && size >= 4, "simulation size must be a power of two, at least 4");
+        assert!(size.is_power_of_two() && size >= 2, "simulation size must be a power of two");
         let zeros = vec![0.0; (size * size) as usize];
         Self {
             size,
@@ -315,63 +302,39 @@ impl CpuHeightField {
     /// apart, so the inner loop has no bounds checks and vectorises.
     fn update(&mut self, plan: &StepPlan) {
         let n = self.size as usize;
+        let m = n - 2;
         let absorb: Option<&[f32]> = match &self.absorb {
             Some((_, _, factors)) if plan.sponge_rate > 0.0 => Some(factors),
             _ => None,
         };
-        let row_at = |j: usize, d: isize| (j as isize + d).clamp(0, n as isize - 1) as usize * n;
         for j in 0..n {
-            let (up1, down1, up2, down2) = (row_at(j, 1), row_at(j, -1), row_at(j, 2), row_at(j, -2));
             let row = &self.height[j * n..(j + 1) * n];
-            let up = &self.height[up1..][..n];
-            let down = &self.height[down1..][..n];
+            let up = &self.height[(j + 1).min(n - 1) * n..][..n];
+            let down = &self.height[j.saturating_sub(1) * n..][..n];
             let v = &self.velocity[j * n..(j + 1) * n];
-            let (v_up, v_down) = (&self.velocity[up1..][..n], &self.velocity[down1..][..n]);
-            let (v_up2, v_down2) = (&self.velocity[up2..][..n], &self.velocity[down2..][..n]);
             let out_h = &mut self.next_height[j * n..(j + 1) * n];
             let out_v = &mut self.next_velocity[j * n..(j + 1) * n];
             let factor = |i: usize| absorb.map_or(1.0, |a| a[j * n + i]);
-            // Two cells from each wall, the cells beyond clamped to the edge (the walls mirror).
-            let at = |i: usize, d: isize| (i as isize + d).clamp(0, n as isize - 1) as usize;
-            for i in [0, 1, n - 2, n - 1] {
-                let (l, r, l2, r2) = (at(i, -1), at(i, 1), at(i, -2), at(i, 2));
-                let neighbours = row[r] + row[l] + up[i] + down[i];
-                let beside = v[r] + v[l] + v_up[i] + v_down[i];
-                let diagonals = v_up[r] + v_up[l] + v_down[r] + v_down[l];
-                let twos = v[r2] + v[l2] + v_up2[i] + v_down2[i];
-                let b = biharmonic(v[i], beside, diagonals, twos);
-                (out_h[i], out_v[i]) = update_cell(row[i], v[i], neighbours, b, plan, factor(i));
+            // Walls: the cell beyond mirrors the edge cell.
+            for i in [0, n - 1] {
+                let (left, right) = (row[i.saturating_sub(1)], row[(i + 1).min(n - 1)]);
+                (out_h[i], out_v[i]) = update_cell(row[i], v[i], right + left + up[i] + down[i], plan, factor(i));
             }
-            // The cells between, as slices shifted by one and two (no bounds checks: vectorises).
-            let m = n - 4;
-            fn shifted(s: &[f32], d: isize, m: usize) -> &[f32] {
-                &s[(2 + d) as usize..][..m]
-            }
-            let inner = |s, d| shifted(s, d, m);
-            let (h_in, left, right, up_in, down_in) =
-                (inner(row, 0), inner(row, -1), inner(row, 1), inner(up, 0), inner(down, 0));
-            let (v_in, v_l, v_r, v_u, v_d) = (inner(v, 0), inner(v, -1), inner(v, 1), inner(v_up, 0), inner(v_down, 0));
-            let (v_ur, v_ul, v_dr, v_dl) = (inner(v_up, 1), inner(v_up, -1), inner(v_down, 1), inner(v_down, -1));
-            let (v_r2, v_l2, v_u2, v_d2) = (inner(v, 2), inner(v, -2), inner(v_up2, 0), inner(v_down2, 0));
-            let (oh, ov) = (&mut out_h[2..n - 2], &mut out_v[2..n - 2]);
-            let sums = |k: usize| {
-                let beside = v_r[k] + v_l[k] + v_u[k] + v_d[k];
-                let diagonals = v_ur[k] + v_ul[k] + v_dr[k] + v_dl[k];
-                let twos = v_r2[k] + v_l2[k] + v_u2[k] + v_d2[k];
-                (right[k] + left[k] + up_in[k] + down_in[k], biharmonic(v_in[k], beside, diagonals, twos))
-            };
+            let (h_in, v_in, up_in, down_in) = (&row[1..=m], &v[1..=m], &up[1..=m], &down[1..=m]);
+            let (left, right) = (&row[..m], &row[2..]);
+            let (oh, ov) = (&mut out_h[1..=m], &mut out_v[1..=m]);
             match absorb {
                 None => {
                     for k in 0..m {
-                        let (neighbours, b) = sums(k);
-                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, b, plan, 1.0);
+                        let neighbours = right[k] + left[k] + up_in[k] + down_in[k];
+                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, plan, 1.0);
                     }
                 }
                 Some(a) => {
-                    let f = &a[j * n + 2..][..m];
+                    let f = &a[j * n + 1..][..m];
                     for k in 0..m {
-                        let (neighbours, b) = sums(k);
-                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, b, plan, f[k]);
+                        let neighbours = right[k] + left[k] + up_in[k] + down_in[k];
+                        (oh[k], ov[k]) = update_cell(h_in[k], v_in[k], neighbours, plan, f[k]);
                     }
                 }
             }

@@ -246,7 +246,7 @@ impl GpuSim {
         let mut u = SimUniforms::zeroed();
         u.grid = [size as f32, 1.0 / size as f32, 2.0 * half_width / size as f32, half_width];
         u.step = [plan.dt, plan.coupling, plan.velocity_decay, plan.sponge_rate];
-        u.bounds = [plan.max_height, plan.max_velocity, plan.sponge_width, plan.ripple_diffusion];
+        u.bounds = [plan.max_height, plan.max_velocity, plan.sponge_width, 0.0];
         u.drops_info = [plan.drops.len() as f32, plan.correction, 0.0, 0.0];
         for (slot, d) in u.drops.iter_mut().zip(&plan.drops) {
             *slot = [d.x, d.z, d.radius, d.strength];

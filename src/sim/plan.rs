@@ -41,14 +41,6 @@ impl WaveSettings {
     }
 }
 
-/// Decay rate (1/s) of the grid's shortest ripple, a two-cell checkerboard: each update takes
-/// `ripple_diffusion` times the velocity's biharmonic from it (hyperdiffusion), a rate that
-/// falls with the fourth power of the wavenumber: a four-cell ripple's is 1/16 of it, a
-/// ten-cell one's 1/440. The five-point Laplacian carries ripples a few cells long too slowly,
-/// so a drop trails rings of them that shimmer at a pixel's scale; a ring's own waves keep
-/// nearly all their energy.
-pub const SHORT_RIPPLE_DAMPING: f32 = 60.0;
-
 /// Width (m) of the damping layer along each wall when the walls absorb.
 pub const SPONGE_WIDTH: f32 = 0.25;
 
@@ -90,10 +82,6 @@ pub struct StepPlan {
     pub coupling: f32,
     /// Factor exp(-k dt) applied to the velocity each update.
     pub velocity_decay: f32,
-    /// Share of the velocity's 13-point biharmonic taken from it each update
-    /// ([`SHORT_RIPPLE_DAMPING`] dt / 64, the checkerboard's eigenvalue being 64; at most 1/96,
-    /// which keeps the checkerboard's factor per update at 1/3 or more: stable).
-    pub ripple_diffusion: f32,
     /// Sponge damping rate at the wall (1/s); 0 for reflecting walls.
     pub sponge_rate: f32,
     /// Body moves per step: the first step's with the drops, each later one's before its step.
@@ -124,7 +112,6 @@ impl StepPlan {
             dt: h,
             coupling: settings.wave_speed * settings.wave_speed * h / (dx * dx),
             velocity_decay: (-settings.damping.max(0.0) * h).exp(),
-            ripple_diffusion: (SHORT_RIPPLE_DAMPING * h / 64.0).min(1.0 / 96.0),
             sponge_rate: if settings.absorbing_walls {
                 SPONGE_STRENGTH * settings.wave_speed.abs() / (SPONGE_WIDTH * scale)
             } else {
