@@ -193,14 +193,15 @@ fn pool_colour(p: vec3<f32>, n: vec3<f32>, albedo: vec3<f32>, under: bool, sun_t
 fn pool_ambient(p: vec3<f32>, n: vec3<f32>, under: bool) -> vec3<f32> {
     var around = sky_light_at(under);
     if (under) {
+        let from_floor = light_up_from_floor(p.y);
         // The floor's share, turning off round a cove (coved_normal) as its normal turns.
-        around += mirrored_pool(light_up_from_floor(p.y)) * ((1.0 - SNELL_WINDOW_SIN2) * clamp(2.0 * n.y - 0.5, 0.0, 1.0));
+        around += mirrored_pool(from_floor) * ((1.0 - SNELL_WINDOW_SIN2) * clamp(2.0 * n.y - 0.5, 0.0, 1.0));
         // A wall's: the lit floor fills the view factor of a strip the pool's width wide
         // from height h over it, (1 - h / sqrt(h² + width²)) / 2.
         let h = max(p.y + depth(), 0.0);
         let width = 2.0 * half_width();
         let floor_view = 0.5 * (1.0 - h / sqrt(h * h + width * width));
-        around += light_up_from_floor(p.y) * (floor_view * clamp(1.0 - 2.0 * n.y, 0.0, 1.0));
+        around += from_floor * (floor_view * clamp(1.0 - 2.0 * n.y, 0.0, 1.0));
     }
     return around * (1.0 - 0.9 * bodies_occlusion(p, n));
 }
